@@ -1,0 +1,105 @@
+!> The analysis model as read from the deck: parameters fixed for the whole run.
+!> Everything here has a documented default; the deck reader fills it, the mesh and
+!> solvers read it and never change it (data separated by lifetime, as in BeamDyn).
+module rodyn_model
+   use rodyn_kinds, only: wp, g_standard
+   implicit none
+   private
+   public :: section_t, line_def_t, constraint_t, point_load_t, static_options_t
+   public :: output_options_t, model_t
+   public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
+   public :: end_a, end_b, name_len
+
+   integer, parameter :: name_len = 32     !< longest name of a section or line
+
+   ! Kinds of node constraint (*BOUNDARY, TYPE=...)
+   integer, parameter :: bc_free = 0       !< no constraint
+   integer, parameter :: bc_pinned = 1     !< ball joint: position held, rotation free
+   integer, parameter :: bc_hinged = 2     !< position held, rotation free about one axis only
+   integer, parameter :: bc_clamped = 3    !< position and rotation held
+   integer, parameter :: bc_position = 4   !< moved to a prescribed position, rotation free
+   character(len=8), parameter :: bc_names(0:4) = &
+      [character(len=8) :: 'FREE', 'PINNED', 'HINGED', 'CLAMPED', 'POSITION']
+
+   ! Symbolic node numbers for the two ends of a line (resolved by the mesh)
+   integer, parameter :: end_a = 1         !< first node of a line (S = 0)
+   integer, parameter :: end_b = -1        !< last node of a line (S = L)
+
+   !> Cross-section properties (*SECTION). Section frame: d3 along the centreline,
+   !> d1 and d2 the principal axes; EI1 resists bending about d1.
+   type :: section_t
+      character(len=name_len) :: name = ''
+      real(wp) :: ea = 0.0_wp       !< axial stiffness [N]
+      real(wp) :: ga1 = -1.0_wp     !< shear stiffness along d1 [N]; < 0: default EA
+      real(wp) :: ga2 = -1.0_wp     !< shear stiffness along d2 [N]; < 0: default EA
+      real(wp) :: ei1 = 0.0_wp      !< bending stiffness about d1 [N m2]
+      real(wp) :: ei2 = 0.0_wp      !< bending stiffness about d2 [N m2]
+      real(wp) :: gj = 0.0_wp       !< torsional stiffness [N m2/rad]
+      real(wp) :: mass = 0.0_wp     !< mass per unit length [kg/m]
+      real(wp) :: od = 0.0_wp       !< outer diameter [m] (0: not given)
+      real(wp) :: rhoi1 = -1.0_wp   !< rotary inertia per length about d1 [kg m]; < 0: default
+      real(wp) :: rhoi2 = -1.0_wp   !< rotary inertia per length about d2 [kg m]; < 0: default
+      real(wp) :: kappa0(3) = 0.0_wp !< stress-free curvature (K1, K2, K3) [1/m]
+   end type section_t
+
+   !> One line (*LINE): a rod of given unstretched length between end A and end B.
+   type :: line_def_t
+      character(len=name_len) :: name = ''
+      integer :: section = 0        !< index into model%sections
+      real(wp) :: length = 0.0_wp   !< unstretched length [m]
+      integer :: n_elements = 0     !< number of elements
+      integer :: order = 3          !< Lagrange order of the elements (1, 2 or 3)
+      real(wp) :: end_a(3) = 0.0_wp !< position of end A (S = 0) [m]
+      real(wp) :: end_b(3) = 0.0_wp !< position of end B (S = L) [m]
+      logical :: has_d1_hint = .false.
+      real(wp) :: d1_hint(3) = 0.0_wp !< direction d1 should point to (projected) [-]
+   end type line_def_t
+
+   !> A node constraint (*BOUNDARY).
+   type :: constraint_t
+      integer :: line = 0           !< index into model%lines
+      integer :: node = end_a       !< node number along the line, or end_a / end_b
+      integer :: kind = bc_free     !< bc_* constant
+      real(wp) :: axis(3) = 0.0_wp  !< hinge axis (bc_hinged), unit vector [-]
+      real(wp) :: position(3) = 0.0_wp !< prescribed position (bc_position) [m]
+   end type constraint_t
+
+   !> A point force and moment at a node (*LOAD), fixed in space.
+   type :: point_load_t
+      integer :: line = 0           !< index into model%lines
+      integer :: node = end_a       !< node number along the line, or end_a / end_b
+      real(wp) :: force(3) = 0.0_wp !< force [N]
+      real(wp) :: moment(3) = 0.0_wp !< moment [N m]
+   end type point_load_t
+
+   !> Static analysis controls (*STATIC).
+   type :: static_options_t
+      logical :: requested = .false. !< a *STATIC card was given
+      integer :: increments = 1      !< initial number of load increments
+      integer :: max_cutbacks = 10   !< how many times an increment may be halved
+      integer :: max_iterations = 30 !< Newton iterations per increment
+      real(wp) :: force_tol = 1.0e-10_wp !< residual / reference force [-]
+      real(wp) :: disp_tol = 1.0e-10_wp  !< correction / reference length (and rad) [-]
+      logical :: line_search = .true.    !< backtracking line search on the residual
+   end type static_options_t
+
+   !> What to write (*OUTPUT).
+   type :: output_options_t
+      logical :: csv = .true.        !< CSV tables
+      logical :: hdf5 = .true.       !< the HDF5 file
+   end type output_options_t
+
+   !> The whole model.
+   type :: model_t
+      character(len=:), allocatable :: title      !< *HEADING text
+      character(len=:), allocatable :: deck_file  !< path of the main deck
+      character(len=:), allocatable :: deck_text  !< full text read, includes expanded
+      real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -g_standard] !< [m/s2]
+      type(section_t), allocatable :: sections(:)
+      type(line_def_t), allocatable :: lines(:)
+      type(constraint_t), allocatable :: constraints(:)
+      type(point_load_t), allocatable :: loads(:)
+      type(static_options_t) :: static
+      type(output_options_t) :: output
+   end type model_t
+end module rodyn_model

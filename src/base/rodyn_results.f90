@@ -1,0 +1,40 @@
+!> Results handed from the solvers to the output writers: plain arrays per line,
+!> in SI units, with nothing the writers have to recompute.
+module rodyn_results
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: name_len
+   implicit none
+   private
+   public :: line_result_t, run_summary_t
+
+   !> Static results of one line.
+   type :: line_result_t
+      character(len=name_len) :: name = ''
+      ! nodes
+      real(wp), allocatable :: node_s(:)       !< (nn) unstretched arc length [m]
+      real(wp), allocatable :: node_x(:, :)    !< (3, nn) position x, y, z [m]
+      ! integration points of the stiffness (p per element, ordered along the line)
+      integer, allocatable :: gp_element(:)    !< (ng) element number along the line
+      integer, allocatable :: gp_point(:)      !< (ng) point number within the element
+      real(wp), allocatable :: gp_s(:)         !< (ng) unstretched arc length [m]
+      real(wp), allocatable :: tension(:)      !< (ng) effective tension N3 [N]
+      real(wp), allocatable :: shear(:, :)     !< (2, ng) shear forces N1, N2 [N]
+      real(wp), allocatable :: moment(:, :)    !< (2, ng) bending moments M1, M2 [N m]
+      real(wp), allocatable :: torque(:)       !< (ng) torsional moment M3 [N m]
+      real(wp), allocatable :: curvature(:, :) !< (3, ng) K1, K2 bending, K3 twist [1/m]
+      ! ends: force and moment the support exerts on the line, global axes
+      real(wp) :: reaction(6, 2) = 0.0_wp      !< (Fx,Fy,Fz,Mx,My,Mz) at end A, end B [N, N m]
+      logical :: end_held(2) = .false.         !< end A / end B carries a support
+   end type line_result_t
+
+   !> How the run went: written with the results so a reader knows how far it got.
+   type :: run_summary_t
+      logical :: complete = .false.            !< the analysis reached its end
+      character(len=:), allocatable :: status  !< one line: 'complete' or what failed
+      real(wp) :: load_factor = 0.0_wp         !< static load factor reached [-]
+      integer :: increments = 0                !< load increments converged
+      integer :: iterations = 0                !< Newton iterations in total
+      integer :: cutbacks = 0                  !< increment halvings
+      real(wp) :: wall_time = 0.0_wp           !< solve wall time [s]
+   end type run_summary_t
+end module rodyn_results
