@@ -78,9 +78,9 @@ module rodyn_model
       integer :: increments = 1      !< initial number of load increments
       integer :: max_cutbacks = 10   !< how many times an increment may be halved
       integer :: max_iterations = 30 !< Newton iterations per increment
-      real(wp) :: force_tol = 1.0e-10_wp !< residual / reference force [-]
-      real(wp) :: disp_tol = 1.0e-10_wp  !< correction / reference length (and rad) [-]
-      logical :: line_search = .true.    !< backtracking line search on the residual
+      real(wp) :: force_tol = 1.0e-8_wp  !< residual / reference force [-]
+      real(wp) :: disp_tol = 1.0e-8_wp   !< correction / reference length (and rad) [-]
+      logical :: line_search = .false.   !< energy line search (Crisfield) along each step
    end type static_options_t
 
    !> What to write (*OUTPUT).

@@ -1,0 +1,334 @@
+!> The director rod element (formulation note sections 1-2; Betsch & Steinmann 2002).
+!>
+!> Per node a the configuration is q_a = (x_a, d1_a, d2_a, d3_a) and the unknown is
+!> u_a = (dx_a, dtheta_a) with d_i <- cay(dtheta) d_i. Everything is interpolated with
+!> the same Lagrange functions; strains at the p reduced Gauss points are
+!>   Gamma_k = x'.d_k - delta_k3                               (shear, extension)
+!>   K1 = (d2'.d3 - d3'.d2)/2, K2 = (d3'.d1 - d1'.d3)/2, K3 = (d1'.d2 - d2'.d1)/2
+!> and the stored energy is W = 1/2 (eps - eps0)^T C (eps - eps0),
+!> C = diag(GA1, GA2, EA, EI1, EI2, GJ), eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3).
+!>
+!> Forces are first formed as gradients with respect to q ("q-forces", 12 per node) and
+!> then projected onto the 6 unknowns with the null-space matrix P(d):
+!>   r_x = f_x,   r_theta = sum_i d_i x f_di.
+module rodyn_rod_element
+   use rodyn_kinds, only: wp
+   use rodyn_rotation, only: cross, skew
+   use rodyn_shape, only: shape_lagrange, gauss_rule, max_nen
+   implicit none
+   private
+   public :: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, rod_gp_jacobian
+   public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
+   public :: rod_element_static, rod_element_strains, rod_element_energy
+   public :: rod_element_line_load, rod_element_lumped_mass
+
+   !> Centreline and director fields at one point of an element.
+   type :: rod_gp_t
+      real(wp) :: xp(3) = 0.0_wp       !< x' (derivative in S) [-]
+      real(wp) :: d(3, 3) = 0.0_wp     !< d(:, i): interpolated director d_i [-]
+      real(wp) :: dp(3, 3) = 0.0_wp    !< d(:, i)': derivative of director d_i [1/m]
+   end type rod_gp_t
+
+contains
+
+   !> Interpolate x', d_i, d_i' at a point from nodal values.
+   pure subroutine rod_gp_kinematics(nen, n, dn, xe, de, kin)
+      integer, intent(in) :: nen              !< nodes of the element
+      real(wp), intent(in) :: n(nen)          !< shape functions
+      real(wp), intent(in) :: dn(nen)         !< shape function derivatives dN/dS [1/m]
+      real(wp), intent(in) :: xe(3, nen)      !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, nen)   !< nodal directors de(:, i, a)
+      type(rod_gp_t), intent(out) :: kin      !< interpolated fields
+      integer :: a
+      kin%xp = 0.0_wp
+      kin%d = 0.0_wp
+      kin%dp = 0.0_wp
+      do a = 1, nen
+         kin%xp = kin%xp + dn(a)*xe(:, a)
+         kin%d = kin%d + n(a)*de(:, :, a)
+         kin%dp = kin%dp + dn(a)*de(:, :, a)
+      end do
+   end subroutine rod_gp_kinematics
+
+   !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3) (note section 1).
+   pure function rod_strains(kin) result(eps)
+      type(rod_gp_t), intent(in) :: kin !< fields at the point
+      real(wp) :: eps(6)
+      eps(1) = dot_product(kin%xp, kin%d(:, 1))
+      eps(2) = dot_product(kin%xp, kin%d(:, 2))
+      eps(3) = dot_product(kin%xp, kin%d(:, 3)) - 1.0_wp
+      eps(4) = 0.5_wp*(dot_product(kin%dp(:, 2), kin%d(:, 3)) &
+                       - dot_product(kin%dp(:, 3), kin%d(:, 2)))
+      eps(5) = 0.5_wp*(dot_product(kin%dp(:, 3), kin%d(:, 1)) &
+                       - dot_product(kin%dp(:, 1), kin%d(:, 3)))
+      eps(6) = 0.5_wp*(dot_product(kin%dp(:, 1), kin%d(:, 2)) &
+                       - dot_product(kin%dp(:, 2), kin%d(:, 1)))
+   end function rod_strains
+
+   !> Add wj * B(q)^T s to the q-forces: the gradient of wj s.eps with respect to the
+   !> nodal x_a and d_ia, with B = d eps / d q evaluated at kin.
+   pure subroutine rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
+      integer, intent(in) :: nen              !< nodes of the element
+      real(wp), intent(in) :: n(nen)          !< shape functions
+      real(wp), intent(in) :: dn(nen)         !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kin       !< fields where B is evaluated
+      real(wp), intent(in) :: s(6)            !< stress resultants (N1,N2,N3,M1,M2,M3) [N, N m]
+      real(wp), intent(in) :: wj              !< Gauss weight times Jacobian [m]
+      real(wp), intent(inout) :: fq(3, 4, nen) !< q-forces: (:,1,a) on x_a, (:,1+i,a) on d_ia
+      real(wp) :: nsp(3), c(3, 3), e(3, 3)
+      integer :: a, i
+      associate (d => kin%d, dp => kin%dp)
+         nsp = s(1)*d(:, 1) + s(2)*d(:, 2) + s(3)*d(:, 3)   ! spatial contact force
+         ! curvature terms: c_i multiplies N_a, e_i multiplies dN_a (see module header)
+         c(:, 1) = 0.5_wp*(s(5)*dp(:, 3) - s(6)*dp(:, 2))
+         e(:, 1) = 0.5_wp*(s(6)*d(:, 2) - s(5)*d(:, 3))
+         c(:, 2) = 0.5_wp*(s(6)*dp(:, 1) - s(4)*dp(:, 3))
+         e(:, 2) = 0.5_wp*(s(4)*d(:, 3) - s(6)*d(:, 1))
+         c(:, 3) = 0.5_wp*(s(4)*dp(:, 2) - s(5)*dp(:, 1))
+         e(:, 3) = 0.5_wp*(s(5)*d(:, 1) - s(4)*d(:, 2))
+         do i = 1, 3
+            c(:, i) = c(:, i) + s(i)*kin%xp
+         end do
+         do a = 1, nen
+            fq(:, 1, a) = fq(:, 1, a) + wj*dn(a)*nsp
+            do i = 1, 3
+               fq(:, 1 + i, a) = fq(:, 1 + i, a) + wj*(n(a)*c(:, i) + dn(a)*e(:, i))
+            end do
+         end do
+      end associate
+   end subroutine rod_gp_qforce
+
+   !> Projected strain Jacobian bt = B P(dnode): the change of eps at the point for
+   !> u_b = (dx_b, dtheta_b), with nodal directors varied as dd_ib = dtheta_b x dnode_ib.
+   pure subroutine rod_gp_jacobian(nen, n, dn, kin, dnode, bt)
+      integer, intent(in) :: nen               !< nodes of the element
+      real(wp), intent(in) :: n(nen)           !< shape functions
+      real(wp), intent(in) :: dn(nen)          !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kin        !< fields where B is evaluated
+      real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors defining the rotation
+      real(wp), intent(out) :: bt(6, 6, nen)   !< d eps_k / d u_(j,b): bt(k, j, b)
+      real(wp) :: g1(3), g2(3), g3(3)
+      integer :: a, k
+      associate (d => kin%d, dp => kin%dp, xp => kin%xp)
+         do a = 1, nen
+            do k = 1, 3
+               bt(k, 1:3, a) = dn(a)*d(:, k)
+               bt(k, 4:6, a) = n(a)*cross(dnode(:, k, a), xp)
+               bt(3 + k, 1:3, a) = 0.0_wp
+            end do
+            ! K1: derivatives with respect to d2 and d3
+            g2 = 0.5_wp*(dn(a)*d(:, 3) - n(a)*dp(:, 3))
+            g3 = 0.5_wp*(n(a)*dp(:, 2) - dn(a)*d(:, 2))
+            bt(4, 4:6, a) = cross(dnode(:, 2, a), g2) + cross(dnode(:, 3, a), g3)
+            ! K2: derivatives with respect to d3 and d1
+            g3 = 0.5_wp*(dn(a)*d(:, 1) - n(a)*dp(:, 1))
+            g1 = 0.5_wp*(n(a)*dp(:, 3) - dn(a)*d(:, 3))
+            bt(5, 4:6, a) = cross(dnode(:, 3, a), g3) + cross(dnode(:, 1, a), g1)
+            ! K3: derivatives with respect to d1 and d2
+            g1 = 0.5_wp*(dn(a)*d(:, 2) - n(a)*dp(:, 2))
+            g2 = 0.5_wp*(n(a)*dp(:, 1) - dn(a)*d(:, 1))
+            bt(6, 4:6, a) = cross(dnode(:, 1, a), g1) + cross(dnode(:, 2, a), g2)
+         end do
+      end associate
+   end subroutine rod_gp_jacobian
+
+   !> Add wj * P(dl)^T [sum_k s_k d2 eps_k / dq dq] P(dr) to ke: the stress (geometric)
+   !> stiffness at one point. The strains are quadratic, so the second derivatives are
+   !> constant blocks (identity times shape-function products).
+   pure subroutine rod_gp_geometric(nen, n, dn, s, dl, dr, wj, ke)
+      integer, intent(in) :: nen                 !< nodes of the element
+      real(wp), intent(in) :: n(nen)             !< shape functions
+      real(wp), intent(in) :: dn(nen)            !< dN/dS [1/m]
+      real(wp), intent(in) :: s(6)               !< stress resultants [N, N m]
+      real(wp), intent(in) :: dl(3, 3, nen)      !< nodal directors of the test side (rows)
+      real(wp), intent(in) :: dr(3, 3, nen)      !< nodal directors of the increment (cols)
+      real(wp), intent(in) :: wj                 !< Gauss weight times Jacobian [m]
+      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp) :: blk(3, 3), aab, h
+      integer :: a, b, k, ra, rb
+      do b = 1, nen
+         rb = 6*(b - 1)
+         do a = 1, nen
+            ra = 6*(a - 1)
+            ! shear/extension: couples x_a with d_kb and d_ka with x_b
+            blk = 0.0_wp
+            do k = 1, 3
+               blk = blk - s(k)*dn(a)*n(b)*skew(dr(:, k, b))
+            end do
+            ke(ra + 1:ra + 3, rb + 4:rb + 6) = ke(ra + 1:ra + 3, rb + 4:rb + 6) + wj*blk
+            blk = 0.0_wp
+            do k = 1, 3
+               blk = blk + s(k)*n(a)*dn(b)*skew(dl(:, k, a))
+            end do
+            ke(ra + 4:ra + 6, rb + 1:rb + 3) = ke(ra + 4:ra + 6, rb + 1:rb + 3) + wj*blk
+            ! bending/torsion: couples d_ia with d_jb
+            aab = dn(a)*n(b) - n(a)*dn(b)
+            if (aab == 0.0_wp) cycle
+            h = 0.5_wp*aab*wj
+            blk = s(4)*(mpair(dl(:, 2, a), dr(:, 3, b)) - mpair(dl(:, 3, a), dr(:, 2, b))) &
+                  + s(5)*(mpair(dl(:, 3, a), dr(:, 1, b)) - mpair(dl(:, 1, a), dr(:, 3, b))) &
+                  + s(6)*(mpair(dl(:, 1, a), dr(:, 2, b)) - mpair(dl(:, 2, a), dr(:, 1, b)))
+            ke(ra + 4:ra + 6, rb + 4:rb + 6) = ke(ra + 4:ra + 6, rb + 4:rb + 6) + h*blk
+         end do
+      end do
+   contains
+      !> P(u)^T P(v) = (u.v) I - v u^T, with P(d) = -skew(d).
+      pure function mpair(u, v) result(m)
+         real(wp), intent(in) :: u(3) !< director on the row side
+         real(wp), intent(in) :: v(3) !< director on the column side
+         real(wp) :: m(3, 3)
+         integer :: i
+         m = -spread(v, 2, 3)*spread(u, 1, 3)
+         do i = 1, 3
+            m(i, i) = m(i, i) + dot_product(u, v)
+         end do
+      end function mpair
+   end subroutine rod_gp_geometric
+
+   !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di.
+   pure subroutine rod_project_qforce(nen, fq, dnode, fe)
+      integer, intent(in) :: nen               !< nodes of the element
+      real(wp), intent(in) :: fq(3, 4, nen)    !< q-forces
+      real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors of the projection
+      real(wp), intent(out) :: fe(6, nen)      !< projected forces (force, moment) [N, N m]
+      integer :: a
+      do a = 1, nen
+         fe(1:3, a) = fq(:, 1, a)
+         fe(4:6, a) = cross(dnode(:, 1, a), fq(:, 2, a)) + cross(dnode(:, 2, a), fq(:, 3, a)) &
+                      + cross(dnode(:, 3, a), fq(:, 4, a))
+      end do
+   end subroutine rod_project_qforce
+
+   !> Add scale * sum_i [d_i f_di^T - (f_di . d_i) I] to the rotation diagonal blocks:
+   !> the change of the projection d_i x f_di when d_i rotates with the increment.
+   pure subroutine rod_rotation_geometric(nen, fq, dnode, scale, ke)
+      integer, intent(in) :: nen                 !< nodes of the element
+      real(wp), intent(in) :: fq(3, 4, nen)      !< q-forces
+      real(wp), intent(in) :: dnode(3, 3, nen)   !< directors being rotated
+      real(wp), intent(in) :: scale              !< factor (1 in statics)
+      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp) :: blk(3, 3)
+      integer :: a, i, j, r
+      do a = 1, nen
+         blk = 0.0_wp
+         do i = 1, 3
+            blk = blk + spread(dnode(:, i, a), 2, 3)*spread(fq(:, 1 + i, a), 1, 3)
+            do j = 1, 3
+               blk(j, j) = blk(j, j) - dot_product(fq(:, 1 + i, a), dnode(:, i, a))
+            end do
+         end do
+         r = 6*(a - 1) + 3
+         ke(r + 1:r + 3, r + 1:r + 3) = ke(r + 1:r + 3, r + 1:r + 3) + scale*blk
+      end do
+   end subroutine rod_rotation_geometric
+
+   !> Internal force and consistent tangent of one element in statics: the projected
+   !> gradient of the stored energy and its derivative (note sections 2 and 3, statics).
+   pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k)
+      integer, intent(in) :: p                     !< element order
+      real(wp), intent(in) :: le                   !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                 !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, p)           !< stress-free strains at the points
+      real(wp), intent(in) :: xe(3, p + 1)         !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)      !< nodal directors
+      real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
+      real(wp), intent(out) :: ke(6*(p + 1), 6*(p + 1)) !< tangent (if want_k)
+      logical, intent(in) :: want_k                !< form the tangent
+      real(wp) :: xi(p), w(p), n(p + 1), dn(p + 1), s(6), wj
+      real(wp) :: fq(3, 4, p + 1), bt(6, 6*(p + 1)), cb(6, 6*(p + 1))
+      type(rod_gp_t) :: kin
+      integer :: g, nen, k
+      nen = p + 1
+      call gauss_rule(p, xi, w)
+      fq = 0.0_wp
+      if (want_k) ke = 0.0_wp
+      do g = 1, p
+         call shape_lagrange(p, xi(g), n, dn)
+         dn = dn*2.0_wp/le
+         wj = w(g)*0.5_wp*le
+         call rod_gp_kinematics(nen, n, dn, xe, de, kin)
+         s = c*(rod_strains(kin) - eps0(:, g))
+         call rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
+         if (want_k) then
+            call rod_gp_jacobian(nen, n, dn, kin, de, bt)
+            do k = 1, 6
+               cb(k, :) = (wj*c(k))*bt(k, :)
+            end do
+            ke = ke + matmul(transpose(bt), cb)
+            call rod_gp_geometric(nen, n, dn, s, de, de, wj, ke)
+         end if
+      end do
+      call rod_project_qforce(nen, fq, de, fe)
+      if (want_k) call rod_rotation_geometric(nen, fq, de, 1.0_wp, ke)
+   end subroutine rod_element_static
+
+   !> Strains at the p reduced Gauss points of one element (also used for eps0).
+   pure subroutine rod_element_strains(p, le, xe, de, eps, xig)
+      integer, intent(in) :: p                  !< element order
+      real(wp), intent(in) :: le                !< unstretched element length [m]
+      real(wp), intent(in) :: xe(3, p + 1)      !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)   !< nodal directors
+      real(wp), intent(out) :: eps(6, p)        !< strains at the points
+      real(wp), intent(out) :: xig(p)           !< parent coordinates of the points
+      real(wp) :: w(p), n(p + 1), dn(p + 1)
+      type(rod_gp_t) :: kin
+      integer :: g
+      call gauss_rule(p, xig, w)
+      do g = 1, p
+         call shape_lagrange(p, xig(g), n, dn)
+         dn = dn*2.0_wp/le
+         call rod_gp_kinematics(p + 1, n, dn, xe, de, kin)
+         eps(:, g) = rod_strains(kin)
+      end do
+   end subroutine rod_element_strains
+
+   !> Stored energy of one element, sum over points of wj/2 (eps-eps0).C(eps-eps0) [J].
+   pure function rod_element_energy(p, le, c, eps0, xe, de) result(energy)
+      integer, intent(in) :: p                  !< element order
+      real(wp), intent(in) :: le                !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)              !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, p)        !< stress-free strains
+      real(wp), intent(in) :: xe(3, p + 1)      !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)   !< nodal directors
+      real(wp) :: energy
+      real(wp) :: eps(6, p), xig(p), xi(p), w(p)
+      integer :: g
+      call rod_element_strains(p, le, xe, de, eps, xig)
+      call gauss_rule(p, xi, w)
+      energy = 0.0_wp
+      do g = 1, p
+         energy = energy + 0.25_wp*le*w(g)*sum(c*(eps(:, g) - eps0(:, g))**2)
+      end do
+   end function rod_element_energy
+
+   !> Consistent nodal forces of a uniform line load q [N/m]: f_a = q int N_a dS,
+   !> integrated exactly with p+1 Gauss points.
+   pure subroutine rod_element_line_load(p, le, q, fa)
+      integer, intent(in) :: p              !< element order
+      real(wp), intent(in) :: le            !< unstretched element length [m]
+      real(wp), intent(in) :: q(3)          !< load per unit unstretched length [N/m]
+      real(wp), intent(out) :: fa(3, p + 1) !< nodal forces [N]
+      real(wp) :: xi(p + 1), w(p + 1), n(p + 1), dn(p + 1)
+      integer :: g, a
+      call gauss_rule(p + 1, xi, w)
+      fa = 0.0_wp
+      do g = 1, p + 1
+         call shape_lagrange(p, xi(g), n, dn)
+         do a = 1, p + 1
+            fa(:, a) = fa(:, a) + 0.5_wp*le*w(g)*n(a)*q
+         end do
+      end do
+   end subroutine rod_element_line_load
+
+   !> Row-sum lumped translational mass of one element: m_a = rhoA int N_a dS (note
+   !> section 2). The same weights serve the director inertias E11, E22.
+   pure subroutine rod_element_lumped_mass(p, le, rhoa, ma)
+      integer, intent(in) :: p              !< element order
+      real(wp), intent(in) :: le            !< unstretched element length [m]
+      real(wp), intent(in) :: rhoa          !< mass (or inertia) per unit length
+      real(wp), intent(out) :: ma(p + 1)    !< nodal lumped values
+      real(wp) :: fa(3, p + 1)
+      call rod_element_line_load(p, le, [rhoa, 0.0_wp, 0.0_wp], fa)
+      ma = fa(1, :)
+   end subroutine rod_element_lumped_mass
+end module rodyn_rod_element

@@ -1,0 +1,1107 @@
+!> Thin wrapper over the HDF5 Fortran API: the only module of rodyn that uses `hdf5`
+!> (pattern: tblite's src/tblite/io/hdf5.F90; style guide rules 4 and 6).
+!>
+!> Conventions
+!> - Objects are named by absolute paths inside the file ('/static/RISER/node_s');
+!>   attributes by the path of their object ('/' for the root group) and a name.
+!>   In messages an attribute is shown as '<object>@<name>'.
+!> - Arrays are written as they are laid out in memory: a Fortran array x(3, nn)
+!>   appears in C/h5py as shape (nn, 3), one row per node.
+!> - Reals are stored as IEEE 64-bit little endian, integers as 32-bit little endian,
+!>   strings as variable-length UTF-8 scalars (h5py reads attributes as str).
+!> - Every routine takes an error_t. Writers and readers do nothing when it already
+!>   holds an error, so a sequence of calls can be checked once at its end; closing
+!>   routines always act. HDF5's negative status becomes stat_io with a message naming
+!>   the routine, the object and the file. HDF5's own error printing is switched off.
+!> - Writing a dataset whose parent groups are missing creates them.
+module rodyn_hdf5
+   use, intrinsic :: iso_c_binding, only: c_char, c_ptr, c_loc, c_null_char, c_size_t, &
+      c_f_pointer, c_associated, c_null_ptr
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5close_f, h5eset_auto_f, &
+      h5fcreate_f, h5fopen_f, h5fclose_f, h5fflush_f, h5gcreate_f, h5gclose_f, &
+      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dget_space_f, &
+      h5dget_type_f, h5dset_extent_f, h5dvlen_reclaim_f, &
+      h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
+      h5adelete_f, h5aget_space_f, h5aget_type_f, &
+      h5screate_f, h5screate_simple_f, h5sclose_f, h5sget_simple_extent_ndims_f, &
+      h5sget_simple_extent_dims_f, h5sget_simple_extent_npoints_f, h5sselect_hyperslab_f, &
+      h5tcopy_f, h5tclose_f, h5tset_cset_f, h5tget_cset_f, h5tget_class_f, &
+      h5tget_size_f, h5tset_strpad_f, h5tis_variable_str_f, &
+      h5pcreate_f, h5pclose_f, h5pset_chunk_f, h5pset_fclose_degree_f, &
+      h5pset_link_creation_order_f, h5pset_create_inter_group_f, &
+      h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, &
+      H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_ACC_RDWR_F, H5F_CLOSE_STRONG_F, &
+      H5F_SCOPE_GLOBAL_F, H5P_FILE_ACCESS_F, H5P_FILE_CREATE_F, H5P_GROUP_CREATE_F, &
+      H5P_LINK_CREATE_F, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, H5P_CRT_ORDER_TRACKED_F, &
+      H5P_CRT_ORDER_INDEXED_F, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
+      H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_IEEE_F64LE, H5T_STD_I32LE, &
+      H5T_STRING, H5T_STRING_F, H5T_CSET_UTF8_F, H5T_STR_NULLPAD_F, &
+      H5I_DATASET_F, H5I_GROUP_F, H5I_ATTR_F, H5I_DATASPACE_F, H5I_DATATYPE_F, &
+      H5I_GENPROP_LST_F
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, set_error, has_error, stat_io
+   implicit none
+   private
+   public :: hdf5_file_t
+   public :: hdf5_init, hdf5_finalize
+   public :: hdf5_create_file, hdf5_open_file, hdf5_close_file, hdf5_flush
+   public :: hdf5_create_group, hdf5_exists
+   public :: hdf5_write_dataset, hdf5_write_attribute
+   public :: hdf5_read_dataset, hdf5_read_attribute
+   public :: hdf5_create_series, hdf5_append_column
+
+   !> An open HDF5 file.
+   type :: hdf5_file_t
+      integer(hid_t) :: id = -1                 !< HDF5 file identifier (< 0: not open)
+      character(len=:), allocatable :: path     !< file name as given, for messages
+   end type hdf5_file_t
+
+   !> Write a dataset: real 1-D or 2-D, integer 1-D, or a string (scalar).
+   interface hdf5_write_dataset
+      module procedure write_real_1d, write_real_2d, write_int_1d, write_string
+   end interface hdf5_write_dataset
+
+   !> Write (or replace) an attribute: string, real or integer scalar, real or integer 1-D.
+   interface hdf5_write_attribute
+      module procedure attr_write_string, attr_write_real, attr_write_int, &
+         attr_write_real_1d, attr_write_int_1d
+   end interface hdf5_write_attribute
+
+   !> Read a whole dataset into an allocatable of the matching rank.
+   interface hdf5_read_dataset
+      module procedure read_real_1d, read_real_2d, read_int_1d, read_string
+   end interface hdf5_read_dataset
+
+   !> Read an attribute.
+   interface hdf5_read_attribute
+      module procedure attr_read_string, attr_read_real, attr_read_int, &
+         attr_read_real_1d, attr_read_int_1d
+   end interface hdf5_read_attribute
+
+   interface
+      !> C strlen, to measure strings HDF5 returns as char *.
+      function c_strlen(s) bind(c, name='strlen') result(n)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: s          !< NUL-terminated C string
+         integer(c_size_t) :: n           !< its length without the NUL
+      end function c_strlen
+   end interface
+
+   !> Whether h5open_f has run and h5close_f has not. The HDF5 library is itself
+   !> process-wide state; this flag only mirrors it so that init/finalize can be
+   !> called any number of times (h5close_f twice is an error in HDF5).
+   logical :: library_open = .false.
+
+contains
+
+   ! ------------------------------------------------------------------ library
+
+   !> Initialise the HDF5 library (h5open_f) and switch off its error printing.
+   !> Safe to call many times; the file routines call it themselves.
+   subroutine hdf5_init(err)
+      type(error_t), intent(inout) :: err !< status
+      integer :: stat
+      if (library_open) return
+      call h5open_f(stat)
+      if (stat < 0) then
+         call set_error(err, stat_io, 'hdf5_init: cannot initialise the HDF5 library')
+         return
+      end if
+      call h5eset_auto_f(0, stat)
+      library_open = .true.
+   end subroutine hdf5_init
+
+   !> Close the HDF5 library (h5close_f). Safe to call many times or without hdf5_init;
+   !> optional: the HDF5 library also closes itself at program exit.
+   subroutine hdf5_finalize(err)
+      type(error_t), intent(inout) :: err !< status
+      integer :: stat
+      if (.not. library_open) return
+      call h5close_f(stat)
+      library_open = .false.
+      if (stat < 0) call set_error(err, stat_io, 'hdf5_finalize: cannot close HDF5')
+   end subroutine hdf5_finalize
+
+   ! ------------------------------------------------------------------ files
+
+   !> Create a file, truncating an existing one. The root group tracks link creation
+   !> order, so readers list groups in the order they were written.
+   subroutine hdf5_create_file(file, path, err)
+      type(hdf5_file_t), intent(out) :: file !< the open file
+      character(len=*), intent(in) :: path   !< file name
+      type(error_t), intent(inout) :: err    !< status
+      character(len=*), parameter :: where = 'hdf5_create_file'
+      integer(hid_t) :: fapl, fcpl
+      integer :: stat
+      file%path = path
+      if (has_error(err)) return
+      call hdf5_init(err)
+      if (has_error(err)) return
+      fapl = -1
+      fcpl = -1
+      blk: block
+         call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5pcreate_f(H5P_FILE_CREATE_F, fcpl, stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5pset_link_creation_order_f(fcpl, &
+            ior(H5P_CRT_ORDER_TRACKED_F, H5P_CRT_ORDER_INDEXED_F), stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, stat, &
+            creation_prp=fcpl, access_prp=fapl)
+         if (stat < 0) then
+            file%id = -1
+            call set_error(err, stat_io, where//': cannot create file '''//path//'''')
+         end if
+      end block blk
+      call release(fapl)
+      call release(fcpl)
+   end subroutine hdf5_create_file
+
+   !> Open an existing file, read-only unless `writable` is true.
+   subroutine hdf5_open_file(file, path, err, writable)
+      type(hdf5_file_t), intent(out) :: file     !< the open file
+      character(len=*), intent(in) :: path       !< file name
+      type(error_t), intent(inout) :: err        !< status
+      logical, intent(in), optional :: writable  !< open for reading and writing
+      character(len=*), parameter :: where = 'hdf5_open_file'
+      integer(hid_t) :: fapl
+      integer :: stat, mode
+      file%path = path
+      if (has_error(err)) return
+      call hdf5_init(err)
+      if (has_error(err)) return
+      mode = H5F_ACC_RDONLY_F
+      if (present(writable)) then
+         if (writable) mode = H5F_ACC_RDWR_F
+      end if
+      fapl = -1
+      blk: block
+         call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
+         if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         call h5fopen_f(path, mode, file%id, stat, access_prp=fapl)
+         if (stat < 0) then
+            file%id = -1
+            call set_error(err, stat_io, where//': cannot open HDF5 file '''//path//'''')
+         end if
+      end block blk
+      call release(fapl)
+   end subroutine hdf5_open_file
+
+   !> Close a file (everything still open in it is closed too). Acts even when err
+   !> already holds an error; does nothing for a file that is not open.
+   subroutine hdf5_close_file(file, err)
+      type(hdf5_file_t), intent(inout) :: file !< file to close
+      type(error_t), intent(inout) :: err      !< status
+      integer :: stat
+      if (file%id < 0) return
+      call h5fclose_f(file%id, stat)
+      file%id = -1
+      if (stat < 0) call set_error(err, stat_io, &
+         'hdf5_close_file: cannot close '''//file_name(file)//'''')
+   end subroutine hdf5_close_file
+
+   !> Flush a file's buffers to disk (for long runs written step by step).
+   subroutine hdf5_flush(file, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      type(error_t), intent(inout) :: err   !< status
+      integer :: stat
+      if (has_error(err)) return
+      call h5fflush_f(file%id, H5F_SCOPE_GLOBAL_F, stat)
+      if (failed(stat, 'flush', 'hdf5_flush', file, '/', err)) return
+   end subroutine hdf5_flush
+
+   ! ------------------------------------------------------------------ groups
+
+   !> Create a group and any missing parents ('/static/RISER'); existing ones are kept.
+   !> New groups track link creation order.
+   subroutine hdf5_create_group(file, path, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute group path
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_create_group'
+      integer(hid_t) :: gcpl, gid
+      integer :: stat, k
+      logical :: exists
+      if (has_error(err)) return
+      gcpl = -1
+      gid = -1
+      blk: block
+         call h5pcreate_f(H5P_GROUP_CREATE_F, gcpl, stat)
+         if (failed(stat, 'set up group', where, file, path, err)) exit blk
+         call h5pset_link_creation_order_f(gcpl, &
+            ior(H5P_CRT_ORDER_TRACKED_F, H5P_CRT_ORDER_INDEXED_F), stat)
+         if (failed(stat, 'set up group', where, file, path, err)) exit blk
+         do k = 2, len(path) + 1
+            if (k <= len(path)) then
+               if (path(k:k) /= '/') cycle
+            end if
+            if (path(k - 1:k - 1) == '/') cycle
+            call h5lexists_f(file%id, path(:k - 1), exists, stat)
+            if (failed(stat, 'look up', where, file, path(:k - 1), err)) exit blk
+            if (exists) cycle
+            call h5gcreate_f(file%id, path(:k - 1), gid, stat, gcpl_id=gcpl)
+            if (failed(stat, 'create group', where, file, path(:k - 1), err)) exit blk
+            call release(gid)
+         end do
+      end block blk
+      call release(gcpl)
+   end subroutine hdf5_create_group
+
+   !> Whether an object (group or dataset) exists at an absolute path.
+   subroutine hdf5_exists(file, path, exists, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute path
+      logical, intent(out) :: exists        !< the object exists
+      type(error_t), intent(inout) :: err   !< status
+      integer :: stat, k
+      exists = .false.
+      if (has_error(err)) return
+      exists = .true.
+      do k = 2, len(path) + 1
+         if (k <= len(path)) then
+            if (path(k:k) /= '/') cycle
+         end if
+         if (path(k - 1:k - 1) == '/') cycle
+         call h5lexists_f(file%id, path(:k - 1), exists, stat)
+         if (failed(stat, 'look up', 'hdf5_exists', file, path(:k - 1), err)) exists = .false.
+         if (.not. exists) return
+      end do
+   end subroutine hdf5_exists
+
+   ! ------------------------------------------------------------------ dataset writers
+
+   !> Write a real 1-D dataset.
+   subroutine write_real_1d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      real(wp), intent(in) :: x(:)          !< values
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_real_1d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      dims = shape(x, kind=hsize_t)
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      if (.not. has_error(err)) then
+         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
+         call check(stat, 'write dataset', where, file, path, err)
+      end if
+      call release(dset)
+   end subroutine write_real_1d
+
+   !> Write a real 2-D dataset; x(m, n) appears in h5py as shape (n, m).
+   subroutine write_real_2d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      real(wp), intent(in) :: x(:, :)       !< values
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_real_2d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: stat
+      if (has_error(err)) return
+      dims = shape(x, kind=hsize_t)
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      if (.not. has_error(err)) then
+         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
+         call check(stat, 'write dataset', where, file, path, err)
+      end if
+      call release(dset)
+   end subroutine write_real_2d
+
+   !> Write an integer 1-D dataset.
+   subroutine write_int_1d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      integer, intent(in) :: x(:)           !< values
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_int_1d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      dims = shape(x, kind=hsize_t)
+      call create_dataset(file, path, H5T_STD_I32LE, dims, dset, where, err)
+      if (.not. has_error(err)) then
+         call h5dwrite_f(dset, H5T_NATIVE_INTEGER, x, dims, stat)
+         call check(stat, 'write dataset', where, file, path, err)
+      end if
+      call release(dset)
+   end subroutine write_int_1d
+
+   !> Write a string as a scalar variable-length UTF-8 dataset (any length, newlines kept).
+   subroutine write_string(file, path, text, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      character(len=*), intent(in) :: text  !< the text
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_string'
+      character(kind=c_char), allocatable, target :: buf(:)
+      type(c_ptr), target :: ptr(1)
+      integer(hid_t) :: dset, stype
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      if (has_error(err)) return
+      dset = -1
+      stype = -1
+      blk: block
+         call vlen_string_type(stype, stat)
+         if (failed(stat, 'set up string', where, file, path, err)) exit blk
+         call create_dataset(file, path, stype, dims, dset, where, err)
+         if (has_error(err)) exit blk
+         call c_chars(text, buf)
+         ptr(1) = c_loc(buf)
+         call h5dwrite_f(dset, stype, c_loc(ptr), stat)
+         if (failed(stat, 'write dataset', where, file, path, err)) exit blk
+      end block blk
+      call release(dset)
+      call release(stype)
+   end subroutine write_string
+
+   ! ------------------------------------------------------------------ time series
+
+   !> Create an empty extendible real dataset of n_cols rows in Fortran order (h5py
+   !> shape (0, n_cols)), chunked, to be grown one column (one h5py row, e.g. one time
+   !> step) at a time with hdf5_append_column.
+   subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps)
+      type(hdf5_file_t), intent(in) :: file         !< open file
+      character(len=*), intent(in) :: path          !< absolute dataset path
+      integer, intent(in) :: n_cols                 !< values per step (h5py columns)
+      type(error_t), intent(inout) :: err           !< status
+      integer, intent(in), optional :: chunk_steps  !< steps per chunk; default ~64 KiB
+      character(len=*), parameter :: where = 'hdf5_create_series'
+      integer(hid_t) :: dset, dcpl
+      integer(hsize_t) :: dims(2), maxdims(2), chunk(2)
+      integer :: stat
+      if (has_error(err)) return
+      if (n_cols < 1) then
+         call set_error(err, stat_io, where//': no columns for '''//path//''' in '''// &
+            file_name(file)//'''')
+         return
+      end if
+      dims = [integer(hsize_t) :: n_cols, 0]
+      maxdims = [integer(hsize_t) :: n_cols, H5S_UNLIMITED_F]
+      chunk = [integer(hsize_t) :: n_cols, max(1, 8192/n_cols)]
+      if (present(chunk_steps)) chunk(2) = int(max(1, chunk_steps), hsize_t)
+      dset = -1
+      dcpl = -1
+      blk: block
+         call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call h5pset_chunk_f(dcpl, 2, chunk, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err, &
+            maxdims=maxdims, dcpl=dcpl)
+      end block blk
+      call release(dset)
+      call release(dcpl)
+   end subroutine hdf5_create_series
+
+   !> Append one column (one h5py row) to a dataset made by hdf5_create_series.
+   subroutine hdf5_append_column(file, path, column, err)
+      type(hdf5_file_t), intent(in) :: file !< open file, writable
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      real(wp), intent(in) :: column(:)     !< values of the new step, size n_cols
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_append_column'
+      integer(hid_t) :: dset, fspace, mspace
+      integer(hsize_t) :: dims(2), maxdims(2), mdims(1)
+      integer :: stat
+      if (has_error(err)) return
+      dset = -1
+      fspace = -1
+      mspace = -1
+      blk: block
+         call open_dataset(file, path, 2, dset, dims, where, err)
+         if (has_error(err)) exit blk
+         if (dims(1) /= size(column, kind=hsize_t)) then
+            call set_error(err, stat_io, where//': column of wrong size for '''//path// &
+               ''' in '''//file_name(file)//'''')
+            exit blk
+         end if
+         call h5dset_extent_f(dset, [dims(1), dims(2) + 1], stat)
+         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
+         call h5dget_space_f(dset, fspace, stat)
+         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
+         call h5sget_simple_extent_dims_f(fspace, dims, maxdims, stat)
+         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
+         call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, &
+            [integer(hsize_t) :: 0, dims(2) - 1], [dims(1), 1_hsize_t], stat)
+         if (failed(stat, 'select in dataset', where, file, path, err)) exit blk
+         mdims = [dims(1)]
+         call h5screate_simple_f(1, mdims, mspace, stat)
+         if (failed(stat, 'select in dataset', where, file, path, err)) exit blk
+         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, column, mdims, stat, &
+            mem_space_id=mspace, file_space_id=fspace)
+         if (failed(stat, 'write dataset', where, file, path, err)) exit blk
+      end block blk
+      call release(mspace)
+      call release(fspace)
+      call release(dset)
+   end subroutine hdf5_append_column
+
+   ! ------------------------------------------------------------------ attribute writers
+
+   !> Write a string attribute (variable-length UTF-8 scalar).
+   subroutine attr_write_string(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path ('/' for the root group)
+      character(len=*), intent(in) :: name  !< attribute name
+      character(len=*), intent(in) :: value !< the text
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_string'
+      character(kind=c_char), allocatable, target :: buf(:)
+      type(c_ptr), target :: ptr(1)
+      integer(hid_t) :: oid, aid, stype
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      if (has_error(err)) return
+      oid = -1
+      aid = -1
+      stype = -1
+      blk: block
+         call vlen_string_type(stype, stat)
+         if (failed(stat, 'set up string', where, file, obj//'@'//name, err)) exit blk
+         call create_attribute(file, obj, name, stype, dims, oid, aid, where, err)
+         if (has_error(err)) exit blk
+         call c_chars(value, buf)
+         ptr(1) = c_loc(buf)
+         call h5awrite_f(aid, stype, c_loc(ptr), stat)
+         if (failed(stat, 'write attribute', where, file, obj//'@'//name, err)) exit blk
+      end block blk
+      call release(aid)
+      call release(oid)
+      call release(stype)
+   end subroutine attr_write_string
+
+   !> Write a real scalar attribute.
+   subroutine attr_write_real(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path ('/' for the root group)
+      character(len=*), intent(in) :: name  !< attribute name
+      real(wp), intent(in) :: value         !< value
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_real'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      if (has_error(err)) return
+      call create_attribute(file, obj, name, H5T_IEEE_F64LE, dims, oid, aid, where, err)
+      if (.not. has_error(err)) then
+         call h5awrite_f(aid, H5T_NATIVE_DOUBLE, value, dims, stat)
+         call check(stat, 'write attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_write_real
+
+   !> Write an integer scalar attribute.
+   subroutine attr_write_int(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path ('/' for the root group)
+      character(len=*), intent(in) :: name  !< attribute name
+      integer, intent(in) :: value          !< value
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_int'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      if (has_error(err)) return
+      call create_attribute(file, obj, name, H5T_STD_I32LE, dims, oid, aid, where, err)
+      if (.not. has_error(err)) then
+         call h5awrite_f(aid, H5T_NATIVE_INTEGER, value, dims, stat)
+         call check(stat, 'write attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_write_int
+
+   !> Write a real 1-D attribute.
+   subroutine attr_write_real_1d(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path ('/' for the root group)
+      character(len=*), intent(in) :: name  !< attribute name
+      real(wp), intent(in) :: value(:)      !< values
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_real_1d'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      dims = shape(value, kind=hsize_t)
+      call create_attribute(file, obj, name, H5T_IEEE_F64LE, dims, oid, aid, where, err)
+      if (.not. has_error(err)) then
+         call h5awrite_f(aid, H5T_NATIVE_DOUBLE, value, dims, stat)
+         call check(stat, 'write attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_write_real_1d
+
+   !> Write an integer 1-D attribute.
+   subroutine attr_write_int_1d(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path ('/' for the root group)
+      character(len=*), intent(in) :: name  !< attribute name
+      integer, intent(in) :: value(:)       !< values
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_int_1d'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      dims = shape(value, kind=hsize_t)
+      call create_attribute(file, obj, name, H5T_STD_I32LE, dims, oid, aid, where, err)
+      if (.not. has_error(err)) then
+         call h5awrite_f(aid, H5T_NATIVE_INTEGER, value, dims, stat)
+         call check(stat, 'write attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_write_int_1d
+
+   ! ------------------------------------------------------------------ dataset readers
+
+   !> Read a real 1-D dataset.
+   subroutine read_real_1d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file      !< open file
+      character(len=*), intent(in) :: path       !< absolute dataset path
+      real(wp), allocatable, intent(out) :: x(:) !< values
+      type(error_t), intent(inout) :: err        !< status
+      character(len=*), parameter :: where = 'hdf5_read_real_1d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      call open_dataset(file, path, 1, dset, dims, where, err)
+      if (.not. has_error(err)) then
+         allocate (x(dims(1)))
+         call h5dread_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
+         if (failed(stat, 'read dataset', where, file, path, err)) deallocate (x)
+      end if
+      call release(dset)
+   end subroutine read_real_1d
+
+   !> Read a real 2-D dataset; h5py shape (n, m) arrives as x(m, n).
+   subroutine read_real_2d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file         !< open file
+      character(len=*), intent(in) :: path          !< absolute dataset path
+      real(wp), allocatable, intent(out) :: x(:, :) !< values
+      type(error_t), intent(inout) :: err           !< status
+      character(len=*), parameter :: where = 'hdf5_read_real_2d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: stat
+      if (has_error(err)) return
+      call open_dataset(file, path, 2, dset, dims, where, err)
+      if (.not. has_error(err)) then
+         allocate (x(dims(1), dims(2)))
+         call h5dread_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
+         if (failed(stat, 'read dataset', where, file, path, err)) deallocate (x)
+      end if
+      call release(dset)
+   end subroutine read_real_2d
+
+   !> Read an integer 1-D dataset.
+   subroutine read_int_1d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file     !< open file
+      character(len=*), intent(in) :: path      !< absolute dataset path
+      integer, allocatable, intent(out) :: x(:) !< values
+      type(error_t), intent(inout) :: err       !< status
+      character(len=*), parameter :: where = 'hdf5_read_int_1d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      call open_dataset(file, path, 1, dset, dims, where, err)
+      if (.not. has_error(err)) then
+         allocate (x(dims(1)))
+         call h5dread_f(dset, H5T_NATIVE_INTEGER, x, dims, stat)
+         if (failed(stat, 'read dataset', where, file, path, err)) deallocate (x)
+      end if
+      call release(dset)
+   end subroutine read_int_1d
+
+   !> Read a scalar string dataset (variable or fixed length).
+   subroutine read_string(file, path, text, err)
+      type(hdf5_file_t), intent(in) :: file                  !< open file
+      character(len=*), intent(in) :: path                   !< absolute dataset path
+      character(len=:), allocatable, intent(out) :: text     !< the text
+      type(error_t), intent(inout) :: err                    !< status
+      character(len=*), parameter :: where = 'hdf5_read_string'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(0)
+      text = ''
+      if (has_error(err)) return
+      call open_dataset(file, path, 0, dset, dims, where, err)
+      if (.not. has_error(err)) then
+         call read_string_from(file, dset, .false., path, text, where, err)
+      end if
+      call release(dset)
+   end subroutine read_string
+
+   ! ------------------------------------------------------------------ attribute readers
+
+   !> Read a string attribute (variable or fixed length).
+   subroutine attr_read_string(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file               !< open file
+      character(len=*), intent(in) :: obj                 !< object path
+      character(len=*), intent(in) :: name                !< attribute name
+      character(len=:), allocatable, intent(out) :: value !< the text
+      type(error_t), intent(inout) :: err                 !< status
+      character(len=*), parameter :: where = 'hdf5_read_attribute_string'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(0)
+      value = ''
+      if (has_error(err)) return
+      call open_attribute(file, obj, name, 0, oid, aid, dims, where, err)
+      if (.not. has_error(err)) then
+         call read_string_from(file, aid, .true., obj//'@'//name, value, where, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_read_string
+
+   !> Read a real scalar attribute.
+   subroutine attr_read_real(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path
+      character(len=*), intent(in) :: name  !< attribute name
+      real(wp), intent(out) :: value        !< value (0 on error)
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_read_attribute_real'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      value = 0.0_wp
+      if (has_error(err)) return
+      call open_attribute(file, obj, name, 0, oid, aid, dims, where, err)
+      if (.not. has_error(err)) then
+         call h5aread_f(aid, H5T_NATIVE_DOUBLE, value, dims, stat)
+         call check(stat, 'read attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_read_real
+
+   !> Read an integer scalar attribute.
+   subroutine attr_read_int(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: obj   !< object path
+      character(len=*), intent(in) :: name  !< attribute name
+      integer, intent(out) :: value         !< value (0 on error)
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_read_attribute_int'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      value = 0
+      if (has_error(err)) return
+      call open_attribute(file, obj, name, 0, oid, aid, dims, where, err)
+      if (.not. has_error(err)) then
+         call h5aread_f(aid, H5T_NATIVE_INTEGER, value, dims, stat)
+         call check(stat, 'read attribute', where, file, obj//'@'//name, err)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_read_int
+
+   !> Read a real 1-D attribute.
+   subroutine attr_read_real_1d(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file          !< open file
+      character(len=*), intent(in) :: obj            !< object path
+      character(len=*), intent(in) :: name           !< attribute name
+      real(wp), allocatable, intent(out) :: value(:) !< values
+      type(error_t), intent(inout) :: err            !< status
+      character(len=*), parameter :: where = 'hdf5_read_attribute_real_1d'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      call open_attribute(file, obj, name, 1, oid, aid, dims, where, err)
+      if (.not. has_error(err)) then
+         allocate (value(dims(1)))
+         call h5aread_f(aid, H5T_NATIVE_DOUBLE, value, dims, stat)
+         if (failed(stat, 'read attribute', where, file, obj//'@'//name, err)) &
+            deallocate (value)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_read_real_1d
+
+   !> Read an integer 1-D attribute.
+   subroutine attr_read_int_1d(file, obj, name, value, err)
+      type(hdf5_file_t), intent(in) :: file         !< open file
+      character(len=*), intent(in) :: obj           !< object path
+      character(len=*), intent(in) :: name          !< attribute name
+      integer, allocatable, intent(out) :: value(:) !< values
+      type(error_t), intent(inout) :: err           !< status
+      character(len=*), parameter :: where = 'hdf5_read_attribute_int_1d'
+      integer(hid_t) :: oid, aid
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      if (has_error(err)) return
+      call open_attribute(file, obj, name, 1, oid, aid, dims, where, err)
+      if (.not. has_error(err)) then
+         allocate (value(dims(1)))
+         call h5aread_f(aid, H5T_NATIVE_INTEGER, value, dims, stat)
+         if (failed(stat, 'read attribute', where, file, obj//'@'//name, err)) &
+            deallocate (value)
+      end if
+      call release(aid)
+      call release(oid)
+   end subroutine attr_read_int_1d
+
+   ! ------------------------------------------------------------------ internals
+
+   !> Map an HDF5 status to stat_io: err set when stat < 0.
+   subroutine check(stat, action, where, file, object, err)
+      integer, intent(in) :: stat              !< HDF5 status (< 0: failure)
+      character(len=*), intent(in) :: action   !< what was attempted ('write dataset')
+      character(len=*), intent(in) :: where    !< routine name
+      type(hdf5_file_t), intent(in) :: file    !< file, for its name
+      character(len=*), intent(in) :: object   !< object path (or path@attribute)
+      type(error_t), intent(inout) :: err      !< status to fill
+      if (stat < 0) call set_error(err, stat_io, where//': cannot '//action//' '''// &
+         object//''' in '''//file_name(file)//'''')
+   end subroutine check
+
+   !> As check, and true when stat < 0 (for `if (failed(...)) exit blk`).
+   logical function failed(stat, action, where, file, object, err)
+      integer, intent(in) :: stat              !< HDF5 status (< 0: failure)
+      character(len=*), intent(in) :: action   !< what was attempted ('write dataset')
+      character(len=*), intent(in) :: where    !< routine name
+      type(hdf5_file_t), intent(in) :: file    !< file, for its name
+      character(len=*), intent(in) :: object   !< object path (or path@attribute)
+      type(error_t), intent(inout) :: err      !< status to fill
+      failed = stat < 0
+      call check(stat, action, where, file, object, err)
+   end function failed
+
+   !> The file name for messages.
+   pure function file_name(file) result(name)
+      type(hdf5_file_t), intent(in) :: file  !< file handle
+      character(len=:), allocatable :: name  !< its path, or '?' when unknown
+      if (allocated(file%path)) then
+         name = file%path
+      else
+         name = '?'
+      end if
+   end function file_name
+
+   !> Close any HDF5 identifier by its kind and mark it closed (-1). Ignores id < 0.
+   subroutine release(id)
+      integer(hid_t), intent(inout) :: id !< identifier to close
+      integer :: itype, stat
+      if (id < 0) return
+      call h5iget_type_f(id, itype, stat)
+      if (stat >= 0) then
+         if (itype == H5I_DATASET_F) then
+            call h5dclose_f(id, stat)
+         else if (itype == H5I_GROUP_F) then
+            call h5gclose_f(id, stat)
+         else if (itype == H5I_ATTR_F) then
+            call h5aclose_f(id, stat)
+         else if (itype == H5I_DATASPACE_F) then
+            call h5sclose_f(id, stat)
+         else if (itype == H5I_DATATYPE_F) then
+            call h5tclose_f(id, stat)
+         else if (itype == H5I_GENPROP_LST_F) then
+            call h5pclose_f(id, stat)
+         else
+            call h5oclose_f(id, stat)
+         end if
+      end if
+      id = -1
+   end subroutine release
+
+   !> A new variable-length UTF-8 string datatype (caller releases it).
+   subroutine vlen_string_type(stype, stat)
+      integer(hid_t), intent(out) :: stype !< datatype identifier
+      integer, intent(out) :: stat         !< HDF5 status
+      call h5tcopy_f(H5T_STRING, stype, stat)
+      if (stat < 0) return
+      call h5tset_cset_f(stype, H5T_CSET_UTF8_F, stat)
+   end subroutine vlen_string_type
+
+   !> Copy a Fortran string into a NUL-terminated C character array.
+   pure subroutine c_chars(text, buf)
+      character(len=*), intent(in) :: text                        !< text
+      character(kind=c_char), allocatable, intent(out) :: buf(:)  !< text + NUL
+      integer :: i
+      allocate (buf(len(text) + 1))
+      do i = 1, len(text)
+         buf(i) = text(i:i)
+      end do
+      buf(len(text) + 1) = c_null_char
+   end subroutine c_chars
+
+   !> Create a dataspace of shape dims (size 0: scalar) and a dataset on it, creating
+   !> missing parent groups. dset < 0 on failure.
+   subroutine create_dataset(file, path, ftype, dims, dset, where, err, maxdims, dcpl)
+      type(hdf5_file_t), intent(in) :: file                   !< open file
+      character(len=*), intent(in) :: path                    !< absolute dataset path
+      integer(hid_t), intent(in) :: ftype                     !< datatype in the file
+      integer(hsize_t), intent(in) :: dims(:)                 !< shape (Fortran order)
+      integer(hid_t), intent(out) :: dset                     !< new dataset
+      character(len=*), intent(in) :: where                   !< calling routine
+      type(error_t), intent(inout) :: err                     !< status
+      integer(hsize_t), intent(in), optional :: maxdims(:)    !< maximum shape
+      integer(hid_t), intent(in), optional :: dcpl            !< creation property list
+      integer(hid_t) :: space, lcpl
+      integer :: stat
+      dset = -1
+      space = -1
+      lcpl = -1
+      blk: block
+         if (size(dims) == 0) then
+            call h5screate_f(H5S_SCALAR_F, space, stat)
+         else
+            call h5screate_simple_f(size(dims), dims, space, stat, maxdims)
+         end if
+         if (failed(stat, 'create dataspace for', where, file, path, err)) exit blk
+         call h5pcreate_f(H5P_LINK_CREATE_F, lcpl, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call h5pset_create_inter_group_f(lcpl, 1, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call h5dcreate_f(file%id, path, ftype, space, dset, stat, dcpl_id=dcpl, &
+            lcpl_id=lcpl)
+         if (stat < 0) dset = -1
+         if (failed(stat, 'create dataset', where, file, path, err)) exit blk
+      end block blk
+      call release(space)
+      call release(lcpl)
+   end subroutine create_dataset
+
+   !> Open a dataset and return its shape; fails unless its rank is `rank`
+   !> (rank 0: a scalar or a single element).
+   subroutine open_dataset(file, path, rank, dset, dims, where, err)
+      type(hdf5_file_t), intent(in) :: file     !< open file
+      character(len=*), intent(in) :: path      !< absolute dataset path
+      integer, intent(in) :: rank               !< expected rank
+      integer(hid_t), intent(out) :: dset       !< open dataset (-1 on failure)
+      integer(hsize_t), intent(out) :: dims(:)  !< shape, size rank
+      character(len=*), intent(in) :: where     !< calling routine
+      type(error_t), intent(inout) :: err       !< status
+      integer(hid_t) :: space
+      integer :: stat
+      space = -1
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat < 0) dset = -1
+      if (failed(stat, 'open dataset', where, file, path, err)) return
+      call h5dget_space_f(dset, space, stat)
+      if (.not. failed(stat, 'read shape of', where, file, path, err)) then
+         call space_shape(space, rank, dims, stat)
+         call check(stat, 'use (wrong rank)', where, file, path, err)
+      end if
+      call release(space)
+      if (has_error(err)) call release(dset)
+   end subroutine open_dataset
+
+   !> Open an object and an attribute of it; return the attribute's shape; fails unless
+   !> its rank is `rank` (0: scalar or single element).
+   subroutine open_attribute(file, obj, name, rank, oid, aid, dims, where, err)
+      type(hdf5_file_t), intent(in) :: file     !< open file
+      character(len=*), intent(in) :: obj       !< object path
+      character(len=*), intent(in) :: name      !< attribute name
+      integer, intent(in) :: rank               !< expected rank
+      integer(hid_t), intent(out) :: oid        !< open object (-1 on failure)
+      integer(hid_t), intent(out) :: aid        !< open attribute (-1 on failure)
+      integer(hsize_t), intent(out) :: dims(:)  !< shape, size rank
+      character(len=*), intent(in) :: where     !< calling routine
+      type(error_t), intent(inout) :: err       !< status
+      integer(hid_t) :: space
+      integer :: stat
+      aid = -1
+      space = -1
+      call h5oopen_f(file%id, obj, oid, stat)
+      if (stat < 0) oid = -1
+      if (failed(stat, 'open object', where, file, obj, err)) return
+      blk: block
+         call h5aopen_f(oid, name, aid, stat)
+         if (stat < 0) aid = -1
+         if (failed(stat, 'open attribute', where, file, obj//'@'//name, err)) exit blk
+         call h5aget_space_f(aid, space, stat)
+         if (failed(stat, 'read shape of', where, file, obj//'@'//name, err)) exit blk
+         call space_shape(space, rank, dims, stat)
+         if (failed(stat, 'use (wrong rank)', where, file, obj//'@'//name, err)) exit blk
+      end block blk
+      call release(space)
+      if (has_error(err)) then
+         call release(aid)
+         call release(oid)
+      end if
+   end subroutine open_attribute
+
+   !> Shape of a dataspace, checked against the expected rank (stat = -1 if wrong).
+   subroutine space_shape(space, rank, dims, stat)
+      integer(hid_t), intent(in) :: space       !< dataspace
+      integer, intent(in) :: rank               !< expected rank (0: one element)
+      integer(hsize_t), intent(out) :: dims(:)  !< shape, size rank
+      integer, intent(out) :: stat              !< 0, or -1 on failure / wrong rank
+      integer(hsize_t) :: maxdims(max(rank, 1))
+      integer(hsize_t) :: npoints
+      integer :: ndims
+      call h5sget_simple_extent_ndims_f(space, ndims, stat)
+      if (stat < 0) return
+      if (rank == 0) then
+         call h5sget_simple_extent_npoints_f(space, npoints, stat)
+         if (stat < 0) return
+         if (npoints /= 1) stat = -1
+         return
+      end if
+      if (ndims /= rank) then
+         stat = -1
+         return
+      end if
+      call h5sget_simple_extent_dims_f(space, dims, maxdims, stat)
+      if (stat >= 0) stat = 0
+   end subroutine space_shape
+
+   !> Read a single string from an open dataset or attribute (variable or fixed length).
+   subroutine read_string_from(file, id, is_attr, object, text, where, err)
+      type(hdf5_file_t), intent(in) :: file              !< open file, for messages
+      integer(hid_t), intent(in) :: id                   !< dataset or attribute
+      logical, intent(in) :: is_attr                     !< id is an attribute
+      character(len=*), intent(in) :: object             !< its name, for messages
+      character(len=:), allocatable, intent(inout) :: text !< the text
+      character(len=*), intent(in) :: where              !< calling routine
+      type(error_t), intent(inout) :: err                !< status
+      character(kind=c_char), allocatable, target :: fixed(:)
+      character(kind=c_char), pointer :: chars(:)
+      type(c_ptr), target :: ptr(1)
+      type(c_ptr) :: bufp
+      integer(hid_t) :: ftype, mtype, space
+      integer(size_t) :: nbytes
+      integer :: stat, tclass, cset, i, n
+      logical :: is_vlen
+      ftype = -1
+      mtype = -1
+      space = -1
+      blk: block
+         if (is_attr) then
+            call h5aget_type_f(id, ftype, stat)
+         else
+            call h5dget_type_f(id, ftype, stat)
+         end if
+         if (failed(stat, 'read type of', where, file, object, err)) exit blk
+         call h5tget_class_f(ftype, tclass, stat)
+         if (stat >= 0 .and. tclass /= H5T_STRING_F) stat = -1
+         if (failed(stat, 'read as string', where, file, object, err)) exit blk
+         call h5tis_variable_str_f(ftype, is_vlen, stat)
+         if (failed(stat, 'read type of', where, file, object, err)) exit blk
+         call h5tget_cset_f(ftype, cset, stat)
+         if (failed(stat, 'read type of', where, file, object, err)) exit blk
+         if (is_vlen) then
+            call h5tcopy_f(H5T_STRING, mtype, stat)
+         else
+            call h5tcopy_f(ftype, mtype, stat)
+         end if
+         if (failed(stat, 'read type of', where, file, object, err)) exit blk
+         call h5tset_cset_f(mtype, cset, stat)
+         if (failed(stat, 'read type of', where, file, object, err)) exit blk
+         if (is_vlen) then
+            ptr(1) = c_null_ptr
+            bufp = c_loc(ptr)
+            if (is_attr) then
+               call h5aread_f(id, mtype, bufp, stat)
+               if (stat >= 0) call h5aget_space_f(id, space, stat)
+            else
+               call h5dread_f(id, mtype, bufp, stat)
+               if (stat >= 0) call h5dget_space_f(id, space, stat)
+            end if
+            if (failed(stat, 'read', where, file, object, err)) exit blk
+            n = 0
+            if (c_associated(ptr(1))) n = int(c_strlen(ptr(1)))
+            if (allocated(text)) deallocate (text)
+            allocate (character(len=n) :: text)
+            if (n > 0) then
+               call c_f_pointer(ptr(1), chars, [n])
+               do i = 1, n
+                  text(i:i) = chars(i)
+               end do
+            end if
+            call h5dvlen_reclaim_f(mtype, space, H5P_DEFAULT_F, bufp, stat)
+         else
+            call h5tget_size_f(ftype, nbytes, stat)
+            if (failed(stat, 'read type of', where, file, object, err)) exit blk
+            call h5tset_strpad_f(mtype, H5T_STR_NULLPAD_F, stat)
+            if (failed(stat, 'read type of', where, file, object, err)) exit blk
+            allocate (fixed(max(nbytes, 1_size_t)))
+            fixed = c_null_char
+            bufp = c_loc(fixed)
+            if (is_attr) then
+               call h5aread_f(id, mtype, bufp, stat)
+            else
+               call h5dread_f(id, mtype, bufp, stat)
+            end if
+            if (failed(stat, 'read', where, file, object, err)) exit blk
+            n = int(nbytes)
+            do i = 1, int(nbytes)
+               if (fixed(i) == c_null_char) then
+                  n = i - 1
+                  exit
+               end if
+            end do
+            if (allocated(text)) deallocate (text)
+            allocate (character(len=n) :: text)
+            do i = 1, n
+               text(i:i) = fixed(i)
+            end do
+         end if
+      end block blk
+      call release(space)
+      call release(mtype)
+      call release(ftype)
+   end subroutine read_string_from
+
+   !> Open an object, replace any attribute of that name and create it with file type
+   !> ftype and shape dims (size 0: scalar). oid/aid < 0 on failure.
+   subroutine create_attribute(file, obj, name, ftype, dims, oid, aid, where, err)
+      type(hdf5_file_t), intent(in) :: file   !< open file
+      character(len=*), intent(in) :: obj     !< object path
+      character(len=*), intent(in) :: name    !< attribute name
+      integer(hid_t), intent(in) :: ftype     !< datatype in the file
+      integer(hsize_t), intent(in) :: dims(:) !< shape
+      integer(hid_t), intent(out) :: oid      !< open object
+      integer(hid_t), intent(out) :: aid      !< new attribute
+      character(len=*), intent(in) :: where   !< calling routine
+      type(error_t), intent(inout) :: err     !< status
+      integer(hid_t) :: space
+      integer :: stat
+      logical :: exists
+      oid = -1
+      aid = -1
+      space = -1
+      blk: block
+         call h5oopen_f(file%id, obj, oid, stat)
+         if (stat < 0) oid = -1
+         if (failed(stat, 'open object', where, file, obj, err)) exit blk
+         call h5aexists_f(oid, name, exists, stat)
+         if (failed(stat, 'look up attribute', where, file, obj//'@'//name, err)) exit blk
+         if (exists) then
+            call h5adelete_f(oid, name, stat)
+            if (failed(stat, 'replace attribute', where, file, obj//'@'//name, err)) &
+               exit blk
+         end if
+         if (size(dims) == 0) then
+            call h5screate_f(H5S_SCALAR_F, space, stat)
+         else
+            call h5screate_simple_f(size(dims), dims, space, stat)
+         end if
+         if (failed(stat, 'create dataspace for', where, file, obj//'@'//name, err)) &
+            exit blk
+         call h5acreate_f(oid, name, ftype, space, aid, stat)
+         if (stat < 0) aid = -1
+         if (failed(stat, 'create attribute', where, file, obj//'@'//name, err)) exit blk
+      end block blk
+      call release(space)
+   end subroutine create_attribute
+
+end module rodyn_hdf5

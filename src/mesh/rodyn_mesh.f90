@@ -1,0 +1,271 @@
+!> Finite element mesh of the lines: nodes, elements, arc lengths, section stiffness,
+!> the stress-free strains at the integration points and the initial configuration
+!> (formulation note section 2; section 5 for the catenary start).
+!>
+!> Nodes of all lines are numbered consecutively, line after line, each line from
+!> end A (S = 0) to end B (S = L); an element of order p has p+1 equally spaced nodes.
+module rodyn_mesh
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, set_error, stat_input, has_error
+   use rodyn_model, only: model_t, section_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
+                          bc_position, end_a, end_b
+   use rodyn_state, only: state_t, state_allocate
+   use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
+   use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point
+   use rodyn_rod_element, only: rod_element_strains
+   use rodyn_shape, only: max_order, max_nen
+   implicit none
+   private
+   public :: mesh_t, mesh_build, mesh_node, mesh_section_stiffness
+
+   !> The discretised model.
+   type :: mesh_t
+      integer :: n_lines = 0
+      integer :: n_nodes = 0
+      integer :: n_elements = 0
+      integer :: max_nen = 2                   !< most nodes in one element
+      ! per line
+      integer, allocatable :: line_first_node(:)  !< (nl) global number of node A
+      integer, allocatable :: line_n_nodes(:)     !< (nl)
+      integer, allocatable :: line_first_elem(:)  !< (nl)
+      integer, allocatable :: line_order(:)       !< (nl) element order p
+      real(wp), allocatable :: line_c(:, :)       !< (6, nl) diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), allocatable :: line_mass(:)       !< (nl) mass per length [kg/m]
+      logical, allocatable :: line_catenary(:)    !< (nl) started as a catenary (held at both ends)
+      ! per element
+      integer, allocatable :: elem_line(:)        !< (ne)
+      integer, allocatable :: elem_nodes(:, :)    !< (max_nen, ne) global node numbers
+      real(wp), allocatable :: elem_le(:)         !< (ne) unstretched length [m]
+      real(wp), allocatable :: elem_s0(:)         !< (ne) arc length of its first node [m]
+      real(wp), allocatable :: eps0(:, :, :)      !< (6, max_order, ne) stress-free strains
+      ! per node
+      integer, allocatable :: node_line(:)        !< (nn)
+      real(wp), allocatable :: node_s(:)          !< (nn) unstretched arc length [m]
+   end type mesh_t
+
+contains
+
+   !> Global node number of node k (or end_a / end_b) of line l.
+   pure integer function mesh_node(mesh, l, k)
+      type(mesh_t), intent(in) :: mesh !< mesh
+      integer, intent(in) :: l         !< line index
+      integer, intent(in) :: k         !< node along the line, or end_a / end_b
+      if (k == end_b) then
+         mesh_node = mesh%line_first_node(l) + mesh%line_n_nodes(l) - 1
+      else
+         mesh_node = mesh%line_first_node(l) + k - 1
+      end if
+   end function mesh_node
+
+   !> Section stiffness diag(GA1, GA2, EA, EI1, EI2, GJ) (note section 1).
+   pure function mesh_section_stiffness(sec) result(c)
+      type(section_t), intent(in) :: sec !< section
+      real(wp) :: c(6)
+      c = [sec%ga1, sec%ga2, sec%ea, sec%ei1, sec%ei2, sec%gj]
+   end function mesh_section_stiffness
+
+   !> Build the mesh and the initial configuration from the model.
+   subroutine mesh_build(model, mesh, state, err)
+      type(model_t), intent(in) :: model     !< validated model
+      type(mesh_t), intent(out) :: mesh      !< mesh
+      type(state_t), intent(inout) :: state  !< initial configuration
+      type(error_t), intent(inout) :: err    !< status
+      integer :: l, nl, nn, ne, p, e, a, k, node, el
+      nl = size(model%lines)
+      mesh%n_lines = nl
+      allocate (mesh%line_first_node(nl), mesh%line_n_nodes(nl), mesh%line_first_elem(nl), &
+                mesh%line_order(nl), mesh%line_c(6, nl), mesh%line_mass(nl), &
+                mesh%line_catenary(nl))
+      nn = 0
+      ne = 0
+      mesh%max_nen = 2
+      do l = 1, nl
+         p = model%lines(l)%order
+         mesh%line_order(l) = p
+         mesh%line_first_node(l) = nn + 1
+         mesh%line_first_elem(l) = ne + 1
+         mesh%line_n_nodes(l) = model%lines(l)%n_elements*p + 1
+         mesh%line_c(:, l) = mesh_section_stiffness(model%sections(model%lines(l)%section))
+         mesh%line_mass(l) = model%sections(model%lines(l)%section)%mass
+         mesh%line_catenary(l) = held_in_position(model, l, end_a) .and. &
+                                 held_in_position(model, l, end_b)
+         nn = nn + mesh%line_n_nodes(l)
+         ne = ne + model%lines(l)%n_elements
+         mesh%max_nen = max(mesh%max_nen, p + 1)
+      end do
+      mesh%n_nodes = nn
+      mesh%n_elements = ne
+      allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
+                mesh%elem_s0(ne), mesh%eps0(6, max_order, ne), mesh%node_line(nn), &
+                mesh%node_s(nn))
+      mesh%elem_nodes = 0
+      mesh%eps0 = 0.0_wp
+      call state_allocate(state, nn)
+      do l = 1, nl
+         p = mesh%line_order(l)
+         associate (ld => model%lines(l))
+            do el = 1, ld%n_elements
+               e = mesh%line_first_elem(l) + el - 1
+               mesh%elem_line(e) = l
+               mesh%elem_le(e) = ld%length/real(ld%n_elements, wp)
+               mesh%elem_s0(e) = mesh%elem_le(e)*real(el - 1, wp)
+               do a = 1, p + 1
+                  mesh%elem_nodes(a, e) = mesh%line_first_node(l) + (el - 1)*p + a - 1
+               end do
+            end do
+            do k = 1, mesh%line_n_nodes(l)
+               node = mesh%line_first_node(l) + k - 1
+               mesh%node_line(node) = l
+               mesh%node_s(node) = ld%length*real(k - 1, wp)/real(mesh%line_n_nodes(l) - 1, wp)
+            end do
+         end associate
+         call line_stress_free_strains(model, mesh, l)
+         call line_initial_shape(model, mesh, l, state, err)
+         if (has_error(err)) return
+      end do
+   end subroutine mesh_build
+
+   !> True when node k of line l is held in position by a *BOUNDARY.
+   pure logical function held_in_position(model, l, k)
+      type(model_t), intent(in) :: model !< model
+      integer, intent(in) :: l           !< line index
+      integer, intent(in) :: k           !< end_a or end_b
+      integer :: i, nn
+      held_in_position = .false.
+      if (.not. allocated(model%constraints)) return
+      nn = model%lines(l)%n_elements*model%lines(l)%order + 1
+      do i = 1, size(model%constraints)
+         associate (c => model%constraints(i))
+            if (c%line /= l) cycle
+            if (.not. same_node(c%node, k, nn)) cycle
+            held_in_position = any(c%kind == [bc_pinned, bc_hinged, bc_clamped, bc_position])
+         end associate
+      end do
+   end function held_in_position
+
+   !> Same node of a line with nn nodes, allowing for the end_a / end_b aliases.
+   pure logical function same_node(k1, k2, nn)
+      integer, intent(in) :: k1 !< node or alias
+      integer, intent(in) :: k2 !< node or alias
+      integer, intent(in) :: nn !< nodes on the line
+      same_node = resolve(k1) == resolve(k2)
+   contains
+      pure integer function resolve(k)
+         integer, intent(in) :: k
+         resolve = k
+         if (k == end_b) resolve = nn
+      end function resolve
+   end function same_node
+
+   !> Strains of the discrete stress-free shape at the integration points: the rod
+   !> with constant material curvature kappa0, R(S) = exp(S skew(kappa0)),
+   !> x(S) = int_0^S R e3 dS, interpolated exactly as the deformed rod is. A rigid
+   !> motion of this shape then stores no energy.
+   subroutine line_stress_free_strains(model, mesh, l)
+      type(model_t), intent(in) :: model   !< model
+      type(mesh_t), intent(inout) :: mesh  !< mesh (eps0 filled for line l)
+      integer, intent(in) :: l             !< line index
+      real(wp) :: kap(3), xe(3, max_nen), de(3, 3, max_nen), xig(max_order), s, k
+      real(wp) :: kk(3, 3), r(3, 3), integral(3, 3)
+      integer :: e, el, a, p, i
+      kap = model%sections(model%lines(l)%section)%kappa0
+      if (all(kap == 0.0_wp)) return
+      p = mesh%line_order(l)
+      kk = skew(kap)
+      k = norm2(kap)
+      do el = 1, model%lines(l)%n_elements
+         e = mesh%line_first_elem(l) + el - 1
+         do a = 1, p + 1
+            s = mesh%elem_s0(e) + mesh%elem_le(e)*real(a - 1, wp)/real(p, wp)
+            r = rotation_exp(s*kap)
+            ! int_0^s exp(t K) dt = s I + (1 - cos ks)/k^2 K + (ks - sin ks)/k^3 K^2
+            integral = (1.0_wp - cos(k*s))/k**2*kk + (k*s - sin(k*s))/k**3*matmul(kk, kk)
+            do i = 1, 3
+               integral(i, i) = integral(i, i) + s
+            end do
+            xe(:, a) = integral(:, 3)
+            de(:, :, a) = r
+         end do
+         call rod_element_strains(p, mesh%elem_le(e), xe(:, 1:p + 1), de(:, :, 1:p + 1), &
+                                  mesh%eps0(:, 1:p, e), xig(1:p))
+      end do
+   end subroutine line_stress_free_strains
+
+   !> Initial configuration of line l: the elastic catenary when both ends are held in
+   !> position and the line hangs (weight > 0, ends not vertically aligned), else the
+   !> straight line from A towards B.
+   subroutine line_initial_shape(model, mesh, l, state, err)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      integer, intent(in) :: l               !< line index
+      type(state_t), intent(inout) :: state  !< configuration (line l filled)
+      type(error_t), intent(inout) :: err    !< status
+      real(wp) :: chord(3), up(3), eh(3), span, rise, w, gmag, xz(2), tg(2), tens, t(3)
+      real(wp) :: hint(3), dist
+      type(catenary_t) :: cat
+      integer :: k, node
+      character(len=200) :: msg
+      associate (ld => model%lines(l))
+         chord = ld%end_b - ld%end_a
+         dist = norm2(chord)
+         gmag = norm2(model%gravity)
+         if (gmag > 0.0_wp) then
+            up = -model%gravity/gmag
+         else
+            up = [0.0_wp, 0.0_wp, 1.0_wp]
+         end if
+         eh = chord - dot_product(chord, up)*up
+         span = norm2(eh)
+         rise = dot_product(chord, up)
+         w = mesh%line_mass(l)*gmag
+         if (mesh%line_catenary(l) .and. dist < ld%length*(1.0_wp - 1.0e-12_wp)) then
+            ! slack line held at both ends: needs weight and a horizontal span to hang
+            if (w <= 0.0_wp .or. span < 1.0e-9_wp*ld%length) then
+               write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its held ends' // &
+                  ' but cannot hang as a catenary (weightless, or ends vertically above' // &
+                  ' each other): no static shape to start from'
+               call set_error(err, stat_input, trim(model%deck_file)//': error: '//trim(msg))
+               return
+            end if
+         end if
+         if (mesh%line_catenary(l) .and. w > 0.0_wp .and. span >= 1.0e-9_wp*ld%length) then
+            eh = eh/span
+            call catenary_solve(w, mesh%line_c(3, l), ld%length, span, rise, cat, err)
+            if (has_error(err)) then
+               err%message = 'line '//trim(ld%name)//': '//err%message
+               return
+            end if
+            do k = 1, mesh%line_n_nodes(l)
+               node = mesh%line_first_node(l) + k - 1
+               call catenary_point(cat, mesh%node_s(node), xz, tg, tens)
+               state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
+               t = tg(1)*eh + tg(2)*up
+               state%d(:, :, node) = line_frame(t, cross(up, eh))
+            end do
+         else
+            t = chord/dist
+            eh = cross(up, t)
+            if (norm2(eh) < 1.0e-6_wp) eh = [0.0_wp, 1.0_wp, 0.0_wp]
+            do k = 1, mesh%line_n_nodes(l)
+               node = mesh%line_first_node(l) + k - 1
+               state%x(:, node) = ld%end_a + mesh%node_s(node)*t
+               state%d(:, :, node) = line_frame(t, eh)
+            end do
+         end if
+      end associate
+   contains
+      !> Frame with d3 = t; d1 towards the deck's hint if given, else d2 = n2.
+      function line_frame(tt, n2) result(d)
+         real(wp), intent(in) :: tt(3) !< unit tangent
+         real(wp), intent(in) :: n2(3) !< default d2 direction (normal to tt)
+         real(wp) :: d(3, 3)
+         if (model%lines(l)%has_d1_hint) then
+            hint = model%lines(l)%d1_hint
+            if (norm2(cross(hint, tt)) < 1.0e-6_wp) hint = cross(n2, tt)
+         else
+            hint = cross(n2, tt)
+         end if
+         d = rotation_frame(tt, hint)
+      end function line_frame
+   end subroutine line_initial_shape
+end module rodyn_mesh

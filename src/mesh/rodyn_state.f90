@@ -1,0 +1,25 @@
+!> The configuration the solvers advance: nodal positions and directors.
+module rodyn_state
+   use rodyn_kinds, only: wp
+   implicit none
+   private
+   public :: state_t, state_allocate
+
+   !> Configuration of all nodes (velocities join here with the dynamics).
+   type :: state_t
+      real(wp), allocatable :: x(:, :)     !< (3, nn) positions [m]
+      real(wp), allocatable :: d(:, :, :)  !< (3, 3, nn) directors d(:, i, a) [-]
+   end type state_t
+
+contains
+
+   !> Allocate a state for nn nodes.
+   subroutine state_allocate(state, nn)
+      type(state_t), intent(inout) :: state !< state to allocate
+      integer, intent(in) :: nn             !< number of nodes
+      if (allocated(state%x)) deallocate (state%x, state%d)
+      allocate (state%x(3, nn), state%d(3, 3, nn))
+      state%x = 0.0_wp
+      state%d = 0.0_wp
+   end subroutine state_allocate
+end module rodyn_state

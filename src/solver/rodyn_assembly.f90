@@ -1,0 +1,204 @@
+!> Global assembly of internal forces and tangents over all elements, the external load
+!> vectors, and the node constraints (held, hinged about an axis, prescribed position).
+!>
+!> Unknowns: 6 per node, dof 6(a-1)+j: j = 1..3 translation, 4..6 spatial rotation.
+!> A hinged node has its rotation unknowns expressed in the basis (axis, b, c) by an
+!> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T.
+module rodyn_assembly
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position
+   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_state, only: state_t
+   use rodyn_banded, only: banded_t, banded_add, banded_fix_dof
+   use rodyn_rod_element, only: rod_element_static, rod_element_line_load
+   use rodyn_rotation, only: cross
+   use rodyn_shape, only: max_nen
+   implicit none
+   private
+   public :: supports_t, loads_t, supports_build, loads_build
+   public :: assemble_static, apply_supports, external_force
+
+   !> Node constraints, fixed for the run.
+   type :: supports_t
+      logical, allocatable :: held(:, :)       !< (6, nn) dof held (in the node's basis)
+      logical, allocatable :: rotated(:)       !< (nn) node uses a rotation basis T
+      real(wp), allocatable :: basis(:, :, :)  !< (3, 3, nn) T for rotated nodes
+      logical, allocatable :: moved(:)         !< (nn) node has a prescribed position
+      real(wp), allocatable :: x_start(:, :)   !< (3, nn) position at load factor 0 [m]
+      real(wp), allocatable :: x_target(:, :)  !< (3, nn) position at load factor 1 [m]
+   end type supports_t
+
+   !> External loads at full value (load factor 1), global axes.
+   type :: loads_t
+      real(wp), allocatable :: gravity(:, :)   !< (3, nn) consistent self-weight [N]
+      real(wp), allocatable :: point(:, :)     !< (6, nn) point forces and moments [N, N m]
+   end type loads_t
+
+contains
+
+   !> Supports from the model's *BOUNDARY cards and the initial configuration.
+   subroutine supports_build(model, mesh, state, sup)
+      type(model_t), intent(in) :: model    !< model
+      type(mesh_t), intent(in) :: mesh      !< mesh
+      type(state_t), intent(in) :: state    !< initial configuration
+      type(supports_t), intent(out) :: sup  !< supports
+      integer :: i, node, nn
+      real(wp) :: ax(3), b(3)
+      nn = mesh%n_nodes
+      allocate (sup%held(6, nn), sup%rotated(nn), sup%basis(3, 3, nn), sup%moved(nn), &
+                sup%x_start(3, nn), sup%x_target(3, nn))
+      sup%held = .false.
+      sup%rotated = .false.
+      sup%moved = .false.
+      sup%basis = 0.0_wp
+      sup%x_start = state%x
+      sup%x_target = state%x
+      if (.not. allocated(model%constraints)) return
+      do i = 1, size(model%constraints)
+         associate (c => model%constraints(i))
+            node = mesh_node(mesh, c%line, c%node)
+            select case (c%kind)
+            case (bc_pinned)
+               sup%held(1:3, node) = .true.
+            case (bc_clamped)
+               sup%held(:, node) = .true.
+            case (bc_hinged)
+               sup%held(1:3, node) = .true.
+               sup%held(5:6, node) = .true.
+               ax = c%axis/norm2(c%axis)
+               b = cross(ax, [1.0_wp, 0.0_wp, 0.0_wp])
+               if (norm2(b) < 0.5_wp) b = cross(ax, [0.0_wp, 1.0_wp, 0.0_wp])
+               b = b/norm2(b)
+               sup%rotated(node) = .true.
+               sup%basis(:, 1, node) = ax
+               sup%basis(:, 2, node) = b
+               sup%basis(:, 3, node) = cross(ax, b)
+            case (bc_position)
+               sup%held(1:3, node) = .true.
+               sup%moved(node) = .true.
+               sup%x_target(:, node) = c%position
+            case (bc_free)
+            end select
+         end associate
+      end do
+   end subroutine supports_build
+
+   !> Full-value load vectors: consistent self-weight m g int N_a dS, and point loads.
+   subroutine loads_build(model, mesh, loads)
+      type(model_t), intent(in) :: model  !< model
+      type(mesh_t), intent(in) :: mesh    !< mesh
+      type(loads_t), intent(out) :: loads !< loads
+      real(wp) :: fa(3, max_nen)
+      integer :: e, l, p, a, node, i
+      allocate (loads%gravity(3, mesh%n_nodes), loads%point(6, mesh%n_nodes))
+      loads%gravity = 0.0_wp
+      loads%point = 0.0_wp
+      do e = 1, mesh%n_elements
+         l = mesh%elem_line(e)
+         p = mesh%line_order(l)
+         call rod_element_line_load(p, mesh%elem_le(e), mesh%line_mass(l)*model%gravity, &
+                                    fa(:, 1:p + 1))
+         do a = 1, p + 1
+            node = mesh%elem_nodes(a, e)
+            loads%gravity(:, node) = loads%gravity(:, node) + fa(:, a)
+         end do
+      end do
+      if (.not. allocated(model%loads)) return
+      do i = 1, size(model%loads)
+         node = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
+         loads%point(1:3, node) = loads%point(1:3, node) + model%loads(i)%force
+         loads%point(4:6, node) = loads%point(4:6, node) + model%loads(i)%moment
+      end do
+   end subroutine loads_build
+
+   !> External force at load factor lam: gravity scaled per line by gfac(line), point
+   !> loads by lam.
+   pure subroutine external_force(mesh, loads, gfac, lam, fext)
+      type(mesh_t), intent(in) :: mesh        !< mesh
+      type(loads_t), intent(in) :: loads      !< full loads
+      real(wp), intent(in) :: gfac(:)         !< (nl) gravity factor of each line
+      real(wp), intent(in) :: lam             !< load factor of the point loads
+      real(wp), intent(out) :: fext(:, :)     !< (6, nn) external force [N, N m]
+      integer :: node
+      do node = 1, mesh%n_nodes
+         fext(1:3, node) = gfac(mesh%node_line(node))*loads%gravity(:, node) &
+                           + lam*loads%point(1:3, node)
+         fext(4:6, node) = lam*loads%point(4:6, node)
+      end do
+   end subroutine external_force
+
+   !> Internal force fint (6, nn) in global axes and, if want_k, the tangent assembled
+   !> into bm with the rotated nodes' bases applied (note section 3, statics).
+   subroutine assemble_static(mesh, sup, state, fint, bm, want_k)
+      type(mesh_t), intent(in) :: mesh        !< mesh
+      type(supports_t), intent(in) :: sup    !< supports (for the node bases)
+      type(state_t), intent(in) :: state      !< configuration
+      real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
+      type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
+      logical, intent(in) :: want_k           !< form the tangent
+      real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen)
+      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j
+      fint = 0.0_wp
+      if (want_k) then
+         bm%ab = 0.0_wp
+         bm%factored = .false.
+      end if
+      do e = 1, mesh%n_elements
+         l = mesh%elem_line(e)
+         p = mesh%line_order(l)
+         nen = p + 1
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
+                                    mesh%eps0(:, 1:p, e), state%x(:, nodes), &
+                                    state%d(:, :, nodes), fe(:, 1:nen), &
+                                    ke(1:6*nen, 1:6*nen), want_k)
+            do a = 1, nen
+               fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
+            end do
+            if (.not. want_k) cycle
+            do a = 1, nen
+               node = nodes(a)
+               do j = 1, 6
+                  dofs(6*(a - 1) + j) = 6*(node - 1) + j
+               end do
+               if (sup%rotated(node)) call rotate_block(ke(1:6*nen, 1:6*nen), a, &
+                                                        sup%basis(:, :, node))
+            end do
+            call banded_add(bm, dofs(1:6*nen), ke(1:6*nen, 1:6*nen))
+         end associate
+      end do
+   contains
+      !> ke <- T^T ke T on the rotation rows and columns of element node a.
+      pure subroutine rotate_block(k, a, t)
+         real(wp), intent(inout) :: k(:, :) !< element matrix
+         integer, intent(in) :: a           !< element node
+         real(wp), intent(in) :: t(3, 3)    !< basis
+         integer :: r
+         r = 6*(a - 1) + 3
+         k(r + 1:r + 3, :) = matmul(transpose(t), k(r + 1:r + 3, :))
+         k(:, r + 1:r + 3) = matmul(k(:, r + 1:r + 3), t)
+      end subroutine rotate_block
+   end subroutine assemble_static
+
+   !> Residual in the node bases with held dofs zeroed, as a flat vector; held rows and
+   !> columns of the tangent replaced by the identity.
+   subroutine apply_supports(sup, r, rhs, bm, want_k)
+      type(supports_t), intent(in) :: sup   !< supports
+      real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
+      real(wp), intent(out) :: rhs(:)       !< (6 nn) residual for the linear solve
+      type(banded_t), intent(inout) :: bm   !< tangent
+      logical, intent(in) :: want_k         !< also fix the tangent
+      integer :: node, j, k
+      do node = 1, size(r, 2)
+         k = 6*(node - 1)
+         rhs(k + 1:k + 6) = r(:, node)
+         if (sup%rotated(node)) rhs(k + 4:k + 6) = matmul(transpose(sup%basis(:, :, node)), &
+                                                          r(4:6, node))
+         do j = 1, 6
+            if (.not. sup%held(j, node)) cycle
+            rhs(k + j) = 0.0_wp
+            if (want_k) call banded_fix_dof(bm, k + j)
+         end do
+      end do
+   end subroutine apply_supports
+end module rodyn_assembly

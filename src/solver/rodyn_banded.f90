@@ -1,0 +1,139 @@
+!> General banded matrix in LAPACK band storage, element assembly, constraint rows, and
+!> the LU factorisation/solve (LAPACK dgbtrf/dgbtrs). LAPACK's INFO is mapped into
+!> error_t here and nowhere else. Storage is allocated once; nothing inside the Newton
+!> loop allocates.
+module rodyn_banded
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, set_error, stat_numerical
+   implicit none
+   private
+   public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
+   public :: banded_factor, banded_solve, banded_matvec
+
+   !> A square banded matrix with kl sub- and ku super-diagonals, stored for dgbtrf
+   !> (rows kl+1 .. 2kl+ku+1 of ab hold the band; the first kl rows are LU fill).
+   type :: banded_t
+      integer :: n = 0                        !< order
+      integer :: kl = 0                       !< subdiagonals
+      integer :: ku = 0                       !< superdiagonals
+      integer :: ldab = 0                     !< leading dimension 2 kl + ku + 1
+      real(wp), allocatable :: ab(:, :)       !< (ldab, n) band storage
+      integer, allocatable :: ipiv(:)         !< (n) pivots of the LU factors
+      logical :: factored = .false.           !< ab holds LU factors
+   end type banded_t
+
+   interface
+      subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
+         import :: wp
+         integer, intent(in) :: m, n, kl, ku, ldab
+         real(wp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: ipiv(*)
+         integer, intent(out) :: info
+      end subroutine dgbtrf
+      subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: wp
+         character(len=1), intent(in) :: trans
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(wp), intent(in) :: ab(ldab, *)
+         integer, intent(in) :: ipiv(*)
+         real(wp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dgbtrs
+   end interface
+
+contains
+
+   !> Allocate an n x n band matrix with kl = ku = half_bandwidth.
+   subroutine banded_init(bm, n, half_bandwidth)
+      type(banded_t), intent(inout) :: bm   !< matrix
+      integer, intent(in) :: n              !< order
+      integer, intent(in) :: half_bandwidth !< kl = ku
+      bm%n = n
+      bm%kl = min(half_bandwidth, max(n - 1, 0))
+      bm%ku = bm%kl
+      bm%ldab = 2*bm%kl + bm%ku + 1
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv)
+      allocate (bm%ab(bm%ldab, n), bm%ipiv(n))
+      bm%ab = 0.0_wp
+      bm%factored = .false.
+   end subroutine banded_init
+
+   !> Set all entries to zero.
+   subroutine banded_zero(bm)
+      type(banded_t), intent(inout) :: bm !< matrix
+      bm%ab = 0.0_wp
+      bm%factored = .false.
+   end subroutine banded_zero
+
+   !> Add an element matrix ke on the global rows/columns dofs (which must fit the band).
+   pure subroutine banded_add(bm, dofs, ke)
+      type(banded_t), intent(inout) :: bm   !< matrix
+      integer, intent(in) :: dofs(:)        !< global dof numbers of the element
+      real(wp), intent(in) :: ke(:, :)      !< element matrix (size(dofs) square)
+      integer :: i, j, off
+      off = bm%kl + bm%ku + 1
+      do j = 1, size(dofs)
+         do i = 1, size(dofs)
+            bm%ab(off + dofs(i) - dofs(j), dofs(j)) = &
+               bm%ab(off + dofs(i) - dofs(j), dofs(j)) + ke(i, j)
+         end do
+      end do
+   end subroutine banded_add
+
+   !> Replace row and column k by the identity (a held degree of freedom).
+   pure subroutine banded_fix_dof(bm, k)
+      type(banded_t), intent(inout) :: bm !< matrix
+      integer, intent(in) :: k            !< dof to hold
+      integer :: i, j, off
+      off = bm%kl + bm%ku + 1
+      do j = max(1, k - bm%ku), min(bm%n, k + bm%kl)
+         bm%ab(off + k - j, j) = 0.0_wp       ! row k
+      end do
+      do i = max(1, k - bm%ku), min(bm%n, k + bm%kl)
+         bm%ab(off + i - k, k) = 0.0_wp       ! column k
+      end do
+      bm%ab(off, k) = 1.0_wp
+   end subroutine banded_fix_dof
+
+   !> y = A x (before factorisation; used by tests).
+   pure subroutine banded_matvec(bm, x, y)
+      type(banded_t), intent(in) :: bm !< matrix (not factored)
+      real(wp), intent(in) :: x(:)     !< vector (n)
+      real(wp), intent(out) :: y(:)    !< product (n)
+      integer :: i, j, off
+      off = bm%kl + bm%ku + 1
+      y = 0.0_wp
+      do j = 1, bm%n
+         do i = max(1, j - bm%ku), min(bm%n, j + bm%kl)
+            y(i) = y(i) + bm%ab(off + i - j, j)*x(j)
+         end do
+      end do
+   end subroutine banded_matvec
+
+   !> LU-factorise in place (dgbtrf). A zero pivot is a numerical error naming the dof.
+   subroutine banded_factor(bm, err)
+      type(banded_t), intent(inout) :: bm !< matrix, replaced by its LU factors
+      type(error_t), intent(inout) :: err !< status
+      integer :: info
+      character(len=120) :: msg
+      call dgbtrf(bm%n, bm%n, bm%kl, bm%ku, bm%ab, bm%ldab, bm%ipiv, info)
+      if (info /= 0) then
+         write (msg, '(a,i0,a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
+            ': singular stiffness at node ', (abs(info) - 1)/6 + 1, ', dof ', &
+            mod(abs(info) - 1, 6) + 1, ' (a mechanism: check the supports)'
+         call set_error(err, stat_numerical, trim(msg))
+         return
+      end if
+      bm%factored = .true.
+   end subroutine banded_factor
+
+   !> Solve A x = b in place with the LU factors (dgbtrs).
+   subroutine banded_solve(bm, b, err)
+      type(banded_t), intent(in) :: bm    !< factored matrix
+      real(wp), intent(inout) :: b(:)     !< right-hand side, replaced by the solution
+      type(error_t), intent(inout) :: err !< status
+      integer :: info
+      call dgbtrs('N', bm%n, bm%kl, bm%ku, 1, bm%ab, bm%ldab, bm%ipiv, b, bm%n, info)
+      if (info /= 0) call set_error(err, stat_numerical, 'banded_solve: dgbtrs failed')
+   end subroutine banded_solve
+end module rodyn_banded

@@ -1,0 +1,189 @@
+!> Newton-Raphson driver with an energy line search, force and displacement criteria
+!> and an iteration log (formulation note sections 3 and 5). The problem is a type
+!> extending newton_problem_t; statics and each time integrator provide one.
+!>
+!> Line search (Crisfield, "Non-linear Finite Element Analysis of Solids and
+!> Structures", vol. 1, 1991, section 9.3): along the correction du the slope of the
+!> energy is s(alpha) = du . r(u + alpha du). The full step is kept when
+!> |s(1)| <= ls_ratio |s(0)|; otherwise alpha is moved to the zero of s by secant
+!> (regula falsi) steps, bounded to [ls_min, 1]. A residual-norm merit function is
+!> useless here: with EA >> EI any step along the linearised direction stretches the
+!> rod at second order and the axial rows grow, even for tiny steps.
+!>
+!> Convergence: scaled residual <= force_tol AND scaled correction <= disp_tol, or the
+!> residual already below force_tol at the first evaluation. With stiff sections
+!> (EA/EI ~ 1e4 and more) round-off puts a floor under the residual: a correction below
+!> roundoff_correction with a residual below roundoff_factor * force_tol is accepted
+!> too (the configuration can no longer change in double precision), and logged so.
+module rodyn_newton
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, set_error, stat_numerical
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: newton_problem_t, newton_options_t, newton_stats_t, newton_solve
+
+   !> Controls of one Newton solve.
+   type :: newton_options_t
+      integer :: max_iterations = 30          !< iterations before giving up
+      real(wp) :: force_tol = 1.0e-10_wp      !< scaled residual tolerance [-]
+      real(wp) :: disp_tol = 1.0e-10_wp       !< scaled correction tolerance [-]
+      logical :: line_search = .false.        !< energy line search along the correction
+      integer :: max_backtracks = 5           !< line-search trials after the full step
+      real(wp) :: ls_ratio = 0.8_wp           !< accept when |s(alpha)| <= ls_ratio |s(0)|
+      real(wp) :: ls_min = 0.05_wp            !< smallest step length [-]
+      integer :: log_unit = -1                !< unit for the iteration log (< 0: none)
+      real(wp) :: roundoff_correction = 1.0e-12_wp !< correction at round-off level [-]
+      real(wp) :: roundoff_factor = 1.0e4_wp  !< residual floor allowed, x force_tol
+   end type newton_options_t
+
+   !> What one solve did.
+   type :: newton_stats_t
+      logical :: converged = .false.
+      integer :: iterations = 0               !< linear solves done
+      real(wp) :: residual = 0.0_wp           !< final scaled residual
+      real(wp) :: correction = 0.0_wp         !< last scaled correction
+   end type newton_stats_t
+
+   !> A nonlinear problem r(u) = 0 on a configuration updated by u.
+   type, abstract :: newton_problem_t
+   contains
+      !> Evaluate the residual at the current configuration (and the tangent).
+      procedure(evaluate_iface), deferred :: evaluate
+      !> Scaled residual norm of the last evaluation (dimensionless).
+      procedure(norm_iface), deferred :: residual_norm
+      !> Solve for the correction from the last residual and tangent.
+      procedure(solve_iface), deferred :: solve
+      !> Scaled norm of the correction (dimensionless).
+      procedure(norm_iface), deferred :: correction_norm
+      !> Energy slope du . r of the correction against the last residual [J].
+      procedure(norm_iface), deferred :: slope
+      !> Remember the current configuration as the base of the update.
+      procedure(base_iface), deferred :: save_base
+      !> Configuration <- base updated by alpha times the correction.
+      procedure(apply_iface), deferred :: apply_correction
+   end type newton_problem_t
+
+   abstract interface
+      subroutine evaluate_iface(this, want_k, err)
+         import :: newton_problem_t, error_t
+         class(newton_problem_t), intent(inout) :: this
+         logical, intent(in) :: want_k
+         type(error_t), intent(inout) :: err
+      end subroutine evaluate_iface
+      function norm_iface(this) result(v)
+         import :: newton_problem_t, wp
+         class(newton_problem_t), intent(in) :: this
+         real(wp) :: v
+      end function norm_iface
+      subroutine solve_iface(this, err)
+         import :: newton_problem_t, error_t
+         class(newton_problem_t), intent(inout) :: this
+         type(error_t), intent(inout) :: err
+      end subroutine solve_iface
+      subroutine base_iface(this)
+         import :: newton_problem_t
+         class(newton_problem_t), intent(inout) :: this
+      end subroutine base_iface
+      subroutine apply_iface(this, alpha)
+         import :: newton_problem_t, wp
+         class(newton_problem_t), intent(inout) :: this
+         real(wp), intent(in) :: alpha
+      end subroutine apply_iface
+   end interface
+
+contains
+
+   !> Solve the problem from its current configuration. Non-convergence is reported in
+   !> stats (the caller cuts the step); err is set only for a failure that a smaller
+   !> step cannot cure (never: singular tangents and NaN are also returned as
+   !> non-convergence, with the reason in err for the caller to log or raise).
+   subroutine newton_solve(prob, opts, stats, err)
+      class(newton_problem_t), intent(inout) :: prob !< problem, configuration updated
+      type(newton_options_t), intent(in) :: opts     !< controls
+      type(newton_stats_t), intent(out) :: stats     !< what happened
+      type(error_t), intent(inout) :: err            !< reason of a failure
+      real(wp) :: rn, cn, alpha, s0, st, a_lo, s_lo, a_hi, s_hi, a_new
+      real(wp) :: rn_trial
+      integer :: it, bt
+      rn_trial = 0.0_wp
+      call prob%evaluate(.true., err)
+      if (has_error(err)) return
+      rn = prob%residual_norm()
+      if (.not. ieee_is_finite(rn)) then
+         call set_error(err, stat_numerical, 'newton_solve: residual is not finite')
+         return
+      end if
+      call log_line(0, rn, 0.0_wp, 0.0_wp)
+      stats%residual = rn
+      if (rn <= opts%force_tol) then
+         stats%converged = .true.
+         return
+      end if
+      do it = 1, opts%max_iterations
+         call prob%solve(err)
+         if (has_error(err)) return
+         stats%iterations = it
+         cn = prob%correction_norm()
+         call prob%save_base()
+         s0 = prob%slope()
+         alpha = 1.0_wp
+         a_lo = 0.0_wp          ! bracket: s(a_lo) < 0 < s(a_hi)
+         s_lo = s0
+         a_hi = 1.0_wp
+         s_hi = 0.0_wp
+         do bt = 0, opts%max_backtracks
+            call prob%apply_correction(alpha)
+            call prob%evaluate(.true., err)
+            if (has_error(err)) return
+            rn_trial = prob%residual_norm()
+            if (.not. ieee_is_finite(rn_trial)) then
+               alpha = 0.5_wp*alpha            ! overflow: plain halving
+               a_hi = alpha
+               cycle
+            end if
+            if (.not. opts%line_search .or. s0 >= 0.0_wp) exit
+            st = prob%slope()
+            if (abs(st) <= opts%ls_ratio*abs(s0) .or. bt == opts%max_backtracks) exit
+            if (st < 0.0_wp) then
+               if (alpha >= 1.0_wp) exit      ! energy still falling at the full step
+               a_lo = alpha
+               s_lo = st
+            else
+               a_hi = alpha
+               s_hi = st
+            end if
+            a_new = a_lo - s_lo*(a_hi - a_lo)/(s_hi - s_lo)
+            a_new = min(a_hi, max(opts%ls_min, a_new))
+            if (abs(a_new - alpha) < 1.0e-3_wp) exit
+            alpha = a_new
+         end do
+         if (.not. ieee_is_finite(rn_trial)) then
+            call set_error(err, stat_numerical, 'newton_solve: residual is not finite')
+            return
+         end if
+         rn = rn_trial
+         stats%residual = rn
+         stats%correction = alpha*cn
+         call log_line(it, rn, alpha*cn, alpha)
+         if (rn <= opts%force_tol .and. alpha*cn <= opts%disp_tol) then
+            stats%converged = .true.
+            return
+         end if
+         if (cn <= opts%roundoff_correction .and. rn <= opts%roundoff_factor*opts%force_tol) then
+            if (opts%log_unit >= 0) write (opts%log_unit, '(4x,a)') &
+               'converged to round-off (correction below 1e-12, residual at its floor)'
+            stats%converged = .true.
+            return
+         end if
+      end do
+   contains
+      subroutine log_line(i, r, c, a)
+         integer, intent(in) :: i
+         real(wp), intent(in) :: r, c, a
+         if (opts%log_unit < 0) return
+         write (opts%log_unit, '(4x,a,i3,a,es10.3,a,es10.3,a,f6.4)') 'iteration', i, &
+            '  residual', r, '  correction', c, '  step', a
+      end subroutine log_line
+   end subroutine newton_solve
+end module rodyn_newton

@@ -1,0 +1,69 @@
+!> Results of a solved configuration, per line: node positions, stress resultants and
+!> curvatures at the integration points (S = C (eps - eps0), note section 1), and the
+!> support reactions at the ends (R = f_int - f_ext at a held node).
+module rodyn_recovery
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t
+   use rodyn_model, only: model_t, end_a, end_b
+   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_statics, only: static_problem_t
+   use rodyn_rod_element, only: rod_element_strains
+   use rodyn_results, only: line_result_t
+   use rodyn_shape, only: max_order
+   implicit none
+   private
+   public :: recover_static
+
+contains
+
+   !> Fill one line_result_t per line from the problem's current configuration.
+   subroutine recover_static(model, prob, lines)
+      type(model_t), intent(in) :: model                 !< model
+      type(static_problem_t), intent(inout) :: prob      !< solved problem
+      type(line_result_t), allocatable, intent(out) :: lines(:) !< results
+      type(error_t) :: err
+      real(wp) :: eps(6, max_order), xig(max_order), s(6)
+      integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
+      associate (mesh => prob%mesh, state => prob%state)
+         call prob%evaluate(.false., err)      ! refresh f_int and the reactions
+         allocate (lines(mesh%n_lines))
+         do l = 1, mesh%n_lines
+            p = mesh%line_order(l)
+            ne = model%lines(l)%n_elements
+            nn = mesh%line_n_nodes(l)
+            n0 = mesh%line_first_node(l)
+            lines(l)%name = model%lines(l)%name
+            lines(l)%node_s = mesh%node_s(n0:n0 + nn - 1)
+            lines(l)%node_x = state%x(:, n0:n0 + nn - 1)
+            allocate (lines(l)%gp_element(ne*p), lines(l)%gp_point(ne*p), &
+                      lines(l)%gp_s(ne*p), lines(l)%tension(ne*p), lines(l)%shear(2, ne*p), &
+                      lines(l)%moment(2, ne*p), lines(l)%torque(ne*p), &
+                      lines(l)%curvature(3, ne*p))
+            do el = 1, ne
+               e = mesh%line_first_elem(l) + el - 1
+               associate (nodes => mesh%elem_nodes(1:p + 1, e))
+                  call rod_element_strains(p, mesh%elem_le(e), state%x(:, nodes), &
+                                           state%d(:, :, nodes), eps(:, 1:p), xig(1:p))
+               end associate
+               do g = 1, p
+                  ig = (el - 1)*p + g
+                  s = mesh%line_c(:, l)*(eps(:, g) - mesh%eps0(:, g, e))
+                  lines(l)%gp_element(ig) = el
+                  lines(l)%gp_point(ig) = g
+                  lines(l)%gp_s(ig) = mesh%elem_s0(e) + 0.5_wp*mesh%elem_le(e)*(xig(g) + 1.0_wp)
+                  lines(l)%shear(:, ig) = s(1:2)
+                  lines(l)%tension(ig) = s(3)
+                  lines(l)%moment(:, ig) = s(4:5)
+                  lines(l)%torque(ig) = s(6)
+                  lines(l)%curvature(:, ig) = eps(4:6, g)
+               end do
+            end do
+            do k = 1, 2
+               node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+               lines(l)%end_held(k) = any(prob%sup%held(:, node))
+               if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = prob%r(:, node)
+            end do
+         end do
+      end associate
+   end subroutine recover_static
+end module rodyn_recovery

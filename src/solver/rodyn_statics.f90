@@ -1,0 +1,244 @@
+!> Static equilibrium (formulation note section 3, "Statics"): residual
+!> r = f_int(q) - f_ext(lambda) = 0 solved by Newton in load increments, each halved on
+!> failure up to a bounded depth.
+!>
+!> Load factor lambda in [0, 1] scales the point loads and moves prescribed positions
+!> from the start to the target. Self-weight is applied in full from the start on a
+!> line that starts as a catenary (it already hangs in equilibrium); on any other line
+!> it is ramped with lambda.
+module rodyn_statics
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
+   use rodyn_model, only: model_t
+   use rodyn_mesh, only: mesh_t
+   use rodyn_state, only: state_t
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
+   use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
+                             assemble_static, apply_supports, external_force
+   use rodyn_newton, only: newton_problem_t, newton_options_t, newton_stats_t, newton_solve
+   use rodyn_rotation, only: rotation_cayley
+   use rodyn_results, only: run_summary_t
+   implicit none
+   private
+   public :: static_problem_t, statics_setup, statics_solve
+
+   !> The static problem with its workspace (allocated once in statics_setup).
+   type, extends(newton_problem_t) :: static_problem_t
+      type(mesh_t), pointer :: mesh => null()
+      type(state_t), pointer :: state => null()
+      type(supports_t) :: sup
+      type(loads_t) :: loads
+      real(wp) :: lam = 0.0_wp                !< load factor of the current increment
+      real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
+      real(wp), allocatable :: fint(:, :)     !< (6, nn) internal forces
+      real(wp), allocatable :: fext(:, :)     !< (6, nn) external forces at lam
+      real(wp), allocatable :: r(:, :)        !< (6, nn) fint - fext, global axes
+      real(wp), allocatable :: rhs(:)         !< (6 nn) residual in node bases, held = 0
+      real(wp), allocatable :: du(:)          !< (6 nn) Newton correction
+      real(wp), allocatable :: x_base(:, :)   !< (3, nn) base of the line search
+      real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
+      real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
+      real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
+      type(banded_t) :: bm                    !< tangent, then its LU factors
+      real(wp) :: lref = 1.0_wp               !< length scale of the criteria [m]
+      real(wp) :: href = 1.0_wp               !< shortest element [m]
+   contains
+      procedure :: evaluate => static_evaluate
+      procedure :: residual_norm => static_residual_norm
+      procedure :: solve => static_solve
+      procedure :: correction_norm => static_correction_norm
+      procedure :: slope => static_slope
+      procedure :: save_base => static_save_base
+      procedure :: apply_correction => static_apply_correction
+   end type static_problem_t
+
+contains
+
+   !> Allocate the workspace and build supports and loads.
+   subroutine statics_setup(prob, model, mesh, state)
+      type(static_problem_t), intent(inout) :: prob !< problem
+      type(model_t), intent(in) :: model            !< model
+      type(mesh_t), intent(in), target :: mesh      !< mesh
+      type(state_t), intent(in), target :: state    !< configuration, updated by solves
+      integer :: nn
+      prob%mesh => mesh
+      prob%state => state
+      nn = mesh%n_nodes
+      call supports_build(model, mesh, state, prob%sup)
+      call loads_build(model, mesh, prob%loads)
+      allocate (prob%gfac(mesh%n_lines), prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), &
+                prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn), &
+                prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
+      prob%gfac = 1.0_wp
+      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
+      prob%lref = maxval(model%lines%length)
+      prob%href = minval(mesh%elem_le)
+   end subroutine statics_setup
+
+   !> Set the load factor: external forces and prescribed positions of held nodes.
+   subroutine static_set_load_factor(prob, lam)
+      type(static_problem_t), intent(inout) :: prob !< problem
+      real(wp), intent(in) :: lam                   !< load factor [-]
+      integer :: node
+      prob%lam = lam
+      where (.not. prob%mesh%line_catenary) prob%gfac = lam
+      call external_force(prob%mesh, prob%loads, prob%gfac, lam, prob%fext)
+      do node = 1, prob%mesh%n_nodes
+         if (prob%sup%moved(node)) prob%state%x(:, node) = prob%sup%x_start(:, node) &
+            + lam*(prob%sup%x_target(:, node) - prob%sup%x_start(:, node))
+      end do
+   end subroutine static_set_load_factor
+
+   subroutine static_evaluate(this, want_k, err)
+      class(static_problem_t), intent(inout) :: this !< problem
+      logical, intent(in) :: want_k                  !< form the tangent
+      type(error_t), intent(inout) :: err            !< status (unused: cannot fail)
+      if (has_error(err)) return
+      call assemble_static(this%mesh, this%sup, this%state, this%fint, this%bm, want_k)
+      this%r = this%fint - this%fext
+      call apply_supports(this%sup, this%r, this%rhs, this%bm, want_k)
+   end subroutine static_evaluate
+
+   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied or
+   !> reaction force (or applied/reaction moment over the line length); M_ref: largest
+   !> applied or reaction moment, or F_ref times the shortest element.
+   function static_residual_norm(this) result(v)
+      class(static_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      real(wp) :: fref, mref, rf, rm, reac_f, reac_m
+      integer :: node, k
+      rf = 0.0_wp
+      rm = 0.0_wp
+      reac_f = 0.0_wp
+      reac_m = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3))))
+         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6))))
+         if (any(this%sup%held(1:3, node))) reac_f = max(reac_f, maxval(abs(this%r(1:3, node))))
+         if (any(this%sup%held(4:6, node))) reac_m = max(reac_m, maxval(abs(this%r(4:6, node))))
+      end do
+      mref = max(maxval(abs(this%fext(4:6, :))), reac_m)
+      fref = max(maxval(abs(this%fext(1:3, :))), reac_f, mref/this%lref, tiny(1.0_wp))
+      mref = max(mref, fref*this%href)
+      v = max(rf/fref, rm/mref)
+   end function static_residual_norm
+
+   subroutine static_solve(this, err)
+      class(static_problem_t), intent(inout) :: this !< problem
+      type(error_t), intent(inout) :: err            !< status
+      call banded_factor(this%bm, err)
+      if (has_error(err)) return
+      this%du = -this%rhs
+      call banded_solve(this%bm, this%du, err)
+   end subroutine static_solve
+
+   !> max(|du_x| / L_ref, |du_theta|).
+   function static_correction_norm(this) result(v)
+      class(static_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      integer :: node, k
+      v = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
+      end do
+   end function static_correction_norm
+
+   !> Energy slope du . r [J] (line search).
+   function static_slope(this) result(v)
+      class(static_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      v = dot_product(this%du, this%rhs)
+   end function static_slope
+
+   subroutine static_save_base(this)
+      class(static_problem_t), intent(inout) :: this !< problem
+      this%x_base = this%state%x
+      this%d_base = this%state%d
+   end subroutine static_save_base
+
+   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (note section 3).
+   subroutine static_apply_correction(this, alpha)
+      class(static_problem_t), intent(inout) :: this !< problem
+      real(wp), intent(in) :: alpha                  !< step length [-]
+      real(wp) :: th(3)
+      integer :: node, k
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         this%state%x(:, node) = this%x_base(:, node) + alpha*this%du(k + 1:k + 3)
+         th = alpha*this%du(k + 4:k + 6)
+         if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
+         this%state%d(:, :, node) = matmul(rotation_cayley(th), this%d_base(:, :, node))
+      end do
+   end subroutine static_apply_correction
+
+   !> Load stepping from lambda = 0 to 1 with bounded halving of failed increments.
+   !> On failure the state is the last converged one and summary says how far it got.
+   subroutine statics_solve(prob, model, summary, err, log_unit)
+      type(static_problem_t), intent(inout) :: prob !< set-up problem
+      type(model_t), intent(in) :: model            !< model (static options)
+      type(run_summary_t), intent(inout) :: summary !< progress
+      type(error_t), intent(inout) :: err           !< status
+      integer, intent(in) :: log_unit               !< log unit (< 0: silent)
+      type(newton_options_t) :: opts
+      type(newton_stats_t) :: stats
+      type(error_t) :: nerr
+      real(wp) :: lam, dlam, dlam0, lam_try
+      integer :: level
+      character(len=200) :: msg
+      opts%max_iterations = model%static%max_iterations
+      opts%force_tol = model%static%force_tol
+      opts%disp_tol = model%static%disp_tol
+      opts%line_search = model%static%line_search
+      opts%log_unit = log_unit
+      dlam0 = 1.0_wp/real(model%static%increments, wp)
+      lam = 0.0_wp
+      level = 0
+      call static_set_load_factor(prob, lam)
+      do while (lam < 1.0_wp)
+         dlam = dlam0*0.5_wp**level
+         lam_try = min(1.0_wp, lam + dlam)
+         if (1.0_wp - lam_try < 1.0e-12_wp) lam_try = 1.0_wp
+         if (log_unit >= 0) write (log_unit, '(a,i0,a,f10.7)') 'increment ', &
+            summary%increments + 1, ': load factor ', lam_try
+         prob%x_conv = prob%state%x
+         prob%d_conv = prob%state%d
+         call static_set_load_factor(prob, lam_try)
+         call clear_error(nerr)
+         call newton_solve(prob, opts, stats, nerr)
+         summary%iterations = summary%iterations + stats%iterations
+         if (stats%converged .and. .not. has_error(nerr)) then
+            lam = lam_try
+            summary%increments = summary%increments + 1
+            summary%load_factor = lam
+            if (level > 0) level = level - 1
+            cycle
+         end if
+         ! failed: back to the last converged state, halve the increment
+         prob%state%x = prob%x_conv
+         prob%state%d = prob%d_conv
+         call static_set_load_factor(prob, lam)
+         if (log_unit >= 0) then
+            if (has_error(nerr)) then
+               write (log_unit, '(2a)') '  failed: ', nerr%message
+            else
+               write (log_unit, '(a,es10.3)') '  not converged, residual ', stats%residual
+            end if
+         end if
+         if (level >= model%static%max_cutbacks) then
+            write (msg, '(a,f9.6,a,i0,a)') 'statics: no convergence beyond load factor ', &
+               lam, ' after ', level, ' halvings of the increment'
+            if (has_error(nerr)) msg = trim(msg)//' ('//nerr%message//')'
+            call set_error(err, stat_numerical, trim(msg))
+            summary%status = trim(msg)
+            summary%complete = .false.
+            return
+         end if
+         level = level + 1
+         summary%cutbacks = summary%cutbacks + 1
+      end do
+      summary%complete = .true.
+      summary%status = 'complete'
+   end subroutine statics_solve
+end module rodyn_statics
