@@ -173,10 +173,14 @@ contains
          real(wp), intent(inout) :: k(:, :) !< element matrix
          integer, intent(in) :: a           !< element node
          real(wp), intent(in) :: t(3, 3)    !< basis
+         real(wp) :: rows(3, size(k, 2)), cols(size(k, 1), 3), tt(3, 3)
          integer :: r
          r = 6*(a - 1) + 3
-         k(r + 1:r + 3, :) = matmul(transpose(t), k(r + 1:r + 3, :))
-         k(:, r + 1:r + 3) = matmul(k(:, r + 1:r + 3), t)
+         tt = transpose(t)
+         rows = k(r + 1:r + 3, :)
+         k(r + 1:r + 3, :) = matmul(tt, rows)
+         cols = k(:, r + 1:r + 3)
+         k(:, r + 1:r + 3) = matmul(cols, t)
       end subroutine rotate_block
    end subroutine assemble_static
 

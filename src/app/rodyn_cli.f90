@@ -1,0 +1,104 @@
+!> Command line of the rodyn program:
+!>   rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--version] [--help]
+module rodyn_cli
+   use rodyn_error, only: error_t, set_error, stat_input
+   implicit none
+   private
+   public :: cli_options_t, cli_parse, cli_usage, cli_default_outdir
+
+   !> Parsed command line.
+   type :: cli_options_t
+      character(len=:), allocatable :: deck    !< input deck path
+      character(len=:), allocatable :: outdir  !< output folder ('' = default)
+      logical :: check = .false.               !< validate the deck only
+      logical :: verbose = .false.             !< Newton iteration log on stdout
+      logical :: quiet = .false.               !< nothing on stdout
+      logical :: version = .false.             !< print the version and exit
+      logical :: help = .false.                !< print the usage and exit
+   end type cli_options_t
+
+   character(len=*), parameter :: cli_usage = &
+      'usage: rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--version] [--help]'// &
+      new_line('a')//new_line('a')// &
+      '  DECK           keyword input deck (see docs/deck.md)'//new_line('a')// &
+      '  -o, --output DIR  folder for the results (default: the deck name without'// &
+      ' extension)'//new_line('a')// &
+      '  --check        read and validate the deck, build the mesh, compute nothing'// &
+      new_line('a')// &
+      '  --verbose      log every Newton iteration'//new_line('a')// &
+      '  --quiet        print nothing but errors'//new_line('a')// &
+      '  --version      print the version'//new_line('a')// &
+      '  --help         print this text'//new_line('a')//new_line('a')// &
+      'exit status: 0 success, 1 bad input, 2 numerical failure, 3 I/O failure'
+
+contains
+
+   !> Read the command line arguments.
+   subroutine cli_parse(opts, err)
+      type(cli_options_t), intent(out) :: opts !< parsed options
+      type(error_t), intent(inout) :: err      !< stat_input on a bad command line
+      integer :: i, n, length
+      character(len=:), allocatable :: arg
+      opts%outdir = ''
+      n = command_argument_count()
+      i = 0
+      do while (i < n)
+         i = i + 1
+         call get_command_argument(i, length=length)
+         allocate (character(len=length) :: arg)
+         call get_command_argument(i, arg)
+         select case (arg)
+         case ('-o', '--output')
+            if (i == n) then
+               call set_error(err, stat_input, 'rodyn: error: '//arg//' needs a folder')
+               return
+            end if
+            i = i + 1
+            call get_command_argument(i, length=length)
+            deallocate (opts%outdir)
+            allocate (character(len=length) :: opts%outdir)
+            call get_command_argument(i, opts%outdir)
+         case ('--check')
+            opts%check = .true.
+         case ('-v', '--verbose')
+            opts%verbose = .true.
+         case ('-q', '--quiet')
+            opts%quiet = .true.
+         case ('--version')
+            opts%version = .true.
+         case ('-h', '--help')
+            opts%help = .true.
+         case default
+            if (arg(1:min(1, len(arg))) == '-') then
+               call set_error(err, stat_input, 'rodyn: error: unknown option '//arg)
+               return
+            end if
+            if (allocated(opts%deck)) then
+               call set_error(err, stat_input, 'rodyn: error: more than one deck given ('// &
+                              opts%deck//', '//arg//')')
+               return
+            end if
+            opts%deck = arg
+         end select
+         deallocate (arg)
+      end do
+      if (opts%help .or. opts%version) return
+      if (.not. allocated(opts%deck)) then
+         call set_error(err, stat_input, 'rodyn: error: no deck given')
+         return
+      end if
+      if (len(opts%outdir) == 0) opts%outdir = cli_default_outdir(opts%deck)
+   end subroutine cli_parse
+
+   !> Default output folder: the deck's file name without folder and extension.
+   pure function cli_default_outdir(deck) result(dir)
+      character(len=*), intent(in) :: deck !< deck path
+      character(len=:), allocatable :: dir
+      integer :: slash, dot
+      slash = index(deck, '/', back=.true.)
+      dir = deck(slash + 1:)
+      dot = index(dir, '.', back=.true.)
+      if (dot > 1) dir = dir(1:dot - 1)
+      if (len(dir) == 0) dir = 'rodyn_results'
+   end function cli_default_outdir
+end module rodyn_cli
