@@ -4,14 +4,14 @@
 program rodyn
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
-   use rodyn_kinds, only: wp, rodyn_version
+   use rodyn_kinds, only: rodyn_version
    use rodyn_error, only: error_t, has_error, stat_ok, stat_io
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t
    use rodyn_deck, only: deck_read
    use rodyn_mesh, only: mesh_t, mesh_build
    use rodyn_state, only: state_t
-   use rodyn_statics, only: static_problem_t, statics_setup, statics_solve
+   use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_output, only: output_write_static
@@ -33,7 +33,6 @@ program rodyn
    type(run_summary_t) :: summary
    type(line_result_t), allocatable :: lines(:)
    integer :: log_unit
-   integer(kind=8) :: t0, t1, rate
 
    call cli_parse(opts, err)
    if (has_error(err)) then
@@ -68,11 +67,7 @@ program rodyn
       6*mesh%n_nodes, ' unknowns'
    log_unit = -1
    if (opts%verbose .and. .not. opts%quiet) log_unit = output_unit
-   call system_clock(t0, rate)
-   call statics_setup(prob, model, mesh, state)
-   call statics_solve(prob, model, summary, err, log_unit)
-   call system_clock(t1)
-   summary%wall_time = real(t1 - t0, wp)/real(rate, wp)
+   call statics_run(prob, model, mesh, state, summary, err, log_unit)
    if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
 
    ! results of the last converged state, complete or not

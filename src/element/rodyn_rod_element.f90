@@ -8,6 +8,15 @@
 !> and the stored energy is W = 1/2 (eps - eps0)^T C (eps - eps0),
 !> C = diag(GA1, GA2, EA, EI1, EI2, GJ), eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3).
 !>
+!> Quadrature (rod_quadrature): orders 1 and 2 integrate every strain at the p reduced
+!> Gauss points. Order 3 integrates extension, bending and torsion at 3 points and the
+!> shear strains Gamma1, Gamma2 at 4 points: at 3 points one director pattern per
+!> element (a wiggle vanishing at the points) is held by EI alone, and on a
+!> cable-dominated line (EI << T le^2) Newton then ping-pongs and fails. Measured
+!> (docs/element.md): a 1000 m mooring line from its catenary converges in 3 iterations
+!> instead of not at all; the paper's cable with 10 elements lies 8.0e-5 m from the
+!> 80-element shape instead of 3.5e-5 m.
+!>
 !> Forces are first formed as gradients with respect to q ("q-forces", 12 per node) and
 !> then projected onto the 6 unknowns with the null-space matrix P(d):
 !>   r_x = f_x,   r_theta = sum_i d_i x f_di.
@@ -20,7 +29,10 @@ module rodyn_rod_element
    public :: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, rod_gp_jacobian
    public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
    public :: rod_element_static, rod_element_strains, rod_element_energy
-   public :: rod_element_line_load, rod_element_lumped_mass
+   public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
+   public :: rod_element_resultants
+
+   integer, parameter :: max_points = 7  !< most quadrature points of one element
 
    !> Centreline and director fields at one point of an element.
    type :: rod_gp_t
@@ -30,6 +42,29 @@ module rodyn_rod_element
    end type rod_gp_t
 
 contains
+
+   !> Quadrature of the stored energy of an element of order p: np points, parent
+   !> coordinates xi, weights w, and mask(k, g) = 1 where strain k is integrated at
+   !> point g. The first p points are the reduced Gauss points where results are given.
+   pure subroutine rod_quadrature(p, np, xi, w, mask)
+      integer, intent(in) :: p                   !< element order
+      integer, intent(out) :: np                 !< number of points
+      real(wp), intent(out) :: xi(max_points)    !< parent coordinates
+      real(wp), intent(out) :: w(max_points)     !< weights
+      real(wp), intent(out) :: mask(6, max_points) !< strains integrated at each point
+      xi = 0.0_wp
+      w = 0.0_wp
+      mask = 0.0_wp
+      call gauss_rule(p, xi(1:p), w(1:p))
+      mask(:, 1:p) = 1.0_wp
+      np = p
+      if (p == 3) then
+         mask(1:2, 1:p) = 0.0_wp
+         call gauss_rule(p + 1, xi(p + 1:2*p + 1), w(p + 1:2*p + 1))
+         mask(1:2, p + 1:2*p + 1) = 1.0_wp
+         np = 2*p + 1
+      end if
+   end subroutine rod_quadrature
 
    !> Interpolate x', d_i, d_i' at a point from nodal values.
    pure subroutine rod_gp_kinematics(nen, n, dn, xe, de, kin)
@@ -228,31 +263,33 @@ contains
       integer, intent(in) :: p                     !< element order
       real(wp), intent(in) :: le                   !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                 !< diag(GA1,GA2,EA,EI1,EI2,GJ)
-      real(wp), intent(in) :: eps0(6, p)           !< stress-free strains at the points
+      real(wp), intent(in) :: eps0(6, max_points)  !< stress-free strains at the points
       real(wp), intent(in) :: xe(3, p + 1)         !< nodal positions [m]
       real(wp), intent(in) :: de(3, 3, p + 1)      !< nodal directors
       real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
       real(wp), intent(out) :: ke(6*(p + 1), 6*(p + 1)) !< tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
-      real(wp) :: xi(p), w(p), n(p + 1), dn(p + 1), s(6), wj
+      real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
+      real(wp) :: n(p + 1), dn(p + 1), s(6), wj, cg(6)
       real(wp) :: fq(3, 4, p + 1), bt(6, 6*(p + 1)), cb(6, 6*(p + 1))
       type(rod_gp_t) :: kin
-      integer :: g, nen, k
+      integer :: g, nen, k, np
       nen = p + 1
-      call gauss_rule(p, xi, w)
+      call rod_quadrature(p, np, xi, w, mask)
       fq = 0.0_wp
       if (want_k) ke = 0.0_wp
-      do g = 1, p
+      do g = 1, np
          call shape_lagrange(p, xi(g), n, dn)
          dn = dn*2.0_wp/le
          wj = w(g)*0.5_wp*le
+         cg = c*mask(:, g)
          call rod_gp_kinematics(nen, n, dn, xe, de, kin)
-         s = c*(rod_strains(kin) - eps0(:, g))
+         s = cg*(rod_strains(kin) - eps0(:, g))
          call rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
          if (want_k) then
             call rod_gp_jacobian(nen, n, dn, kin, de, bt)
             do k = 1, 6
-               cb(k, :) = (wj*c(k))*bt(k, :)
+               cb(k, :) = (wj*cg(k))*bt(k, :)
             end do
             ke = ke + matmul(transpose(bt), cb)
             call rod_gp_geometric(nen, n, dn, s, de, de, wj, ke)
@@ -262,19 +299,21 @@ contains
       if (want_k) call rod_rotation_geometric(nen, fq, de, 1.0_wp, ke)
    end subroutine rod_element_static
 
-   !> Strains at the p reduced Gauss points of one element (also used for eps0).
+   !> Strains at the quadrature points of one element (the first p are the reduced
+   !> Gauss points where results are reported); also used for the stress-free eps0.
    pure subroutine rod_element_strains(p, le, xe, de, eps, xig)
-      integer, intent(in) :: p                  !< element order
-      real(wp), intent(in) :: le                !< unstretched element length [m]
-      real(wp), intent(in) :: xe(3, p + 1)      !< nodal positions [m]
-      real(wp), intent(in) :: de(3, 3, p + 1)   !< nodal directors
-      real(wp), intent(out) :: eps(6, p)        !< strains at the points
-      real(wp), intent(out) :: xig(p)           !< parent coordinates of the points
-      real(wp) :: w(p), n(p + 1), dn(p + 1)
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
+      real(wp), intent(out) :: eps(6, max_points) !< strains at the points (0 beyond np)
+      real(wp), intent(out) :: xig(max_points)    !< parent coordinates of the points
+      real(wp) :: w(max_points), mask(6, max_points), n(p + 1), dn(p + 1)
       type(rod_gp_t) :: kin
-      integer :: g
-      call gauss_rule(p, xig, w)
-      do g = 1, p
+      integer :: g, np
+      call rod_quadrature(p, np, xig, w, mask)
+      eps = 0.0_wp
+      do g = 1, np
          call shape_lagrange(p, xig(g), n, dn)
          dn = dn*2.0_wp/le
          call rod_gp_kinematics(p + 1, n, dn, xe, de, kin)
@@ -282,22 +321,82 @@ contains
       end do
    end subroutine rod_element_strains
 
+   !> Stress resultants at the p reduced Gauss points (where results are reported):
+   !> res = (N1, N2, N3, M1, M2, M3) with N = C (eps - eps0); for order 3 the shear
+   !> forces N1, N2 are interpolated from the 4 points where shear is integrated. The
+   !> effective tension is the spatial contact force n = N_i d_i along the centreline
+   !> tangent, n . x'/|x'|; curv holds the curvatures (K1, K2, K3).
+   pure subroutine rod_element_resultants(p, le, c, eps0, xe, de, res, tension, curv, xig)
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, max_points) !< stress-free strains
+      real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
+      real(wp), intent(out) :: res(6, p)          !< resultants [N, N m]
+      real(wp), intent(out) :: tension(p)         !< effective tension [N]
+      real(wp), intent(out) :: curv(3, p)         !< curvatures [1/m]
+      real(wp), intent(out) :: xig(p)             !< parent coordinates of the points
+      real(wp) :: eps(6, max_points), xq(max_points), w(max_points), mask(6, max_points)
+      real(wp) :: n(p + 1), dn(p + 1), lq(p + 1), nsp(3), sq(6, max_points)
+      type(rod_gp_t) :: kin
+      integer :: g, np, k
+      call rod_element_strains(p, le, xe, de, eps, xq)
+      call rod_quadrature(p, np, xq, w, mask)
+      do g = 1, np
+         sq(:, g) = c*(eps(:, g) - eps0(:, g))
+      end do
+      xig = xq(1:p)
+      do g = 1, p
+         res(:, g) = sq(:, g)
+         if (np > p) then
+            ! shear from the p+1 shear points: Lagrange interpolation through them
+            call lagrange_through(p + 1, xq(p + 1:np), xq(g), lq)
+            res(1:2, g) = 0.0_wp
+            do k = 1, p + 1
+               res(1:2, g) = res(1:2, g) + lq(k)*sq(1:2, p + k)
+            end do
+         end if
+         curv(:, g) = eps(4:6, g)
+         call shape_lagrange(p, xq(g), n, dn)
+         dn = dn*2.0_wp/le
+         call rod_gp_kinematics(p + 1, n, dn, xe, de, kin)
+         nsp = res(1, g)*kin%d(:, 1) + res(2, g)*kin%d(:, 2) + res(3, g)*kin%d(:, 3)
+         tension(g) = dot_product(nsp, kin%xp)/norm2(kin%xp)
+      end do
+   contains
+      !> Lagrange basis through the m points t evaluated at x.
+      pure subroutine lagrange_through(m, t, x, l)
+         integer, intent(in) :: m
+         real(wp), intent(in) :: t(m), x
+         real(wp), intent(out) :: l(m)
+         integer :: i, j
+         do i = 1, m
+            l(i) = 1.0_wp
+            do j = 1, m
+               if (j /= i) l(i) = l(i)*(x - t(j))/(t(i) - t(j))
+            end do
+         end do
+      end subroutine lagrange_through
+   end subroutine rod_element_resultants
+
    !> Stored energy of one element, sum over points of wj/2 (eps-eps0).C(eps-eps0) [J].
    pure function rod_element_energy(p, le, c, eps0, xe, de) result(energy)
-      integer, intent(in) :: p                  !< element order
-      real(wp), intent(in) :: le                !< unstretched element length [m]
-      real(wp), intent(in) :: c(6)              !< diag(GA1,GA2,EA,EI1,EI2,GJ)
-      real(wp), intent(in) :: eps0(6, p)        !< stress-free strains
-      real(wp), intent(in) :: xe(3, p + 1)      !< nodal positions [m]
-      real(wp), intent(in) :: de(3, 3, p + 1)   !< nodal directors
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, max_points) !< stress-free strains
+      real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp) :: energy
-      real(wp) :: eps(6, p), xig(p), xi(p), w(p)
-      integer :: g
+      real(wp) :: eps(6, max_points), xig(max_points), xi(max_points), w(max_points)
+      real(wp) :: mask(6, max_points)
+      integer :: g, np
       call rod_element_strains(p, le, xe, de, eps, xig)
-      call gauss_rule(p, xi, w)
+      call rod_quadrature(p, np, xi, w, mask)
       energy = 0.0_wp
-      do g = 1, p
-         energy = energy + 0.25_wp*le*w(g)*sum(c*(eps(:, g) - eps0(:, g))**2)
+      do g = 1, np
+         energy = energy + 0.25_wp*le*w(g)*sum(mask(:, g)*c*(eps(:, g) - eps0(:, g))**2)
       end do
    end function rod_element_energy
 

@@ -12,8 +12,8 @@ module rodyn_mesh
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point
-   use rodyn_rod_element, only: rod_element_strains
-   use rodyn_shape, only: max_order, max_nen
+   use rodyn_rod_element, only: rod_element_strains, max_points
+   use rodyn_shape, only: max_nen
    implicit none
    private
    public :: mesh_t, mesh_build, mesh_node, mesh_section_stiffness
@@ -37,7 +37,7 @@ module rodyn_mesh
       integer, allocatable :: elem_nodes(:, :)    !< (max_nen, ne) global node numbers
       real(wp), allocatable :: elem_le(:)         !< (ne) unstretched length [m]
       real(wp), allocatable :: elem_s0(:)         !< (ne) arc length of its first node [m]
-      real(wp), allocatable :: eps0(:, :, :)      !< (6, max_order, ne) stress-free strains
+      real(wp), allocatable :: eps0(:, :, :)      !< (6, max_points, ne) stress-free strains
       ! per node
       integer, allocatable :: node_line(:)        !< (nn)
       real(wp), allocatable :: node_s(:)          !< (nn) unstretched arc length [m]
@@ -96,7 +96,7 @@ contains
       mesh%n_nodes = nn
       mesh%n_elements = ne
       allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
-                mesh%elem_s0(ne), mesh%eps0(6, max_order, ne), mesh%node_line(nn), &
+                mesh%elem_s0(ne), mesh%eps0(6, max_points, ne), mesh%node_line(nn), &
                 mesh%node_s(nn))
       mesh%elem_nodes = 0
       mesh%eps0 = 0.0_wp
@@ -165,7 +165,7 @@ contains
       type(model_t), intent(in) :: model   !< model
       type(mesh_t), intent(inout) :: mesh  !< mesh (eps0 filled for line l)
       integer, intent(in) :: l             !< line index
-      real(wp) :: kap(3), xe(3, max_nen), de(3, 3, max_nen), xig(max_order), s, k
+      real(wp) :: kap(3), xe(3, max_nen), de(3, 3, max_nen), xig(max_points), s, k
       real(wp) :: kk(3, 3), r(3, 3), integral(3, 3)
       integer :: e, el, a, p, i
       kap = model%sections(model%lines(l)%section)%kappa0
@@ -187,7 +187,7 @@ contains
             de(:, :, a) = r
          end do
          call rod_element_strains(p, mesh%elem_le(e), xe(:, 1:p + 1), de(:, :, 1:p + 1), &
-                                  mesh%eps0(:, 1:p, e), xig(1:p))
+                                  mesh%eps0(:, :, e), xig)
       end do
    end subroutine line_stress_free_strains
 

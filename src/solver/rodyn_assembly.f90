@@ -9,8 +9,8 @@ module rodyn_assembly
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_banded, only: banded_t, banded_add, banded_fix_dof
-   use rodyn_rod_element, only: rod_element_static, rod_element_line_load
+   use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_column_axpy
+   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
    use rodyn_rotation, only: cross
    use rodyn_shape, only: max_nen
    implicit none
@@ -128,15 +128,19 @@ contains
    end subroutine external_force
 
    !> Internal force fint (6, nn) in global axes and, if want_k, the tangent assembled
-   !> into bm with the rotated nodes' bases applied (note section 3, statics).
-   subroutine assemble_static(mesh, sup, state, fint, bm, want_k)
+   !> into bm with the rotated nodes' bases applied (note section 3, statics). The
+   !> stress-free strains enter scaled by eps0_scale (the static load factor, so that a
+   !> built-in curvature is applied gradually; 1 at the end of the analysis).
+   subroutine assemble_static(mesh, sup, state, eps0_scale, fint, bm, want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: state      !< configuration
+      real(wp), intent(in) :: eps0_scale      !< factor on the stress-free strains [-]
       real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
-      real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen)
+      real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
+      real(wp) :: de(3, 3, max_nen), e0(6, max_points)
       integer :: dofs(6*max_nen), e, l, p, nen, a, node, j
       fint = 0.0_wp
       if (want_k) then
@@ -148,9 +152,13 @@ contains
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
-                                    mesh%eps0(:, 1:p, e), state%x(:, nodes), &
-                                    state%d(:, :, nodes), fe(:, 1:nen), &
+            do a = 1, nen
+               xe(:, a) = state%x(:, nodes(a))
+               de(:, :, a) = state%d(:, :, nodes(a))
+            end do
+            e0 = eps0_scale*mesh%eps0(:, :, e)
+            call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
+                                    xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
                                     ke(1:6*nen, 1:6*nen), want_k)
             do a = 1, nen
                fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
@@ -184,12 +192,17 @@ contains
       end subroutine rotate_block
    end subroutine assemble_static
 
-   !> Residual in the node bases with held dofs zeroed, as a flat vector; held rows and
-   !> columns of the tangent replaced by the identity.
-   subroutine apply_supports(sup, r, rhs, bm, want_k)
+   !> Right-hand side for the Newton step K du = -rhs: the residual in the node bases;
+   !> at a held dof k, rhs_k = -gap_k so that du_k = gap_k (the distance still to go to
+   !> a prescribed position), and K_fk gap_k moved to the free rows before the held rows
+   !> and columns of the tangent are replaced by the identity:
+   !>   K_ff du_f = -(r_f + K_fk gap_k).
+   !> Without the tangent (want_k false) the gaps are ignored.
+   subroutine apply_supports(sup, r, gap, rhs, bm, want_k)
       type(supports_t), intent(in) :: sup   !< supports
       real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
-      real(wp), intent(out) :: rhs(:)       !< (6 nn) residual for the linear solve
+      real(wp), intent(in) :: gap(:, :)     !< (3, nn) prescribed position - position [m]
+      real(wp), intent(out) :: rhs(:)       !< (6 nn) right-hand side
       type(banded_t), intent(inout) :: bm   !< tangent
       logical, intent(in) :: want_k         !< also fix the tangent
       integer :: node, j, k
@@ -198,9 +211,22 @@ contains
          rhs(k + 1:k + 6) = r(:, node)
          if (sup%rotated(node)) rhs(k + 4:k + 6) = matmul(transpose(sup%basis(:, :, node)), &
                                                           r(4:6, node))
+      end do
+      if (want_k) then
+         do node = 1, size(r, 2)
+            if (.not. sup%moved(node)) cycle
+            do j = 1, 3
+               if (gap(j, node) /= 0.0_wp) call banded_column_axpy(bm, 6*(node - 1) + j, &
+                                                                    gap(j, node), rhs)
+            end do
+         end do
+      end if
+      do node = 1, size(r, 2)
+         k = 6*(node - 1)
          do j = 1, 6
             if (.not. sup%held(j, node)) cycle
             rhs(k + j) = 0.0_wp
+            if (j <= 3 .and. want_k) rhs(k + j) = -gap(j, node)
             if (want_k) call banded_fix_dof(bm, k + j)
          end do
       end do

@@ -8,7 +8,7 @@ module rodyn_banded
    implicit none
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
-   public :: banded_factor, banded_solve, banded_matvec
+   public :: banded_factor, banded_solve, banded_matvec, banded_column_axpy
 
    !> A square banded matrix with kl sub- and ku super-diagonals, stored for dgbtrf
    !> (rows kl+1 .. 2kl+ku+1 of ab hold the band; the first kl rows are LU fill).
@@ -94,6 +94,20 @@ contains
       end do
       bm%ab(off, k) = 1.0_wp
    end subroutine banded_fix_dof
+
+   !> y(i) = y(i) + value * A(i, k) for the rows i /= k in the band of column k: moves a
+   !> prescribed value of dof k to the right-hand side before the column is cleared.
+   pure subroutine banded_column_axpy(bm, k, value, y)
+      type(banded_t), intent(in) :: bm  !< matrix (not factored)
+      integer, intent(in) :: k          !< column
+      real(wp), intent(in) :: value     !< prescribed value of dof k
+      real(wp), intent(inout) :: y(:)   !< vector (n)
+      integer :: i, off
+      off = bm%kl + bm%ku + 1
+      do i = max(1, k - bm%ku), min(bm%n, k + bm%kl)
+         if (i /= k) y(i) = y(i) + value*bm%ab(off + i - k, k)
+      end do
+   end subroutine banded_column_axpy
 
    !> y = A x (before factorisation; used by tests).
    pure subroutine banded_matvec(bm, x, y)

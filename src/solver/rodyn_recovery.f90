@@ -1,5 +1,5 @@
 !> Results of a solved configuration, per line: node positions, stress resultants and
-!> curvatures at the integration points (S = C (eps - eps0), note section 1), and the
+!> curvatures at the reduced integration points (rod_element_resultants), and the
 !> support reactions at the ends (R = f_int - f_ext at a held node).
 module rodyn_recovery
    use rodyn_kinds, only: wp
@@ -7,9 +7,9 @@ module rodyn_recovery
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_statics, only: static_problem_t
-   use rodyn_rod_element, only: rod_element_strains
+   use rodyn_rod_element, only: rod_element_resultants, max_points
+   use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
-   use rodyn_shape, only: max_order
    implicit none
    private
    public :: recover_static
@@ -22,8 +22,9 @@ contains
       type(static_problem_t), intent(inout) :: prob      !< solved problem
       type(line_result_t), allocatable, intent(out) :: lines(:) !< results
       type(error_t) :: err
-      real(wp) :: eps(6, max_order), xig(max_order), s(6)
-      integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
+      real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
+      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points)
+      integer :: l, p, ne, el, e, g, ig, n0, nn, k, node, a
       associate (mesh => prob%mesh, state => prob%state)
          call prob%evaluate(.false., err)      ! refresh f_int and the reactions
          allocate (lines(mesh%n_lines))
@@ -42,20 +43,25 @@ contains
             do el = 1, ne
                e = mesh%line_first_elem(l) + el - 1
                associate (nodes => mesh%elem_nodes(1:p + 1, e))
-                  call rod_element_strains(p, mesh%elem_le(e), state%x(:, nodes), &
-                                           state%d(:, :, nodes), eps(:, 1:p), xig(1:p))
+                  do a = 1, p + 1
+                     xe(:, a) = state%x(:, nodes(a))
+                     de(:, :, a) = state%d(:, :, nodes(a))
+                  end do
                end associate
+               e0 = prob%lam*mesh%eps0(:, :, e)
+               call rod_element_resultants(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
+                                           xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
+                                           tens(1:p), curv(:, 1:p), xig(1:p))
                do g = 1, p
                   ig = (el - 1)*p + g
-                  s = mesh%line_c(:, l)*(eps(:, g) - mesh%eps0(:, g, e))
                   lines(l)%gp_element(ig) = el
                   lines(l)%gp_point(ig) = g
                   lines(l)%gp_s(ig) = mesh%elem_s0(e) + 0.5_wp*mesh%elem_le(e)*(xig(g) + 1.0_wp)
-                  lines(l)%shear(:, ig) = s(1:2)
-                  lines(l)%tension(ig) = s(3)
-                  lines(l)%moment(:, ig) = s(4:5)
-                  lines(l)%torque(ig) = s(6)
-                  lines(l)%curvature(:, ig) = eps(4:6, g)
+                  lines(l)%shear(:, ig) = res(1:2, g)
+                  lines(l)%tension(ig) = tens(g)
+                  lines(l)%moment(:, ig) = res(4:5, g)
+                  lines(l)%torque(ig) = res(6, g)
+                  lines(l)%curvature(:, ig) = curv(:, g)
                end do
             end do
             do k = 1, 2

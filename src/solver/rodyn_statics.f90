@@ -2,8 +2,14 @@
 !> r = f_int(q) - f_ext(lambda) = 0 solved by Newton in load increments, each halved on
 !> failure up to a bounded depth.
 !>
-!> Load factor lambda in [0, 1] scales the point loads and moves prescribed positions
-!> from the start to the target. Self-weight is applied in full from the start on a
+!> Roll mode: a line with equal bending stiffnesses whose supports leave the rotation
+!> of the sections about the line free (ball joints, free ends) can spin all its
+!> sections about their own axes at no cost in energy, so the tangent is singular.
+!> Newton's matrix (not the residual) then gets a twist spring GJ/L about d3 at end A:
+!> the equilibrium found is an exact one and the roll angle stays as it started.
+!>
+!> Load factor lambda in [0, 1] scales the point loads and the stress-free strains
+!> (built-in curvature), and moves prescribed positions from the start to the target. Self-weight is applied in full from the start on a
 !> line that starts as a catenary (it already hangs in equilibrium); on any other line
 !> it is ramped with lambda.
 module rodyn_statics
@@ -12,7 +18,7 @@ module rodyn_statics
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
-   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve, banded_add
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force
    use rodyn_newton, only: newton_problem_t, newton_options_t, newton_stats_t, newton_solve
@@ -20,7 +26,7 @@ module rodyn_statics
    use rodyn_results, only: run_summary_t
    implicit none
    private
-   public :: static_problem_t, statics_setup, statics_solve
+   public :: static_problem_t, statics_setup, statics_solve, statics_run
 
    !> The static problem with its workspace (allocated once in statics_setup).
    type, extends(newton_problem_t) :: static_problem_t
@@ -33,6 +39,8 @@ module rodyn_statics
       real(wp), allocatable :: fint(:, :)     !< (6, nn) internal forces
       real(wp), allocatable :: fext(:, :)     !< (6, nn) external forces at lam
       real(wp), allocatable :: r(:, :)        !< (6, nn) fint - fext, global axes
+      real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
+      real(wp), allocatable :: gap(:, :)      !< (3, nn) x_held - x at moved nodes [m]
       real(wp), allocatable :: rhs(:)         !< (6 nn) residual in node bases, held = 0
       real(wp), allocatable :: du(:)          !< (6 nn) Newton correction
       real(wp), allocatable :: x_base(:, :)   !< (3, nn) base of the line search
@@ -40,6 +48,8 @@ module rodyn_statics
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
       type(banded_t) :: bm                    !< tangent, then its LU factors
+      integer, allocatable :: roll_node(:)    !< (nl) node of the twist spring, 0: none
+      real(wp), allocatable :: roll_k(:)      !< (nl) its stiffness GJ/L [N m/rad]
       real(wp) :: lref = 1.0_wp               !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp               !< shortest element [m]
    contains
@@ -67,26 +77,42 @@ contains
       call supports_build(model, mesh, state, prob%sup)
       call loads_build(model, mesh, prob%loads)
       allocate (prob%gfac(mesh%n_lines), prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), &
+                prob%x_held(3, nn), prob%gap(3, nn), &
                 prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn), &
                 prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
       prob%gfac = 1.0_wp
       call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
       prob%lref = maxval(model%lines%length)
+      call roll_restraints(prob, model)
       prob%href = minval(mesh%elem_le)
    end subroutine statics_setup
 
-   !> Set the load factor: external forces and prescribed positions of held nodes.
+   !> Lines with no rotational support get the tangent-only twist spring at end A.
+   subroutine roll_restraints(prob, model)
+      type(static_problem_t), intent(inout) :: prob !< problem
+      type(model_t), intent(in) :: model            !< model
+      integer :: l, n0, nn
+      allocate (prob%roll_node(prob%mesh%n_lines), prob%roll_k(prob%mesh%n_lines))
+      prob%roll_node = 0
+      prob%roll_k = 0.0_wp
+      do l = 1, prob%mesh%n_lines
+         n0 = prob%mesh%line_first_node(l)
+         nn = prob%mesh%line_n_nodes(l)
+         if (any(prob%sup%held(4:6, n0:n0 + nn - 1))) cycle
+         prob%roll_node(l) = n0
+         prob%roll_k(l) = prob%mesh%line_c(6, l)/model%lines(l)%length
+      end do
+   end subroutine roll_restraints
+
+   !> Set the load factor: external forces and the prescribed positions of held nodes
+   !> (reached by the next Newton step, see apply_supports).
    subroutine static_set_load_factor(prob, lam)
       type(static_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: lam                   !< load factor [-]
-      integer :: node
       prob%lam = lam
       where (.not. prob%mesh%line_catenary) prob%gfac = lam
       call external_force(prob%mesh, prob%loads, prob%gfac, lam, prob%fext)
-      do node = 1, prob%mesh%n_nodes
-         if (prob%sup%moved(node)) prob%state%x(:, node) = prob%sup%x_start(:, node) &
-            + lam*(prob%sup%x_target(:, node) - prob%sup%x_start(:, node))
-      end do
+      prob%x_held = prob%sup%x_start + lam*(prob%sup%x_target - prob%sup%x_start)
    end subroutine static_set_load_factor
 
    subroutine static_evaluate(this, want_k, err)
@@ -94,10 +120,31 @@ contains
       logical, intent(in) :: want_k                  !< form the tangent
       type(error_t), intent(inout) :: err            !< status (unused: cannot fail)
       if (has_error(err)) return
-      call assemble_static(this%mesh, this%sup, this%state, this%fint, this%bm, want_k)
+      call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
+                           want_k)
+      if (want_k) call add_roll_springs(this)
       this%r = this%fint - this%fext
-      call apply_supports(this%sup, this%r, this%rhs, this%bm, want_k)
+      where (spread(this%sup%moved, 1, 3))
+         this%gap = this%x_held - this%state%x
+      elsewhere
+         this%gap = 0.0_wp
+      end where
+      call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
    end subroutine static_evaluate
+
+   !> Tangent-only twist springs k d3 d3^T (see the module header).
+   subroutine add_roll_springs(this)
+      class(static_problem_t), intent(inout) :: this !< problem
+      real(wp) :: d3(3), kr(3, 3)
+      integer :: l, node, j
+      do l = 1, size(this%roll_node)
+         node = this%roll_node(l)
+         if (node == 0) cycle
+         d3 = this%state%d(:, 3, node)
+         kr = this%roll_k(l)*spread(d3, 2, 3)*spread(d3, 1, 3)
+         call banded_add(this%bm, [(6*(node - 1) + 3 + j, j=1, 3)], kr)
+      end do
+   end subroutine add_roll_springs
 
    !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied or
    !> reaction force (or applied/reaction moment over the line length); M_ref: largest
@@ -113,8 +160,8 @@ contains
       reac_m = 0.0_wp
       do node = 1, this%mesh%n_nodes
          k = 6*(node - 1)
-         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3))))
-         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6))))
+         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
+         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
          if (any(this%sup%held(1:3, node))) reac_f = max(reac_f, maxval(abs(this%r(1:3, node))))
          if (any(this%sup%held(4:6, node))) reac_m = max(reac_m, maxval(abs(this%r(4:6, node))))
       end do
@@ -241,4 +288,20 @@ contains
       summary%complete = .true.
       summary%status = 'complete'
    end subroutine statics_solve
+   !> Set up and solve the static problem of a built mesh; wall time into summary.
+   subroutine statics_run(prob, model, mesh, state, summary, err, log_unit)
+      type(static_problem_t), intent(inout) :: prob  !< problem (workspace allocated here)
+      type(model_t), intent(in) :: model             !< model
+      type(mesh_t), intent(in), target :: mesh       !< mesh
+      type(state_t), intent(inout), target :: state  !< initial, then solved configuration
+      type(run_summary_t), intent(inout) :: summary  !< progress
+      type(error_t), intent(inout) :: err            !< status
+      integer, intent(in) :: log_unit                !< iteration log unit (< 0: silent)
+      integer(kind=8) :: t0, t1, rate
+      call system_clock(t0, rate)
+      call statics_setup(prob, model, mesh, state)
+      call statics_solve(prob, model, summary, err, log_unit)
+      call system_clock(t1)
+      summary%wall_time = real(t1 - t0, wp)/real(rate, wp)
+   end subroutine statics_run
 end module rodyn_statics

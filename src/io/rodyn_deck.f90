@@ -1,0 +1,880 @@
+!> Deck reader: keyword deck (docs/deck.md) -> validated model_t.
+!>
+!> deck_read lexes the deck (rodyn_deck_lexer), hands each card to the reader of its
+!> keyword (one routine per *KEYWORD), then validates the whole model: names referred
+!> to exist, node numbers exist, no node is constrained twice, defaults resolved,
+!> and a line that is not held at both ends starts straight (its end distance equals
+!> its length). The first error found ends the reading with a located message
+!> 'FILE:LINE: error: *KEYWORD: message' in err (code stat_input).
+module rodyn_deck
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, set_error, has_error, stat_input
+   use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
+                          bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b
+   use rodyn_deck_lexer, only: deck_t, card_t, deck_lex, card_check_params, &
+                               card_find_param, card_error, card_param_error, &
+                               card_data_error, card_get_real, card_get_int, card_get_name, &
+                               card_get_choice, card_get_yesno, card_check_data, &
+                               card_data_count, card_data_reals, real_str, int_str, param_len
+   implicit none
+   private
+   public :: deck_read
+
+   integer, parameter :: max_elements = 10000000       !< most elements in one line
+   integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
+   real(wp), parameter :: coincide_tol = 1.0e-9_wp     !< ends coincide below tol*LENGTH
+   real(wp), parameter :: overlong_tol = 1.0e-12_wp    !< ends too far above (1+tol)*LENGTH
+   real(wp), parameter :: straight_tol = 1.0e-9_wp     !< relative tolerance, free lines
+   real(wp), parameter :: parallel_tol = 1.0e-6_wp     !< d1 hint parallel to the chord
+
+   !> A reference by name from one card to a section or line, resolved after reading.
+   type :: ref_t
+      character(len=:), allocatable :: name  !< name referred to, upper case
+      integer :: card = 0                    !< index of the referring card
+   end type ref_t
+
+   !> What the readers remember for the validation pass (not part of the model).
+   type :: pending_t
+      type(ref_t), allocatable :: line_section(:) !< per line: its SECTION=
+      type(ref_t), allocatable :: bc_line(:)      !< per constraint: its LINE=
+      type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
+      integer, allocatable :: section_card(:)     !< per section: card index
+      integer :: n_sections = 0     !< sections read so far
+      integer :: n_lines = 0        !< lines read so far
+      integer :: n_constraints = 0  !< constraints read so far
+      integer :: n_loads = 0        !< loads read so far
+      integer :: heading = 0   !< card of the first *HEADING (0: none yet)
+      integer :: gravity = 0   !< card of the first *GRAVITY
+      integer :: static = 0    !< card of the first *STATIC
+      integer :: output = 0    !< card of the first *OUTPUT
+   end type pending_t
+
+contains
+
+   !> Read the deck `path` into `model`, fully validated (docs/deck.md). err must be
+   !> clear on entry. On error, err holds a message 'FILE:LINE: error: ...' (stat_input),
+   !> model%deck_text what was read, and the model arrays the items read before the error.
+   subroutine deck_read(path, model, err)
+      character(len=*), intent(in) :: path    !< path of the main deck file
+      type(model_t), intent(out) :: model     !< the model read
+      type(error_t), intent(inout) :: err     !< status (stat_input on a bad deck)
+      type(deck_t) :: deck
+      type(pending_t) :: pend
+      integer :: ic
+
+      model%deck_file = path
+      model%deck_text = ''
+      model%title = ''
+      call deck_lex(path, deck, err)
+      if (allocated(deck%text)) model%deck_text = deck%text
+      if (has_error(err)) deck%n_cards = 0
+
+      ! the arrays are sized from the keyword counts, then filled card by card
+      allocate (model%sections(keyword_count(deck, 'SECTION')))
+      allocate (model%lines(keyword_count(deck, 'LINE')))
+      allocate (model%constraints(keyword_count(deck, 'BOUNDARY')))
+      allocate (model%loads(keyword_count(deck, 'LOAD')))
+      allocate (pend%section_card(size(model%sections)))
+      allocate (pend%line_section(size(model%lines)))
+      allocate (pend%bc_line(size(model%constraints)))
+      allocate (pend%load_line(size(model%loads)))
+      if (has_error(err)) return
+
+      do ic = 1, deck%n_cards
+         call read_card(deck, ic, model, pend, err)
+         if (has_error(err)) then
+            call trim_model(pend, model)
+            return
+         end if
+      end do
+      call validate_model(deck, pend, model, err)
+   end subroutine deck_read
+
+   !> Number of cards with the given keyword.
+   pure integer function keyword_count(deck, keyword) result(n)
+      type(deck_t), intent(in) :: deck        !< all cards
+      character(len=*), intent(in) :: keyword !< keyword, upper case, without '*'
+      integer :: ic
+      n = 0
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword == keyword) n = n + 1
+      end do
+   end function keyword_count
+
+   !> After an error: shrink the model's arrays to the items actually read.
+   subroutine trim_model(pend, model)
+      type(pending_t), intent(in) :: pend    !< how many items were read
+      type(model_t), intent(inout) :: model  !< model to trim
+      model%sections = model%sections(1:pend%n_sections)
+      model%lines = model%lines(1:pend%n_lines)
+      model%constraints = model%constraints(1:pend%n_constraints)
+      model%loads = model%loads(1:pend%n_loads)
+   end subroutine trim_model
+
+   !> Hand card `ic` to the reader of its keyword.
+   subroutine read_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card to read
+      type(model_t), intent(inout) :: model   !< model being filled
+      type(pending_t), intent(inout) :: pend  !< references to resolve later
+      type(error_t), intent(inout) :: err     !< status
+
+      associate (card => deck%cards(ic))
+         select case (card%keyword)
+         case ('HEADING')
+            call read_heading_card(deck, ic, model, pend, err)
+         case ('GRAVITY')
+            call read_gravity_card(deck, ic, model, pend, err)
+         case ('SECTION')
+            call read_section_card(deck, ic, model, pend, err)
+         case ('LINE')
+            call read_line_card(deck, ic, model, pend, err)
+         case ('BOUNDARY')
+            call read_boundary_card(card, ic, model, pend, err)
+         case ('LOAD')
+            call read_load_card(card, ic, model, pend, err)
+         case ('STATIC')
+            call read_static_card(deck, ic, model, pend, err)
+         case ('OUTPUT')
+            call read_output_card(deck, ic, model, pend, err)
+         case default
+            if (index(card%keyword, '=') > 0) then
+               call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
+                               err)
+            else
+               call card_error(card, 'unknown keyword', err)
+            end if
+         end select
+      end associate
+   end subroutine read_card
+
+   ! ================================================================ card readers
+
+   !> *HEADING: free-text data lines, the first one is the title. At most one.
+   subroutine read_heading_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *HEADING card
+      type(model_t), intent(inout) :: model   !< model: title set
+      type(pending_t), intent(inout) :: pend  !< remembers the first *HEADING
+      type(error_t), intent(inout) :: err     !< status
+
+      associate (card => deck%cards(ic))
+         call check_once(deck, ic, pend%heading, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) ::], err)
+         if (has_error(err)) return
+         call card_check_data(card, 1, -1, err, 'the title')
+         if (has_error(err)) return
+         model%title = card%data(1)%text
+      end associate
+   end subroutine read_heading_card
+
+   !> *GRAVITY: one data line gx, gy, gz [m/s2]. At most one; zero is allowed.
+   subroutine read_gravity_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *GRAVITY card
+      type(model_t), intent(inout) :: model   !< model: gravity set
+      type(pending_t), intent(inout) :: pend  !< remembers the first *GRAVITY
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what = 'gx, gy, gz'
+      real(wp) :: g(3)
+
+      associate (card => deck%cards(ic))
+         call check_once(deck, ic, pend%gravity, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) ::], err)
+         if (has_error(err)) return
+         call card_check_data(card, 1, 1, err, what)
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 3, g, err, what)
+         if (has_error(err)) return
+         model%gravity = g
+      end associate
+   end subroutine read_gravity_card
+
+   !> *SECTION: cross-section properties; data line EA, EI1, EI2, GJ, MASS and an
+   !> optional line K1, K2, K3 (stress-free curvature). GA/RHOI set both components.
+   !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16) are resolved in validate_model.
+   subroutine read_section_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *SECTION card
+      type(model_t), intent(inout) :: model   !< model: one section appended
+      type(pending_t), intent(inout) :: pend  !< remembers the section's card
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what1 = 'EA, EI1, EI2, GJ, MASS'
+      character(len=*), parameter :: what2 = 'K1, K2, K3'
+      type(section_t) :: sec
+      character(len=:), allocatable :: name
+      real(wp) :: v(5), k(3)
+      integer :: is
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'NAME', 'OD', 'GA', &
+                                'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         do is = 1, pend%n_sections
+            if (model%sections(is)%name == name) then
+               call card_error(card, "section '"//name//"' is already defined (at "// &
+                               location(deck, pend%section_card(is))//')', err)
+               return
+            end if
+         end do
+         sec%name = name
+
+         call get_bounded(card, 'OD', sec%od, .false., err)
+         call get_pair(card, 'GA', sec%ga1, sec%ga2, .true., err)
+         call get_pair(card, 'RHOI', sec%rhoi1, sec%rhoi2, .false., err)
+         if (has_error(err)) return
+
+         call card_check_data(card, 1, 2, err, what1)
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 5, v, err, what1)
+         if (has_error(err)) return
+         call data_check(card, 1, 'EA', v(1), .true., err)
+         call data_check(card, 1, 'EI1', v(2), .true., err)
+         call data_check(card, 1, 'EI2', v(3), .true., err)
+         call data_check(card, 1, 'GJ', v(4), .true., err)
+         call data_check(card, 1, 'MASS', v(5), .false., err)
+         if (has_error(err)) return
+         sec%ea = v(1)
+         sec%ei1 = v(2)
+         sec%ei2 = v(3)
+         sec%gj = v(4)
+         sec%mass = v(5)
+         if (card%n_data >= 2) then
+            call card_data_reals(card, 2, 3, k, err, what2)
+            if (has_error(err)) return
+            sec%kappa0 = k
+         end if
+      end associate
+      pend%n_sections = pend%n_sections + 1
+      model%sections(pend%n_sections) = sec
+      pend%section_card(pend%n_sections) = ic
+   end subroutine read_section_card
+
+   !> *LINE: a rod between end A and end B; data line xA, yA, zA, xB, yB, zB and an
+   !> optional line v1x, v1y, v1z (direction d1 should point to).
+   !> Checks the geometry that does not depend on the boundaries.
+   subroutine read_line_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *LINE card
+      type(model_t), intent(inout) :: model   !< model: one line appended
+      type(pending_t), intent(inout) :: pend  !< remembers the SECTION= reference
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what1 = 'xA, yA, zA, xB, yB, zB'
+      character(len=*), parameter :: what2 = 'v1x, v1y, v1z'
+      type(line_def_t) :: line
+      character(len=:), allocatable :: name, section
+      real(wp) :: x(6), v(3), chord(3), dist, vn
+      integer :: il
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
+                                'LENGTH', 'ELEMENTS', 'ORDER'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         do il = 1, pend%n_lines
+            if (model%lines(il)%name == name) then
+               call card_error(card, "line '"//name//"' is already defined (at "// &
+                               location(deck, pend%line_section(il)%card)//')', err)
+               return
+            end if
+         end do
+         line%name = name
+         call card_get_name(card, 'SECTION', section, err, required=.true.)
+         if (has_error(err)) return
+
+         call card_get_real(card, 'LENGTH', line%length, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. line%length > 0.0_wp) then
+            call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
+                            real_str(line%length), err)
+            return
+         end if
+         call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=.true.)
+         if (has_error(err)) return
+         if (line%n_elements < 1 .or. line%n_elements > max_elements) then
+            call param_fail(card, 'ELEMENTS', 'ELEMENTS must be between 1 and '// &
+                            int_str(max_elements)//', got '//int_str(line%n_elements), err)
+            return
+         end if
+         call card_get_int(card, 'ORDER', line%order, err)
+         if (has_error(err)) return
+         if (line%order < 1 .or. line%order > 3) then
+            call param_fail(card, 'ORDER', 'ORDER must be 1, 2 or 3, got '// &
+                            int_str(line%order), err)
+            return
+         end if
+
+         call card_check_data(card, 1, 2, err, what1)
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 6, x, err, what1)
+         if (has_error(err)) return
+         line%end_a = x(1:3)
+         line%end_b = x(4:6)
+         chord = line%end_b - line%end_a
+         dist = norm2(chord)
+         if (dist < coincide_tol*line%length) then
+            call card_data_error(card, 1, 'ends A and B coincide', err)
+            return
+         end if
+         if (dist > line%length*(1.0_wp + overlong_tol)) then
+            call card_data_error(card, 1, 'the distance between ends A and B ('// &
+                                 real_str(dist)//' m) is greater than LENGTH ('// &
+                                 real_str(line%length)//' m)', err)
+            return
+         end if
+
+         if (card%n_data >= 2) then
+            call card_data_reals(card, 2, 3, v, err, what2)
+            if (has_error(err)) return
+            vn = norm2(v)
+            if (.not. vn > 0.0_wp) then
+               call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is zero', err)
+               return
+            end if
+            if (norm2(cross(v/vn, chord/dist)) < parallel_tol) then
+               call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is parallel '// &
+                                    'to the chord from end A to end B', err)
+               return
+            end if
+            line%has_d1_hint = .true.
+            line%d1_hint = v/vn
+         end if
+      end associate
+      pend%n_lines = pend%n_lines + 1
+      model%lines(pend%n_lines) = line
+      pend%line_section(pend%n_lines) = ref_t(section, ic)
+   end subroutine read_line_card
+
+   !> *BOUNDARY: a node constraint of TYPE FREE, PINNED, HINGED (data line: axis),
+   !> CLAMPED or POSITION (data line: position), at END=A|B or NODE=k of LINE=name.
+   subroutine read_boundary_card(card, ic, model, pend, err)
+      type(card_t), intent(in) :: card        !< the *BOUNDARY card
+      integer, intent(in) :: ic               !< its index
+      type(model_t), intent(inout) :: model   !< model: one constraint appended
+      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
+      type(error_t), intent(inout) :: err     !< status
+      character(len=8), parameter :: types(5) = &
+         [character(len=8) :: 'FREE', 'PINNED', 'HINGED', 'CLAMPED', 'POSITION']
+      integer, parameter :: kinds(5) = [bc_free, bc_pinned, bc_hinged, bc_clamped, &
+                                        bc_position]
+      type(constraint_t) :: bc
+      character(len=:), allocatable :: line
+      real(wp) :: v(3), vn
+      integer :: it
+
+      call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
+                             'TYPE'], err)
+      if (has_error(err)) return
+      call card_get_name(card, 'LINE', line, err, required=.true.)
+      if (has_error(err)) return
+      call get_node(card, bc%node, err)
+      if (has_error(err)) return
+      it = 0
+      call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
+      if (has_error(err)) return
+      bc%kind = kinds(it)
+
+      select case (bc%kind)
+      case (bc_hinged)
+         call card_check_data(card, 1, 1, err, 'hinge axis ax, ay, az')
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 3, v, err, 'ax, ay, az')
+         if (has_error(err)) return
+         vn = norm2(v)
+         if (.not. vn > 0.0_wp) then
+            call card_data_error(card, 1, 'the hinge axis ax, ay, az is zero', err)
+            return
+         end if
+         bc%axis = v/vn
+      case (bc_position)
+         call card_check_data(card, 1, 1, err, 'position x, y, z')
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 3, v, err, 'x, y, z')
+         if (has_error(err)) return
+         bc%position = v
+      case default
+         if (card%n_data > 0) then
+            call card_data_error(card, 1, 'data lines are not allowed with TYPE='// &
+                                 trim(types(it)), err)
+            return
+         end if
+      end select
+      pend%n_constraints = pend%n_constraints + 1
+      model%constraints(pend%n_constraints) = bc
+      pend%bc_line(pend%n_constraints) = ref_t(line, ic)
+   end subroutine read_boundary_card
+
+   !> *LOAD: a point force (3 values) or force and moment (6 values), fixed in space,
+   !> at END=A|B or NODE=k of LINE=name.
+   subroutine read_load_card(card, ic, model, pend, err)
+      type(card_t), intent(in) :: card        !< the *LOAD card
+      integer, intent(in) :: ic               !< its index
+      type(model_t), intent(inout) :: model   !< model: one load appended
+      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what = 'Fx, Fy, Fz, Mx, My, Mz'
+      type(point_load_t) :: load
+      character(len=:), allocatable :: line
+      real(wp) :: v(6)
+      integer :: n
+
+      call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE'], &
+                             err)
+      if (has_error(err)) return
+      call card_get_name(card, 'LINE', line, err, required=.true.)
+      if (has_error(err)) return
+      call get_node(card, load%node, err)
+      if (has_error(err)) return
+      call card_check_data(card, 1, 1, err, 'Fx, Fy, Fz [, Mx, My, Mz]')
+      if (has_error(err)) return
+      n = card_data_count(card, 1)
+      if (n /= 3 .and. n /= 6) then
+         call card_data_error(card, 1, 'expected 3 or 6 values, got '//int_str(n)// &
+                              ' (Fx, Fy, Fz [, Mx, My, Mz])', err)
+         return
+      end if
+      v = 0.0_wp
+      call card_data_reals(card, 1, n, v(1:n), err, what(1:merge(10, len(what), n == 3)))
+      if (has_error(err)) return
+      load%force = v(1:3)
+      load%moment = v(4:6)
+      pend%n_loads = pend%n_loads + 1
+      model%loads(pend%n_loads) = load
+      pend%load_line(pend%n_loads) = ref_t(line, ic)
+   end subroutine read_load_card
+
+   !> *STATIC: request a static analysis and set its options. No data lines.
+   subroutine read_static_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *STATIC card
+      type(model_t), intent(inout) :: model   !< model: static options set
+      type(pending_t), intent(inout) :: pend  !< remembers the first *STATIC
+      type(error_t), intent(inout) :: err     !< status
+
+      associate (card => deck%cards(ic), st => model%static)
+         call check_once(deck, ic, pend%static, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) :: 'INCREMENTS', &
+                                'MAX ITERATIONS', 'CUTBACKS', 'FORCE TOL', 'DISP TOL', &
+                                'LINE SEARCH'], err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         st%requested = .true.
+         call card_get_int(card, 'INCREMENTS', st%increments, err)
+         if (has_error(err)) return
+         if (st%increments < 1) then
+            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be >= 1, got '// &
+                            int_str(st%increments), err)
+            return
+         end if
+         call card_get_int(card, 'MAX ITERATIONS', st%max_iterations, err)
+         if (has_error(err)) return
+         if (st%max_iterations < 1) then
+            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be >= 1, got '// &
+                            int_str(st%max_iterations), err)
+            return
+         end if
+         call card_get_int(card, 'CUTBACKS', st%max_cutbacks, err)
+         if (has_error(err)) return
+         if (st%max_cutbacks < 0 .or. st%max_cutbacks > max_cutbacks) then
+            call param_fail(card, 'CUTBACKS', 'CUTBACKS must be between 0 and '// &
+                            int_str(max_cutbacks)//', got '//int_str(st%max_cutbacks), err)
+            return
+         end if
+         call get_tolerance(card, 'FORCE TOL', st%force_tol, err)
+         call get_tolerance(card, 'DISP TOL', st%disp_tol, err)
+         if (has_error(err)) return
+         call card_get_yesno(card, 'LINE SEARCH', st%line_search, err)
+      end associate
+   end subroutine read_static_card
+
+   !> *OUTPUT: which result files to write (CSV=YES|NO, HDF5=YES|NO). No data lines.
+   subroutine read_output_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *OUTPUT card
+      type(model_t), intent(inout) :: model   !< model: output options set
+      type(pending_t), intent(inout) :: pend  !< remembers the first *OUTPUT
+      type(error_t), intent(inout) :: err     !< status
+
+      associate (card => deck%cards(ic))
+         call check_once(deck, ic, pend%output, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) :: 'CSV', 'HDF5'], err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         call card_get_yesno(card, 'CSV', model%output%csv, err)
+         if (has_error(err)) return
+         call card_get_yesno(card, 'HDF5', model%output%hdf5, err)
+      end associate
+   end subroutine read_output_card
+
+   ! ============================================================ reader helpers
+
+   !> Refuse a second card of a keyword allowed once; `first` remembers the first.
+   subroutine check_once(deck, ic, first, err)
+      type(deck_t), intent(in) :: deck     !< all cards
+      integer, intent(in) :: ic            !< index of this card
+      integer, intent(inout) :: first      !< index of the first such card (0: none)
+      type(error_t), intent(inout) :: err  !< status
+      if (first == 0) then
+         first = ic
+      else
+         call card_error(deck%cards(ic), 'given twice (first at '// &
+                         location(deck, first)//')', err)
+      end if
+   end subroutine check_once
+
+   !> Read END=A|B or NODE=k (exactly one of them) into a node number: end_a, end_b
+   !> or k >= 1. The upper bound of k is checked once the line is known.
+   subroutine get_node(card, node, err)
+      type(card_t), intent(in) :: card     !< a *BOUNDARY or *LOAD card
+      integer, intent(out) :: node         !< end_a, end_b or the node number
+      type(error_t), intent(inout) :: err  !< status
+      integer :: which
+
+      node = end_a
+      if (card_find_param(card, 'END') > 0 .and. card_find_param(card, 'NODE') > 0) then
+         call card_error(card, 'give END or NODE, not both', err)
+         return
+      end if
+      if (card_find_param(card, 'END') > 0) then
+         which = 0
+         call card_get_choice(card, 'END', [character(len=1) :: 'A', 'B'], which, err)
+         if (has_error(err)) return
+         node = merge(end_a, end_b, which == 1)
+      else if (card_find_param(card, 'NODE') > 0) then
+         call card_get_int(card, 'NODE', node, err)
+         if (has_error(err)) return
+         if (node < 1) then
+            call param_fail(card, 'NODE', 'NODE must be >= 1, got '//int_str(node), err)
+         end if
+      else
+         call card_error(card, 'missing parameter END or NODE', err)
+      end if
+   end subroutine get_node
+
+   !> Optional real parameter that must be >= 0 (or > 0 when `strict`).
+   subroutine get_bounded(card, name, value, strict, err)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      real(wp), intent(inout) :: value     !< the value (unchanged if absent)
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      logical :: found
+
+      if (has_error(err)) return
+      call card_get_real(card, name, value, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (strict .and. .not. value > 0.0_wp) then
+         call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
+      else if (.not. value >= 0.0_wp) then
+         call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
+      end if
+   end subroutine get_bounded
+
+   !> A pair of parameters NAME1, NAME2 that NAME sets together (GA, RHOI).
+   !> NAME with NAME1 or NAME2 is an error. Values not given stay unchanged.
+   subroutine get_pair(card, name, v1, v2, strict, err)
+      type(card_t), intent(in) :: card     !< the *SECTION card
+      character(len=*), intent(in) :: name !< 'GA' or 'RHOI'
+      real(wp), intent(inout) :: v1        !< component 1 (unchanged if not given)
+      real(wp), intent(inout) :: v2        !< component 2 (unchanged if not given)
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      real(wp) :: both
+
+      if (has_error(err)) return
+      if (card_find_param(card, name) > 0) then
+         if (card_find_param(card, name//'1') > 0 .or. &
+             card_find_param(card, name//'2') > 0) then
+            call param_fail(card, name, 'give '//name//' or '//name//'1/'//name// &
+                            '2, not both', err)
+            return
+         end if
+         both = -1.0_wp
+         call get_bounded(card, name, both, strict, err)
+         if (has_error(err)) return
+         v1 = both
+         v2 = both
+      else
+         call get_bounded(card, name//'1', v1, strict, err)
+         call get_bounded(card, name//'2', v2, strict, err)
+      end if
+   end subroutine get_pair
+
+   !> Optional tolerance parameter, 0 < value < 1.
+   subroutine get_tolerance(card, name, value, err)
+      type(card_t), intent(in) :: card     !< the *STATIC card
+      character(len=*), intent(in) :: name !< parameter name
+      real(wp), intent(inout) :: value     !< the tolerance [-] (unchanged if absent)
+      type(error_t), intent(inout) :: err  !< status
+      logical :: found
+
+      if (has_error(err)) return
+      call card_get_real(card, name, value, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (.not. (value > 0.0_wp .and. value < 1.0_wp)) then
+         call param_fail(card, name, name//' must be > 0 and < 1, got '// &
+                         real_str(value), err)
+      end if
+   end subroutine get_tolerance
+
+   !> Check a value of data line `id`: > 0 when strict, else >= 0.
+   subroutine data_check(card, id, name, value, strict, err)
+      type(card_t), intent(in) :: card     !< the card
+      integer, intent(in) :: id            !< index of the data line
+      character(len=*), intent(in) :: name !< name of the value
+      real(wp), intent(in) :: value        !< the value
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      if (has_error(err)) return
+      if (strict .and. .not. value > 0.0_wp) then
+         call card_data_error(card, id, name//' must be > 0, got '//real_str(value), err)
+      else if (.not. value >= 0.0_wp) then
+         call card_data_error(card, id, name//' must be >= 0, got '//real_str(value), err)
+      end if
+   end subroutine data_check
+
+   !> Report an error at the line of parameter `name` (keyword line if absent).
+   subroutine param_fail(card, name, message, err)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ip
+      ip = card_find_param(card, name)
+      if (ip > 0) then
+         call card_param_error(card, ip, message, err)
+      else
+         call card_error(card, message, err)
+      end if
+   end subroutine param_fail
+
+   !> 'FILE:LINE' of card ic, to point at an earlier definition.
+   function location(deck, ic) result(s)
+      type(deck_t), intent(in) :: deck    !< all cards
+      integer, intent(in) :: ic           !< card index
+      character(len=:), allocatable :: s  !< 'FILE:LINE'
+      s = deck%cards(ic)%file//':'//int_str(deck%cards(ic)%line)
+   end function location
+
+   !> Cross product a x b.
+   pure function cross(a, b) result(c)
+      real(wp), intent(in) :: a(3)  !< first vector
+      real(wp), intent(in) :: b(3)  !< second vector
+      real(wp) :: c(3)              !< a x b
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross
+
+   ! ================================================================ validation
+
+   !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE;
+   !> references resolved in card order (SECTION=, LINE=, NODE range, one *BOUNDARY
+   !> per node); section defaults; lines not held at both ends start straight.
+   subroutine validate_model(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< references to resolve
+      type(model_t), intent(inout) :: model   !< model to complete
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ic, il, ib, iload, iref
+
+      if (size(model%sections) == 0) then
+         call set_error(err, stat_input, deck%main_file//':1: error: no *SECTION in deck')
+         return
+      end if
+      if (size(model%lines) == 0) then
+         call set_error(err, stat_input, deck%main_file//':1: error: no *LINE in deck')
+         return
+      end if
+
+      il = 0
+      ib = 0
+      iload = 0
+      do ic = 1, deck%n_cards
+         select case (deck%cards(ic)%keyword)
+         case ('LINE')
+            il = il + 1
+            call resolve_section(deck%cards(ic), pend%line_section(il)%name, model, &
+                                 iref, err)
+            model%lines(il)%section = iref
+         case ('BOUNDARY')
+            ib = ib + 1
+            call resolve_line(deck%cards(ic), pend%bc_line(ib)%name, model, &
+                              iref, model%constraints(ib)%node, err)
+            if (has_error(err)) return
+            model%constraints(ib)%line = iref
+            call check_unique_boundary(deck, pend, model, ib, err)
+         case ('LOAD')
+            iload = iload + 1
+            call resolve_line(deck%cards(ic), pend%load_line(iload)%name, model, &
+                              iref, model%loads(iload)%node, err)
+            model%loads(iload)%line = iref
+         end select
+         if (has_error(err)) return
+      end do
+
+      call resolve_section_defaults(model)
+
+      do il = 1, size(model%lines)
+         call check_straight_start(deck%cards(pend%line_section(il)%card), model, il, err)
+         if (has_error(err)) return
+      end do
+   end subroutine validate_model
+
+   !> Find the section named by a *LINE card's SECTION=.
+   subroutine resolve_section(card, name, model, isec, err)
+      type(card_t), intent(in) :: card      !< the *LINE card
+      character(len=*), intent(in) :: name  !< section name, upper case
+      type(model_t), intent(in) :: model    !< model with all sections
+      integer, intent(out) :: isec          !< index of the section
+      type(error_t), intent(inout) :: err   !< status
+      do isec = 1, size(model%sections)
+         if (model%sections(isec)%name == name) return
+      end do
+      isec = 0
+      call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
+                      ' with NAME='//name//' in the deck)', err)
+   end subroutine resolve_section
+
+   !> Find the line named by LINE= of a *BOUNDARY or *LOAD card and check its node.
+   subroutine resolve_line(card, name, model, iline, node, err)
+      type(card_t), intent(in) :: card      !< the *BOUNDARY or *LOAD card
+      character(len=*), intent(in) :: name  !< line name, upper case
+      type(model_t), intent(in) :: model    !< model with all lines
+      integer, intent(out) :: iline         !< index of the line
+      integer, intent(in) :: node           !< end_a, end_b or node number
+      type(error_t), intent(inout) :: err   !< status
+      integer :: nn
+
+      do iline = 1, size(model%lines)
+         if (model%lines(iline)%name == name) exit
+      end do
+      if (iline > size(model%lines)) then
+         iline = 0
+         call param_fail(card, 'LINE', "LINE '"//name//"' is not defined (no *LINE"// &
+                         ' with NAME='//name//' in the deck)', err)
+         return
+      end if
+      nn = node_count(model%lines(iline))
+      if (node > nn) then
+         call param_fail(card, 'NODE', 'NODE '//int_str(node)//' is beyond the last node'// &
+                         ' of line '//trim(name)//' ('//int_str(nn)//')', err)
+      end if
+   end subroutine resolve_line
+
+   !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
+   !> END=B is the last node).
+   subroutine check_unique_boundary(deck, pend, model, ib, err)
+      type(deck_t), intent(in) :: deck       !< all cards
+      type(pending_t), intent(in) :: pend    !< card of each constraint
+      type(model_t), intent(in) :: model     !< model with constraints 1..ib resolved
+      integer, intent(in) :: ib              !< constraint to check
+      type(error_t), intent(inout) :: err    !< status
+      integer :: jb, node, nn
+
+      associate (b => model%constraints(ib))
+         nn = node_count(model%lines(b%line))
+         node = node_number(b%node, nn)
+         do jb = 1, ib - 1
+            if (model%constraints(jb)%line /= b%line) cycle
+            if (node_number(model%constraints(jb)%node, nn) /= node) cycle
+            call card_error(deck%cards(pend%bc_line(ib)%card), 'line '// &
+                            trim(model%lines(b%line)%name)//' '//node_label(node, nn)// &
+                            ' already has a *BOUNDARY (at '// &
+                            location(deck, pend%bc_line(jb)%card)//')', err)
+            return
+         end do
+      end associate
+   end subroutine check_unique_boundary
+
+   !> Resolve the section defaults: GA1, GA2 -> EA (penalty on shear, formulation
+   !> note); RHOI1, RHOI2 -> MASS*OD**2/16 (solid circular section; 0 without OD).
+   subroutine resolve_section_defaults(model)
+      type(model_t), intent(inout) :: model  !< model whose sections are completed
+      integer :: is
+      do is = 1, size(model%sections)
+         associate (s => model%sections(is))
+            if (s%ga1 < 0.0_wp) s%ga1 = s%ea
+            if (s%ga2 < 0.0_wp) s%ga2 = s%ea
+            if (s%rhoi1 < 0.0_wp) s%rhoi1 = s%mass*s%od**2/16.0_wp
+            if (s%rhoi2 < 0.0_wp) s%rhoi2 = s%mass*s%od**2/16.0_wp
+         end associate
+      end do
+   end subroutine resolve_section_defaults
+
+   !> A line not held in position at both ends (PINNED, HINGED, CLAMPED or POSITION)
+   !> starts straight from A towards B, so its end distance must equal LENGTH.
+   subroutine check_straight_start(card, model, il, err)
+      type(card_t), intent(in) :: card      !< the *LINE card
+      type(model_t), intent(in) :: model    !< model with resolved constraints
+      integer, intent(in) :: il             !< line to check
+      type(error_t), intent(inout) :: err   !< status
+      logical :: held_a, held_b
+      integer :: ib, nn, node
+      real(wp) :: dist
+      character(len=:), allocatable :: which
+
+      associate (line => model%lines(il))
+         nn = node_count(line)
+         held_a = .false.
+         held_b = .false.
+         do ib = 1, size(model%constraints)
+            associate (b => model%constraints(ib))
+               if (b%line /= il .or. b%kind == bc_free) cycle
+               node = node_number(b%node, nn)
+               if (node == 1) held_a = .true.
+               if (node == nn) held_b = .true.
+            end associate
+         end do
+         if (held_a .and. held_b) return
+         dist = norm2(line%end_b - line%end_a)
+         if (abs(dist - line%length) <= straight_tol*line%length) return
+         if (.not. held_a .and. .not. held_b) then
+            which = 'ends A and B are free'
+         else if (.not. held_a) then
+            which = 'end A is free'
+         else
+            which = 'end B is free'
+         end if
+         call card_error(card, which//', so line '//trim(line%name)//' starts straight'// &
+                         ' from A towards B: the distance between its ends ('// &
+                         real_str(dist)//' m) must equal LENGTH ('//real_str(line%length)// &
+                         ' m)', err)
+      end associate
+   end subroutine check_straight_start
+
+   !> Number of nodes of a line: ELEMENTS*ORDER + 1.
+   pure integer function node_count(line) result(nn)
+      type(line_def_t), intent(in) :: line  !< the line
+      nn = line%n_elements*line%order + 1
+   end function node_count
+
+   !> Node number 1..nn of a stored node (end_a, end_b or k).
+   pure integer function node_number(node, nn) result(k)
+      integer, intent(in) :: node  !< end_a, end_b or a node number
+      integer, intent(in) :: nn    !< number of nodes of the line
+      if (node == end_b) then
+         k = nn
+      else
+         k = node     ! end_a is node 1
+      end if
+   end function node_number
+
+   !> 'node 1 (end A)', 'node 31 (end B)' or 'node 7'.
+   function node_label(node, nn) result(s)
+      integer, intent(in) :: node         !< node number 1..nn
+      integer, intent(in) :: nn           !< number of nodes of the line
+      character(len=:), allocatable :: s  !< the label
+      s = 'node '//int_str(node)
+      if (node == 1) s = s//' (end A)'
+      if (node == nn) s = s//' (end B)'
+   end function node_label
+
+end module rodyn_deck

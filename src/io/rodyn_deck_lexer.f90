@@ -1,0 +1,1030 @@
+!> Keyword-deck lexer: turns an Abaqus/Flexcom-style input deck into a list of cards.
+!>
+!> A card is one keyword line (`*KEYWORD, PARAM=value, ...`) and the data lines that
+!> follow it up to the next keyword line. Every card, parameter and data line remembers
+!> the file (as the path used to open it) and the line number it came from, so that the
+!> keyword readers can report `FILE:LINE: error: *KEYWORD: message`.
+!>
+!> The lexer handles the general syntax of docs/deck.md: `**` comments, blank lines,
+!> case-insensitive names (stored upper case, runs of blanks collapsed to one),
+!> trailing commas, blanks around `=` and `,`, and `*INCLUDE, INPUT=path` (path relative
+!> to the including file's folder, nested up to max_include_depth levels, cycles
+!> refused). It also keeps the full text read for the record (model%deck_text).
+!>
+!> The card_* helpers below are the readers' toolkit: get a parameter as a real, an
+!> integer, a name, a choice from a list, YES/NO; check the number of data lines; parse
+!> the reals on a data line. Each helper reports its own errors, already located.
+module rodyn_deck_lexer
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+   use rodyn_kinds, only: wp, i8
+   use rodyn_error, only: error_t, set_error, has_error, stat_input
+   use rodyn_model, only: name_len
+   implicit none
+   private
+   public :: field_t, param_t, data_line_t, card_t, deck_t
+   public :: deck_lex
+   public :: card_check_params, card_find_param, card_where
+   public :: card_error, card_param_error, card_data_error
+   public :: card_get_real, card_get_int, card_get_name, card_get_text
+   public :: card_get_choice, card_get_yesno
+   public :: card_check_data, card_data_count, card_data_reals
+   public :: parse_real, parse_int, real_str, int_str, upper_case
+   public :: max_include_depth, param_len
+
+   integer, parameter :: max_include_depth = 10 !< deepest *INCLUDE nesting allowed
+   integer, parameter :: param_len = 24         !< length for lists of parameter names
+   integer, parameter :: max_exponent10 = 100   !< numbers are below 10**max_exponent10
+   integer, parameter :: min_exponent10 = -100  !< non-zero numbers are at least 10**min_..
+   character(len=1), parameter :: lf = achar(10), cr = achar(13), tab = achar(9)
+
+   !> A string of any length (one field of a data line, one line of a file).
+   type :: field_t
+      character(len=:), allocatable :: s !< the text, trimmed
+   end type field_t
+
+   !> One `NAME=value` parameter of a keyword line.
+   type :: param_t
+      character(len=:), allocatable :: name  !< upper case, blanks collapsed
+      character(len=:), allocatable :: value !< text after '=', trimmed ('' if none)
+      logical :: has_value = .false.         !< a non-empty value was given
+      integer :: line = 0                    !< line number in the card's file
+   end type param_t
+
+   !> One data line, split at commas.
+   type :: data_line_t
+      integer :: line = 0                       !< line number in the card's file
+      character(len=:), allocatable :: text     !< the whole line, trimmed
+      type(field_t), allocatable :: fields(:)   !< comma-separated fields, trimmed
+   end type data_line_t
+
+   !> One keyword line with its parameters and data lines.
+   type :: card_t
+      character(len=:), allocatable :: keyword  !< upper case, without the '*'
+      character(len=:), allocatable :: file     !< path the file was opened with
+      integer :: line = 0                       !< line number of the keyword line
+      type(param_t), allocatable :: params(:)   !< parameters, in the order given
+      integer :: n_data = 0                     !< number of data lines
+      type(data_line_t), allocatable :: data(:) !< data lines 1..n_data (capacity may exceed)
+   end type card_t
+
+   !> The deck: all cards of the main file and its includes, in reading order.
+   type :: deck_t
+      character(len=:), allocatable :: main_file !< path of the main deck
+      character(len=:), allocatable :: text      !< full text read, each file headed
+      integer :: n_cards = 0                     !< number of cards
+      type(card_t), allocatable :: cards(:)      !< cards 1..n_cards (capacity may exceed)
+   end type deck_t
+
+contains
+
+   ! ======================================================================= lexing
+
+   !> Read the deck file `path` and its includes into a list of cards.
+   !> A file that cannot be read gives 'PATH: error: cannot open deck'.
+   subroutine deck_lex(path, deck, err)
+      character(len=*), intent(in) :: path   !< path of the main deck file
+      type(deck_t), intent(out) :: deck      !< the cards read
+      type(error_t), intent(inout) :: err    !< status (stat_input on error)
+      character(len=:), allocatable :: text
+      type(field_t) :: stack(0:max_include_depth)
+      logical :: ok
+
+      deck%main_file = path
+      deck%text = ''
+      deck%n_cards = 0
+      allocate (deck%cards(16))
+      call read_file_text(path, text, ok)
+      if (.not. ok) then
+         call set_error(err, stat_input, path//': error: cannot open deck')
+         return
+      end if
+      stack(0)%s = path_normalise(path)
+      call lex_text(path, text, 0, stack, deck, err)
+   end subroutine deck_lex
+
+   !> Split the text of one file into lines and turn them into cards; recurse into
+   !> *INCLUDE files. `depth` is 0 for the main file.
+   recursive subroutine lex_text(path, text, depth, stack, deck, err)
+      character(len=*), intent(in) :: path       !< path the file was opened with
+      character(len=*), intent(in) :: text       !< the file's contents
+      integer, intent(in) :: depth               !< include depth of this file
+      type(field_t), intent(inout) :: stack(0:)  !< normalised paths of the open files
+      type(deck_t), intent(inout) :: deck        !< cards read so far
+      type(error_t), intent(inout) :: err        !< status
+      integer :: first, last, line_no, cur
+      character(len=:), allocatable :: s
+      type(card_t) :: card
+
+      deck%text = deck%text//'** ---- file: '//path//lf//without_cr(text)
+      if (len(text) > 0) then
+         if (text(len(text):len(text)) /= lf) deck%text = deck%text//lf
+      end if
+
+      cur = 0        ! card that data lines belong to: 0 none yet, -1 an *INCLUDE
+      line_no = 0
+      first = 1
+      do while (first <= len(text))
+         last = index(text(first:), lf)
+         if (last == 0) then
+            last = len(text) + 1
+         else
+            last = first + last - 1
+         end if
+         line_no = line_no + 1
+         s = clean_line(text(first:last - 1))
+         first = last + 1
+
+         if (len(s) == 0) cycle
+         if (len(s) >= 2) then
+            if (s(1:2) == '**') cycle
+         end if
+         if (s(1:1) == '*') then
+            call parse_keyword_line(path, line_no, s, card, err)
+            if (has_error(err)) return
+            if (card%keyword == 'INCLUDE') then
+               call lex_include(card, depth, stack, deck, err)
+               if (has_error(err)) return
+               cur = -1
+            else
+               call append_card(deck, card)
+               cur = deck%n_cards
+            end if
+         else if (cur == 0) then
+            call set_error(err, stat_input, path//':'//int_str(line_no)// &
+                           ': error: data line before the first keyword line')
+            return
+         else if (cur < 0) then
+            call set_error(err, stat_input, path//':'//int_str(line_no)// &
+                           ': error: *INCLUDE: data lines are not allowed')
+            return
+         else
+            call append_data_line(deck%cards(cur), line_no, s)
+         end if
+      end do
+   end subroutine lex_text
+
+   !> Process one *INCLUDE card: check it, open the file relative to the including
+   !> file's folder, refuse cycles and nesting deeper than max_include_depth, recurse.
+   recursive subroutine lex_include(card, depth, stack, deck, err)
+      type(card_t), intent(in) :: card           !< the *INCLUDE card
+      integer, intent(in) :: depth               !< include depth of the including file
+      type(field_t), intent(inout) :: stack(0:)  !< normalised paths of the open files
+      type(deck_t), intent(inout) :: deck        !< cards read so far
+      type(error_t), intent(inout) :: err        !< status
+      character(len=:), allocatable :: input, path, text, norm
+      integer :: k
+      logical :: ok
+
+      call card_check_params(card, [character(len=param_len) :: 'INPUT'], err)
+      if (has_error(err)) return
+      call card_get_text(card, 'INPUT', input, err, required=.true.)
+      if (has_error(err)) return
+      if (len(input) >= 2) then          ! INPUT="path" : quotes are not part of the path
+         if (input(1:1) == '"' .and. input(len(input):len(input)) == '"') &
+            input = input(2:len(input) - 1)
+      end if
+      if (len(input) == 0) then
+         call card_error(card, 'parameter INPUT needs a value (INPUT=...)', err)
+         return
+      end if
+      if (input(1:1) == '/') then
+         path = input
+      else
+         path = dir_of(card%file)//input
+      end if
+      norm = path_normalise(path)
+      do k = 0, depth
+         if (stack(k)%s == norm) then
+            call card_error(card, "'"//path//"' is already being read (include cycle)", err)
+            return
+         end if
+      end do
+      if (depth + 1 > max_include_depth) then
+         call card_error(card, 'includes nested deeper than '// &
+                         int_str(max_include_depth)//' levels', err)
+         return
+      end if
+      call read_file_text(path, text, ok)
+      if (.not. ok) then
+         call card_error(card, "cannot open '"//path//"'", err)
+         return
+      end if
+      stack(depth + 1)%s = norm
+      call lex_text(path, text, depth + 1, stack, deck, err)
+   end subroutine lex_include
+
+   !> Parse a keyword line `*KEYWORD, NAME=value, ...` (s starts with '*').
+   subroutine parse_keyword_line(path, line_no, s, card, err)
+      character(len=*), intent(in) :: path    !< file the line is in
+      integer, intent(in) :: line_no          !< line number
+      character(len=*), intent(in) :: s       !< the line, cleaned, starting with '*'
+      type(card_t), intent(out) :: card       !< the card started by this line
+      type(error_t), intent(inout) :: err     !< status
+      type(field_t), allocatable :: pieces(:)
+      integer :: n, k, eq
+
+      card%file = path
+      card%line = line_no
+      card%n_data = 0
+      call split_commas(s(2:), pieces)
+      n = size(pieces)
+      card%keyword = normalise_name(pieces(1)%s)
+      if (len(card%keyword) == 0) then
+         call set_error(err, stat_input, path//':'//int_str(line_no)// &
+                        ": error: keyword name missing after '*'")
+         return
+      end if
+      if (n > 1) then
+         if (len(pieces(n)%s) == 0) n = n - 1      ! trailing comma
+      end if
+      allocate (card%params(n - 1))
+      do k = 2, n
+         associate (p => card%params(k - 1))
+            p%line = line_no
+            if (len(pieces(k)%s) == 0) then
+               call card_error(card, 'empty parameter between two commas', err)
+               return
+            end if
+            eq = index(pieces(k)%s, '=')
+            if (eq == 0) then
+               p%name = normalise_name(pieces(k)%s)
+               p%value = ''
+            else
+               p%name = normalise_name(pieces(k)%s(:eq - 1))
+               p%value = trim(adjustl(pieces(k)%s(eq + 1:)))
+            end if
+            p%has_value = len(p%value) > 0
+            if (len(p%name) == 0) then
+               call card_error(card, "parameter name missing before '='", err)
+               return
+            end if
+         end associate
+      end do
+   end subroutine parse_keyword_line
+
+   !> Append a card to the deck, growing the list when full.
+   subroutine append_card(deck, card)
+      type(deck_t), intent(inout) :: deck  !< deck to extend
+      type(card_t), intent(in) :: card     !< card to append
+      type(card_t), allocatable :: tmp(:)
+      integer :: k
+
+      if (deck%n_cards == size(deck%cards)) then
+         allocate (tmp(2*size(deck%cards)))
+         do k = 1, deck%n_cards
+            call move_card(deck%cards(k), tmp(k))
+         end do
+         call move_alloc(tmp, deck%cards)
+      end if
+      deck%n_cards = deck%n_cards + 1
+      deck%cards(deck%n_cards) = card
+   end subroutine append_card
+
+   !> Move a card's contents to another (cheap: allocatable components are moved).
+   subroutine move_card(from, to)
+      type(card_t), intent(inout) :: from  !< source, left empty
+      type(card_t), intent(inout) :: to    !< destination
+      call move_alloc(from%keyword, to%keyword)
+      call move_alloc(from%file, to%file)
+      to%line = from%line
+      call move_alloc(from%params, to%params)
+      to%n_data = from%n_data
+      call move_alloc(from%data, to%data)
+   end subroutine move_card
+
+   !> Append a data line to a card, splitting it at commas (a trailing comma dropped).
+   subroutine append_data_line(card, line_no, s)
+      type(card_t), intent(inout) :: card  !< card the line belongs to
+      integer, intent(in) :: line_no       !< line number
+      character(len=*), intent(in) :: s    !< the line, cleaned
+      type(data_line_t), allocatable :: tmp(:)
+      type(field_t), allocatable :: pieces(:)
+      integer :: k, n
+
+      if (.not. allocated(card%data)) allocate (card%data(2))
+      if (card%n_data == size(card%data)) then
+         allocate (tmp(2*size(card%data)))
+         do k = 1, card%n_data
+            tmp(k)%line = card%data(k)%line
+            call move_alloc(card%data(k)%text, tmp(k)%text)
+            call move_alloc(card%data(k)%fields, tmp(k)%fields)
+         end do
+         call move_alloc(tmp, card%data)
+      end if
+      card%n_data = card%n_data + 1
+      call split_commas(s, pieces)
+      n = size(pieces)
+      if (n > 1) then
+         if (len(pieces(n)%s) == 0) n = n - 1      ! trailing comma
+      end if
+      associate (d => card%data(card%n_data))
+         d%line = line_no
+         d%text = s
+         allocate (d%fields(n))
+         do k = 1, n
+            call move_alloc(pieces(k)%s, d%fields(k)%s)
+         end do
+      end associate
+   end subroutine append_data_line
+
+   ! ================================================================ card helpers
+
+   !> Location prefix of a message: 'FILE:LINE: error: *KEYWORD: '.
+   pure function card_where(card, line) result(s)
+      type(card_t), intent(in) :: card   !< the card
+      integer, intent(in) :: line        !< line number to name
+      character(len=:), allocatable :: s !< the prefix
+      s = card%file//':'//int_str(line)//': error: *'//card%keyword//': '
+   end function card_where
+
+   !> Report an error located at the card's keyword line.
+   subroutine card_error(card, message, err)
+      type(card_t), intent(in) :: card      !< the card
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err   !< status to fill
+      call set_error(err, stat_input, card_where(card, card%line)//message)
+   end subroutine card_error
+
+   !> Report an error located at the line of parameter `ip`.
+   subroutine card_param_error(card, ip, message, err)
+      type(card_t), intent(in) :: card      !< the card
+      integer, intent(in) :: ip             !< index of the parameter
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err   !< status to fill
+      call set_error(err, stat_input, card_where(card, card%params(ip)%line)//message)
+   end subroutine card_param_error
+
+   !> Report an error located at data line `id` of the card.
+   subroutine card_data_error(card, id, message, err)
+      type(card_t), intent(in) :: card      !< the card
+      integer, intent(in) :: id             !< index of the data line
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err   !< status to fill
+      call set_error(err, stat_input, card_where(card, card%data(id)%line)//message)
+   end subroutine card_data_error
+
+   !> Check the parameter names: each must be in `allowed`, and given only once.
+   subroutine card_check_params(card, allowed, err)
+      type(card_t), intent(in) :: card                 !< the card
+      character(len=*), intent(in) :: allowed(:)       !< allowed names, upper case
+      type(error_t), intent(inout) :: err              !< status
+      character(len=:), allocatable :: list
+      integer :: ip, jp, k
+
+      do ip = 1, size(card%params)
+         if (.not. any(allowed == card%params(ip)%name)) then
+            if (size(allowed) == 0) then
+               list = '*'//card%keyword//' takes no parameters'
+            else
+               list = 'allowed: '//trim(allowed(1))
+               do k = 2, size(allowed)
+                  list = list//', '//trim(allowed(k))
+               end do
+            end if
+            call card_param_error(card, ip, 'unknown parameter '//card%params(ip)%name// &
+                                  ' ('//list//')', err)
+            return
+         end if
+         do jp = 1, ip - 1
+            if (card%params(jp)%name == card%params(ip)%name) then
+               call card_param_error(card, ip, 'parameter '//card%params(ip)%name// &
+                                     ' given twice', err)
+               return
+            end if
+         end do
+      end do
+   end subroutine card_check_params
+
+   !> Index of parameter `name` in the card, 0 if not given.
+   pure integer function card_find_param(card, name) result(ip)
+      type(card_t), intent(in) :: card       !< the card
+      character(len=*), intent(in) :: name   !< parameter name, upper case
+      do ip = 1, size(card%params)
+         if (card%params(ip)%name == name) return
+      end do
+      ip = 0
+   end function card_find_param
+
+   !> Find parameter `name` and check it has a value. ip = 0 when absent (an error if
+   !> required) or when it has no value (always an error).
+   subroutine find_valued(card, name, ip, err, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      integer, intent(out) :: ip              !< index of the parameter, 0 if unusable
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(in), optional :: required !< absence is an error
+      ip = card_find_param(card, name)
+      if (ip == 0) then
+         if (present(required)) then
+            if (required) call card_error(card, 'missing parameter '//name, err)
+         end if
+      else if (.not. card%params(ip)%has_value) then
+         call card_param_error(card, ip, 'parameter '//name//' needs a value ('// &
+                               name//'=...)', err)
+         ip = 0
+      end if
+   end subroutine find_valued
+
+   !> Get a real parameter. Left unchanged when absent.
+   subroutine card_get_real(card, name, value, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      real(wp), intent(inout) :: value        !< the value (unchanged if absent)
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: msg
+      real(wp) :: x
+      integer :: ip
+
+      if (present(found)) found = .false.
+      call find_valued(card, name, ip, err, required)
+      if (ip == 0) return
+      call parse_real(card%params(ip)%value, x, msg)
+      if (len(msg) > 0) then
+         call card_param_error(card, ip, name//': '//msg, err)
+         return
+      end if
+      value = x
+      if (present(found)) found = .true.
+   end subroutine card_get_real
+
+   !> Get an integer parameter ('10.5' and '1e3' are refused). Unchanged when absent.
+   subroutine card_get_int(card, name, value, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      integer, intent(inout) :: value         !< the value (unchanged if absent)
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: msg
+      integer :: ip, i
+
+      if (present(found)) found = .false.
+      call find_valued(card, name, ip, err, required)
+      if (ip == 0) return
+      call parse_int(card%params(ip)%value, i, msg)
+      if (len(msg) > 0) then
+         call card_param_error(card, ip, name//': '//msg, err)
+         return
+      end if
+      value = i
+      if (present(found)) found = .true.
+   end subroutine card_get_int
+
+   !> Get the raw text of a parameter (case kept), e.g. a file path. Unchanged if absent.
+   subroutine card_get_text(card, name, value, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      character(len=:), allocatable, intent(inout) :: value !< the text
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      integer :: ip
+
+      if (present(found)) found = .false.
+      call find_valued(card, name, ip, err, required)
+      if (ip == 0) return
+      value = card%params(ip)%value
+      if (present(found)) found = .true.
+   end subroutine card_get_text
+
+   !> Get a name (of a section or line): upper-cased, at most name_len characters of
+   !> letters, digits, '_', '-' and '.'. Unchanged when absent.
+   subroutine card_get_name(card, name, value, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      character(len=:), allocatable, intent(inout) :: value !< the name, upper case
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: v
+      integer :: ip
+
+      if (present(found)) found = .false.
+      call find_valued(card, name, ip, err, required)
+      if (ip == 0) return
+      v = upper_case(card%params(ip)%value)
+      if (len(v) > name_len) then
+         call card_param_error(card, ip, name//" '"//v//"' is longer than "// &
+                               int_str(name_len)//' characters', err)
+         return
+      end if
+      if (verify(v, 'ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.') /= 0) then
+         call card_param_error(card, ip, name//" '"//v//"' may contain only letters, "// &
+                               "digits, '_', '-' and '.'", err)
+         return
+      end if
+      value = v
+      if (present(found)) found = .true.
+   end subroutine card_get_name
+
+   !> Get a parameter whose value is one of `choices` (case-insensitive).
+   !> index = position in choices; unchanged when absent.
+   subroutine card_get_choice(card, name, choices, index, err, found, required)
+      type(card_t), intent(in) :: card          !< the card
+      character(len=*), intent(in) :: name      !< parameter name, upper case
+      character(len=*), intent(in) :: choices(:) !< allowed values, upper case
+      integer, intent(inout) :: index           !< position of the value in choices
+      type(error_t), intent(inout) :: err       !< status
+      logical, intent(out), optional :: found   !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: v, list
+      integer :: ip, k
+
+      if (present(found)) found = .false.
+      call find_valued(card, name, ip, err, required)
+      if (ip == 0) return
+      v = upper_case(card%params(ip)%value)
+      do k = 1, size(choices)
+         if (choices(k) == v) then
+            index = k
+            if (present(found)) found = .true.
+            return
+         end if
+      end do
+      list = trim(choices(1))
+      do k = 2, size(choices) - 1
+         list = list//', '//trim(choices(k))
+      end do
+      if (size(choices) > 1) list = list//' or '//trim(choices(size(choices)))
+      call card_param_error(card, ip, name//' must be '//list//", got '"// &
+                            card%params(ip)%value//"'", err)
+   end subroutine card_get_choice
+
+   !> Get a YES/NO parameter. Unchanged when absent.
+   subroutine card_get_yesno(card, name, value, err, found)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      logical, intent(inout) :: value         !< .true. for YES
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      integer :: k
+      logical :: given
+
+      k = 0
+      call card_get_choice(card, name, [character(len=3) :: 'YES', 'NO'], k, err, given)
+      if (given) value = k == 1
+      if (present(found)) found = given
+   end subroutine card_get_yesno
+
+   !> Check the number of data lines: at least nmin, at most nmax (nmax < 0: no limit).
+   subroutine card_check_data(card, nmin, nmax, err, what)
+      type(card_t), intent(in) :: card        !< the card
+      integer, intent(in) :: nmin             !< fewest data lines needed
+      integer, intent(in) :: nmax             !< most data lines allowed, < 0: any
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), intent(in), optional :: what !< what the missing line holds
+      if (card%n_data < nmin) then
+         if (present(what)) then
+            call card_error(card, 'missing data line ('//what//')', err)
+         else
+            call card_error(card, 'missing data line', err)
+         end if
+      else if (nmax >= 0 .and. card%n_data > nmax) then
+         if (nmax == 0) then
+            call card_data_error(card, 1, 'data lines are not allowed', err)
+         else
+            call card_data_error(card, nmax + 1, 'too many data lines (at most '// &
+                                 int_str(nmax)//')', err)
+         end if
+      end if
+   end subroutine card_check_data
+
+   !> Number of values on data line `id`.
+   pure integer function card_data_count(card, id) result(n)
+      type(card_t), intent(in) :: card  !< the card
+      integer, intent(in) :: id         !< index of the data line
+      n = size(card%data(id)%fields)
+   end function card_data_count
+
+   !> Parse exactly n reals from data line `id`. `what` names the values,
+   !> comma-separated (e.g. 'EA, EI1, EI2, GJ, MASS'), for the messages.
+   subroutine card_data_reals(card, id, n, values, err, what)
+      type(card_t), intent(in) :: card        !< the card
+      integer, intent(in) :: id               !< index of the data line
+      integer, intent(in) :: n                !< number of values expected
+      real(wp), intent(out) :: values(n)      !< the values
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), intent(in), optional :: what !< names of the values
+      character(len=:), allocatable :: msg, label, names
+      integer :: k, nf
+
+      values = 0.0_wp
+      names = ''
+      if (present(what)) names = what
+      nf = card_data_count(card, id)
+      if (nf /= n) then
+         msg = 'expected '//int_str(n)//' value'
+         if (n /= 1) msg = msg//'s'
+         msg = msg//', got '//int_str(nf)
+         if (len(names) > 0) msg = msg//' ('//names//')'
+         call card_data_error(card, id, msg, err)
+         return
+      end if
+      do k = 1, n
+         label = item_of(names, k)
+         if (len(label) > 0) label = label//', '
+         label = '('//label//'value '//int_str(k)//' of '//int_str(n)//')'
+         associate (f => card%data(id)%fields(k)%s)
+            if (len(f) == 0) then
+               call card_data_error(card, id, 'empty value '//label, err)
+               return
+            end if
+            call parse_real(f, values(k), msg)
+            if (len(msg) > 0) then
+               call card_data_error(card, id, msg//' '//label, err)
+               return
+            end if
+         end associate
+      end do
+   end subroutine card_data_reals
+
+   ! ================================================================== numbers
+
+   !> Parse a real written Fortran/C style: [sign] digits [. digits] [e|E|d|D [sign]
+   !> digits], at least one digit in the mantissa. Anything else (nan, inf, 1.2.3, ...)
+   !> is refused, and so is a magnitude outside [1e-100, 1e100) other than zero (so that
+   !> products of a few input values cannot overflow). The token is checked character by
+   !> character before it is converted, so that bad text cannot raise a floating-point
+   !> exception.
+   subroutine parse_real(token, value, msg)
+      character(len=*), intent(in) :: token           !< text to convert, trimmed
+      real(wp), intent(out) :: value                  !< the number
+      character(len=:), allocatable, intent(out) :: msg !< '' on success, else why not
+      integer :: n, p, n_int, n_frac, lead, ios
+      integer(i8) :: e_val, e_sign, mag
+      logical :: nonzero
+
+      value = 0.0_wp
+      msg = ''
+      n = len(token)
+      p = 1
+      if (n > 0) then
+         if (token(1:1) == '+' .or. token(1:1) == '-') p = 2
+      end if
+      n_int = 0
+      n_frac = 0
+      lead = 0            ! decimal exponent of the first non-zero digit (before e)
+      nonzero = .false.
+      do while (p <= n)
+         if (.not. is_digit(token(p:p))) exit
+         if (.not. nonzero .and. token(p:p) /= '0') then
+            nonzero = .true.
+            lead = -n_int    ! fixed below once the number of integer digits is known
+         end if
+         n_int = n_int + 1
+         p = p + 1
+      end do
+      if (nonzero) lead = lead + n_int - 1
+      if (p <= n) then
+         if (token(p:p) == '.') then
+            p = p + 1
+            do while (p <= n)
+               if (.not. is_digit(token(p:p))) exit
+               n_frac = n_frac + 1
+               if (.not. nonzero .and. token(p:p) /= '0') then
+                  nonzero = .true.
+                  lead = -n_frac
+               end if
+               p = p + 1
+            end do
+         end if
+      end if
+      if (n_int + n_frac == 0) then
+         msg = "'"//token//"' is not a number"
+         return
+      end if
+      e_val = 0
+      e_sign = 1
+      if (p <= n) then
+         if (index('eEdD', token(p:p)) > 0) then
+            p = p + 1
+            if (p <= n) then
+               if (token(p:p) == '+' .or. token(p:p) == '-') then
+                  if (token(p:p) == '-') e_sign = -1
+                  p = p + 1
+               end if
+            end if
+            if (p > n) then
+               msg = "'"//token//"' is not a number"
+               return
+            end if
+            do while (p <= n)
+               if (.not. is_digit(token(p:p))) exit
+               if (e_val < 100000_i8) e_val = 10_i8*e_val + (iachar(token(p:p)) - iachar('0'))
+               p = p + 1
+            end do
+         end if
+      end if
+      if (p /= n + 1) then
+         msg = "'"//token//"' is not a number"
+         return
+      end if
+      if (nonzero) then
+         mag = lead + e_sign*e_val
+         if (mag >= max_exponent10 .or. mag < min_exponent10) then
+            msg = "'"//token//"' is out of range: its magnitude must be between 1e"// &
+                  int_str(min_exponent10)//' and 1e'//int_str(max_exponent10)//' (or zero)'
+            return
+         end if
+      end if
+      read (token, *, iostat=ios) value
+      if (ios /= 0) then
+         value = 0.0_wp
+         msg = "'"//token//"' is not a number"
+      end if
+   end subroutine parse_real
+
+   !> Parse an integer: [sign] digits, nothing else ('10.5', '1e3' refused).
+   subroutine parse_int(token, value, msg)
+      character(len=*), intent(in) :: token           !< text to convert, trimmed
+      integer, intent(out) :: value                   !< the number
+      character(len=:), allocatable, intent(out) :: msg !< '' on success, else why not
+      integer :: p, ios
+      integer(i8) :: v8
+
+      value = 0
+      msg = ''
+      p = 1
+      if (len(token) > 0) then
+         if (token(1:1) == '+' .or. token(1:1) == '-') p = 2
+      end if
+      if (p > len(token)) then
+         msg = "'"//token//"' is not an integer"
+         return
+      end if
+      if (verify(token(p:), '0123456789') /= 0) then
+         msg = "'"//token//"' is not an integer"
+         return
+      end if
+      if (len(token(p:)) - (verify(token(p:), '0') - 1) > 18 .and. &
+          verify(token(p:), '0') > 0) then
+         msg = "'"//token//"' is out of range"
+         return
+      end if
+      read (token, *, iostat=ios) v8
+      if (ios /= 0 .or. abs(v8) > int(huge(value), i8)) then
+         msg = "'"//token//"' is out of range"
+         return
+      end if
+      value = int(v8)
+   end subroutine parse_int
+
+   !> Shortest text that reads back as x exactly: '10', '9.5', '0.001', '7.96e8'.
+   function real_str(x) result(s)
+      real(wp), intent(in) :: x           !< the number
+      character(len=:), allocatable :: s  !< its text
+      character(len=40) :: buf, fmt
+      character(len=:), allocatable :: mant, digits
+      real(wp) :: y
+      integer :: p, ios, epos, e, k
+
+      if (ieee_is_nan(x)) then      ! not produced by the reader, but be safe
+         s = 'NaN'
+         return
+      end if
+      if (.not. ieee_is_finite(x)) then
+         s = 'Infinity'
+         if (x < 0.0_wp) s = '-'//s
+         return
+      end if
+      if (abs(x) < tiny(x)) then
+         s = '0'
+         return
+      end if
+      do p = 1, 17
+         write (fmt, '(a,i0,a)') '(es40.', p - 1, 'e3)'
+         write (buf, fmt) x
+         if (abs(x) > 1.0e300_wp) cycle   ! rounding up could overflow on reading back
+         read (buf, *, iostat=ios) y
+         if (ios == 0) then
+            if (transfer(y, 0_i8) == transfer(x, 0_i8)) exit
+         end if
+      end do
+      buf = adjustl(buf)
+      epos = index(buf, 'E')
+      mant = buf(:epos - 1)
+      read (buf(epos + 1:), *) e
+      digits = ''
+      do k = 1, len(mant)
+         if (is_digit(mant(k:k))) digits = digits//mant(k:k)
+      end do
+      do while (len(digits) > 1)
+         if (digits(len(digits):len(digits)) /= '0') exit
+         digits = digits(:len(digits) - 1)
+      end do
+      if (e >= 0 .and. e < 7) then
+         if (len(digits) <= e + 1) then
+            s = digits//repeat('0', e + 1 - len(digits))
+         else
+            s = digits(:e + 1)//'.'//digits(e + 2:)
+         end if
+      else if (e < 0 .and. e >= -4) then
+         s = '0.'//repeat('0', -e - 1)//digits
+      else
+         s = digits(1:1)
+         if (len(digits) > 1) s = s//'.'//digits(2:)
+         s = s//'e'//int_str(e)
+      end if
+      if (x < 0.0_wp) s = '-'//s
+   end function real_str
+
+   !> Integer as text without blanks.
+   pure function int_str(i) result(s)
+      integer, intent(in) :: i            !< the number
+      character(len=:), allocatable :: s  !< its text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function int_str
+
+   ! =================================================================== strings
+
+   !> Upper-case copy of s (ASCII letters only).
+   pure function upper_case(s) result(u)
+      character(len=*), intent(in) :: s  !< text
+      character(len=len(s)) :: u         !< the text in upper case
+      integer :: k, c
+      u = s
+      do k = 1, len(s)
+         c = iachar(s(k:k))
+         if (c >= iachar('a') .and. c <= iachar('z')) u(k:k) = achar(c - 32)
+      end do
+   end function upper_case
+
+   !> A keyword or parameter name: trimmed, upper case, runs of blanks made one blank.
+   pure function normalise_name(s) result(n)
+      character(len=*), intent(in) :: s   !< name as written
+      character(len=:), allocatable :: n  !< normalised name
+      character(len=:), allocatable :: t
+      integer :: k
+      t = upper_case(trim(adjustl(s)))
+      n = ''
+      do k = 1, len(t)
+         if (t(k:k) == ' ') then
+            if (n(len(n):len(n)) == ' ') cycle
+         end if
+         n = n//t(k:k)
+      end do
+   end function normalise_name
+
+   !> A line of a file with tabs made blanks, a trailing carriage return dropped,
+   !> and leading and trailing blanks removed.
+   pure function clean_line(raw) result(s)
+      character(len=*), intent(in) :: raw !< the line as read
+      character(len=:), allocatable :: s  !< the cleaned line
+      integer :: k
+      s = raw
+      if (len(s) > 0) then
+         if (s(len(s):len(s)) == cr) s = s(:len(s) - 1)
+      end if
+      do k = 1, len(s)
+         if (s(k:k) == tab) s(k:k) = ' '
+      end do
+      s = trim(adjustl(s))
+   end function clean_line
+
+   !> Text with the carriage return of each CR LF line end removed (one pass).
+   pure function without_cr(text) result(t)
+      character(len=*), intent(in) :: text !< text with any line ends
+      character(len=:), allocatable :: t   !< the text with LF line ends only
+      integer :: k, n
+      allocate (character(len=len(text)) :: t)
+      n = 0
+      do k = 1, len(text)
+         if (text(k:k) == cr .and. k < len(text)) then
+            if (text(k + 1:k + 1) == lf) cycle
+         end if
+         n = n + 1
+         t(n:n) = text(k:k)
+      end do
+      t = t(:n)
+   end function without_cr
+
+   !> Split s at commas into trimmed pieces (at least one piece).
+   pure subroutine split_commas(s, pieces)
+      character(len=*), intent(in) :: s                    !< text to split
+      type(field_t), allocatable, intent(out) :: pieces(:) !< the pieces, trimmed
+      integer :: n, k, first, last
+      n = 1
+      do k = 1, len(s)
+         if (s(k:k) == ',') n = n + 1
+      end do
+      allocate (pieces(n))
+      first = 1
+      do k = 1, n
+         last = index(s(first:), ',')
+         if (last == 0) then
+            last = len(s) + 1
+         else
+            last = first + last - 1
+         end if
+         pieces(k)%s = trim(adjustl(s(first:last - 1)))
+         first = last + 1
+      end do
+   end subroutine split_commas
+
+   !> The k-th comma-separated item of list, trimmed ('' if there is none).
+   pure function item_of(list, k) result(item)
+      character(len=*), intent(in) :: list  !< comma-separated list
+      integer, intent(in) :: k              !< which item
+      character(len=:), allocatable :: item !< the item
+      type(field_t), allocatable :: pieces(:)
+      item = ''
+      if (len_trim(list) == 0) return
+      call split_commas(list, pieces)
+      if (k <= size(pieces)) item = pieces(k)%s
+   end function item_of
+
+   !> True for '0'..'9'.
+   elemental logical function is_digit(c)
+      character(len=1), intent(in) :: c  !< character to test
+      is_digit = c >= '0' .and. c <= '9'
+   end function is_digit
+
+   ! ===================================================================== files
+
+   !> Read a whole file into a string. ok = .false. if it cannot be opened or read.
+   subroutine read_file_text(path, text, ok)
+      character(len=*), intent(in) :: path                !< file to read
+      character(len=:), allocatable, intent(out) :: text  !< its contents
+      logical, intent(out) :: ok                          !< the file was read
+      integer :: u, ios
+      integer(i8) :: n
+
+      ok = .false.
+      text = ''
+      if (len_trim(path) == 0) return
+      open (newunit=u, file=path, access='stream', form='unformatted', status='old', &
+            action='read', iostat=ios)
+      if (ios /= 0) return
+      inquire (unit=u, size=n)
+      if (n < 0_i8) then
+         close (u)
+         return
+      end if
+      deallocate (text)
+      allocate (character(len=n) :: text)
+      if (n > 0_i8) then
+         read (u, iostat=ios) text
+         if (ios /= 0) then
+            close (u)
+            text = ''
+            return
+         end if
+      end if
+      close (u)
+      ok = .true.
+   end subroutine read_file_text
+
+   !> Folder part of a path, with its trailing '/' ('' for a bare file name).
+   pure function dir_of(path) result(d)
+      character(len=*), intent(in) :: path !< a file path
+      character(len=:), allocatable :: d   !< its folder
+      d = path(:index(path, '/', back=.true.))
+   end function dir_of
+
+   !> Path with '.' and empty segments removed and 'x/..' collapsed, as text: used only
+   !> to recognise a file that is already open (include cycles).
+   pure function path_normalise(path) result(norm)
+      character(len=*), intent(in) :: path  !< a file path
+      character(len=:), allocatable :: norm !< normalised path
+      character(len=len(path)) :: seg(len(path) + 1)
+      integer :: n, first, last
+      logical :: absolute
+
+      absolute = .false.
+      if (len(path) > 0) absolute = path(1:1) == '/'
+      n = 0
+      first = 1
+      do while (first <= len(path) + 1)
+         last = index(path(first:)//'/', '/') + first - 1
+         if (last > first) then
+            associate (s => path(first:last - 1))
+               if (s == '.') then
+                  continue
+               else if (s == '..' .and. n > 0) then
+                  if (seg(n) /= '..') then
+                     n = n - 1
+                  else
+                     n = n + 1
+                     seg(n) = s
+                  end if
+               else
+                  n = n + 1
+                  seg(n) = s
+               end if
+            end associate
+         end if
+         first = last + 1
+      end do
+      norm = ''
+      if (absolute) norm = '/'
+      do first = 1, n
+         if (first > 1) norm = norm//'/'
+         norm = norm//trim(seg(first))
+      end do
+   end function path_normalise
+
+end module rodyn_deck_lexer
