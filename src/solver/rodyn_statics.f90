@@ -2,12 +2,6 @@
 !> r = f_int(q) - f_ext(lambda) = 0 solved by Newton in load increments, each halved on
 !> failure up to a bounded depth.
 !>
-!> Roll mode: a line with equal bending stiffnesses whose supports leave the rotation
-!> of the sections about the line free (ball joints, free ends) can spin all its
-!> sections about their own axes at no cost in energy, so the tangent is singular.
-!> Newton's matrix (not the residual) then gets a twist spring GJ/L about d3 at end A:
-!> the equilibrium found is an exact one and the roll angle stays as it started.
-!>
 !> Load factor lambda in [0, 1] scales the point loads and the stress-free strains
 !> (built-in curvature), and moves prescribed positions from the start to the target. Self-weight is applied in full from the start on a
 !> line that starts as a catenary (it already hangs in equilibrium); on any other line
@@ -18,7 +12,7 @@ module rodyn_statics
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
-   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve, banded_add
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force
    use rodyn_newton, only: newton_problem_t, newton_options_t, newton_stats_t, newton_solve
@@ -48,8 +42,6 @@ module rodyn_statics
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
       type(banded_t) :: bm                    !< tangent, then its LU factors
-      integer, allocatable :: roll_node(:)    !< (nl) node of the twist spring, 0: none
-      real(wp), allocatable :: roll_k(:)      !< (nl) its stiffness GJ/L [N m/rad]
       real(wp) :: lref = 1.0_wp               !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp               !< shortest element [m]
    contains
@@ -83,26 +75,8 @@ contains
       prob%gfac = 1.0_wp
       call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
       prob%lref = maxval(model%lines%length)
-      call roll_restraints(prob, model)
       prob%href = minval(mesh%elem_le)
    end subroutine statics_setup
-
-   !> Lines with no rotational support get the tangent-only twist spring at end A.
-   subroutine roll_restraints(prob, model)
-      type(static_problem_t), intent(inout) :: prob !< problem
-      type(model_t), intent(in) :: model            !< model
-      integer :: l, n0, nn
-      allocate (prob%roll_node(prob%mesh%n_lines), prob%roll_k(prob%mesh%n_lines))
-      prob%roll_node = 0
-      prob%roll_k = 0.0_wp
-      do l = 1, prob%mesh%n_lines
-         n0 = prob%mesh%line_first_node(l)
-         nn = prob%mesh%line_n_nodes(l)
-         if (any(prob%sup%held(4:6, n0:n0 + nn - 1))) cycle
-         prob%roll_node(l) = n0
-         prob%roll_k(l) = prob%mesh%line_c(6, l)/model%lines(l)%length
-      end do
-   end subroutine roll_restraints
 
    !> Set the load factor: external forces and the prescribed positions of held nodes
    !> (reached by the next Newton step, see apply_supports).
@@ -122,7 +96,6 @@ contains
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
-      if (want_k) call add_roll_springs(this)
       this%r = this%fint - this%fext
       where (spread(this%sup%moved, 1, 3))
          this%gap = this%x_held - this%state%x
@@ -131,20 +104,6 @@ contains
       end where
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
    end subroutine static_evaluate
-
-   !> Tangent-only twist springs k d3 d3^T (see the module header).
-   subroutine add_roll_springs(this)
-      class(static_problem_t), intent(inout) :: this !< problem
-      real(wp) :: d3(3), kr(3, 3)
-      integer :: l, node, j
-      do l = 1, size(this%roll_node)
-         node = this%roll_node(l)
-         if (node == 0) cycle
-         d3 = this%state%d(:, 3, node)
-         kr = this%roll_k(l)*spread(d3, 2, 3)*spread(d3, 1, 3)
-         call banded_add(this%bm, [(6*(node - 1) + 3 + j, j=1, 3)], kr)
-      end do
-   end subroutine add_roll_springs
 
    !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied or
    !> reaction force (or applied/reaction moment over the line length); M_ref: largest
