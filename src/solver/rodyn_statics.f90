@@ -3,9 +3,16 @@
 !> failure up to a bounded depth.
 !>
 !> Load factor lambda in [0, 1] scales the point loads and the stress-free strains
-!> (built-in curvature), and moves prescribed positions from the start to the target. Self-weight is applied in full from the start on a
-!> line that starts as a catenary (it already hangs in equilibrium); on any other line
-!> it is ramped with lambda.
+!> (built-in curvature), and moves prescribed positions from the start to the target.
+!> The starting shape u0 is rarely an exact equilibrium (a catenary start ignores EI),
+!> so the equations solved are the Newton homotopy
+!>   r(u) - (1 - lambda) r(u0) = 0,
+!> which u0 satisfies at lambda = 0 and which is the true problem at lambda = 1; a
+!> failed increment can then always be cut, even when no load is ramped. A failed
+!> increment is first retried with the energy line search, then halved.
+!>
+!> Self-weight is applied in full from the start on a line that starts as a catenary
+!> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda.
 module rodyn_statics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
@@ -32,6 +39,7 @@ module rodyn_statics
       real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
       real(wp), allocatable :: fint(:, :)     !< (6, nn) internal forces
       real(wp), allocatable :: fext(:, :)     !< (6, nn) external forces at lam
+      real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
       real(wp), allocatable :: r(:, :)        !< (6, nn) fint - fext, global axes
       real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
       real(wp), allocatable :: gap(:, :)      !< (3, nn) x_held - x at moved nodes [m]
@@ -44,6 +52,8 @@ module rodyn_statics
       type(banded_t) :: bm                    !< tangent, then its LU factors
       real(wp) :: lref = 1.0_wp               !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp               !< shortest element [m]
+      real(wp) :: f_floor = 0.0_wp            !< round-off level of the section forces [N]
+      real(wp) :: m_floor = 0.0_wp            !< round-off level of the moments [N m]
    contains
       procedure :: evaluate => static_evaluate
       procedure :: residual_norm => static_residual_norm
@@ -69,12 +79,18 @@ contains
       call supports_build(model, mesh, state, prob%sup)
       call loads_build(model, mesh, prob%loads)
       allocate (prob%gfac(mesh%n_lines), prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), &
+                prob%r0(6, nn), &
                 prob%x_held(3, nn), prob%gap(3, nn), &
                 prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn), &
                 prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
       prob%gfac = 1.0_wp
+      prob%r0 = 0.0_wp
       call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
       prob%lref = maxval(model%lines%length)
+      ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
+      ! floor of the residual scale when there is no load and no reaction to compare with
+      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
+      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
       prob%href = minval(mesh%elem_le)
    end subroutine statics_setup
 
@@ -96,7 +112,7 @@ contains
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
-      this%r = this%fint - this%fext
+      this%r = this%fint - this%fext - (1.0_wp - this%lam)*this%r0
       where (spread(this%sup%moved, 1, 3))
          this%gap = this%x_held - this%state%x
       elsewhere
@@ -107,7 +123,8 @@ contains
 
    !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied or
    !> reaction force (or applied/reaction moment over the line length); M_ref: largest
-   !> applied or reaction moment, or F_ref times the shortest element.
+   !> applied or reaction moment, or F_ref times the shortest element; neither below
+   !> the round-off level of the section forces (f_floor, m_floor).
    function static_residual_norm(this) result(v)
       class(static_problem_t), intent(in) :: this !< problem
       real(wp) :: v
@@ -124,8 +141,8 @@ contains
          if (any(this%sup%held(1:3, node))) reac_f = max(reac_f, maxval(abs(this%r(1:3, node))))
          if (any(this%sup%held(4:6, node))) reac_m = max(reac_m, maxval(abs(this%r(4:6, node))))
       end do
-      mref = max(maxval(abs(this%fext(4:6, :))), reac_m)
-      fref = max(maxval(abs(this%fext(1:3, :))), reac_f, mref/this%lref, tiny(1.0_wp))
+      mref = max(maxval(abs(this%fext(4:6, :))), reac_m, this%m_floor)
+      fref = max(maxval(abs(this%fext(1:3, :))), reac_f, mref/this%lref, this%f_floor)
       mref = max(mref, fref*this%href)
       v = max(rf/fref, rm/mref)
    end function static_residual_norm
@@ -192,6 +209,7 @@ contains
       type(error_t) :: nerr
       real(wp) :: lam, dlam, dlam0, lam_try
       integer :: level
+      logical :: retried
       character(len=200) :: msg
       opts%max_iterations = model%static%max_iterations
       opts%force_tol = model%static%force_tol
@@ -202,6 +220,9 @@ contains
       lam = 0.0_wp
       level = 0
       call static_set_load_factor(prob, lam)
+      call prob%evaluate(.false., nerr)
+      prob%r0 = prob%fint - prob%fext
+      retried = .false.
       do while (lam < 1.0_wp)
          dlam = dlam0*0.5_wp**level
          lam_try = min(1.0_wp, lam + dlam)
@@ -212,6 +233,7 @@ contains
          prob%d_conv = prob%state%d
          call static_set_load_factor(prob, lam_try)
          call clear_error(nerr)
+         opts%line_search = model%static%line_search .or. retried
          call newton_solve(prob, opts, stats, nerr)
          summary%iterations = summary%iterations + stats%iterations
          if (stats%converged .and. .not. has_error(nerr)) then
@@ -219,6 +241,7 @@ contains
             summary%increments = summary%increments + 1
             summary%load_factor = lam
             if (level > 0) level = level - 1
+            retried = .false.
             cycle
          end if
          ! failed: back to the last converged state, halve the increment
@@ -232,6 +255,12 @@ contains
                write (log_unit, '(a,es10.3)') '  not converged, residual ', stats%residual
             end if
          end if
+         if (.not. retried .and. .not. model%static%line_search) then
+            retried = .true.             ! same increment again, with the line search
+            if (log_unit >= 0) write (log_unit, '(a)') '  retry with the line search'
+            cycle
+         end if
+         retried = .false.
          if (level >= model%static%max_cutbacks) then
             write (msg, '(a,f9.6,a,i0,a)') 'statics: no convergence beyond load factor ', &
                lam, ' after ', level, ' halvings of the increment'
