@@ -14,7 +14,7 @@ program rodyn
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
-   use rodyn_output, only: output_write_static
+   use rodyn_output, only: output_write_static, output_write_status
    implicit none
 
    interface
@@ -65,6 +65,14 @@ program rodyn
    if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a)') 'rodyn '//rodyn_version// &
       ': '//opts%deck//': static analysis, ', mesh%n_elements, ' elements, ', &
       6*mesh%n_nodes, ' unknowns'
+   ! the output folder is made and marked 'running' before any computing: an unwritable
+   ! folder fails now, and a run killed midway leaves a status that says so
+   summary%status = 'running'
+   call output_write_status(opts%outdir, summary, err, opts%deck)
+   if (has_error(err)) then
+      write (error_unit, '(a)') err%message
+      call finish(err%code)
+   end if
    log_unit = -1
    if (opts%verbose .and. .not. opts%quiet) log_unit = output_unit
    call statics_run(prob, model, mesh, state, summary, err, log_unit)

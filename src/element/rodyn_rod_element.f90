@@ -267,7 +267,7 @@ contains
       real(wp), intent(in) :: xe(3, p + 1)         !< nodal positions [m]
       real(wp), intent(in) :: de(3, 3, p + 1)      !< nodal directors
       real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
-      real(wp), intent(out) :: ke(6*(p + 1), 6*(p + 1)) !< tangent (if want_k)
+      real(wp), intent(out) :: ke(:, :)            !< (6(p+1), 6(p+1)) tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
       real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
       real(wp) :: n(p + 1), dn(p + 1), s(6), wj, cg(6)

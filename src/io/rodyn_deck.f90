@@ -725,8 +725,25 @@ contains
       do il = 1, size(model%lines)
          call check_straight_start(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
+         call check_supported(deck%cards(pend%line_section(il)%card), model, il, err)
+         if (has_error(err)) return
       end do
    end subroutine validate_model
+
+   !> A line with no node held in position is a free body: it has no static solution.
+   subroutine check_supported(card, model, il, err)
+      type(card_t), intent(in) :: card      !< the *LINE card
+      type(model_t), intent(in) :: model    !< model with resolved constraints
+      integer, intent(in) :: il             !< line to check
+      type(error_t), intent(inout) :: err   !< status
+      integer :: ib
+      do ib = 1, size(model%constraints)
+         if (model%constraints(ib)%line == il .and. model%constraints(ib)%kind /= bc_free) return
+      end do
+      call card_error(card, 'nothing holds line '//trim(model%lines(il)%name)// &
+                      ' in position: a static analysis needs at least one *BOUNDARY of'// &
+                      ' TYPE PINNED, HINGED, CLAMPED or POSITION on it', err)
+   end subroutine check_supported
 
    !> Find the section named by a *LINE card's SECTION=.
    subroutine resolve_section(card, name, model, isec, err)

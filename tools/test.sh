@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Whole test suite: set up, then
+#  1. Debug build (-fcheck=all -ffpe-trap=invalid,zero,overflow, warnings on): every test;
+#  2. Release build: every test again (optimised code paths), and the post-processing
+#     tests (pytest) on a result made by the Release program.
+# Usage: bash tools/test.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh
+jobs="$(nproc)"
+
+cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug >/dev/null
+cmake --build build-debug -j "$jobs" >/dev/null
+(cd build-debug && ctest -j "$jobs" --output-on-failure)
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$jobs" >/dev/null
+(cd build && ctest -j "$jobs" --output-on-failure)
+
+RODYN_EXE="$PWD/build/rodyn" python3 -m pytest -q postproc/tests
