@@ -1,0 +1,331 @@
+"""Reader for the static results of a rodyn run.
+
+The file layout is described in docs/output.md. `load_static(path)` takes a results
+folder (or the path of a results.h5) and returns a `StaticResults`: run information
+plus one `LineStatic` per line, in deck order. results.h5 is read with h5py when it is
+there; otherwise the CSV tables (static_nodes.csv, static_elements.csv,
+static_reactions.csv) and status.txt are read. Both give the same arrays: the CSV
+fields carry 17 significant digits, so every binary64 value comes back exactly.
+
+Every problem with the files (missing folder, file, dataset or attribute, wrong
+shape, bad CSV header, a field that is not a number) raises `RodynResultsError`,
+whose message names the file and, for CSV, the line number.
+"""
+from __future__ import annotations
+
+import csv
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+H5_FILE = "results.h5"
+STATUS_FILE = "status.txt"
+NODES_CSV = "static_nodes.csv"
+ELEMENTS_CSV = "static_elements.csv"
+REACTIONS_CSV = "static_reactions.csv"
+
+NODES_HEADER = ("line", "node", "s_m", "x_m", "y_m", "z_m")
+ELEMENTS_HEADER = (
+    "line", "element", "point", "s_m", "effective_tension_N", "shear_1_N", "shear_2_N",
+    "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_1_per_m", "curvature_2_per_m",
+    "twist_per_m", "curvature_per_m")
+REACTIONS_HEADER = ("line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
+                    "tension_N")
+
+# Datasets of a line group in results.h5 and their shapes ('nn' nodes, 'ng' points).
+H5_LINE_DATASETS = {
+    "node_s": ("nn",), "node_xyz": ("nn", 3), "gp_s": ("ng",),
+    "effective_tension": ("ng",), "shear": ("ng", 2), "moment": ("ng", 2),
+    "torque": ("ng",), "curvature": ("ng", 3), "reactions": (2, 6),
+}
+# Keys of status.txt and how to read them.
+STATUS_KEYS = {
+    "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
+    "iterations": "int", "cutbacks": "int", "wall_time_s": "float",
+    "rodyn_version": "str", "deck": "str",
+}
+_INTEGER_COLUMNS = {"node", "element", "point"}
+
+
+class RodynResultsError(Exception):
+    """A results file is missing or malformed; the message names the file."""
+
+
+@dataclass(frozen=True, eq=False)
+class LineStatic:
+    """Static results of one line, SI units, conventions of docs/output.md.
+
+    Node arrays have nn rows (from end A), integration-point arrays ng rows.
+    """
+    name: str
+    node_s: np.ndarray             # (nn,)    m    unstretched arc length S of the nodes
+    node_xyz: np.ndarray           # (nn, 3)  m    node positions x, y, z (global)
+    gp_s: np.ndarray               # (ng,)    m    S of the integration points
+    effective_tension: np.ndarray  # (ng,)    N    N3, positive in tension
+    shear: np.ndarray              # (ng, 2)  N    N1, N2
+    moment: np.ndarray             # (ng, 2)  N m  M1, M2 (bending about d1, d2)
+    torque: np.ndarray             # (ng,)    N m  M3
+    curvature: np.ndarray          # (ng, 3)  1/m  K1, K2 (bending), K3 (twist)
+    reactions: np.ndarray          # (2, 6)   N, N m  rows end A, B; Fx Fy Fz Mx My Mz
+    end_held: np.ndarray           # (2,)     bool  end A, B has a support
+
+    @property
+    def moment_magnitude(self) -> np.ndarray:
+        """Bending moment magnitude sqrt(M1^2 + M2^2) at the integration points [N m]."""
+        return np.hypot(self.moment[:, 0], self.moment[:, 1])
+
+
+@dataclass(frozen=True, eq=False)
+class StaticResults:
+    """Static results of a run: run information and the lines in deck order."""
+    lines: tuple            # of LineStatic
+    complete: bool          # the analysis reached its end
+    status: str             # 'complete' or what failed
+    load_factor: float      # static load factor reached
+    increments: int
+    iterations: int
+    cutbacks: int
+    wall_time_s: float
+    title: str              # *HEADING text; '' when read from CSV (not stored there)
+    version: str            # rodyn version
+    deck_file: str          # main deck, as given to rodyn
+    folder: Path            # results folder
+    source: Path            # file the line data came from (results.h5 or static_nodes.csv)
+
+    def line(self, name: str) -> LineStatic:
+        """The line called `name` (KeyError if there is none)."""
+        for line in self.lines:
+            if line.name == name:
+                return line
+        raise KeyError(name)
+
+
+def load_static(path) -> StaticResults:
+    """Read the static results in folder `path` (or in the results.h5 file `path`).
+
+    results.h5 is used when present, unless status.txt shows that it was left by an
+    earlier run (docs/output.md: old files are not deleted); otherwise the CSV tables.
+    """
+    path = Path(path)
+    if path.is_file():
+        if path.suffix != ".h5":
+            raise RodynResultsError(f"{path}: expected a results folder or a results.h5 file")
+        return _read_h5(path)
+    if not path.is_dir():
+        raise RodynResultsError(f"{path}: no such results folder")
+    status_path = path / STATUS_FILE
+    status = _read_status(status_path) if status_path.is_file() else None
+    if (path / H5_FILE).is_file():
+        results = _read_h5(path / H5_FILE)
+        if status is None or _same_run(results, status):
+            return results
+    elif not (path / NODES_CSV).is_file():
+        raise RodynResultsError(f"{path}: no rodyn results here (neither {H5_FILE} "
+                                f"nor {NODES_CSV})")
+    if status is None:
+        raise RodynResultsError(f"{status_path}: missing (it says whether the run completed)")
+    return _read_csv_folder(path, status)
+
+
+def _same_run(results: StaticResults, status: dict) -> bool:
+    """Whether results.h5 and status.txt come from the same run (same counters)."""
+    def stamp(r):
+        return (r["load_factor"], r["increments"], r["iterations"], r["cutbacks"],
+                r["wall_time_s"])
+    return stamp(vars(results)) == stamp(status)
+
+
+def _make_line(name, arrays, where) -> LineStatic:
+    """LineStatic from a dict of arrays named as in H5_LINE_DATASETS plus end_held,
+    after checking the shapes; `where` names the data in error messages."""
+    sizes = {}
+    for key, shape in H5_LINE_DATASETS.items():
+        data = arrays[key]
+        expected = tuple(sizes.setdefault(d, n) if isinstance(d, str) else d
+                         for d, n in zip(shape, data.shape))
+        if data.ndim != len(shape) or data.shape != expected:
+            want = "(" + ", ".join(str(sizes.get(d, d)) for d in shape) + ")"
+            raise RodynResultsError(f"{where}: {key} has shape {data.shape}, expected {want}")
+    if sizes["nn"] < 2 or sizes["ng"] < 1:
+        raise RodynResultsError(f"{where}: {sizes['nn']} nodes and {sizes['ng']} "
+                                "integration points; need at least 2 and 1")
+    return LineStatic(name=name, end_held=np.asarray(arrays["end_held"], dtype=bool),
+                      **{k: np.asarray(arrays[k], dtype=float) for k in H5_LINE_DATASETS})
+
+
+# --- HDF5 ---------------------------------------------------------------------------
+
+def _read_h5(path: Path) -> StaticResults:
+    """Static results from a results.h5 file."""
+    import h5py  # only needed here: the CSV fallback works without h5py
+
+    try:
+        f = h5py.File(path, "r")
+    except OSError as exc:
+        raise RodynResultsError(f"{path}: cannot read as HDF5 ({exc})") from None
+    with f:
+        info = {k: _h5_attr(f, k, path)
+                for k in ("complete", "status", "title", "version", "deck_file")}
+        static = f.get("static")
+        if not isinstance(static, h5py.Group):
+            raise RodynResultsError(f"{path}: group /static missing")
+        counters = {k: _h5_attr(static, k, path) for k in
+                    ("load_factor", "increments", "iterations", "cutbacks", "wall_time_s")}
+        lines = []
+        for group in static.values():
+            if not isinstance(group, h5py.Group):
+                raise RodynResultsError(f"{path}: {group.name} is not a line group")
+            arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
+            arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
+                                          "end_held", path)
+            lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays,
+                                    f"{path}: {group.name}"))
+    if not lines:
+        raise RodynResultsError(f"{path}: no lines in /static")
+    return StaticResults(
+        lines=tuple(lines), complete=bool(info["complete"]), status=str(info["status"]),
+        load_factor=float(counters["load_factor"]), increments=int(counters["increments"]),
+        iterations=int(counters["iterations"]), cutbacks=int(counters["cutbacks"]),
+        wall_time_s=float(counters["wall_time_s"]), title=str(info["title"]),
+        version=str(info["version"]), deck_file=str(info["deck_file"]),
+        folder=path.parent, source=path)
+
+
+def _h5_attr(obj, key, path):
+    """Attribute `key` of an HDF5 object; str for strings, Python/numpy values else."""
+    if key not in obj.attrs:
+        raise RodynResultsError(f"{path}: attribute '{key}' missing on {obj.name}")
+    value = obj.attrs[key]
+    if isinstance(value, bytes):
+        value = value.decode("utf-8")
+    return value.item() if isinstance(value, np.generic) else value
+
+
+def _h5_dataset(group, key, path):
+    """Dataset `key` of an HDF5 group."""
+    import h5py
+
+    data = group.get(key)
+    if not isinstance(data, h5py.Dataset):
+        raise RodynResultsError(f"{path}: dataset {group.name}/{key} missing")
+    return data
+
+
+# --- CSV + status.txt ---------------------------------------------------------------
+
+def _read_status(path: Path) -> dict:
+    """status.txt as a dict of typed values (keys as in STATUS_KEYS)."""
+    raw = {}
+    with open(path, encoding="utf-8") as f:
+        for number, text in enumerate(f, 1):
+            if text.strip():
+                key, sep, value = text.partition("=")
+                if not sep:
+                    raise RodynResultsError(f"{path}: line {number}: expected 'key = value', "
+                                            f"got {text.strip()!r}")
+                raw[key.strip()] = value.strip()
+    status = {}
+    for key, kind in STATUS_KEYS.items():
+        if key not in raw:
+            raise RodynResultsError(f"{path}: key '{key}' missing")
+        value = raw[key]
+        try:
+            if kind == "bool":
+                status[key] = {"true": True, "false": False}[value]
+            else:
+                status[key] = {"str": str, "int": int, "float": float}[kind](value)
+        except (KeyError, ValueError):
+            raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid {kind}") from None
+    return status
+
+
+def _read_csv_folder(folder: Path, status: dict) -> StaticResults:
+    """Static results from the CSV tables of `folder` and its status.txt."""
+    nodes = _read_table(folder / NODES_CSV, NODES_HEADER)
+    points = _read_table(folder / ELEMENTS_CSV, ELEMENTS_HEADER)
+    supports = _read_table(folder / REACTIONS_CSV, REACTIONS_HEADER)
+    for file, table in ((ELEMENTS_CSV, points), (REACTIONS_CSV, supports)):
+        for name in table:
+            if name not in nodes:
+                raise RodynResultsError(f"{folder / file}: line {name!r} is not in {NODES_CSV}")
+    if not nodes:
+        raise RodynResultsError(f"{folder / NODES_CSV}: no lines (header only)")
+    lines = []
+    for name, node_rows in nodes.items():
+        if name not in points:
+            raise RodynResultsError(f"{folder / ELEMENTS_CSV}: no rows for line {name!r}")
+        lines.append(_csv_line(name, node_rows, points[name], supports.get(name, []),
+                               f"{folder}: line {name!r}"))
+    return StaticResults(
+        lines=tuple(lines), complete=status["complete"], status=status["status"],
+        load_factor=status["load_factor"], increments=status["increments"],
+        iterations=status["iterations"], cutbacks=status["cutbacks"],
+        wall_time_s=status["wall_time_s"], title="", version=status["rodyn_version"],
+        deck_file=status["deck"], folder=folder, source=folder / NODES_CSV)
+
+
+def _csv_line(name, node_rows, point_rows, support_rows, where) -> LineStatic:
+    """LineStatic from the CSV rows of one line (rows are dicts column -> value)."""
+    def columns(rows, *names):
+        return np.array([[row[c] for c in names] for row in rows], dtype=float)
+
+    reactions = np.zeros((2, 6))
+    end_held = np.zeros(2, dtype=bool)
+    for row in support_rows:
+        end = "AB".index(row["end"])
+        reactions[end] = [row[c] for c in REACTIONS_HEADER[2:8]]
+        end_held[end] = True
+    arrays = {
+        "node_s": columns(node_rows, "s_m")[:, 0],
+        "node_xyz": columns(node_rows, "x_m", "y_m", "z_m"),
+        "gp_s": columns(point_rows, "s_m")[:, 0],
+        "effective_tension": columns(point_rows, "effective_tension_N")[:, 0],
+        "shear": columns(point_rows, "shear_1_N", "shear_2_N"),
+        "moment": columns(point_rows, "moment_1_Nm", "moment_2_Nm"),
+        "torque": columns(point_rows, "torque_Nm")[:, 0],
+        "curvature": columns(point_rows, "curvature_1_per_m", "curvature_2_per_m",
+                             "twist_per_m"),
+        "reactions": reactions, "end_held": end_held,
+    }
+    return _make_line(name, arrays, where)
+
+
+def _read_table(path: Path, header: tuple) -> dict:
+    """Rows of a rodyn CSV table grouped by line name, lines in order of first
+    appearance: {name: [row, ...]}, each row a dict column -> converted value."""
+    if not path.is_file():
+        raise RodynResultsError(f"{path}: file missing")
+    table = {}
+    with open(path, newline="", encoding="utf-8") as f:
+        reader = csv.reader(f)
+        first = next(reader, [])
+        if tuple(first) != header:
+            raise RodynResultsError(f"{path}: line 1: header is {','.join(first)!r}, "
+                                    f"expected {','.join(header)!r}")
+        for fields in reader:
+            if not fields:
+                continue  # blank line
+            where = f"{path}: line {reader.line_num}"
+            if len(fields) != len(header):
+                raise RodynResultsError(f"{where}: {len(fields)} fields, expected {len(header)}")
+            row = {c: _field(text, c, where) for c, text in zip(header, fields)}
+            table.setdefault(row["line"], []).append(row)
+    return table
+
+
+def _field(text: str, column: str, where: str):
+    """Value of one CSV field: str for `line`, 'A'/'B' for `end`, int or float else."""
+    if column == "line":
+        return text
+    if column == "end":
+        if text in ("A", "B"):
+            return text
+        expected = "A or B"
+    else:
+        kind, expected = (int, "an integer") if column in _INTEGER_COLUMNS else (float, "a number")
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    raise RodynResultsError(f"{where}: column {column}: {text!r} is not {expected}")
