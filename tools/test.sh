@@ -9,11 +9,11 @@ cd "$(dirname "$0")/.."
 bash tools/setup.sh
 jobs="$(nproc)"
 
-cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug >/dev/null
+cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON >/dev/null
 cmake --build build-debug -j "$jobs" >/dev/null
 (cd build-debug && ctest -j "$jobs" --output-on-failure)
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
 cmake --build build -j "$jobs" >/dev/null
 (cd build && ctest -j "$jobs" --output-on-failure)
 
