@@ -7,6 +7,7 @@
 !> its length). The first error found ends the reading with a located message
 !> 'FILE:LINE: error: *KEYWORD: message' in err (code stat_input).
 module rodyn_deck
+   use rodyn_section, only: section_default_rotary_inertia
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, has_error, stat_input
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
@@ -820,8 +821,8 @@ contains
          associate (s => model%sections(is))
             if (s%ga1 < 0.0_wp) s%ga1 = s%ea
             if (s%ga2 < 0.0_wp) s%ga2 = s%ea
-            if (s%rhoi1 < 0.0_wp) s%rhoi1 = s%mass*s%od**2/16.0_wp
-            if (s%rhoi2 < 0.0_wp) s%rhoi2 = s%mass*s%od**2/16.0_wp
+            if (s%rhoi1 < 0.0_wp) s%rhoi1 = section_default_rotary_inertia(s%mass, s%od)
+            if (s%rhoi2 < 0.0_wp) s%rhoi2 = section_default_rotary_inertia(s%mass, s%od)
          end associate
       end do
    end subroutine resolve_section_defaults

@@ -7,7 +7,8 @@
 module rodyn_mesh
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, stat_input, has_error
-   use rodyn_model, only: model_t, section_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
+   use rodyn_section, only: section_stiffness
+   use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
                           bc_position, end_a, end_b
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
@@ -16,7 +17,7 @@ module rodyn_mesh
    use rodyn_shape, only: max_nen
    implicit none
    private
-   public :: mesh_t, mesh_build, mesh_node, mesh_section_stiffness
+   public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
    type :: mesh_t
@@ -57,13 +58,6 @@ contains
       end if
    end function mesh_node
 
-   !> Section stiffness diag(GA1, GA2, EA, EI1, EI2, GJ) (note section 1).
-   pure function mesh_section_stiffness(sec) result(c)
-      type(section_t), intent(in) :: sec !< section
-      real(wp) :: c(6)
-      c = [sec%ga1, sec%ga2, sec%ea, sec%ei1, sec%ei2, sec%gj]
-   end function mesh_section_stiffness
-
    !> Build the mesh and the initial configuration from the model.
    subroutine mesh_build(model, mesh, state, err)
       type(model_t), intent(in) :: model     !< validated model
@@ -85,7 +79,7 @@ contains
          mesh%line_first_node(l) = nn + 1
          mesh%line_first_elem(l) = ne + 1
          mesh%line_n_nodes(l) = model%lines(l)%n_elements*p + 1
-         mesh%line_c(:, l) = mesh_section_stiffness(model%sections(model%lines(l)%section))
+         mesh%line_c(:, l) = section_stiffness(model%sections(model%lines(l)%section))
          mesh%line_mass(l) = model%sections(model%lines(l)%section)%mass
          mesh%line_catenary(l) = held_in_position(model, l, end_a) .and. &
                                  held_in_position(model, l, end_b)
