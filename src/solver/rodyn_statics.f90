@@ -109,15 +109,15 @@ contains
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< form the tangent
       type(error_t), intent(inout) :: err            !< status (unused: cannot fail)
+      integer :: node
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
       this%r = this%fint - this%fext - (1.0_wp - this%lam)*this%r0
-      where (spread(this%sup%moved, 1, 3))
-         this%gap = this%x_held - this%state%x
-      elsewhere
-         this%gap = 0.0_wp
-      end where
+      do node = 1, this%mesh%n_nodes
+         this%gap(:, node) = 0.0_wp
+         if (this%sup%moved(node)) this%gap(:, node) = this%x_held(:, node) - this%state%x(:, node)
+      end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
    end subroutine static_evaluate
 
