@@ -181,11 +181,15 @@ contains
       real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
       real(wp) :: blk(3, 3), aab, h
       integer :: a, b, k, ra, rb
+      logical :: forces, moments
+      forces = any(s(1:3) /= 0.0_wp)
+      moments = any(s(4:6) /= 0.0_wp)
       do b = 1, nen
          rb = 6*(b - 1)
          do a = 1, nen
             ra = 6*(a - 1)
             ! shear/extension: couples x_a with d_kb and d_ka with x_b
+            if (forces) then
             blk = 0.0_wp
             do k = 1, 3
                blk = blk - s(k)*dn(a)*n(b)*skew(dr(:, k, b))
@@ -196,9 +200,10 @@ contains
                blk = blk + s(k)*n(a)*dn(b)*skew(dl(:, k, a))
             end do
             ke(ra + 4:ra + 6, rb + 1:rb + 3) = ke(ra + 4:ra + 6, rb + 1:rb + 3) + wj*blk
+            end if
             ! bending/torsion: couples d_ia with d_jb
             aab = dn(a)*n(b) - n(a)*dn(b)
-            if (aab == 0.0_wp) cycle
+            if (.not. moments .or. aab == 0.0_wp) cycle
             h = 0.5_wp*aab*wj
             blk = s(4)*(mpair(dl(:, 2, a), dr(:, 3, b)) - mpair(dl(:, 3, a), dr(:, 2, b))) &
                   + s(5)*(mpair(dl(:, 3, a), dr(:, 1, b)) - mpair(dl(:, 1, a), dr(:, 3, b))) &
@@ -212,10 +217,14 @@ contains
          real(wp), intent(in) :: u(3) !< director on the row side
          real(wp), intent(in) :: v(3) !< director on the column side
          real(wp) :: m(3, 3)
-         integer :: i
-         m = -spread(v, 2, 3)*spread(u, 1, 3)
-         do i = 1, 3
-            m(i, i) = m(i, i) + dot_product(u, v)
+         real(wp) :: uv
+         integer :: i, j
+         uv = u(1)*v(1) + u(2)*v(2) + u(3)*v(3)
+         do j = 1, 3
+            do i = 1, 3
+               m(i, j) = -v(i)*u(j)
+            end do
+            m(j, j) = m(j, j) + uv
          end do
       end function mpair
    end subroutine rod_gp_geometric
@@ -242,14 +251,17 @@ contains
       real(wp), intent(in) :: dnode(3, 3, nen)   !< directors being rotated
       real(wp), intent(in) :: scale              !< factor (1 in statics)
       real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
-      real(wp) :: blk(3, 3)
-      integer :: a, i, j, r
+      real(wp) :: blk(3, 3), fd
+      integer :: a, i, j, k, r
       do a = 1, nen
          blk = 0.0_wp
          do i = 1, 3
-            blk = blk + spread(dnode(:, i, a), 2, 3)*spread(fq(:, 1 + i, a), 1, 3)
-            do j = 1, 3
-               blk(j, j) = blk(j, j) - dot_product(fq(:, 1 + i, a), dnode(:, i, a))
+            fd = dot_product(fq(:, 1 + i, a), dnode(:, i, a))
+            do k = 1, 3
+               do j = 1, 3
+                  blk(j, k) = blk(j, k) + dnode(j, i, a)*fq(k, 1 + i, a)
+               end do
+               blk(k, k) = blk(k, k) - fd
             end do
          end do
          r = 6*(a - 1) + 3
@@ -269,34 +281,48 @@ contains
       real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
       real(wp), intent(out) :: ke(:, :)            !< (6(p+1), 6(p+1)) tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
+      ! fixed-size work arrays: nothing is allocated per call
       real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
-      real(wp) :: n(p + 1), dn(p + 1), s(6), wj, cg(6)
-      real(wp) :: fq(3, 4, p + 1), bt(6, 6*(p + 1)), cb(6, 6*(p + 1))
+      real(wp) :: n(max_nen), dn(max_nen), s(6), wj, cg(6), acc
+      real(wp) :: fq(3, 4, max_nen), bt(6, 6*max_nen), cb(6, 6*max_nen)
       type(rod_gp_t) :: kin
-      integer :: g, nen, k, np
+      integer :: g, nen, nd, k, np, i, j, nk, rows(6)
       nen = p + 1
+      nd = 6*nen
       call rod_quadrature(p, np, xi, w, mask)
-      fq = 0.0_wp
-      if (want_k) ke = 0.0_wp
+      fq(:, :, 1:nen) = 0.0_wp
+      if (want_k) ke(1:nd, 1:nd) = 0.0_wp
       do g = 1, np
-         call shape_lagrange(p, xi(g), n, dn)
-         dn = dn*2.0_wp/le
+         call shape_lagrange(p, xi(g), n(1:nen), dn(1:nen))
+         dn(1:nen) = dn(1:nen)*2.0_wp/le
          wj = w(g)*0.5_wp*le
          cg = c*mask(:, g)
-         call rod_gp_kinematics(nen, n, dn, xe, de, kin)
+         call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xe, de, kin)
          s = cg*(rod_strains(kin) - eps0(:, g))
-         call rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
-         if (want_k) then
-            call rod_gp_jacobian(nen, n, dn, kin, de, bt)
-            do k = 1, 6
-               cb(k, :) = (wj*cg(k))*bt(k, :)
+         call rod_gp_qforce(nen, n(1:nen), dn(1:nen), kin, s, wj, fq(:, :, 1:nen))
+         if (.not. want_k) cycle
+         call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), kin, de, bt(:, 1:nd))
+         ! material part B^T C B over the strains integrated at this point only
+         nk = 0
+         do k = 1, 6
+            if (cg(k) == 0.0_wp) cycle
+            nk = nk + 1
+            rows(nk) = k
+            cb(k, 1:nd) = (wj*cg(k))*bt(k, 1:nd)
+         end do
+         do j = 1, nd
+            do i = 1, nd
+               acc = 0.0_wp
+               do k = 1, nk
+                  acc = acc + bt(rows(k), i)*cb(rows(k), j)
+               end do
+               ke(i, j) = ke(i, j) + acc
             end do
-            ke = ke + matmul(transpose(bt), cb)
-            call rod_gp_geometric(nen, n, dn, s, de, de, wj, ke)
-         end if
+         end do
+         call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, de, de, wj, ke(1:nd, 1:nd))
       end do
-      call rod_project_qforce(nen, fq, de, fe)
-      if (want_k) call rod_rotation_geometric(nen, fq, de, 1.0_wp, ke)
+      call rod_project_qforce(nen, fq(:, :, 1:nen), de, fe)
+      if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), de, 1.0_wp, ke(1:nd, 1:nd))
    end subroutine rod_element_static
 
    !> Strains at the quadrature points of one element (the first p are the reduced
@@ -308,15 +334,15 @@ contains
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp), intent(out) :: eps(6, max_points) !< strains at the points (0 beyond np)
       real(wp), intent(out) :: xig(max_points)    !< parent coordinates of the points
-      real(wp) :: w(max_points), mask(6, max_points), n(p + 1), dn(p + 1)
+      real(wp) :: w(max_points), mask(6, max_points), n(max_nen), dn(max_nen)
       type(rod_gp_t) :: kin
       integer :: g, np
       call rod_quadrature(p, np, xig, w, mask)
       eps = 0.0_wp
       do g = 1, np
-         call shape_lagrange(p, xig(g), n, dn)
+         call shape_lagrange(p, xig(g), n(1:p + 1), dn(1:p + 1))
          dn = dn*2.0_wp/le
-         call rod_gp_kinematics(p + 1, n, dn, xe, de, kin)
+         call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
          eps(:, g) = rod_strains(kin)
       end do
    end subroutine rod_element_strains
@@ -338,7 +364,7 @@ contains
       real(wp), intent(out) :: curv(3, p)         !< curvatures [1/m]
       real(wp), intent(out) :: xig(p)             !< parent coordinates of the points
       real(wp) :: eps(6, max_points), xq(max_points), w(max_points), mask(6, max_points)
-      real(wp) :: n(p + 1), dn(p + 1), lq(p + 1), nsp(3), sq(6, max_points)
+      real(wp) :: n(max_nen), dn(max_nen), lq(max_nen), nsp(3), sq(6, max_points)
       type(rod_gp_t) :: kin
       integer :: g, np, k
       call rod_element_strains(p, le, xe, de, eps, xq)
@@ -351,16 +377,16 @@ contains
          res(:, g) = sq(:, g)
          if (np > p) then
             ! shear from the p+1 shear points: Lagrange interpolation through them
-            call lagrange_through(p + 1, xq(p + 1:np), xq(g), lq)
+            call lagrange_through(p + 1, xq(p + 1:np), xq(g), lq(1:p + 1))
             res(1:2, g) = 0.0_wp
             do k = 1, p + 1
                res(1:2, g) = res(1:2, g) + lq(k)*sq(1:2, p + k)
             end do
          end if
          curv(:, g) = eps(4:6, g)
-         call shape_lagrange(p, xq(g), n, dn)
+         call shape_lagrange(p, xq(g), n(1:p + 1), dn(1:p + 1))
          dn = dn*2.0_wp/le
-         call rod_gp_kinematics(p + 1, n, dn, xe, de, kin)
+         call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
          nsp = res(1, g)*kin%d(:, 1) + res(2, g)*kin%d(:, 2) + res(3, g)*kin%d(:, 3)
          tension(g) = dot_product(nsp, kin%xp)/norm2(kin%xp)
       end do
@@ -407,12 +433,12 @@ contains
       real(wp), intent(in) :: le            !< unstretched element length [m]
       real(wp), intent(in) :: q(3)          !< load per unit unstretched length [N/m]
       real(wp), intent(out) :: fa(3, p + 1) !< nodal forces [N]
-      real(wp) :: xi(p + 1), w(p + 1), n(p + 1), dn(p + 1)
+      real(wp) :: xi(max_nen), w(max_nen), n(max_nen), dn(max_nen)
       integer :: g, a
-      call gauss_rule(p + 1, xi, w)
+      call gauss_rule(p + 1, xi(1:p + 1), w(1:p + 1))
       fa = 0.0_wp
       do g = 1, p + 1
-         call shape_lagrange(p, xi(g), n, dn)
+         call shape_lagrange(p, xi(g), n(1:p + 1), dn(1:p + 1))
          do a = 1, p + 1
             fa(:, a) = fa(:, a) + 0.5_wp*le*w(g)*n(a)*q
          end do
@@ -426,8 +452,8 @@ contains
       real(wp), intent(in) :: le            !< unstretched element length [m]
       real(wp), intent(in) :: rhoa          !< mass (or inertia) per unit length
       real(wp), intent(out) :: ma(p + 1)    !< nodal lumped values
-      real(wp) :: fa(3, p + 1)
-      call rod_element_line_load(p, le, [rhoa, 0.0_wp, 0.0_wp], fa)
-      ma = fa(1, :)
+      real(wp) :: fa(3, max_nen)
+      call rod_element_line_load(p, le, [rhoa, 0.0_wp, 0.0_wp], fa(:, 1:p + 1))
+      ma = fa(1, 1:p + 1)
    end subroutine rod_element_lumped_mass
 end module rodyn_rod_element

@@ -18,7 +18,7 @@ contains
       real(wp), intent(in) :: xi          !< parent coordinate in [-1, 1]
       real(wp), intent(out) :: n(p + 1)   !< shape functions
       real(wp), intent(out) :: dn(p + 1)  !< derivatives with respect to xi
-      real(wp) :: xa(p + 1), prod, dsum, term
+      real(wp) :: xa(max_nen), prod, dsum, term
       integer :: a, b, c
       do a = 1, p + 1
          xa(a) = -1.0_wp + 2.0_wp*real(a - 1, wp)/real(p, wp)

@@ -185,14 +185,16 @@ contains
    subroutine static_apply_correction(this, alpha)
       class(static_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                  !< step length [-]
-      real(wp) :: th(3)
+      real(wp) :: th(3), r(3, 3), db(3, 3)
       integer :: node, k
       do node = 1, this%mesh%n_nodes
          k = 6*(node - 1)
          this%state%x(:, node) = this%x_base(:, node) + alpha*this%du(k + 1:k + 3)
          th = alpha*this%du(k + 4:k + 6)
          if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
-         this%state%d(:, :, node) = matmul(rotation_cayley(th), this%d_base(:, :, node))
+         r = rotation_cayley(th)
+         db = this%d_base(:, :, node)
+         this%state%d(:, :, node) = matmul(r, db)
       end do
    end subroutine static_apply_correction
 

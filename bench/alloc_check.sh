@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# Does anything allocate inside rodyn's Newton loop?
+#
+# Runs the paper cable deck (10 cubic elements, pinned ends, self-weight) under
+# valgrind memcheck and reads "total heap usage: N allocs". The deck is run with
+# *STATIC, INCREMENTS=1 and INCREMENTS=8, with 10 and 40 elements, and again with a
+# 20 kN point load at midspan (whether extra increments add Newton iterations to the
+# paper deck alone depends on how the solver treats self-weight on a line that starts
+# as a catenary; a point load is always ramped with the load factor, so there 8
+# increments need several times the iterations of 1; the table shows the iterations
+# of every run). For each mesh the allocation count must be the same
+# whatever the number of increments and iterations; it may differ between meshes
+# (set-up). The decks differ only in the digit of INCREMENTS, so deck parsing costs
+# the same.
+#
+# On FAIL the 40-element, 8-increment loaded run is repeated with
+# --xtree-memory=full and the routines that allocate are listed by allocation count.
+#
+# usage: bench/alloc_check.sh [--rodyn PATH] [--keep] [--help]
+#   --rodyn PATH   rodyn executable (default: build/rodyn of this repository)
+#   --keep         keep the temporary folder (decks, valgrind logs, xtree file)
+# exit status: 0 PASS, 1 FAIL, 2 could not run
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+rodyn="$root/build/rodyn"
+keep=0
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --rodyn) rodyn="$2"; shift 2 ;;
+    --keep) keep=1; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "unknown option: $1" >&2; exit 2 ;;
+  esac
+done
+rodyn="$(cd "$(dirname "$rodyn")" && pwd)/$(basename "$rodyn")"
+[[ -x "$rodyn" ]] || { echo "no executable rodyn at $rodyn" >&2; exit 2; }
+if ! command -v valgrind >/dev/null; then
+  echo "valgrind not found; installing it with apt-get" >&2
+  (apt-get update -qq && apt-get install -y -qq valgrind) >&2 || {
+    echo "could not install valgrind" >&2; exit 2; }
+fi
+
+tmp="$(mktemp -d /tmp/rodyn_alloc.XXXXXX)"
+if [[ $keep -eq 0 ]]; then trap 'rm -rf "$tmp"' EXIT; else echo "keeping $tmp"; fi
+
+# deck NE INCREMENTS LOAD(0|1)
+deck() {
+  local ne=$1 inc=$2 load=$3 mid=$((3 * $1 / 2 + 1))
+  cat <<EOF
+** bench/alloc_check.sh: paper cable, $ne cubic elements
+*HEADING
+Paper cable (dos Santos & Rochinha, Table 1): static shape under self-weight
+*GRAVITY
+0.0, 0.0, -9.80665
+*SECTION, NAME=CABLE, OD=0.3172
+7.96e8, 5.882e4, 5.882e4, 9.25e6, 226.7
+*LINE, NAME=CABLE, SECTION=CABLE, LENGTH=10.0, ELEMENTS=$ne, ORDER=3
+0.0, 0.0, 0.0, 8.0, 0.0, -1.0
+*BOUNDARY, LINE=CABLE, END=A, TYPE=PINNED
+*BOUNDARY, LINE=CABLE, END=B, TYPE=PINNED
+EOF
+  if [[ $load -eq 1 ]]; then
+    printf '*LOAD, LINE=CABLE, NODE=%d\n0.0, 0.0, -20000.0\n' "$mid"
+  fi
+  printf '*STATIC, INCREMENTS=%d\n*OUTPUT, CSV=NO, HDF5=NO\n' "$inc"
+}
+
+status_value() { sed -n "s/^$2 *= *//p" "$1/status.txt"; }
+
+echo "rodyn: $rodyn ($("$rodyn" --version 2>&1 | head -1))"
+echo "valgrind: $(valgrind --version)"
+echo
+printf '%-22s %9s %11s %11s %12s\n' case elements increments iterations allocs
+fail=0
+declare -A allocs
+for load in 0 1; do
+  for ne in 10 40; do
+    for inc in 1 8; do
+      name="$([[ $load -eq 1 ]] && echo "paper+20kN" || echo "paper")"
+      tag="${name}_n${ne}_inc${inc}"
+      deck "$ne" "$inc" "$load" >"$tmp/$tag.inp"
+      rc=0
+      valgrind --tool=memcheck --log-file="$tmp/$tag.vg" \
+        "$rodyn" "$tmp/$tag.inp" -o "$tmp/out_$tag" --quiet >"$tmp/$tag.out" || rc=$?
+      if [[ $rc -ne 0 ]]; then
+        echo "rodyn exited with $rc on $tag:" >&2; cat "$tmp/$tag.vg" >&2; exit 2
+      fi
+      n=$(sed -n 's/.*total heap usage: \([0-9,]*\) allocs.*/\1/p' "$tmp/$tag.vg" | tr -d ,)
+      it=$(status_value "$tmp/out_$tag" iterations)
+      ninc=$(status_value "$tmp/out_$tag" increments)
+      allocs[$tag]=$n
+      printf '%-22s %9d %11s %11s %12d\n' "$name" "$ne" "$ninc" "$it" "$n"
+    done
+  done
+done
+echo
+for load in 0 1; do
+  name="$([[ $load -eq 1 ]] && echo "paper+20kN" || echo "paper")"
+  for ne in 10 40; do
+    a=${allocs[${name}_n${ne}_inc1]}
+    b=${allocs[${name}_n${ne}_inc8]}
+    if [[ "$a" == "$b" ]]; then
+      echo "PASS  $name, $ne elements: $a allocs with 1 and with 8 increments"
+    else
+      echo "FAIL  $name, $ne elements: $a allocs with 1 increment, $b with 8 (+$((b - a)))"
+      fail=1
+    fi
+  done
+done
+
+if [[ $fail -eq 0 ]]; then
+  echo
+  echo "PASS: the allocation count does not depend on increments or Newton iterations"
+  exit 0
+fi
+
+echo
+echo "FAIL: heap allocations grow with the number of increments / Newton iterations."
+echo "Allocating routines (valgrind --xtree-memory=full, paper+20kN, 40 elements,"
+echo "8 increments; column = number of allocations made in the routine and below):"
+tag="paper+20kN_n40_inc8"
+valgrind --tool=memcheck --log-file="$tmp/xtree.vg" --xtree-memory=full \
+  --xtree-memory-file="$tmp/xtree.kcg" \
+  "$rodyn" "$tmp/$tag.inp" -o "$tmp/out_xtree" --quiet >/dev/null || true
+callgrind_annotate --inclusive=yes --show=totBk --threshold=100 --auto=no "$tmp/xtree.kcg" \
+  2>/dev/null | grep -E '__rodyn_|MAIN__' | grep -vE 'PROGRAM TOTALS' |
+  sed -E 's/UnknownFile\?\?\?://; s/__rodyn_([a-z_]+)_MOD_/\1::/' | head -25
+exit 1
