@@ -7,6 +7,9 @@ module rodyn_model
    private
    public :: section_t, line_def_t, constraint_t, point_load_t, static_options_t
    public :: output_options_t, model_t
+   public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
+   public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
+   public :: motion_harmonic, motion_table
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
 
@@ -20,6 +23,18 @@ module rodyn_model
    integer, parameter :: bc_position = 4   !< moved to a prescribed position, rotation free
    character(len=8), parameter :: bc_names(0:4) = &
       [character(len=8) :: 'FREE', 'PINNED', 'HINGED', 'CLAMPED', 'POSITION']
+
+   ! Time integration schemes (*DYNAMIC, SCHEME=...)
+   integer, parameter :: scheme_emc = 1          !< energy-momentum conserving (the paper's)
+   integer, parameter :: scheme_midpoint = 2     !< midpoint rule, stress at the midpoint
+   integer, parameter :: scheme_trapezoidal = 3  !< trapezoidal rule, averaged end forces
+   integer, parameter :: scheme_alpha = 4        !< dissipative, spectral radius rho_inf
+   character(len=12), parameter :: scheme_names(4) = &
+      [character(len=12) :: 'EMC', 'MIDPOINT', 'TRAPEZOIDAL', 'ALPHA']
+
+   ! Kinds of prescribed motion (*MOTION, TYPE=...)
+   integer, parameter :: motion_harmonic = 1     !< sum of sines per direction
+   integer, parameter :: motion_table = 2        !< displacement time series from a file
 
    ! Symbolic node numbers for the two ends of a line (resolved by the mesh)
    integer, parameter :: end_a = 1         !< first node of a line (S = 0)
@@ -70,6 +85,7 @@ module rodyn_model
       integer :: node = end_a       !< node number along the line, or end_a / end_b
       real(wp) :: force(3) = 0.0_wp !< force [N]
       real(wp) :: moment(3) = 0.0_wp !< moment [N m]
+      integer :: amplitude = 0      !< index into model%amplitudes (0: constant in time)
    end type point_load_t
 
    !> Static analysis controls (*STATIC).
@@ -82,6 +98,59 @@ module rodyn_model
       real(wp) :: disp_tol = 1.0e-8_wp   !< correction / reference length (and rad) [-]
       logical :: line_search = .false.   !< energy line search (Crisfield) along each step
    end type static_options_t
+
+   !> A piecewise-linear function of time (*AMPLITUDE): value(t) interpolated in
+   !> (time, value), constant beyond the ends.
+   type :: amplitude_t
+      character(len=name_len) :: name = ''
+      real(wp), allocatable :: time(:)   !< (n) increasing times [s]
+      real(wp), allocatable :: value(:)  !< (n) values [-]
+   end type amplitude_t
+
+   !> Prescribed motion of a held node (*MOTION): a displacement added to the position
+   !> the node has at the start of the dynamic analysis, multiplied by the ramp
+   !> r(t) = (1 - cos(pi t / ramp))/2 for t < ramp, 1 after (ramp = 0: no ramp).
+   type :: motion_t
+      integer :: line = 0                 !< index into model%lines
+      integer :: node = end_a             !< node number along the line, or end_a / end_b
+      integer :: kind = motion_harmonic   !< motion_* constant
+      real(wp) :: ramp = 3.0_wp           !< ramp-in duration [s]
+      ! harmonic: u_j(t) = amplitude_j sin(2 pi frequency_j t + phase_j), j = x, y, z
+      real(wp) :: amplitude(3) = 0.0_wp   !< [m]
+      real(wp) :: frequency(3) = 0.0_wp   !< [Hz]
+      real(wp) :: phase(3) = 0.0_wp       !< [rad] (given in degrees in the deck)
+      ! table: displacement (ux, uy, uz) at times t, linear interpolation
+      character(len=:), allocatable :: file !< the file the table was read from
+      real(wp), allocatable :: time(:)      !< (n) [s]
+      real(wp), allocatable :: disp(:, :)   !< (3, n) [m]
+   end type motion_t
+
+   !> Initial velocity of a whole line as a rigid body (*INITIAL VELOCITY): each node
+   !> gets v + omega x (x - centre), each director omega x d.
+   type :: initial_velocity_t
+      integer :: line = 0                 !< index into model%lines
+      real(wp) :: velocity(3) = 0.0_wp    !< translational velocity [m/s]
+      real(wp) :: omega(3) = 0.0_wp       !< angular velocity [rad/s]
+      logical :: has_centre = .false.     !< centre given (else the mean of the nodes)
+      real(wp) :: centre(3) = 0.0_wp      !< centre of the rotation [m]
+   end type initial_velocity_t
+
+   !> Dynamic analysis controls (*DYNAMIC, *DAMPING).
+   type :: dynamic_options_t
+      logical :: requested = .false.      !< a *DYNAMIC card was given
+      integer :: scheme = scheme_emc      !< scheme_* constant
+      real(wp) :: rho_inf = 1.0_wp        !< spectral radius at infinite frequency (ALPHA) [-]
+      real(wp) :: dt = 0.0_wp             !< time step [s]
+      real(wp) :: duration = 0.0_wp       !< simulated time [s]
+      real(wp) :: output_interval = 0.0_wp !< time between outputs [s]; 0: every step
+      logical :: start_static = .true.    !< start from the static solution (else as defined)
+      integer :: max_iterations = 20      !< Newton iterations per step
+      integer :: max_cutbacks = 6         !< halvings of a step
+      real(wp) :: force_tol = 1.0e-8_wp   !< residual / reference force [-]
+      real(wp) :: disp_tol = 1.0e-8_wp    !< correction / reference length [-]
+      real(wp) :: rayleigh_alpha = 0.0_wp !< mass-proportional damping [1/s]
+      real(wp) :: rayleigh_beta = 0.0_wp  !< stiffness-proportional damping [s]
+   end type dynamic_options_t
 
    !> What to write (*OUTPUT).
    type :: output_options_t
@@ -99,7 +168,11 @@ module rodyn_model
       type(line_def_t), allocatable :: lines(:)
       type(constraint_t), allocatable :: constraints(:)
       type(point_load_t), allocatable :: loads(:)
+      type(amplitude_t), allocatable :: amplitudes(:)
+      type(motion_t), allocatable :: motions(:)
+      type(initial_velocity_t), allocatable :: initial_velocities(:)
       type(static_options_t) :: static
+      type(dynamic_options_t) :: dynamic
       type(output_options_t) :: output
    end type model_t
 end module rodyn_model

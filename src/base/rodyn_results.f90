@@ -5,7 +5,7 @@ module rodyn_results
    use rodyn_model, only: name_len
    implicit none
    private
-   public :: line_result_t, run_summary_t
+   public :: line_result_t, run_summary_t, step_log_t
 
    !> Static results of one line.
    type :: line_result_t
@@ -27,6 +27,25 @@ module rodyn_results
       logical :: end_held(2) = .false.         !< end A / end B carries a support
    end type line_result_t
 
+   !> One time step of a dynamic run: solver effort and the balance of energy and
+   !> momentum (formulation note section 3: what the EMC scheme conserves).
+   type :: step_log_t
+      integer :: step = 0                       !< step number (1, 2, ...)
+      real(wp) :: time = 0.0_wp                 !< time at the end of the step [s]
+      real(wp) :: dt = 0.0_wp                   !< step length used [s]
+      integer :: iterations = 0                 !< Newton iterations of the step
+      integer :: cutbacks = 0                   !< halvings needed by the step
+      real(wp) :: kinetic = 0.0_wp              !< kinetic energy [J]
+      real(wp) :: strain = 0.0_wp               !< stored (strain) energy [J]
+      real(wp) :: gravity = 0.0_wp              !< potential of the weight, -sum f_g . x [J]
+      real(wp) :: external_work = 0.0_wp        !< work done on the line since t = 0 by
+                                                !< prescribed motions and loads [J]
+      real(wp) :: damping_work = 0.0_wp         !< energy taken out by damping since t = 0 [J]
+      real(wp) :: total = 0.0_wp                !< kinetic + strain + gravity [J]
+      real(wp) :: momentum(3) = 0.0_wp          !< total linear momentum [kg m/s]
+      real(wp) :: angular_momentum(3) = 0.0_wp  !< about the origin [kg m2/s]
+   end type step_log_t
+
    !> How the run went: written with the results so a reader knows how far it got.
    type :: run_summary_t
       logical :: complete = .false.            !< the analysis reached its end
@@ -36,5 +55,11 @@ module rodyn_results
       integer :: iterations = 0                !< Newton iterations in total
       integer :: cutbacks = 0                  !< increment halvings
       real(wp) :: wall_time = 0.0_wp           !< solve wall time [s]
+      ! dynamic analysis
+      logical :: dynamic = .false.             !< a dynamic analysis was run
+      real(wp) :: time_reached = 0.0_wp        !< last time reached [s]
+      integer :: steps = 0                     !< time steps completed
+      integer :: step_cutbacks = 0             !< step halvings in total
+      integer :: step_iterations = 0           !< Newton iterations over all steps
    end type run_summary_t
 end module rodyn_results
