@@ -5,10 +5,12 @@ module rodyn_state
    private
    public :: state_t, state_allocate
 
-   !> Configuration of all nodes (velocities join here with the dynamics).
+   !> Configuration and velocities of all nodes.
    type :: state_t
       real(wp), allocatable :: x(:, :)     !< (3, nn) positions [m]
       real(wp), allocatable :: d(:, :, :)  !< (3, 3, nn) directors d(:, i, a) [-]
+      real(wp), allocatable :: v(:, :)     !< (3, nn) velocities [m/s]
+      real(wp), allocatable :: dd(:, :, :) !< (3, 3, nn) director velocities [1/s]
    end type state_t
 
 contains
@@ -17,9 +19,11 @@ contains
    subroutine state_allocate(state, nn)
       type(state_t), intent(inout) :: state !< state to allocate
       integer, intent(in) :: nn             !< number of nodes
-      if (allocated(state%x)) deallocate (state%x, state%d)
-      allocate (state%x(3, nn), state%d(3, 3, nn))
+      if (allocated(state%x)) deallocate (state%x, state%d, state%v, state%dd)
+      allocate (state%x(3, nn), state%d(3, 3, nn), state%v(3, nn), state%dd(3, 3, nn))
       state%x = 0.0_wp
       state%d = 0.0_wp
+      state%v = 0.0_wp
+      state%dd = 0.0_wp
    end subroutine state_allocate
 end module rodyn_state

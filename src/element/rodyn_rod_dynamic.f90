@@ -1,0 +1,114 @@
+!> Internal force of the director rod over a time step (formulation note sections 3-4),
+!> projected with the midpoint directors d^{n+1/2} = (d^n + d^{n+1})/2, and its tangent
+!> with respect to the unknowns at n+1 (dx, dtheta; dd^{n+1} = dtheta x d^{n+1}):
+!>   EMC          S = C ((eps(q^n) + eps(q^{n+1}))/2 - eps0), B at q^{n+1/2}
+!>   MIDPOINT     S = C (eps(q^{n+1/2}) - eps0),                B at q^{n+1/2}
+!>   TRAPEZOIDAL  f = (f(q^n) + f(q^{n+1}))/2
+!> With the EMC choice the work of the internal force over the step equals the change of
+!> stored energy exactly (strains quadratic in q), the root of energy conservation.
+module rodyn_rod_dynamic
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal
+   use rodyn_shape, only: shape_lagrange, max_nen
+   use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
+                                rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
+                                rod_rotation_geometric, rod_quadrature, max_points
+   implicit none
+   private
+   public :: rod_element_dynamic
+
+contains
+
+   !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
+   pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, fe, ke, want_k)
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, max_points) !< stress-free strains
+      real(wp), intent(in) :: x0(3, p + 1)        !< positions at t_n [m]
+      real(wp), intent(in) :: d0(3, 3, p + 1)     !< directors at t_n
+      real(wp), intent(in) :: x1(3, p + 1)        !< positions at t_n+1 [m]
+      real(wp), intent(in) :: d1(3, 3, p + 1)     !< directors at t_n+1
+      integer, intent(in) :: scheme               !< scheme_* constant
+      real(wp), intent(out) :: fe(6, p + 1)       !< projected internal force [N, N m]
+      real(wp), intent(out) :: ke(:, :)           !< (6(p+1), 6(p+1)) tangent, if want_k
+      logical, intent(in) :: want_k               !< form the tangent
+      real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
+      real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6)
+      real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
+      real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
+      type(rod_gp_t) :: k0, k1, km
+      integer :: g, nen, nd, np
+      nen = p + 1
+      nd = 6*nen
+      xm(:, 1:nen) = 0.5_wp*(x0 + x1)
+      dm(:, :, 1:nen) = 0.5_wp*(d0 + d1)
+      call rod_quadrature(p, np, xi, w, mask)
+      fq(:, :, 1:nen) = 0.0_wp
+      if (want_k) ke(1:nd, 1:nd) = 0.0_wp
+      do g = 1, np
+         call shape_lagrange(p, xi(g), n(1:nen), dn(1:nen))
+         dn(1:nen) = dn(1:nen)*2.0_wp/le
+         wj = w(g)*0.5_wp*le
+         cg = c*mask(:, g)
+         call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
+         select case (scheme)
+         case (scheme_midpoint)
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), dm(:, :, 1:nen), km)
+            s = cg*(rod_strains(km) - eps0(:, g))
+            call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
+            if (.not. want_k) cycle
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
+            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
+                                  0.5_wp*wj, ke(1:nd, 1:nd))
+         case (scheme_trapezoidal)
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+            s = cg*(rod_strains(k0) - eps0(:, g))
+            s1 = cg*(rod_strains(k1) - eps0(:, g))
+            call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k0, s, 0.5_wp*wj, fq(:, :, 1:nen))
+            call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k1, s1, 0.5_wp*wj, fq(:, :, 1:nen))
+            if (.not. want_k) cycle
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), bl(:, 1:nd))
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
+            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s1, dm(:, :, 1:nen), d1, &
+                                  0.5_wp*wj, ke(1:nd, 1:nd))
+         case default ! scheme_emc
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), dm(:, :, 1:nen), km)
+            s = cg*(0.5_wp*(rod_strains(k0) + rod_strains(k1)) - eps0(:, g))
+            call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
+            if (.not. want_k) cycle
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
+            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
+            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
+                                  0.5_wp*wj, ke(1:nd, 1:nd))
+         end select
+      end do
+      call rod_project_qforce(nen, fq(:, :, 1:nen), dm(:, :, 1:nen), fe)
+      if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, 0.5_wp, ke(1:nd, 1:nd))
+   end subroutine rod_element_dynamic
+   !> ke += f bl^T diag(cg) br over the strains integrated at the point (cg /= 0).
+   pure subroutine add_material(nd, cg, bl, br, f, ke)
+      integer, intent(in) :: nd            !< element unknowns
+      real(wp), intent(in) :: cg(6)        !< stiffness of the strains integrated here
+      real(wp), intent(in) :: bl(:, :)     !< (6, >= nd) test-side strain Jacobian
+      real(wp), intent(in) :: br(:, :)     !< (6, >= nd) increment-side strain Jacobian
+      real(wp), intent(in) :: f            !< weight
+      real(wp), intent(inout) :: ke(:, :)  !< element matrix
+      real(wp) :: acc
+      integer :: i, j, k
+      do j = 1, nd
+         do i = 1, nd
+            acc = 0.0_wp
+            do k = 1, 6
+               if (cg(k) /= 0.0_wp) acc = acc + bl(k, i)*cg(k)*br(k, j)
+            end do
+            ke(i, j) = ke(i, j) + f*acc
+         end do
+      end do
+   end subroutine add_material
+end module rodyn_rod_dynamic

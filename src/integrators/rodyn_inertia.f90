@@ -1,0 +1,95 @@
+!> Lumped inertia of the director rod (formulation note sections 1-2): kinetic energy
+!> T = 1/2 sum_a [m_a |v_a|^2 + M1_a |d1dot_a|^2 + M2_a |d2dot_a|^2], row-sum lumped from
+!> rhoA and the director inertias E11 = rhoI2 (for d1), E22 = rhoI1 (for d2); d3 carries
+!> none. The mass matrix is constant: all nonlinearity is in the stiffness.
+module rodyn_inertia
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: model_t
+   use rodyn_mesh, only: mesh_t
+   use rodyn_state, only: state_t
+   use rodyn_rod_element, only: rod_element_lumped_mass
+   use rodyn_rotation, only: cross
+   use rodyn_shape, only: max_nen
+   implicit none
+   private
+   public :: inertia_t, inertia_build, kinetic_energy, linear_momentum, angular_momentum
+
+   !> Nodal lumped inertia.
+   type :: inertia_t
+      real(wp), allocatable :: m(:)       !< (nn) translational mass [kg]
+      real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0)
+   end type inertia_t
+
+contains
+
+   !> Lump rhoA, E11 = rhoI2 and E22 = rhoI1 element by element.
+   subroutine inertia_build(model, mesh, inert)
+      type(model_t), intent(in) :: model     !< model (sections)
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(inertia_t), intent(out) :: inert  !< lumped inertia
+      real(wp) :: ma(max_nen), m1(max_nen), m2(max_nen)
+      integer :: e, l, p, a, node
+      allocate (inert%m(mesh%n_nodes), inert%md(3, mesh%n_nodes))
+      inert%m = 0.0_wp
+      inert%md = 0.0_wp
+      do e = 1, mesh%n_elements
+         l = mesh%elem_line(e)
+         p = mesh%line_order(l)
+         associate (sec => model%sections(model%lines(l)%section))
+            call rod_element_lumped_mass(p, mesh%elem_le(e), sec%mass, ma(1:p + 1))
+            call rod_element_lumped_mass(p, mesh%elem_le(e), sec%rhoi2, m1(1:p + 1))
+            call rod_element_lumped_mass(p, mesh%elem_le(e), sec%rhoi1, m2(1:p + 1))
+         end associate
+         do a = 1, p + 1
+            node = mesh%elem_nodes(a, e)
+            inert%m(node) = inert%m(node) + ma(a)
+            inert%md(1, node) = inert%md(1, node) + m1(a)
+            inert%md(2, node) = inert%md(2, node) + m2(a)
+         end do
+      end do
+   end subroutine inertia_build
+
+   !> Kinetic energy [J].
+   pure function kinetic_energy(inert, state) result(t)
+      type(inertia_t), intent(in) :: inert !< lumped inertia
+      type(state_t), intent(in) :: state   !< velocities
+      real(wp) :: t
+      integer :: a, i
+      t = 0.0_wp
+      do a = 1, size(inert%m)
+         t = t + inert%m(a)*dot_product(state%v(:, a), state%v(:, a))
+         do i = 1, 2
+            t = t + inert%md(i, a)*dot_product(state%dd(:, i, a), state%dd(:, i, a))
+         end do
+      end do
+      t = 0.5_wp*t
+   end function kinetic_energy
+
+   !> Total linear momentum sum m v [kg m/s].
+   pure function linear_momentum(inert, state) result(p)
+      type(inertia_t), intent(in) :: inert !< lumped inertia
+      type(state_t), intent(in) :: state   !< velocities
+      real(wp) :: p(3)
+      integer :: a
+      p = 0.0_wp
+      do a = 1, size(inert%m)
+         p = p + inert%m(a)*state%v(:, a)
+      end do
+   end function linear_momentum
+
+   !> Total angular momentum about the origin, J = sum x x m v + sum_i d_i x M_i d_i_dot
+   !> (note section 3) [kg m2/s].
+   pure function angular_momentum(inert, state) result(j)
+      type(inertia_t), intent(in) :: inert !< lumped inertia
+      type(state_t), intent(in) :: state   !< configuration and velocities
+      real(wp) :: j(3)
+      integer :: a, i
+      j = 0.0_wp
+      do a = 1, size(inert%m)
+         j = j + inert%m(a)*cross(state%x(:, a), state%v(:, a))
+         do i = 1, 2
+            j = j + inert%md(i, a)*cross(state%d(:, i, a), state%dd(:, i, a))
+         end do
+      end do
+   end function angular_momentum
+end module rodyn_inertia
