@@ -11,12 +11,14 @@ module rodyn_assembly
    use rodyn_state, only: state_t
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_column_axpy
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
+   use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_rotation, only: cross
    use rodyn_shape, only: max_nen
    implicit none
    private
    public :: supports_t, loads_t, supports_build, loads_build
-   public :: assemble_static, apply_supports, external_force
+   public :: assemble_static, assemble_dynamic, apply_supports, external_force
+   public :: add_node_block
 
    !> Node constraints, fixed for the run.
    type :: supports_t
@@ -169,28 +171,101 @@ contains
                do j = 1, 6
                   dofs(6*(a - 1) + j) = 6*(node - 1) + j
                end do
-               if (sup%rotated(node)) call rotate_block(ke(1:6*nen, 1:6*nen), a, &
+               if (sup%rotated(node)) call rotate_rows_cols(ke(1:6*nen, 1:6*nen), a, &
                                                         sup%basis(:, :, node))
             end do
             call banded_add(bm, dofs(1:6*nen), ke(1:6*nen, 1:6*nen))
          end associate
       end do
-   contains
-      !> ke <- T^T ke T on the rotation rows and columns of element node a.
-      pure subroutine rotate_block(k, a, t)
-         real(wp), intent(inout) :: k(:, :) !< element matrix
-         integer, intent(in) :: a           !< element node
-         real(wp), intent(in) :: t(3, 3)    !< basis
-         real(wp) :: rows(3, size(k, 2)), cols(size(k, 1), 3), tt(3, 3)
-         integer :: r
-         r = 6*(a - 1) + 3
-         tt = transpose(t)
-         rows = k(r + 1:r + 3, :)
-         k(r + 1:r + 3, :) = matmul(tt, rows)
-         cols = k(:, r + 1:r + 3)
-         k(:, r + 1:r + 3) = matmul(cols, t)
-      end subroutine rotate_block
    end subroutine assemble_static
+
+   !> Step internal force fint (6, nn) of a time-integration scheme between the states
+   !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
+   !> t_n+1 (rodyn_rod_dynamic), assembled as in assemble_static.
+   subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, fint, bm, want_k)
+      type(mesh_t), intent(in) :: mesh        !< mesh
+      type(supports_t), intent(in) :: sup    !< supports (for the node bases)
+      type(state_t), intent(in) :: s0         !< state at t_n
+      type(state_t), intent(in) :: s1         !< state at t_n+1 (current iterate)
+      integer, intent(in) :: scheme           !< scheme_* constant
+      real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
+      type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
+      logical, intent(in) :: want_k           !< form the tangent
+      real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
+      real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen)
+      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j
+      fint = 0.0_wp
+      if (want_k) then
+         bm%ab = 0.0_wp
+         bm%factored = .false.
+      end if
+      do e = 1, mesh%n_elements
+         l = mesh%elem_line(e)
+         p = mesh%line_order(l)
+         nen = p + 1
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            do a = 1, nen
+               x0(:, a) = s0%x(:, nodes(a))
+               d0(:, :, a) = s0%d(:, :, nodes(a))
+               x1(:, a) = s1%x(:, nodes(a))
+               d1(:, :, a) = s1%d(:, :, nodes(a))
+            end do
+            call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
+                                     x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
+                                     d1(:, :, 1:nen), scheme, fe(:, 1:nen), &
+                                     ke(1:6*nen, 1:6*nen), want_k)
+            do a = 1, nen
+               fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
+            end do
+            if (.not. want_k) cycle
+            do a = 1, nen
+               node = nodes(a)
+               do j = 1, 6
+                  dofs(6*(a - 1) + j) = 6*(node - 1) + j
+               end do
+               if (sup%rotated(node)) call rotate_rows_cols(ke(1:6*nen, 1:6*nen), a, &
+                                                            sup%basis(:, :, node))
+            end do
+            call banded_add(bm, dofs(1:6*nen), ke(1:6*nen, 1:6*nen))
+         end associate
+      end do
+   end subroutine assemble_dynamic
+
+   !> Add a 6x6 block (force/moment of one node against its own unknowns) to the
+   !> tangent, in the node's basis if it has one.
+   subroutine add_node_block(sup, node, kb, bm)
+      type(supports_t), intent(in) :: sup   !< supports (node bases)
+      integer, intent(in) :: node           !< global node
+      real(wp), intent(in) :: kb(6, 6)      !< block, global axes
+      type(banded_t), intent(inout) :: bm   !< tangent
+      real(wp) :: k(6, 6)
+      integer :: j, dofs(6)
+      k = kb
+      if (sup%rotated(node)) call rotate_rows_cols(k, 1, sup%basis(:, :, node))
+      dofs = [(6*(node - 1) + j, j=1, 6)]
+      call banded_add(bm, dofs, k)
+   end subroutine add_node_block
+
+   !> k <- T^T k T on the rotation rows and columns of element node a.
+   pure subroutine rotate_rows_cols(k, a, t)
+      real(wp), intent(inout) :: k(:, :) !< element matrix
+      integer, intent(in) :: a           !< element node
+      real(wp), intent(in) :: t(3, 3)    !< basis (columns)
+      real(wp) :: rows(3, 6*max_nen), cols(6*max_nen, 3)
+      integer :: r, n, i, j
+      r = 6*(a - 1) + 3
+      n = size(k, 1)
+      rows(:, 1:n) = k(r + 1:r + 3, :)
+      do j = 1, n
+         do i = 1, 3
+            k(r + i, j) = t(1, i)*rows(1, j) + t(2, i)*rows(2, j) + t(3, i)*rows(3, j)
+         end do
+      end do
+      cols(1:n, :) = k(:, r + 1:r + 3)
+      do j = 1, 3
+         k(:, r + j) = cols(1:n, 1)*t(1, j) + cols(1:n, 2)*t(2, j) + cols(1:n, 3)*t(3, j)
+      end do
+   end subroutine rotate_rows_cols
 
    !> Right-hand side for the Newton step K du = -rhs: the residual in the node bases;
    !> at a held dof k, rhs_k = -gap_k so that du_k = gap_k (the distance still to go to

@@ -1,0 +1,330 @@
+!> One time step of the rod dynamics (formulation note section 3), solved by Newton:
+!> for every free node a, with velocities updated by the midpoint relations
+!>   v^{n+1} = 2/dt (x^{n+1} - x^n) - v^n,    ddot_i^{n+1} = 2/dt (d_i^{n+1} - d_i^n) - ddot_i^n,
+!> the residual
+!>   r_x = m_a (v^{n+1} - v^n)/dt + f_x - f_ext(t_{n+1/2}) + alpha m_a (x^{n+1} - x^n)/dt
+!>   r_theta = sum_i d_i^{n+1/2} x [M_ia (ddot_i^{n+1} - ddot_i^n)/dt
+!>             + alpha M_ia (d_i^{n+1} - d_i^n)/dt] + f_theta - m_ext(t_{n+1/2})
+!> vanishes (f: the step internal force of the scheme, rodyn_rod_dynamic; alpha: Rayleigh
+!> mass-proportional damping). Held nodes follow their prescribed position at t_{n+1}.
+!> The rotation rows are projected with the midpoint directors, so Lagrange multipliers of
+!> the orthonormality constraints never appear (discrete null-space method).
+!>
+!> The step displacement dx = x^{n+1} - x^n is carried as such (predictor plus Newton
+!> corrections), never recovered as a difference of positions: far from the origin that
+!> difference loses eps |x| / dt of velocity per step (measured on a rod flying away
+!> from the origin: angular momentum drift growing like n^3, 2.7e-10 after 5000 steps).
+module rodyn_dynamics
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t
+   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_state, only: state_t, state_allocate
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
+   use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
+                             assemble_dynamic, apply_supports, add_node_block
+   use rodyn_newton, only: newton_problem_t
+   use rodyn_rotation, only: rotation_cayley, cross
+   use rodyn_inertia, only: inertia_t, inertia_build
+   use rodyn_motion, only: motion_displacement, amplitude_value
+   implicit none
+   private
+   public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
+   public :: apply_initial_velocities
+
+   !> The step problem and its workspace (allocated once in dynamics_setup).
+   type, extends(newton_problem_t) :: dynamic_problem_t
+      type(mesh_t), pointer :: mesh => null()
+      type(model_t), pointer :: model => null()
+      type(state_t), pointer :: s1 => null()   !< state at t_n+1 (the iterate)
+      type(state_t) :: s0                      !< state at t_n
+      type(supports_t) :: sup
+      type(loads_t) :: loads
+      type(inertia_t) :: inert
+      integer :: scheme = 1
+      real(wp) :: alpha = 0.0_wp               !< Rayleigh mass-proportional damping [1/s]
+      real(wp) :: t0 = 0.0_wp                  !< time t_n [s]
+      real(wp) :: dt = 0.0_wp                  !< step [s]
+      integer, allocatable :: motion_node(:)   !< (n motions) global node of each motion
+      real(wp), allocatable :: x_start(:, :)   !< (3, nn) positions at t = 0 [m]
+      real(wp), allocatable :: x_held(:, :)    !< (3, nn) prescribed positions at t_n+1 [m]
+      real(wp), allocatable :: gap(:, :)       !< (3, nn) x_held - x at held nodes [m]
+      real(wp), allocatable :: fint(:, :)      !< (6, nn) internal + inertia + damping
+      real(wp), allocatable :: fext(:, :)      !< (6, nn) external at t_n+1/2
+      real(wp), allocatable :: r(:, :)         !< (6, nn) residual, global axes
+      real(wp), allocatable :: rhs(:), du(:)   !< (6 nn) linear system
+      real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
+      real(wp), allocatable :: x_base(:, :), d_base(:, :, :), dx_base(:, :)
+      type(banded_t) :: bm
+      real(wp) :: lref = 1.0_wp, href = 1.0_wp
+      real(wp) :: f_floor = 0.0_wp, m_floor = 0.0_wp
+      real(wp) :: f_scale = 0.0_wp, m_scale = 0.0_wp !< largest inertia/elastic terms
+   contains
+      procedure :: evaluate => dyn_evaluate
+      procedure :: residual_norm => dyn_residual_norm
+      procedure :: solve => dyn_solve
+      procedure :: correction_norm => dyn_correction_norm
+      procedure :: slope => dyn_slope
+      procedure :: save_base => dyn_save_base
+      procedure :: apply_correction => dyn_apply_correction
+   end type dynamic_problem_t
+
+contains
+
+   !> Build supports, loads, inertia and the workspace; state holds the start (t = 0).
+   subroutine dynamics_setup(prob, model, mesh, state)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      type(model_t), intent(in), target :: model     !< model
+      type(mesh_t), intent(in), target :: mesh       !< mesh
+      type(state_t), intent(in), target :: state     !< start state, then the iterate
+      integer :: nn, i
+      prob%mesh => mesh
+      prob%model => model
+      prob%s1 => state
+      nn = mesh%n_nodes
+      call supports_build(model, mesh, state, prob%sup)
+      prob%sup%moved = .false.     ! POSITION targets were reached in statics
+      call loads_build(model, mesh, prob%loads)
+      call inertia_build(model, mesh, prob%inert)
+      call state_allocate(prob%s0, nn)
+      prob%scheme = model%dynamic%scheme
+      prob%alpha = model%dynamic%rayleigh_alpha
+      allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%gap(3, nn), prob%fint(6, nn), &
+                prob%fext(6, nn), prob%r(6, nn), prob%rhs(6*nn), prob%du(6*nn), &
+                prob%x_base(3, nn), prob%d_base(3, 3, nn), prob%dx(3, nn), prob%dx_base(3, nn))
+      prob%x_start = state%x
+      prob%x_held = state%x
+      allocate (prob%motion_node(0))
+      if (allocated(model%motions)) then
+         deallocate (prob%motion_node)
+         allocate (prob%motion_node(size(model%motions)))
+         do i = 1, size(model%motions)
+            prob%motion_node(i) = mesh_node(mesh, model%motions(i)%line, model%motions(i)%node)
+            prob%sup%moved(prob%motion_node(i)) = .true.
+         end do
+      end if
+      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
+      prob%lref = maxval(model%lines%length)
+      prob%href = minval(mesh%elem_le)
+      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
+      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
+   end subroutine dynamics_setup
+
+   !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
+   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes.
+   subroutine apply_initial_velocities(model, mesh, state)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(state_t), intent(inout) :: state  !< velocities set
+      real(wp) :: c(3)
+      integer :: k, n0, nn, a, i
+      if (.not. allocated(model%initial_velocities)) return
+      do k = 1, size(model%initial_velocities)
+         associate (iv => model%initial_velocities(k))
+            n0 = mesh%line_first_node(iv%line)
+            nn = mesh%line_n_nodes(iv%line)
+            if (iv%has_centre) then
+               c = iv%centre
+            else
+               c = sum(state%x(:, n0:n0 + nn - 1), dim=2)/real(nn, wp)
+            end if
+            do a = n0, n0 + nn - 1
+               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
+               do i = 1, 3
+                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
+               end do
+            end do
+         end associate
+      end do
+   end subroutine apply_initial_velocities
+
+   !> Start a step from t0 to t0 + dt: remember the state at t_n, set the loads at the
+   !> midpoint and the prescribed positions at t_n+1, and predict the iterate
+   !> (x^{n+1} = x^n + dt v^n, directors turned by dt times their angular velocity).
+   subroutine dynamics_begin_step(prob, t0, dt)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      real(wp), intent(in) :: t0                     !< time at the start of the step [s]
+      real(wp), intent(in) :: dt                     !< step [s]
+      real(wp) :: tm, w(3), fac
+      integer :: node, i, k
+      prob%t0 = t0
+      prob%dt = dt
+      prob%s0%x = prob%s1%x
+      prob%s0%d = prob%s1%d
+      prob%s0%v = prob%s1%v
+      prob%s0%dd = prob%s1%dd
+      ! external forces at the midpoint: weight, point loads times their amplitudes
+      tm = t0 + 0.5_wp*dt
+      prob%fext = 0.0_wp
+      prob%fext(1:3, :) = prob%loads%gravity
+      if (allocated(prob%model%loads)) then
+         do k = 1, size(prob%model%loads)
+            associate (ld => prob%model%loads(k))
+               node = mesh_node(prob%mesh, ld%line, ld%node)
+               fac = 1.0_wp
+               if (ld%amplitude > 0) fac = amplitude_value(prob%model%amplitudes(ld%amplitude), tm)
+               prob%fext(1:3, node) = prob%fext(1:3, node) + fac*ld%force
+               prob%fext(4:6, node) = prob%fext(4:6, node) + fac*ld%moment
+            end associate
+         end do
+      end if
+      ! prescribed positions at the end of the step
+      do i = 1, size(prob%motion_node)
+         node = prob%motion_node(i)
+         prob%x_held(:, node) = prob%x_start(:, node) &
+                                + motion_displacement(prob%model%motions(i), t0 + dt)
+      end do
+      ! predictor
+      do node = 1, prob%mesh%n_nodes
+         prob%dx(:, node) = dt*prob%s0%v(:, node)
+         if (prob%sup%held(1, node)) prob%dx(:, node) = 0.0_wp
+         prob%s1%x(:, node) = prob%s0%x(:, node) + prob%dx(:, node)
+         w = 0.0_wp
+         do i = 1, 3
+            w = w + 0.5_wp*cross(prob%s0%d(:, i, node), prob%s0%dd(:, i, node))
+         end do
+         prob%s1%d(:, :, node) = matmul(rotation_cayley(dt*w), prob%s0%d(:, :, node))
+         if (prob%sup%held(4, node) .and. .not. prob%sup%rotated(node)) &
+            prob%s1%d(:, :, node) = prob%s0%d(:, :, node)
+      end do
+   end subroutine dynamics_begin_step
+
+   !> Close a converged step: velocities by the midpoint relations.
+   subroutine dynamics_end_step(prob)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      real(wp) :: c
+      c = 2.0_wp/prob%dt
+      prob%s1%v = c*prob%dx - prob%s0%v
+      prob%s1%dd = c*(prob%s1%d - prob%s0%d) - prob%s0%dd
+   end subroutine dynamics_end_step
+
+   !> Residual (and tangent): step internal force, inertia, damping, supports.
+   subroutine dyn_evaluate(this, want_k, err)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      logical, intent(in) :: want_k                   !< form the tangent
+      type(error_t), intent(inout) :: err             !< status (cannot fail)
+      real(wp) :: c2, ca, h(3), dm(3), d1(3), kb(6, 6), fi(3), blk(3, 3), mi, hd, dmd1
+      integer :: node, i, j, k
+      if (has_error(err)) return
+      call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%fint, &
+                            this%bm, want_k)
+      this%f_scale = 0.0_wp
+      this%m_scale = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         this%f_scale = max(this%f_scale, maxval(abs(this%fint(1:3, node))))
+         this%m_scale = max(this%m_scale, maxval(abs(this%fint(4:6, node))))
+      end do
+      c2 = 2.0_wp/this%dt**2 + this%alpha/this%dt
+      ca = 2.0_wp/this%dt
+      do node = 1, this%mesh%n_nodes
+         associate (dx => this%dx(:, node), v0 => this%s0%v(:, node), m => this%inert%m(node))
+            fi = m*(c2*dx - ca*v0)
+            this%fint(1:3, node) = this%fint(1:3, node) + fi
+            this%f_scale = max(this%f_scale, maxval(abs(fi)))
+         end associate
+         kb = 0.0_wp
+         do j = 1, 3
+            kb(j, j) = c2*this%inert%m(node)
+         end do
+         do i = 1, 2
+            mi = this%inert%md(i, node)
+            if (mi == 0.0_wp) cycle
+            d1 = this%s1%d(:, i, node)
+            dm = 0.5_wp*(this%s0%d(:, i, node) + d1)
+            h = mi*(c2*(d1 - this%s0%d(:, i, node)) - ca*this%s0%dd(:, i, node))
+            this%fint(4:6, node) = this%fint(4:6, node) + cross(dm, h)
+            if (.not. want_k) cycle
+            ! d(dm x h) = 1/2 (dth x d1) x h + dm x (mi c2 dth x d1)
+            hd = dot_product(h, d1)
+            dmd1 = dot_product(dm, d1)
+            do k = 1, 3
+               do j = 1, 3
+                  blk(j, k) = 0.5_wp*d1(j)*h(k) - mi*c2*d1(j)*dm(k)
+               end do
+               blk(k, k) = blk(k, k) - 0.5_wp*hd + mi*c2*dmd1
+            end do
+            kb(4:6, 4:6) = kb(4:6, 4:6) + blk
+         end do
+         if (want_k) call add_node_block(this%sup, node, kb, this%bm)
+      end do
+      this%r = this%fint - this%fext
+      do node = 1, this%mesh%n_nodes
+         this%gap(:, node) = 0.0_wp
+         if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
+      end do
+      call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
+   end subroutine dyn_evaluate
+
+   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs; the references include the
+   !> largest inertia and internal terms of the step (a free-flying rod has no load).
+   function dyn_residual_norm(this) result(v)
+      class(dynamic_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      real(wp) :: fref, mref, rf, rm
+      integer :: node, k
+      rf = 0.0_wp
+      rm = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
+         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
+      end do
+      mref = max(maxval(abs(this%fext(4:6, :))), this%m_scale, this%m_floor)
+      fref = max(maxval(abs(this%fext(1:3, :))), this%f_scale, mref/this%lref, this%f_floor)
+      mref = max(mref, fref*this%href)
+      v = max(rf/fref, rm/mref)
+   end function dyn_residual_norm
+
+   subroutine dyn_solve(this, err)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      type(error_t), intent(inout) :: err             !< status
+      call banded_factor(this%bm, err)
+      if (has_error(err)) return
+      this%du = -this%rhs
+      call banded_solve(this%bm, this%du, err)
+   end subroutine dyn_solve
+
+   !> max(|du_x| / L_ref, |du_theta|).
+   function dyn_correction_norm(this) result(v)
+      class(dynamic_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      integer :: node, k
+      v = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
+      end do
+   end function dyn_correction_norm
+
+   !> du . r (line search).
+   function dyn_slope(this) result(v)
+      class(dynamic_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      v = dot_product(this%du, this%rhs)
+   end function dyn_slope
+
+   subroutine dyn_save_base(this)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      this%x_base = this%s1%x
+      this%d_base = this%s1%d
+      this%dx_base = this%dx
+   end subroutine dyn_save_base
+
+   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.
+   subroutine dyn_apply_correction(this, alpha)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      real(wp), intent(in) :: alpha                   !< step length [-]
+      real(wp) :: th(3), r(3, 3), db(3, 3)
+      integer :: node, k
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         this%dx(:, node) = this%dx_base(:, node) + alpha*this%du(k + 1:k + 3)
+         this%s1%x(:, node) = this%s0%x(:, node) + this%dx(:, node)
+         th = alpha*this%du(k + 4:k + 6)
+         if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
+         r = rotation_cayley(th)
+         db = this%d_base(:, :, node)
+         this%s1%d(:, :, node) = matmul(r, db)
+      end do
+   end subroutine dyn_apply_correction
+end module rodyn_dynamics

@@ -1,0 +1,237 @@
+!> Time stepping of a dynamic run: steps of DT (halved on failure, at most CUTBACKS
+!> times in a row, growing back after two good sub-steps), outputs at the frame times,
+!> and the energy and momentum balance of every step (formulation note section 3).
+!>
+!> Energy bookkeeping: total = kinetic + strain + gravity potential (-sum f_g . x).
+!> External work sums what the supports (prescribed motions) and the point loads did to
+!> the line, R . dx with R the residual at held nodes (the force the support applies) and
+!> F(t_{n+1/2}) . dx; damping work sums what Rayleigh damping took out. Under EMC,
+!> total(t) - total(0) = external work - damping work to the Newton tolerance.
+module rodyn_timeloop
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
+   use rodyn_model, only: model_t
+   use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
+   use rodyn_dynamics, only: dynamic_problem_t, dynamics_begin_step, dynamics_end_step
+   use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
+   use rodyn_rod_element, only: rod_element_energy, max_points
+   use rodyn_rotation, only: rotation_cayley_inverse
+   use rodyn_results, only: step_log_t, run_summary_t
+   use rodyn_shape, only: max_nen
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: timeloop_run, frame_callback, step_callback, strain_energy, step_energies
+
+   abstract interface
+      !> Called at t = 0 and at every output time with the converged state in prob.
+      subroutine frame_callback(t, prob, err)
+         import :: wp, dynamic_problem_t, error_t
+         real(wp), intent(in) :: t
+         type(dynamic_problem_t), intent(inout) :: prob
+         type(error_t), intent(inout) :: err
+      end subroutine frame_callback
+      !> Called after every converged step.
+      subroutine step_callback(log, err)
+         import :: step_log_t, error_t
+         type(step_log_t), intent(in) :: log
+         type(error_t), intent(inout) :: err
+      end subroutine step_callback
+   end interface
+
+contains
+
+   !> Stored energy of the whole mesh in the iterate state [J].
+   function strain_energy(prob) result(w)
+      type(dynamic_problem_t), intent(in) :: prob !< problem
+      real(wp) :: w
+      real(wp) :: xe(3, max_nen), de(3, 3, max_nen)
+      integer :: e, l, p, a
+      w = 0.0_wp
+      associate (mesh => prob%mesh)
+         do e = 1, mesh%n_elements
+            l = mesh%elem_line(e)
+            p = mesh%line_order(l)
+            do a = 1, p + 1
+               xe(:, a) = prob%s1%x(:, mesh%elem_nodes(a, e))
+               de(:, :, a) = prob%s1%d(:, :, mesh%elem_nodes(a, e))
+            end do
+            w = w + rod_element_energy(p, mesh%elem_le(e), mesh%line_c(:, l), &
+                                       mesh%eps0(:, :, e), xe(:, 1:p + 1), de(:, :, 1:p + 1))
+         end do
+      end associate
+   end function strain_energy
+
+   !> Energies and momenta of the iterate state into log (work terms untouched).
+   subroutine step_energies(prob, log)
+      type(dynamic_problem_t), intent(in) :: prob !< problem
+      type(step_log_t), intent(inout) :: log      !< filled
+      log%kinetic = kinetic_energy(prob%inert, prob%s1)
+      log%strain = strain_energy(prob)
+      log%gravity = -sum(prob%loads%gravity*prob%s1%x)
+      log%total = log%kinetic + log%strain + log%gravity
+      log%momentum = linear_momentum(prob%inert, prob%s1)
+      log%angular_momentum = angular_momentum(prob%inert, prob%s1)
+   end subroutine step_energies
+
+   !> Work of supports and point loads, and work of damping, over the step just solved.
+   subroutine step_work(prob, w_ext, w_damp)
+      type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
+      real(wp), intent(out) :: w_ext              !< external work [J]
+      real(wp), intent(out) :: w_damp             !< energy taken by damping [J]
+      real(wp) :: dx(3), th(3), grav(3)
+      integer :: node, i
+      w_ext = 0.0_wp
+      w_damp = 0.0_wp
+      do node = 1, prob%mesh%n_nodes
+         dx = prob%dx(:, node)
+         grav = prob%loads%gravity(:, node)
+         ! point loads (external force beyond the weight) and supports (the residual)
+         w_ext = w_ext + dot_product(prob%fext(1:3, node) - grav, dx)
+         if (any(prob%fext(4:6, node) /= 0.0_wp) .or. prob%sup%held(4, node)) then
+            th = rotation_cayley_inverse(matmul(prob%s1%d(:, :, node), &
+                                                transpose(prob%s0%d(:, :, node))))
+            w_ext = w_ext + dot_product(prob%fext(4:6, node), th)
+            if (prob%sup%held(4, node)) w_ext = w_ext + dot_product(prob%r(4:6, node), th)
+         end if
+         if (prob%sup%held(1, node)) w_ext = w_ext + dot_product(prob%r(1:3, node), dx)
+         if (prob%alpha > 0.0_wp) then
+            w_damp = w_damp + prob%alpha*prob%inert%m(node)*dot_product(dx, dx)/prob%dt
+            do i = 1, 2
+               w_damp = w_damp + prob%alpha*prob%inert%md(i, node)/prob%dt* &
+                        sum((prob%s1%d(:, i, node) - prob%s0%d(:, i, node))**2)
+            end do
+         end if
+      end do
+   end subroutine step_work
+
+   !> Run the dynamic analysis from the state in prob (time 0) to model%dynamic%duration.
+   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, progress)
+      type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
+      type(model_t), intent(in) :: model              !< model (dynamic options)
+      type(run_summary_t), intent(inout) :: summary   !< progress
+      type(error_t), intent(inout) :: err             !< status
+      integer, intent(in) :: log_unit                 !< Newton log unit (< 0: silent)
+      procedure(frame_callback) :: on_frame           !< output of a frame
+      procedure(step_callback) :: on_step             !< output of a step log
+      procedure(frame_callback), optional :: progress !< called after every step
+      type(newton_options_t) :: opts
+      type(newton_stats_t) :: stats
+      type(error_t) :: nerr
+      type(step_log_t) :: log
+      real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t
+      integer :: level, good, step_cuts
+      character(len=240) :: msg
+      opts%max_iterations = model%dynamic%max_iterations
+      opts%force_tol = model%dynamic%force_tol
+      opts%disp_tol = model%dynamic%disp_tol
+      opts%log_unit = log_unit
+      dt = model%dynamic%dt
+      t_end = model%dynamic%duration
+      interval = model%dynamic%output_interval
+      if (interval <= 0.0_wp) interval = dt
+      tol_t = 1.0e-9_wp*dt
+      summary%dynamic = .true.
+      t = 0.0_wp
+      next_frame = interval
+      call step_energies(prob, log)
+      log%external_work = 0.0_wp
+      log%damping_work = 0.0_wp
+      call on_frame(t, prob, err)
+      if (has_error(err)) return
+      level = 0
+      good = 0
+      step_cuts = 0
+      do while (t < t_end - tol_t)
+         h = dt*0.5_wp**level
+         t1 = min(t + h, t_end, next_frame)
+         if (next_frame - t1 < tol_t) t1 = next_frame
+         if (t_end - t1 < tol_t) t1 = t_end
+         call dynamics_begin_step(prob, t, t1 - t)
+         call clear_error(nerr)
+         call newton_solve(prob, opts, stats, nerr)
+         summary%step_iterations = summary%step_iterations + stats%iterations
+         if (stats%converged .and. .not. has_error(nerr)) then
+            call dynamics_end_step(prob)
+            call step_work(prob, w_ext, w_damp)
+            summary%steps = summary%steps + 1
+            log%step = summary%steps
+            log%time = t1
+            log%dt = t1 - t
+            log%iterations = stats%iterations
+            log%cutbacks = step_cuts
+            log%external_work = log%external_work + w_ext
+            log%damping_work = log%damping_work + w_damp
+            call step_energies(prob, log)
+            t = t1
+            summary%time_reached = t
+            step_cuts = 0
+            call on_step(log, err)
+            if (has_error(err)) return
+            if (t >= next_frame - tol_t .or. t >= t_end - tol_t) then
+               call on_frame(t, prob, err)
+               if (has_error(err)) return
+               next_frame = next_frame + interval
+            end if
+            if (present(progress)) call progress(t, prob, err)
+            if (level > 0) then
+               good = good + 1
+               if (good >= 2) then
+                  level = level - 1
+                  good = 0
+               end if
+            end if
+            cycle
+         end if
+         ! failed: back to t_n, halve the step
+         prob%s1%x = prob%s0%x
+         prob%s1%d = prob%s0%d
+         prob%s1%v = prob%s0%v
+         prob%s1%dd = prob%s0%dd
+         if (has_error(nerr) .and. index(nerr%message, 'not finite') > 0) then
+            write (msg, '(a,es12.5,a,i0,a)') 'dynamics: NaN or Inf at t = ', t1, &
+               ' s (worst node ', worst_node(prob), '); results up to t = '
+            write (msg, '(a,es12.5,a)') trim(msg), t, ' s are written'
+            call set_error(err, stat_numerical, trim(msg))
+            summary%status = trim(msg)
+            return
+         end if
+         if (log_unit >= 0) write (log_unit, '(a,es12.5,a)') '  step to t = ', t1, &
+            ' s failed: halving'
+         level = level + 1
+         good = 0
+         step_cuts = step_cuts + 1
+         summary%step_cutbacks = summary%step_cutbacks + 1
+         if (level > model%dynamic%max_cutbacks) then
+            write (msg, '(a,es12.5,a,i0,a)') 'dynamics: no convergence at t = ', t, &
+               ' s after ', model%dynamic%max_cutbacks, ' halvings of the step'
+            if (has_error(nerr)) msg = trim(msg)//' ('//nerr%message//')'
+            call set_error(err, stat_numerical, trim(msg))
+            summary%status = trim(msg)
+            return
+         end if
+      end do
+      summary%complete = .true.
+      summary%status = 'complete'
+   end subroutine timeloop_run
+
+   !> Node with the largest (or a non-finite) residual or position.
+   integer function worst_node(prob)
+      type(dynamic_problem_t), intent(in) :: prob !< problem
+      real(wp) :: big, v
+      integer :: node
+      worst_node = 1
+      big = -1.0_wp
+      do node = 1, prob%mesh%n_nodes
+         v = maxval(abs(prob%r(:, node)))
+         if (.not. ieee_is_finite(v) .or. any(.not. ieee_is_finite(prob%s1%x(:, node)))) then
+            worst_node = node
+            return
+         end if
+         if (v > big) then
+            big = v
+            worst_node = node
+         end if
+      end do
+   end function worst_node
+end module rodyn_timeloop
