@@ -6,6 +6,11 @@
 !> and a line that is not held at both ends starts straight (its end distance equals
 !> its length). The first error found ends the reading with a located message
 !> 'FILE:LINE: error: *KEYWORD: message' in err (code stat_input).
+!>
+!> The readers of the dynamic-analysis keywords (*DYNAMIC, *DAMPING, *AMPLITUDE,
+!> *MOTION, *INITIAL VELOCITY) and their whole-deck checks are in rodyn_deck_dynamic;
+!> what the readers remember for validation and their shared checks, in
+!> rodyn_deck_support.
 module rodyn_deck
    use rodyn_section, only: section_default_rotary_inertia
    use rodyn_kinds, only: wp
@@ -17,38 +22,21 @@ module rodyn_deck
                                card_data_error, card_get_real, card_get_int, card_get_name, &
                                card_get_choice, card_get_yesno, card_check_data, &
                                card_data_count, card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+                                 get_bounded, get_tolerance, data_check, param_fail, &
+                                 location, resolve_line, node_count, node_number, node_label
+   use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
+                                 read_amplitude_card, read_motion_card, &
+                                 read_initial_velocity_card, validate_dynamics
    implicit none
    private
    public :: deck_read
 
    integer, parameter :: max_elements = 10000000       !< most elements in one line
-   integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    real(wp), parameter :: coincide_tol = 1.0e-9_wp     !< ends coincide below tol*LENGTH
    real(wp), parameter :: overlong_tol = 1.0e-12_wp    !< ends too far above (1+tol)*LENGTH
    real(wp), parameter :: straight_tol = 1.0e-9_wp     !< relative tolerance, free lines
    real(wp), parameter :: parallel_tol = 1.0e-6_wp     !< d1 hint parallel to the chord
-
-   !> A reference by name from one card to a section or line, resolved after reading.
-   type :: ref_t
-      character(len=:), allocatable :: name  !< name referred to, upper case
-      integer :: card = 0                    !< index of the referring card
-   end type ref_t
-
-   !> What the readers remember for the validation pass (not part of the model).
-   type :: pending_t
-      type(ref_t), allocatable :: line_section(:) !< per line: its SECTION=
-      type(ref_t), allocatable :: bc_line(:)      !< per constraint: its LINE=
-      type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
-      integer, allocatable :: section_card(:)     !< per section: card index
-      integer :: n_sections = 0     !< sections read so far
-      integer :: n_lines = 0        !< lines read so far
-      integer :: n_constraints = 0  !< constraints read so far
-      integer :: n_loads = 0        !< loads read so far
-      integer :: heading = 0   !< card of the first *HEADING (0: none yet)
-      integer :: gravity = 0   !< card of the first *GRAVITY
-      integer :: static = 0    !< card of the first *STATIC
-      integer :: output = 0    !< card of the first *OUTPUT
-   end type pending_t
 
 contains
 
@@ -75,10 +63,17 @@ contains
       allocate (model%lines(keyword_count(deck, 'LINE')))
       allocate (model%constraints(keyword_count(deck, 'BOUNDARY')))
       allocate (model%loads(keyword_count(deck, 'LOAD')))
+      allocate (model%amplitudes(keyword_count(deck, 'AMPLITUDE')))
+      allocate (model%motions(keyword_count(deck, 'MOTION')))
+      allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
       allocate (pend%section_card(size(model%sections)))
       allocate (pend%line_section(size(model%lines)))
       allocate (pend%bc_line(size(model%constraints)))
       allocate (pend%load_line(size(model%loads)))
+      allocate (pend%load_amp(size(model%loads)))
+      allocate (pend%amplitude_card(size(model%amplitudes)))
+      allocate (pend%motion_line(size(model%motions)))
+      allocate (pend%iv_line(size(model%initial_velocities)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -110,6 +105,9 @@ contains
       model%lines = model%lines(1:pend%n_lines)
       model%constraints = model%constraints(1:pend%n_constraints)
       model%loads = model%loads(1:pend%n_loads)
+      model%amplitudes = model%amplitudes(1:pend%n_amplitudes)
+      model%motions = model%motions(1:pend%n_motions)
+      model%initial_velocities = model%initial_velocities(1:pend%n_ivs)
    end subroutine trim_model
 
    !> Hand card `ic` to the reader of its keyword.
@@ -138,6 +136,16 @@ contains
             call read_static_card(deck, ic, model, pend, err)
          case ('OUTPUT')
             call read_output_card(deck, ic, model, pend, err)
+         case ('DYNAMIC')
+            call read_dynamic_card(deck, ic, model, pend, err)
+         case ('DAMPING')
+            call read_damping_card(deck, ic, model, pend, err)
+         case ('AMPLITUDE')
+            call read_amplitude_card(deck, ic, model, pend, err)
+         case ('MOTION')
+            call read_motion_card(deck, ic, model, pend, err)
+         case ('INITIAL VELOCITY')
+            call read_initial_velocity_card(deck, ic, model, pend, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -411,7 +419,7 @@ contains
    end subroutine read_boundary_card
 
    !> *LOAD: a point force (3 values) or force and moment (6 values), fixed in space,
-   !> at END=A|B or NODE=k of LINE=name.
+   !> at END=A|B or NODE=k of LINE=name, optionally scaled by AMPLITUDE=name in time.
    subroutine read_load_card(card, ic, model, pend, err)
       type(card_t), intent(in) :: card        !< the *LOAD card
       integer, intent(in) :: ic               !< its index
@@ -420,16 +428,19 @@ contains
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'Fx, Fy, Fz, Mx, My, Mz'
       type(point_load_t) :: load
-      character(len=:), allocatable :: line
+      character(len=:), allocatable :: line, amplitude
       real(wp) :: v(6)
       integer :: n
 
-      call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE'], &
-                             err)
+      call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
+                             'AMPLITUDE'], err)
       if (has_error(err)) return
       call card_get_name(card, 'LINE', line, err, required=.true.)
       if (has_error(err)) return
       call get_node(card, load%node, err)
+      if (has_error(err)) return
+      amplitude = ''
+      call card_get_name(card, 'AMPLITUDE', amplitude, err)
       if (has_error(err)) return
       call card_check_data(card, 1, 1, err, 'Fx, Fy, Fz [, Mx, My, Mz]')
       if (has_error(err)) return
@@ -447,6 +458,7 @@ contains
       pend%n_loads = pend%n_loads + 1
       model%loads(pend%n_loads) = load
       pend%load_line(pend%n_loads) = ref_t(line, ic)
+      pend%load_amp(pend%n_loads) = ref_t(amplitude, ic)
    end subroutine read_load_card
 
    !> *STATIC: request a static analysis and set its options. No data lines.
@@ -518,68 +530,6 @@ contains
 
    ! ============================================================ reader helpers
 
-   !> Refuse a second card of a keyword allowed once; `first` remembers the first.
-   subroutine check_once(deck, ic, first, err)
-      type(deck_t), intent(in) :: deck     !< all cards
-      integer, intent(in) :: ic            !< index of this card
-      integer, intent(inout) :: first      !< index of the first such card (0: none)
-      type(error_t), intent(inout) :: err  !< status
-      if (first == 0) then
-         first = ic
-      else
-         call card_error(deck%cards(ic), 'given twice (first at '// &
-                         location(deck, first)//')', err)
-      end if
-   end subroutine check_once
-
-   !> Read END=A|B or NODE=k (exactly one of them) into a node number: end_a, end_b
-   !> or k >= 1. The upper bound of k is checked once the line is known.
-   subroutine get_node(card, node, err)
-      type(card_t), intent(in) :: card     !< a *BOUNDARY or *LOAD card
-      integer, intent(out) :: node         !< end_a, end_b or the node number
-      type(error_t), intent(inout) :: err  !< status
-      integer :: which
-
-      node = end_a
-      if (card_find_param(card, 'END') > 0 .and. card_find_param(card, 'NODE') > 0) then
-         call card_error(card, 'give END or NODE, not both', err)
-         return
-      end if
-      if (card_find_param(card, 'END') > 0) then
-         which = 0
-         call card_get_choice(card, 'END', [character(len=1) :: 'A', 'B'], which, err)
-         if (has_error(err)) return
-         node = merge(end_a, end_b, which == 1)
-      else if (card_find_param(card, 'NODE') > 0) then
-         call card_get_int(card, 'NODE', node, err)
-         if (has_error(err)) return
-         if (node < 1) then
-            call param_fail(card, 'NODE', 'NODE must be >= 1, got '//int_str(node), err)
-         end if
-      else
-         call card_error(card, 'missing parameter END or NODE', err)
-      end if
-   end subroutine get_node
-
-   !> Optional real parameter that must be >= 0 (or > 0 when `strict`).
-   subroutine get_bounded(card, name, value, strict, err)
-      type(card_t), intent(in) :: card     !< the card
-      character(len=*), intent(in) :: name !< parameter name
-      real(wp), intent(inout) :: value     !< the value (unchanged if absent)
-      logical, intent(in) :: strict        !< require > 0 rather than >= 0
-      type(error_t), intent(inout) :: err  !< status
-      logical :: found
-
-      if (has_error(err)) return
-      call card_get_real(card, name, value, err, found)
-      if (has_error(err) .or. .not. found) return
-      if (strict .and. .not. value > 0.0_wp) then
-         call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
-      else if (.not. value >= 0.0_wp) then
-         call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
-      end if
-   end subroutine get_bounded
-
    !> A pair of parameters NAME1, NAME2 that NAME sets together (GA, RHOI).
    !> NAME with NAME1 or NAME2 is an error. Values not given stay unchanged.
    subroutine get_pair(card, name, v1, v2, strict, err)
@@ -610,62 +560,6 @@ contains
       end if
    end subroutine get_pair
 
-   !> Optional tolerance parameter, 0 < value < 1.
-   subroutine get_tolerance(card, name, value, err)
-      type(card_t), intent(in) :: card     !< the *STATIC card
-      character(len=*), intent(in) :: name !< parameter name
-      real(wp), intent(inout) :: value     !< the tolerance [-] (unchanged if absent)
-      type(error_t), intent(inout) :: err  !< status
-      logical :: found
-
-      if (has_error(err)) return
-      call card_get_real(card, name, value, err, found)
-      if (has_error(err) .or. .not. found) return
-      if (.not. (value > 0.0_wp .and. value < 1.0_wp)) then
-         call param_fail(card, name, name//' must be > 0 and < 1, got '// &
-                         real_str(value), err)
-      end if
-   end subroutine get_tolerance
-
-   !> Check a value of data line `id`: > 0 when strict, else >= 0.
-   subroutine data_check(card, id, name, value, strict, err)
-      type(card_t), intent(in) :: card     !< the card
-      integer, intent(in) :: id            !< index of the data line
-      character(len=*), intent(in) :: name !< name of the value
-      real(wp), intent(in) :: value        !< the value
-      logical, intent(in) :: strict        !< require > 0 rather than >= 0
-      type(error_t), intent(inout) :: err  !< status
-      if (has_error(err)) return
-      if (strict .and. .not. value > 0.0_wp) then
-         call card_data_error(card, id, name//' must be > 0, got '//real_str(value), err)
-      else if (.not. value >= 0.0_wp) then
-         call card_data_error(card, id, name//' must be >= 0, got '//real_str(value), err)
-      end if
-   end subroutine data_check
-
-   !> Report an error at the line of parameter `name` (keyword line if absent).
-   subroutine param_fail(card, name, message, err)
-      type(card_t), intent(in) :: card        !< the card
-      character(len=*), intent(in) :: name    !< parameter name
-      character(len=*), intent(in) :: message !< what is wrong
-      type(error_t), intent(inout) :: err     !< status
-      integer :: ip
-      ip = card_find_param(card, name)
-      if (ip > 0) then
-         call card_param_error(card, ip, message, err)
-      else
-         call card_error(card, message, err)
-      end if
-   end subroutine param_fail
-
-   !> 'FILE:LINE' of card ic, to point at an earlier definition.
-   function location(deck, ic) result(s)
-      type(deck_t), intent(in) :: deck    !< all cards
-      integer, intent(in) :: ic           !< card index
-      character(len=:), allocatable :: s  !< 'FILE:LINE'
-      s = deck%cards(ic)%file//':'//int_str(deck%cards(ic)%line)
-   end function location
-
    !> Cross product a x b.
    pure function cross(a, b) result(c)
       real(wp), intent(in) :: a(3)  !< first vector
@@ -678,7 +572,9 @@ contains
 
    !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE;
    !> references resolved in card order (SECTION=, LINE=, NODE range, one *BOUNDARY
-   !> per node); section defaults; lines not held at both ends start straight.
+   !> per node); the dynamic keywords' references (validate_dynamics); section
+   !> defaults; lines not held at both ends start straight; every line is held somewhere
+   !> when a static analysis will run.
    subroutine validate_model(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
@@ -720,18 +616,31 @@ contains
          end select
          if (has_error(err)) return
       end do
+      call validate_dynamics(deck, pend, model, err)
+      if (has_error(err)) return
 
       call resolve_section_defaults(model)
 
       do il = 1, size(model%lines)
          call check_straight_start(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
+         if (.not. static_analysis_runs(model)) cycle
          call check_supported(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
       end do
    end subroutine validate_model
 
-   !> A line with no node held in position is a free body: it has no static solution.
+   !> True unless the deck asks only for a dynamic analysis from the defined shape
+   !> (*DYNAMIC with START=DEFINED and no *STATIC): a static analysis then never runs.
+   pure logical function static_analysis_runs(model)
+      type(model_t), intent(in) :: model  !< model with its analysis options read
+      static_analysis_runs = .not. (model%dynamic%requested .and. &
+                                    .not. model%dynamic%start_static .and. &
+                                    .not. model%static%requested)
+   end function static_analysis_runs
+
+   !> A line with no node held in position is a free body: it has no static solution
+   !> (checked only when a static analysis runs, see static_analysis_runs).
    subroutine check_supported(card, model, il, err)
       type(card_t), intent(in) :: card      !< the *LINE card
       type(model_t), intent(in) :: model    !< model with resolved constraints
@@ -760,32 +669,6 @@ contains
       call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
                       ' with NAME='//name//' in the deck)', err)
    end subroutine resolve_section
-
-   !> Find the line named by LINE= of a *BOUNDARY or *LOAD card and check its node.
-   subroutine resolve_line(card, name, model, iline, node, err)
-      type(card_t), intent(in) :: card      !< the *BOUNDARY or *LOAD card
-      character(len=*), intent(in) :: name  !< line name, upper case
-      type(model_t), intent(in) :: model    !< model with all lines
-      integer, intent(out) :: iline         !< index of the line
-      integer, intent(in) :: node           !< end_a, end_b or node number
-      type(error_t), intent(inout) :: err   !< status
-      integer :: nn
-
-      do iline = 1, size(model%lines)
-         if (model%lines(iline)%name == name) exit
-      end do
-      if (iline > size(model%lines)) then
-         iline = 0
-         call param_fail(card, 'LINE', "LINE '"//name//"' is not defined (no *LINE"// &
-                         ' with NAME='//name//' in the deck)', err)
-         return
-      end if
-      nn = node_count(model%lines(iline))
-      if (node > nn) then
-         call param_fail(card, 'NODE', 'NODE '//int_str(node)//' is beyond the last node'// &
-                         ' of line '//trim(name)//' ('//int_str(nn)//')', err)
-      end if
-   end subroutine resolve_line
 
    !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
    !> END=B is the last node).
@@ -867,32 +750,5 @@ contains
                          ' m)', err)
       end associate
    end subroutine check_straight_start
-
-   !> Number of nodes of a line: ELEMENTS*ORDER + 1.
-   pure integer function node_count(line) result(nn)
-      type(line_def_t), intent(in) :: line  !< the line
-      nn = line%n_elements*line%order + 1
-   end function node_count
-
-   !> Node number 1..nn of a stored node (end_a, end_b or k).
-   pure integer function node_number(node, nn) result(k)
-      integer, intent(in) :: node  !< end_a, end_b or a node number
-      integer, intent(in) :: nn    !< number of nodes of the line
-      if (node == end_b) then
-         k = nn
-      else
-         k = node     ! end_a is node 1
-      end if
-   end function node_number
-
-   !> 'node 1 (end A)', 'node 31 (end B)' or 'node 7'.
-   function node_label(node, nn) result(s)
-      integer, intent(in) :: node         !< node number 1..nn
-      integer, intent(in) :: nn           !< number of nodes of the line
-      character(len=:), allocatable :: s  !< the label
-      s = 'node '//int_str(node)
-      if (node == 1) s = s//' (end A)'
-      if (node == nn) s = s//' (end B)'
-   end function node_label
 
 end module rodyn_deck

@@ -12,8 +12,10 @@
 !> refused). It also keeps the full text read for the record (model%deck_text).
 !>
 !> The card_* helpers below are the readers' toolkit: get a parameter as a real, an
-!> integer, a name, a choice from a list, YES/NO; check the number of data lines; parse
-!> the reals on a data line. Each helper reports its own errors, already located.
+!> integer, a name, a choice from a list, YES/NO, a file path; check the number of data
+!> lines; parse the reals on a data line; read a table of numbers from the data lines or
+!> from a file (*AMPLITUDE, *MOTION). Each helper reports its own errors, already located
+!> (an error in a table file names that file and its line).
 module rodyn_deck_lexer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use rodyn_kinds, only: wp, i8
@@ -21,13 +23,14 @@ module rodyn_deck_lexer
    use rodyn_model, only: name_len
    implicit none
    private
-   public :: field_t, param_t, data_line_t, card_t, deck_t
+   public :: field_t, param_t, data_line_t, card_t, deck_t, table_t
    public :: deck_lex
    public :: card_check_params, card_find_param, card_where
-   public :: card_error, card_param_error, card_data_error
-   public :: card_get_real, card_get_int, card_get_name, card_get_text
+   public :: card_error, card_param_error, card_data_error, card_file_error
+   public :: card_get_real, card_get_int, card_get_name, card_get_text, card_get_file
    public :: card_get_choice, card_get_yesno
-   public :: card_check_data, card_data_count, card_data_reals
+   public :: card_check_data, card_data_count, card_data_reals, card_data_real
+   public :: card_data_table, card_get_table
    public :: parse_real, parse_int, real_str, int_str, upper_case
    public :: max_include_depth, param_len
 
@@ -66,6 +69,16 @@ module rodyn_deck_lexer
       integer :: n_data = 0                     !< number of data lines
       type(data_line_t), allocatable :: data(:) !< data lines 1..n_data (capacity may exceed)
    end type card_t
+
+   !> A table of numbers, one row per data line or per line of a table file
+   !> (card_data_table, card_get_table).
+   type :: table_t
+      character(len=:), allocatable :: path     !< file the rows are in (as opened)
+      character(len=:), allocatable :: text     !< the table file's text ('' for data lines)
+      integer :: n_rows = 0                     !< number of rows
+      real(wp), allocatable :: values(:, :)     !< (columns, rows 1..n_rows)
+      integer, allocatable :: line(:)           !< line number of each row in path
+   end type table_t
 
    !> The deck: all cards of the main file and its includes, in reading order.
    type :: deck_t
@@ -171,27 +184,14 @@ contains
       type(field_t), intent(inout) :: stack(0:)  !< normalised paths of the open files
       type(deck_t), intent(inout) :: deck        !< cards read so far
       type(error_t), intent(inout) :: err        !< status
-      character(len=:), allocatable :: input, path, text, norm
+      character(len=:), allocatable :: path, text, norm
       integer :: k
       logical :: ok
 
       call card_check_params(card, [character(len=param_len) :: 'INPUT'], err)
       if (has_error(err)) return
-      call card_get_text(card, 'INPUT', input, err, required=.true.)
+      call card_get_file(card, 'INPUT', path, err, required=.true.)
       if (has_error(err)) return
-      if (len(input) >= 2) then          ! INPUT="path" : quotes are not part of the path
-         if (input(1:1) == '"' .and. input(len(input):len(input)) == '"') &
-            input = input(2:len(input) - 1)
-      end if
-      if (len(input) == 0) then
-         call card_error(card, 'parameter INPUT needs a value (INPUT=...)', err)
-         return
-      end if
-      if (input(1:1) == '/') then
-         path = input
-      else
-         path = dir_of(card%file)//input
-      end if
       norm = path_normalise(path)
       do k = 0, depth
          if (stack(k)%s == norm) then
@@ -363,6 +363,18 @@ contains
       call set_error(err, stat_input, card_where(card, card%data(id)%line)//message)
    end subroutine card_data_error
 
+   !> Report an error located at line `line` of another file read for the card (a table
+   !> file): 'FILE:LINE: error: *KEYWORD: message'.
+   subroutine card_file_error(card, file, line, message, err)
+      type(card_t), intent(in) :: card        !< the card that reads the file
+      character(len=*), intent(in) :: file    !< the file, as opened
+      integer, intent(in) :: line             !< line number in that file
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err     !< status to fill
+      call set_error(err, stat_input, file//':'//int_str(line)//': error: *'// &
+                     card%keyword//': '//message)
+   end subroutine card_file_error
+
    !> Check the parameter names: each must be in `allowed`, and given only once.
    subroutine card_check_params(card, allowed, err)
       type(card_t), intent(in) :: card                 !< the card
@@ -489,6 +501,37 @@ contains
       if (present(found)) found = .true.
    end subroutine card_get_text
 
+   !> Get a file path (INPUT=path): double quotes around it are dropped, and a relative
+   !> path is taken from the folder of the file holding the card. Unchanged when absent.
+   subroutine card_get_file(card, name, path, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      character(len=:), allocatable, intent(inout) :: path !< the path to open
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: v
+      logical :: given
+
+      if (present(found)) found = .false.
+      call card_get_text(card, name, v, err, given, required)
+      if (.not. given) return
+      if (len(v) >= 2) then          ! INPUT="path" : quotes are not part of the path
+         if (v(1:1) == '"' .and. v(len(v):len(v)) == '"') v = v(2:len(v) - 1)
+      end if
+      if (len(v) == 0) then
+         call card_param_error(card, card_find_param(card, name), 'parameter '//name// &
+                               ' needs a value ('//name//'=...)', err)
+         return
+      end if
+      if (v(1:1) == '/') then
+         path = v
+      else
+         path = dir_of(card%file)//v
+      end if
+      if (present(found)) found = .true.
+   end subroutine card_get_file
+
    !> Get a name (of a section or line): upper-cased, at most name_len characters of
    !> letters, digits, '_', '-' and '.'. Unchanged when absent.
    subroutine card_get_name(card, name, value, err, found, required)
@@ -607,38 +650,245 @@ contains
       real(wp), intent(out) :: values(n)      !< the values
       type(error_t), intent(inout) :: err     !< status
       character(len=*), intent(in), optional :: what !< names of the values
-      character(len=:), allocatable :: msg, label, names
-      integer :: k, nf
+      character(len=:), allocatable :: msg, names
 
-      values = 0.0_wp
       names = ''
       if (present(what)) names = what
-      nf = card_data_count(card, id)
+      call fields_reals(card%data(id)%fields, values, names, msg)
+      if (len(msg) > 0) call card_data_error(card, id, msg, err)
+   end subroutine card_data_reals
+
+   !> Parse value k of data line `id` as a real (the line may hold other kinds of
+   !> values; its number of values is checked by the caller).
+   subroutine card_data_real(card, id, k, value, err, what)
+      type(card_t), intent(in) :: card        !< the card
+      integer, intent(in) :: id               !< index of the data line
+      integer, intent(in) :: k                !< which value of the line
+      real(wp), intent(out) :: value          !< the value
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), intent(in), optional :: what !< names of the values of the line
+      character(len=:), allocatable :: msg, names
+
+      names = ''
+      if (present(what)) names = what
+      call field_real(card%data(id)%fields(k)%s, k, card_data_count(card, id), names, &
+                      value, msg)
+      if (len(msg) > 0) call card_data_error(card, id, msg, err)
+   end subroutine card_data_real
+
+   !> The data lines as a table: each line one row of exactly ncol reals (`what` names
+   !> the columns). table%path is the card's file, table%line the data lines' numbers.
+   subroutine card_data_table(card, ncol, what, table, err)
+      type(card_t), intent(in) :: card        !< the card
+      integer, intent(in) :: ncol             !< number of values on each line
+      character(len=*), intent(in) :: what    !< names of the columns
+      type(table_t), intent(out) :: table     !< the rows
+      type(error_t), intent(inout) :: err     !< status
+      integer :: id
+
+      table%path = card%file
+      table%text = ''
+      table%n_rows = card%n_data
+      allocate (table%values(ncol, card%n_data), table%line(card%n_data))
+      do id = 1, card%n_data
+         table%line(id) = card%data(id)%line
+         call card_data_reals(card, id, ncol, table%values(:, id), err, what)
+         if (has_error(err)) return
+      end do
+   end subroutine card_data_table
+
+   !> Read a table of numbers from the file given by parameter `name` (INPUT=path, see
+   !> card_get_file): one row of exactly ncol reals per line, separated by commas or
+   !> blanks. Blank lines and comment lines (first character '#', or '**') are skipped,
+   !> and so is the first other line when none of its values is a number (a header).
+   !> Errors in the file name the file and its line. found = .false. when the parameter
+   !> is absent (table left empty).
+   subroutine card_get_table(card, name, ncol, what, table, err, found, required)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter holding the path, upper case
+      integer, intent(in) :: ncol             !< number of values on each row
+      character(len=*), intent(in) :: what    !< names of the columns
+      type(table_t), intent(out) :: table     !< the rows read
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      character(len=:), allocatable :: text, s, msg
+      type(field_t), allocatable :: fields(:)
+      real(wp) :: row(ncol)
+      logical :: given, ok, header_allowed
+      integer :: first, last, line_no
+
+      if (present(found)) found = .false.
+      table%n_rows = 0
+      allocate (table%values(ncol, 16), table%line(16))
+      call card_get_file(card, name, table%path, err, given, required)
+      if (.not. given) return
+      if (present(found)) found = .true.
+      call read_file_text(table%path, text, ok)
+      if (.not. ok) then
+         call card_param_error(card, card_find_param(card, name), "cannot open '"// &
+                               table%path//"'", err)
+         return
+      end if
+      table%text = without_cr(text)
+      if (len(table%text) > 0) then
+         if (table%text(len(table%text):len(table%text)) /= lf) table%text = table%text//lf
+      end if
+
+      header_allowed = .true.
+      line_no = 0
+      first = 1
+      do while (first <= len(table%text))
+         last = first + index(table%text(first:), lf) - 1
+         line_no = line_no + 1
+         s = clean_line(table%text(first:last - 1))
+         first = last + 1
+         if (len(s) == 0) cycle
+         if (s(1:1) == '#') cycle
+         if (len(s) >= 2) then
+            if (s(1:2) == '**') cycle
+         end if
+         call split_table_line(s, fields)
+         if (header_allowed) then
+            header_allowed = .false.
+            if (.not. any_number(fields)) cycle
+         end if
+         call fields_reals(fields, row, what, msg)
+         if (len(msg) > 0) then
+            call card_file_error(card, table%path, line_no, msg, err)
+            return
+         end if
+         call append_row(table, row, line_no)
+      end do
+   end subroutine card_get_table
+
+   !> Append one row to a table, growing its arrays when full.
+   subroutine append_row(table, row, line_no)
+      type(table_t), intent(inout) :: table  !< table to extend
+      real(wp), intent(in) :: row(:)         !< the row's values
+      integer, intent(in) :: line_no         !< its line number
+      real(wp), allocatable :: v(:, :)
+      integer, allocatable :: l(:)
+
+      if (table%n_rows == size(table%line)) then
+         allocate (v(size(row), 2*table%n_rows), l(2*table%n_rows))
+         v(:, 1:table%n_rows) = table%values(:, 1:table%n_rows)
+         l(1:table%n_rows) = table%line(1:table%n_rows)
+         call move_alloc(v, table%values)
+         call move_alloc(l, table%line)
+      end if
+      table%n_rows = table%n_rows + 1
+      table%values(:, table%n_rows) = row
+      table%line(table%n_rows) = line_no
+   end subroutine append_row
+
+   !> Split a line of a table file at commas and at runs of blanks. An empty value
+   !> between two commas is kept (as '') so that it is reported; a trailing comma is not.
+   pure subroutine split_table_line(s, fields)
+      character(len=*), intent(in) :: s                    !< the line, cleaned
+      type(field_t), allocatable, intent(out) :: fields(:) !< its values
+      type(field_t), allocatable :: pieces(:)
+      type(field_t) :: buf(len(s) + 1)
+      integer :: n, k, np, p, q
+
+      call split_commas(s, pieces)
+      np = size(pieces)
+      if (np > 1) then
+         if (len(pieces(np)%s) == 0) np = np - 1      ! trailing comma
+      end if
+      n = 0
+      do k = 1, np
+         associate (t => pieces(k)%s)
+            if (len(t) == 0) then
+               n = n + 1
+               buf(n)%s = ''
+               cycle
+            end if
+            p = 1
+            do while (p <= len(t))
+               if (t(p:p) == ' ') then
+                  p = p + 1
+                  cycle
+               end if
+               q = index(t(p:), ' ')
+               if (q == 0) then
+                  q = len(t) + 1
+               else
+                  q = p + q - 1
+               end if
+               n = n + 1
+               buf(n)%s = t(p:q - 1)
+               p = q + 1
+            end do
+         end associate
+      end do
+      allocate (fields(n))
+      do k = 1, n
+         call move_alloc(buf(k)%s, fields(k)%s)
+      end do
+   end subroutine split_table_line
+
+   !> True when at least one of the fields is a number.
+   logical function any_number(fields)
+      type(field_t), intent(in) :: fields(:)  !< values of a line
+      character(len=:), allocatable :: msg
+      real(wp) :: x
+      integer :: k
+      any_number = .false.
+      do k = 1, size(fields)
+         call parse_real(fields(k)%s, x, msg)
+         if (len(msg) == 0) any_number = .true.
+      end do
+   end function any_number
+
+   !> Parse fields as exactly size(values) reals. msg = '' on success, else what is
+   !> wrong, naming the value by `what` (comma-separated names) and position.
+   subroutine fields_reals(fields, values, what, msg)
+      type(field_t), intent(in) :: fields(:)          !< the values as text
+      real(wp), intent(out) :: values(:)              !< the numbers
+      character(len=*), intent(in) :: what            !< names of the values ('' if none)
+      character(len=:), allocatable, intent(out) :: msg !< '' or the problem
+      integer :: k, n, nf
+
+      values = 0.0_wp
+      msg = ''
+      n = size(values)
+      nf = size(fields)
       if (nf /= n) then
          msg = 'expected '//int_str(n)//' value'
          if (n /= 1) msg = msg//'s'
          msg = msg//', got '//int_str(nf)
-         if (len(names) > 0) msg = msg//' ('//names//')'
-         call card_data_error(card, id, msg, err)
+         if (len(what) > 0) msg = msg//' ('//what//')'
          return
       end if
       do k = 1, n
-         label = item_of(names, k)
-         if (len(label) > 0) label = label//', '
-         label = '('//label//'value '//int_str(k)//' of '//int_str(n)//')'
-         associate (f => card%data(id)%fields(k)%s)
-            if (len(f) == 0) then
-               call card_data_error(card, id, 'empty value '//label, err)
-               return
-            end if
-            call parse_real(f, values(k), msg)
-            if (len(msg) > 0) then
-               call card_data_error(card, id, msg//' '//label, err)
-               return
-            end if
-         end associate
+         call field_real(fields(k)%s, k, n, what, values(k), msg)
+         if (len(msg) > 0) return
       end do
-   end subroutine card_data_reals
+   end subroutine fields_reals
+
+   !> Parse value k of n of a line as a real; msg = '' or the problem, ending with a
+   !> label '(NAME, value k of n)' (NAME the k-th item of `what`).
+   subroutine field_real(f, k, n, what, value, msg)
+      character(len=*), intent(in) :: f               !< the value as text, trimmed
+      integer, intent(in) :: k                        !< its position on the line
+      integer, intent(in) :: n                        !< number of values of the line
+      character(len=*), intent(in) :: what            !< names of the values ('' if none)
+      real(wp), intent(out) :: value                  !< the number
+      character(len=:), allocatable, intent(out) :: msg !< '' or the problem
+      character(len=:), allocatable :: label
+
+      value = 0.0_wp
+      label = item_of(what, k)
+      if (len(label) > 0) label = label//', '
+      label = '('//label//'value '//int_str(k)//' of '//int_str(n)//')'
+      if (len(f) == 0) then
+         msg = 'empty value '//label
+         return
+      end if
+      call parse_real(f, value, msg)
+      if (len(msg) > 0) msg = msg//' '//label
+   end subroutine field_real
 
    ! ================================================================== numbers
 

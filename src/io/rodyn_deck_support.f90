@@ -1,0 +1,227 @@
+!> Deck reader support: what the keyword readers remember for the validation pass
+!> (pending_t: names referred to, the card of each item, the first card of keywords
+!> allowed once) and the checks they share: parameters in a range, END=/NODE=, a line
+!> name resolved with its node number, error locations. Used by rodyn_deck (the reader
+!> and the static-analysis keywords) and rodyn_deck_dynamic (the dynamic keywords).
+module rodyn_deck_support
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, line_def_t, end_a, end_b
+   use rodyn_deck_lexer, only: deck_t, card_t, card_find_param, card_error, &
+                               card_param_error, card_data_error, card_get_real, &
+                               card_get_int, card_get_choice, real_str, int_str
+   implicit none
+   private
+   public :: ref_t, pending_t, max_cutbacks
+   public :: check_once, get_node, get_bounded, get_tolerance, data_check, param_fail
+   public :: location, resolve_line, node_count, node_number, node_label
+
+   integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
+
+   !> A reference by name from one card to a section, line or amplitude, resolved after
+   !> all cards are read.
+   type :: ref_t
+      character(len=:), allocatable :: name  !< name referred to, upper case
+      integer :: card = 0                    !< index of the referring card
+   end type ref_t
+
+   !> What the readers remember for the validation pass (not part of the model).
+   type :: pending_t
+      type(ref_t), allocatable :: line_section(:) !< per line: its SECTION=
+      type(ref_t), allocatable :: bc_line(:)      !< per constraint: its LINE=
+      type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
+      type(ref_t), allocatable :: load_amp(:)     !< per load: its AMPLITUDE= ('' if none)
+      type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE=
+      type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE=
+      integer, allocatable :: section_card(:)     !< per section: card index
+      integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
+      integer :: n_sections = 0     !< sections read so far
+      integer :: n_lines = 0        !< lines read so far
+      integer :: n_constraints = 0  !< constraints read so far
+      integer :: n_loads = 0        !< loads read so far
+      integer :: n_amplitudes = 0   !< amplitudes read so far
+      integer :: n_motions = 0      !< motions read so far
+      integer :: n_ivs = 0          !< initial velocities read so far
+      integer :: heading = 0   !< card of the first *HEADING (0: none yet)
+      integer :: gravity = 0   !< card of the first *GRAVITY
+      integer :: static = 0    !< card of the first *STATIC
+      integer :: output = 0    !< card of the first *OUTPUT
+      integer :: dynamic = 0   !< card of the first *DYNAMIC
+      integer :: damping = 0   !< card of the first *DAMPING
+   end type pending_t
+
+contains
+
+   !> Refuse a second card of a keyword allowed once; `first` remembers the first.
+   subroutine check_once(deck, ic, first, err)
+      type(deck_t), intent(in) :: deck     !< all cards
+      integer, intent(in) :: ic            !< index of this card
+      integer, intent(inout) :: first      !< index of the first such card (0: none)
+      type(error_t), intent(inout) :: err  !< status
+      if (first == 0) then
+         first = ic
+      else
+         call card_error(deck%cards(ic), 'given twice (first at '// &
+                         location(deck, first)//')', err)
+      end if
+   end subroutine check_once
+
+   !> Read END=A|B or NODE=k (exactly one of them) into a node number: end_a, end_b
+   !> or k >= 1. The upper bound of k is checked once the line is known.
+   subroutine get_node(card, node, err)
+      type(card_t), intent(in) :: card     !< a *BOUNDARY, *LOAD or *MOTION card
+      integer, intent(out) :: node         !< end_a, end_b or the node number
+      type(error_t), intent(inout) :: err  !< status
+      integer :: which
+
+      node = end_a
+      if (card_find_param(card, 'END') > 0 .and. card_find_param(card, 'NODE') > 0) then
+         call card_error(card, 'give END or NODE, not both', err)
+         return
+      end if
+      if (card_find_param(card, 'END') > 0) then
+         which = 0
+         call card_get_choice(card, 'END', [character(len=1) :: 'A', 'B'], which, err)
+         if (has_error(err)) return
+         node = merge(end_a, end_b, which == 1)
+      else if (card_find_param(card, 'NODE') > 0) then
+         call card_get_int(card, 'NODE', node, err)
+         if (has_error(err)) return
+         if (node < 1) then
+            call param_fail(card, 'NODE', 'NODE must be >= 1, got '//int_str(node), err)
+         end if
+      else
+         call card_error(card, 'missing parameter END or NODE', err)
+      end if
+   end subroutine get_node
+
+   !> Optional real parameter that must be >= 0 (or > 0 when `strict`).
+   subroutine get_bounded(card, name, value, strict, err)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      real(wp), intent(inout) :: value     !< the value (unchanged if absent)
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      logical :: found
+
+      if (has_error(err)) return
+      call card_get_real(card, name, value, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (strict .and. .not. value > 0.0_wp) then
+         call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
+      else if (.not. value >= 0.0_wp) then
+         call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
+      end if
+   end subroutine get_bounded
+
+   !> Optional tolerance parameter, 0 < value < 1.
+   subroutine get_tolerance(card, name, value, err)
+      type(card_t), intent(in) :: card     !< the *STATIC or *DYNAMIC card
+      character(len=*), intent(in) :: name !< parameter name
+      real(wp), intent(inout) :: value     !< the tolerance [-] (unchanged if absent)
+      type(error_t), intent(inout) :: err  !< status
+      logical :: found
+
+      if (has_error(err)) return
+      call card_get_real(card, name, value, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (.not. (value > 0.0_wp .and. value < 1.0_wp)) then
+         call param_fail(card, name, name//' must be > 0 and < 1, got '// &
+                         real_str(value), err)
+      end if
+   end subroutine get_tolerance
+
+   !> Check a value of data line `id`: > 0 when strict, else >= 0.
+   subroutine data_check(card, id, name, value, strict, err)
+      type(card_t), intent(in) :: card     !< the card
+      integer, intent(in) :: id            !< index of the data line
+      character(len=*), intent(in) :: name !< name of the value
+      real(wp), intent(in) :: value        !< the value
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      if (has_error(err)) return
+      if (strict .and. .not. value > 0.0_wp) then
+         call card_data_error(card, id, name//' must be > 0, got '//real_str(value), err)
+      else if (.not. value >= 0.0_wp) then
+         call card_data_error(card, id, name//' must be >= 0, got '//real_str(value), err)
+      end if
+   end subroutine data_check
+
+   !> Report an error at the line of parameter `name` (keyword line if absent).
+   subroutine param_fail(card, name, message, err)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name
+      character(len=*), intent(in) :: message !< what is wrong
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ip
+      ip = card_find_param(card, name)
+      if (ip > 0) then
+         call card_param_error(card, ip, message, err)
+      else
+         call card_error(card, message, err)
+      end if
+   end subroutine param_fail
+
+   !> 'FILE:LINE' of card ic, to point at an earlier definition.
+   function location(deck, ic) result(s)
+      type(deck_t), intent(in) :: deck    !< all cards
+      integer, intent(in) :: ic           !< card index
+      character(len=:), allocatable :: s  !< 'FILE:LINE'
+      s = deck%cards(ic)%file//':'//int_str(deck%cards(ic)%line)
+   end function location
+
+   !> Find the line named by LINE= of a *BOUNDARY, *LOAD, *MOTION or *INITIAL VELOCITY
+   !> card and check its node.
+   subroutine resolve_line(card, name, model, iline, node, err)
+      type(card_t), intent(in) :: card      !< the card naming the line
+      character(len=*), intent(in) :: name  !< line name, upper case
+      type(model_t), intent(in) :: model    !< model with all lines
+      integer, intent(out) :: iline         !< index of the line
+      integer, intent(in) :: node           !< end_a, end_b or node number
+      type(error_t), intent(inout) :: err   !< status
+      integer :: nn
+
+      do iline = 1, size(model%lines)
+         if (model%lines(iline)%name == name) exit
+      end do
+      if (iline > size(model%lines)) then
+         iline = 0
+         call param_fail(card, 'LINE', "LINE '"//name//"' is not defined (no *LINE"// &
+                         ' with NAME='//name//' in the deck)', err)
+         return
+      end if
+      nn = node_count(model%lines(iline))
+      if (node > nn) then
+         call param_fail(card, 'NODE', 'NODE '//int_str(node)//' is beyond the last node'// &
+                         ' of line '//trim(name)//' ('//int_str(nn)//')', err)
+      end if
+   end subroutine resolve_line
+
+   !> Number of nodes of a line: ELEMENTS*ORDER + 1.
+   pure integer function node_count(line) result(nn)
+      type(line_def_t), intent(in) :: line  !< the line
+      nn = line%n_elements*line%order + 1
+   end function node_count
+
+   !> Node number 1..nn of a stored node (end_a, end_b or k).
+   pure integer function node_number(node, nn) result(k)
+      integer, intent(in) :: node  !< end_a, end_b or a node number
+      integer, intent(in) :: nn    !< number of nodes of the line
+      if (node == end_b) then
+         k = nn
+      else
+         k = node     ! end_a is node 1
+      end if
+   end function node_number
+
+   !> 'node 1 (end A)', 'node 31 (end B)' or 'node 7'.
+   function node_label(node, nn) result(s)
+      integer, intent(in) :: node         !< node number 1..nn
+      integer, intent(in) :: nn           !< number of nodes of the line
+      character(len=:), allocatable :: s  !< the label
+      s = 'node '//int_str(node)
+      if (node == 1) s = s//' (end A)'
+      if (node == nn) s = s//' (end B)'
+   end function node_label
+
+end module rodyn_deck_support
