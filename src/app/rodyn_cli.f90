@@ -13,12 +13,14 @@ module rodyn_cli
       logical :: check = .false.               !< validate the deck only
       logical :: verbose = .false.             !< Newton iteration log on stdout
       logical :: quiet = .false.               !< nothing on stdout
+      logical :: progress = .false.            !< progress line even when stderr is no terminal
       logical :: version = .false.             !< print the version and exit
       logical :: help = .false.                !< print the usage and exit
    end type cli_options_t
 
    character(len=*), parameter :: cli_usage = &
-      'usage: rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--version] [--help]'// &
+      'usage: rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--progress] [--version]'// &
+      ' [--help]'// &
       new_line('a')//new_line('a')// &
       '  DECK           keyword input deck (see docs/deck.md)'//new_line('a')// &
       '  -o, --output DIR  folder for the results (default: the deck name without'// &
@@ -27,6 +29,8 @@ module rodyn_cli
       new_line('a')// &
       '  --verbose      log every Newton iteration'//new_line('a')// &
       '  --quiet        print nothing but errors'//new_line('a')// &
+      '  --progress     progress line of a dynamic run on stderr (default: only when'// &
+      ' stderr is a terminal)'//new_line('a')// &
       '  --version      print the version'//new_line('a')// &
       '  --help         print this text'//new_line('a')//new_line('a')// &
       'exit status: 0 success, 1 bad input, 2 numerical failure, 3 I/O failure'
@@ -64,6 +68,8 @@ contains
             opts%verbose = .true.
          case ('-q', '--quiet')
             opts%quiet = .true.
+         case ('--progress')
+            opts%progress = .true.
          case ('--version')
             opts%version = .true.
          case ('-h', '--help')

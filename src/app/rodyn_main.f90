@@ -1,13 +1,15 @@
-!> rodyn: static analysis of marine cables, risers and mooring lines as geometrically
-!> exact rods. Reads a keyword deck, solves, writes CSV tables and an HDF5 file.
+!> rodyn: static and dynamic analysis of marine cables, risers and mooring lines as
+!> geometrically exact rods. Reads a keyword deck; solves the static equilibrium when the
+!> deck calls for it (always, unless *DYNAMIC, START=DEFINED comes without *STATIC), then
+!> the dynamics if *DYNAMIC is given; writes CSV tables and HDF5 files.
 !> Exit status: 0 success, 1 bad input, 2 numerical failure, 3 I/O failure.
 program rodyn
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    use rodyn_kinds, only: rodyn_version
-   use rodyn_error, only: error_t, has_error, stat_ok, stat_io
+   use rodyn_error, only: error_t, has_error, stat_ok, stat_io, stat_input
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, scheme_names
    use rodyn_deck, only: deck_read
    use rodyn_mesh, only: mesh_t, mesh_build
    use rodyn_state, only: state_t
@@ -15,6 +17,8 @@ program rodyn
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_output, only: output_write_static, output_write_status
+   use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
+   use rodyn_kinds, only: wp
    implicit none
 
    interface
@@ -32,6 +36,10 @@ program rodyn
    type(static_problem_t) :: prob
    type(run_summary_t) :: summary
    type(line_result_t), allocatable :: lines(:)
+   type(state_t), target :: dstate
+   real(wp), allocatable :: r0(:, :)
+   character(len=:), allocatable :: missing
+   logical :: static_runs, show_progress
    integer :: log_unit
 
    call cli_parse(opts, err)
@@ -62,9 +70,15 @@ program rodyn
       call finish(stat_ok)
    end if
 
-   if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a)') 'rodyn '//rodyn_version// &
-      ': '//opts%deck//': static analysis, ', mesh%n_elements, ' elements, ', &
-      6*mesh%n_nodes, ' unknowns'
+   missing = dynamic_not_available(model)
+   if (len(missing) > 0) then
+      write (error_unit, '(a)') opts%deck//': error: '//missing
+      call finish(stat_input)
+   end if
+   static_runs = .not. model%dynamic%requested .or. model%dynamic%start_static .or. &
+                 model%static%requested
+   dstate = state        ! the defined start, kept for a START=DEFINED dynamic run
+
    ! the output folder is made and marked 'running' before any computing: an unwritable
    ! folder fails now, and a run killed midway leaves a status that says so
    summary%status = 'running'
@@ -75,28 +89,64 @@ program rodyn
    end if
    log_unit = -1
    if (opts%verbose .and. .not. opts%quiet) log_unit = output_unit
-   call statics_run(prob, model, mesh, state, summary, err, log_unit)
-   if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
 
-   ! results of the last converged state, complete or not
-   call recover_static(model, prob, lines)
-   call output_write_static(opts%outdir, model, lines, summary, out_err)
-   if (has_error(out_err)) then
-      write (error_unit, '(a)') out_err%message
-      if (.not. has_error(err)) call finish(stat_io)
-   end if
-   if (.not. opts%quiet) then
-      if (summary%complete) then
-         write (output_unit, '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', &
-            summary%increments, ' increment(s), ', summary%iterations, ' iterations, ', &
-            summary%cutbacks, ' cut-backs, ', summary%wall_time, ' s'
+   allocate (r0(6, mesh%n_nodes))
+   r0 = 0.0_wp
+   if (static_runs) then
+      if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a)') 'rodyn '//rodyn_version// &
+         ': '//opts%deck//': static analysis, ', mesh%n_elements, ' elements, ', &
+         6*mesh%n_nodes, ' unknowns'
+      call statics_run(prob, model, mesh, state, summary, err, log_unit)
+      if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
+      ! results of the last converged state, complete or not
+      call recover_static(model, prob, lines)
+      call output_write_static(opts%outdir, model, lines, summary, out_err)
+      if (has_error(out_err)) then
+         write (error_unit, '(a)') out_err%message
+         if (.not. has_error(err)) call finish(stat_io)
       end if
-      write (output_unit, '(a)') 'results in '//opts%outdir//'/'
+      if (.not. opts%quiet .and. summary%complete) write (output_unit, &
+         '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', summary%increments, &
+         ' increment(s), ', summary%iterations, ' iterations, ', summary%cutbacks, &
+         ' cut-backs, ', summary%wall_time, ' s'
+      if (has_error(err)) then
+         if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
+         call finish(err%code)
+      end if
+      if (model%dynamic%start_static) then
+         dstate = state
+         r0 = prob%r
+      end if
    end if
+
+   if (model%dynamic%requested) then
+      if (.not. opts%quiet) write (output_unit, '(a,i0,a,es10.3,a,es10.3,a)') &
+         'dynamic analysis: '//trim(scheme_name(model%dynamic%scheme))//', ', &
+         nint(model%dynamic%duration/model%dynamic%dt), ' steps of ', model%dynamic%dt, &
+         ' s to ', model%dynamic%duration, ' s'
+      summary%complete = .false.
+      deallocate (summary%status)
+      show_progress = stderr_is_terminal()
+      show_progress = (opts%progress .or. show_progress) .and. .not. opts%quiet
+      call run_dynamic(model, mesh, dstate, r0, opts%outdir, summary, err, log_unit, &
+                       show_progress)
+      if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
+      if (.not. opts%quiet .and. .not. has_error(err)) write (output_unit, &
+         '(a,i0,a,i0,a,i0,a)') 'dynamic solution: ', summary%steps, ' steps, ', &
+         summary%step_iterations, ' Newton iterations, ', summary%step_cutbacks, ' halvings'
+   end if
+   if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
    if (has_error(err)) call finish(err%code)
    call finish(stat_ok)
 
 contains
+
+   !> Name of a scheme for the log.
+   function scheme_name(k) result(name)
+      integer, intent(in) :: k !< scheme_* constant
+      character(len=12) :: name
+      name = scheme_names(k)
+   end function scheme_name
 
    !> Flush and leave with the given exit status (no STOP text on the terminal).
    subroutine finish(code)

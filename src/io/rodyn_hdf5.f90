@@ -14,6 +14,9 @@
 !>   routines always act. HDF5's negative status becomes stat_io with a message naming
 !>   the routine, the object and the file. HDF5's own error printing is switched off.
 !> - Writing a dataset whose parent groups are missing creates them.
+!> - Time series: hdf5_create_series (n values per step) and hdf5_create_series_1d (one)
+!>   make empty extendible datasets; hdf5_open_series keeps one open so that
+!>   hdf5_append_steps costs no lookup; hdf5_flush puts what was written on disk.
 module rodyn_hdf5
    use, intrinsic :: iso_c_binding, only: c_char, c_ptr, c_loc, c_null_char, c_size_t, &
       c_f_pointer, c_associated, c_null_ptr
@@ -27,7 +30,7 @@ module rodyn_hdf5
       h5sget_simple_extent_dims_f, h5sget_simple_extent_npoints_f, h5sselect_hyperslab_f, &
       h5tcopy_f, h5tclose_f, h5tset_cset_f, h5tget_cset_f, h5tget_class_f, &
       h5tget_size_f, h5tset_strpad_f, h5tis_variable_str_f, &
-      h5pcreate_f, h5pclose_f, h5pset_chunk_f, h5pset_fclose_degree_f, &
+      h5pcreate_f, h5pclose_f, h5pset_chunk_f, h5pset_fclose_degree_f, h5pset_file_locking_f, &
       h5pset_link_creation_order_f, h5pset_create_inter_group_f, &
       h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, &
       H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_ACC_RDWR_F, H5F_CLOSE_STRONG_F, &
@@ -35,7 +38,7 @@ module rodyn_hdf5
       H5P_LINK_CREATE_F, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, H5P_CRT_ORDER_TRACKED_F, &
       H5P_CRT_ORDER_INDEXED_F, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_IEEE_F64LE, H5T_STD_I32LE, &
-      H5T_STRING, H5T_STRING_F, H5T_CSET_UTF8_F, H5T_STR_NULLPAD_F, &
+      H5T_STRING, H5T_STRING_F, H5T_INTEGER_F, H5T_CSET_UTF8_F, H5T_STR_NULLPAD_F, &
       H5I_DATASET_F, H5I_GROUP_F, H5I_ATTR_F, H5I_DATASPACE_F, H5I_DATATYPE_F, &
       H5I_GENPROP_LST_F
    use rodyn_kinds, only: wp
@@ -49,12 +52,32 @@ module rodyn_hdf5
    public :: hdf5_write_dataset, hdf5_write_attribute
    public :: hdf5_read_dataset, hdf5_read_attribute
    public :: hdf5_create_series, hdf5_append_column
+   public :: hdf5_series_t, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series
+   public :: hdf5_append_steps
 
    !> An open HDF5 file.
    type :: hdf5_file_t
       integer(hid_t) :: id = -1                 !< HDF5 file identifier (< 0: not open)
       character(len=:), allocatable :: path     !< file name as given, for messages
    end type hdf5_file_t
+
+   !> An extendible dataset (hdf5_create_series, hdf5_create_series_1d) kept open for
+   !> appending with hdf5_append_steps: hdf5_open_series ... hdf5_close_series.
+   type :: hdf5_series_t
+      integer(hid_t) :: id = -1                  !< dataset identifier (< 0: not open)
+      integer :: rank = 0                        !< 1: one value per step; 2: n_cols
+      integer(hsize_t) :: n_cols = 1             !< values per step
+      integer(hsize_t) :: n_steps = 0            !< steps in the dataset so far
+      logical :: integers = .false.              !< integer dataset (else real)
+      type(hdf5_file_t) :: file                  !< the file (its id and name)
+      character(len=:), allocatable :: path      !< dataset path, for messages
+   end type hdf5_series_t
+
+   !> Append steps to an open series: real or integer values(:) in memory order, n_cols
+   !> per step (a 1-D series takes one value per step), or a real block x(n_cols, m).
+   interface hdf5_append_steps
+      module procedure append_real, append_real_2d, append_int
+   end interface hdf5_append_steps
 
    !> Write a dataset: real 1-D or 2-D, integer 1-D, or a string (scalar).
    interface hdf5_write_dataset
@@ -160,12 +183,17 @@ contains
       call release(fcpl)
    end subroutine hdf5_create_file
 
-   !> Open an existing file, read-only unless `writable` is true.
-   subroutine hdf5_open_file(file, path, err, writable)
+   !> Open an existing file, read-only unless `writable` is true. While a process holds
+   !> a file open for writing, HDF5's file lock (flock) makes other processes fail to
+   !> open it; `locking = .false.` opens it anyway (HDF5 >= 1.10.7), to read what the
+   !> writer last flushed (reading while it writes may see a half-updated file).
+   !> The environment variable HDF5_USE_FILE_LOCKING=FALSE does the same for any program.
+   subroutine hdf5_open_file(file, path, err, writable, locking)
       type(hdf5_file_t), intent(out) :: file     !< the open file
       character(len=*), intent(in) :: path       !< file name
       type(error_t), intent(inout) :: err        !< status
       logical, intent(in), optional :: writable  !< open for reading and writing
+      logical, intent(in), optional :: locking   !< take HDF5's file lock (default true)
       character(len=*), parameter :: where = 'hdf5_open_file'
       integer(hid_t) :: fapl
       integer :: stat, mode
@@ -183,6 +211,12 @@ contains
          if (failed(stat, 'set up', where, file, '/', err)) exit blk
          call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
          if (failed(stat, 'set up', where, file, '/', err)) exit blk
+         if (present(locking)) then
+            if (.not. locking) then
+               call h5pset_file_locking_f(fapl, .false., .true., stat)
+               if (failed(stat, 'set up', where, file, '/', err)) exit blk
+            end if
+         end if
          call h5fopen_f(path, mode, file%id, stat, access_prp=fapl)
          if (stat < 0) then
             file%id = -1
@@ -368,7 +402,7 @@ contains
 
    !> Create an empty extendible real dataset of n_cols rows in Fortran order (h5py
    !> shape (0, n_cols)), chunked, to be grown one column (one h5py row, e.g. one time
-   !> step) at a time with hdf5_append_column.
+   !> step) at a time with hdf5_append_column or hdf5_append_steps.
    subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps)
       type(hdf5_file_t), intent(in) :: file         !< open file
       character(len=*), intent(in) :: path          !< absolute dataset path
@@ -376,75 +410,263 @@ contains
       type(error_t), intent(inout) :: err           !< status
       integer, intent(in), optional :: chunk_steps  !< steps per chunk; default ~64 KiB
       character(len=*), parameter :: where = 'hdf5_create_series'
-      integer(hid_t) :: dset, dcpl
-      integer(hsize_t) :: dims(2), maxdims(2), chunk(2)
-      integer :: stat
+      integer :: steps
       if (has_error(err)) return
       if (n_cols < 1) then
          call set_error(err, stat_io, where//': no columns for '''//path//''' in '''// &
             file_name(file)//'''')
          return
       end if
-      dims = [integer(hsize_t) :: n_cols, 0]
-      maxdims = [integer(hsize_t) :: n_cols, H5S_UNLIMITED_F]
-      chunk = [integer(hsize_t) :: n_cols, max(1, 8192/n_cols)]
-      if (present(chunk_steps)) chunk(2) = int(max(1, chunk_steps), hsize_t)
-      dset = -1
-      dcpl = -1
-      blk: block
-         call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, stat)
-         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
-         call h5pset_chunk_f(dcpl, 2, chunk, stat)
-         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
-         call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err, &
-            maxdims=maxdims, dcpl=dcpl)
-      end block blk
-      call release(dset)
-      call release(dcpl)
+      steps = max(1, 8192/n_cols)
+      if (present(chunk_steps)) steps = max(1, chunk_steps)
+      call create_extendible(file, path, [integer(hsize_t) :: n_cols, 0], H5T_IEEE_F64LE, &
+         steps, where, err)
    end subroutine hdf5_create_series
 
-   !> Append one column (one h5py row) to a dataset made by hdf5_create_series.
+   !> Create an empty extendible 1-D dataset (h5py shape (0,)), one value per step:
+   !> real (binary64), or 32-bit integer when `integers` is true.
+   subroutine hdf5_create_series_1d(file, path, err, chunk_steps, integers)
+      type(hdf5_file_t), intent(in) :: file         !< open file
+      character(len=*), intent(in) :: path          !< absolute dataset path
+      type(error_t), intent(inout) :: err           !< status
+      integer, intent(in), optional :: chunk_steps  !< steps per chunk; default 8192
+      logical, intent(in), optional :: integers     !< integer values (default: real)
+      integer(hid_t) :: ftype
+      integer :: steps
+      if (has_error(err)) return
+      steps = 8192
+      if (present(chunk_steps)) steps = max(1, chunk_steps)
+      ftype = H5T_IEEE_F64LE
+      if (present(integers)) then
+         if (integers) ftype = H5T_STD_I32LE
+      end if
+      call create_extendible(file, path, [integer(hsize_t) :: 0], ftype, steps, &
+         'hdf5_create_series_1d', err)
+   end subroutine hdf5_create_series_1d
+
+   !> Open a dataset made by hdf5_create_series or hdf5_create_series_1d and keep it
+   !> open for appending: one dataset lookup instead of one per append (several times
+   !> faster than hdf5_append_column in a loop).
+   subroutine hdf5_open_series(file, path, series, err)
+      type(hdf5_file_t), intent(in) :: file         !< open file, writable
+      character(len=*), intent(in) :: path          !< absolute dataset path
+      type(hdf5_series_t), intent(inout) :: series  !< the open series
+      type(error_t), intent(inout) :: err           !< status
+      character(len=*), parameter :: where = 'hdf5_open_series'
+      integer(hid_t) :: dset, space, ftype
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer :: stat, ndims, tclass
+      call hdf5_close_series(series, err)
+      series%path = path
+      series%file = file
+      if (has_error(err)) return
+      space = -1
+      ftype = -1
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat < 0) dset = -1
+      if (failed(stat, 'open dataset', where, file, path, err)) return
+      blk: block
+         call h5dget_space_f(dset, space, stat)
+         if (failed(stat, 'read shape of', where, file, path, err)) exit blk
+         call h5sget_simple_extent_ndims_f(space, ndims, stat)
+         if (stat >= 0 .and. (ndims < 1 .or. ndims > 2)) stat = -1
+         if (failed(stat, 'append to (not a series)', where, file, path, err)) exit blk
+         call h5sget_simple_extent_dims_f(space, dims(:ndims), maxdims(:ndims), stat)
+         if (failed(stat, 'read shape of', where, file, path, err)) exit blk
+         call h5dget_type_f(dset, ftype, stat)
+         if (failed(stat, 'read type of', where, file, path, err)) exit blk
+         call h5tget_class_f(ftype, tclass, stat)
+         if (failed(stat, 'read type of', where, file, path, err)) exit blk
+         series%rank = ndims
+         series%n_cols = 1
+         if (ndims == 2) series%n_cols = dims(1)
+         series%n_steps = dims(ndims)
+         series%integers = tclass == H5T_INTEGER_F
+         series%id = dset
+         dset = -1
+      end block blk
+      call release(ftype)
+      call release(space)
+      call release(dset)
+   end subroutine hdf5_open_series
+
+   !> Close a series opened by hdf5_open_series. Acts even when err already holds an
+   !> error; does nothing for a series that is not open.
+   subroutine hdf5_close_series(series, err)
+      type(hdf5_series_t), intent(inout) :: series !< series to close
+      type(error_t), intent(inout) :: err          !< status
+      integer :: stat
+      if (series%id < 0) return
+      call h5dclose_f(series%id, stat)
+      series%id = -1
+      if (stat < 0) call set_error(err, stat_io, 'hdf5_close_series: cannot close '''// &
+         text_or(series%path)//''' in '''//file_name(series%file)//'''')
+   end subroutine hdf5_close_series
+
+   !> Append one column (one h5py row) to a dataset made by hdf5_create_series; opens
+   !> and closes the dataset (in a loop prefer hdf5_open_series + hdf5_append_steps).
    subroutine hdf5_append_column(file, path, column, err)
       type(hdf5_file_t), intent(in) :: file !< open file, writable
       character(len=*), intent(in) :: path  !< absolute dataset path
       real(wp), intent(in) :: column(:)     !< values of the new step, size n_cols
       type(error_t), intent(inout) :: err   !< status
-      character(len=*), parameter :: where = 'hdf5_append_column'
-      integer(hid_t) :: dset, fspace, mspace
-      integer(hsize_t) :: dims(2), maxdims(2), mdims(1)
+      type(hdf5_series_t) :: series
+      if (has_error(err)) return
+      call hdf5_open_series(file, path, series, err)
+      if (.not. has_error(err)) then
+         if (series%rank /= 2 .or. series%n_cols /= size(column, kind=hsize_t)) &
+            call set_error(err, stat_io, 'hdf5_append_column: column of wrong size '// &
+            'for '''//path//''' in '''//file_name(file)//'''')
+      end if
+      call append_real(series, column, err)
+      call hdf5_close_series(series, err)
+   end subroutine hdf5_append_column
+
+   !> Append steps of real values to an open series: values in memory order, n_cols per
+   !> step (size(values) a multiple of n_cols; a 1-D series takes one value per step).
+   subroutine append_real(series, values, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      real(wp), intent(in) :: values(:)            !< the new steps' values
+      type(error_t), intent(inout) :: err          !< status
+      integer(hid_t) :: fspace, mspace
+      integer(hsize_t) :: mdims(1)
       integer :: stat
       if (has_error(err)) return
-      dset = -1
+      mdims = shape(values, kind=hsize_t)
+      call prepare_append(series, mdims(1), .false., fspace, mspace, err)
+      if (has_error(err) .or. mdims(1) == 0) return
+      call h5dwrite_f(series%id, H5T_NATIVE_DOUBLE, values, mdims, stat, &
+         mem_space_id=mspace, file_space_id=fspace)
+      call finish_append(series, stat, fspace, mspace, err)
+   end subroutine append_real
+
+   !> Append steps given as a block x(n_cols, m), m steps, to an open 2-D series.
+   subroutine append_real_2d(series, values, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      real(wp), intent(in) :: values(:, :)         !< (n_cols, m) the new steps
+      type(error_t), intent(inout) :: err          !< status
+      if (has_error(err)) return
+      if (size(values, 1, kind=hsize_t) /= series%n_cols) then
+         call set_error(err, stat_io, 'hdf5_append_steps: block of wrong size for '''// &
+            text_or(series%path)//''' in '''//file_name(series%file)//'''')
+         return
+      end if
+      call append_real(series, reshape(values, [size(values)]), err)
+   end subroutine append_real_2d
+
+   !> Append steps of integer values to an open integer series (as append_real).
+   subroutine append_int(series, values, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      integer, intent(in) :: values(:)             !< the new steps' values
+      type(error_t), intent(inout) :: err          !< status
+      integer(hid_t) :: fspace, mspace
+      integer(hsize_t) :: mdims(1)
+      integer :: stat
+      if (has_error(err)) return
+      mdims = shape(values, kind=hsize_t)
+      call prepare_append(series, mdims(1), .true., fspace, mspace, err)
+      if (has_error(err) .or. mdims(1) == 0) return
+      call h5dwrite_f(series%id, H5T_NATIVE_INTEGER, values, mdims, stat, &
+         mem_space_id=mspace, file_space_id=fspace)
+      call finish_append(series, stat, fspace, mspace, err)
+   end subroutine append_int
+
+   !> Check an append of n values, grow the dataset and select the new steps: fspace
+   !> (the new steps in the file) and mspace (n values in memory). Nothing for n = 0.
+   subroutine prepare_append(series, n, integers, fspace, mspace, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      integer(hsize_t), intent(in) :: n            !< number of values to append
+      logical, intent(in) :: integers              !< the values are integers
+      integer(hid_t), intent(out) :: fspace        !< file dataspace (-1 when none)
+      integer(hid_t), intent(out) :: mspace        !< memory dataspace (-1 when none)
+      type(error_t), intent(inout) :: err          !< status
+      character(len=*), parameter :: where = 'hdf5_append_steps'
+      integer(hsize_t) :: m, dims(2), start(2), count(2)
+      integer :: stat, r
       fspace = -1
       mspace = -1
+      if (series%id < 0) then
+         call set_error(err, stat_io, where//': series '''//text_or(series%path)// &
+            ''' is not open')
+         return
+      end if
+      if (mod(n, series%n_cols) /= 0 .or. (integers .neqv. series%integers)) then
+         call set_error(err, stat_io, where//': values of wrong size or type for '''// &
+            series%path//''' in '''//file_name(series%file)//'''')
+         return
+      end if
+      if (n == 0) return
+      m = n/series%n_cols
+      r = series%rank
+      dims = [series%n_cols, series%n_steps + m]
+      start = [0_hsize_t, series%n_steps]
+      count = [series%n_cols, m]
       blk: block
-         call open_dataset(file, path, 2, dset, dims, where, err)
-         if (has_error(err)) exit blk
-         if (dims(1) /= size(column, kind=hsize_t)) then
-            call set_error(err, stat_io, where//': column of wrong size for '''//path// &
-               ''' in '''//file_name(file)//'''')
+         call h5dset_extent_f(series%id, dims(3 - r:), stat)
+         if (failed(stat, 'extend dataset', where, series%file, series%path, err)) exit blk
+         call h5dget_space_f(series%id, fspace, stat)
+         if (failed(stat, 'extend dataset', where, series%file, series%path, err)) exit blk
+         call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start(3 - r:), &
+            count(3 - r:), stat)
+         if (failed(stat, 'select in dataset', where, series%file, series%path, err)) &
             exit blk
-         end if
-         call h5dset_extent_f(dset, [dims(1), dims(2) + 1], stat)
-         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
-         call h5dget_space_f(dset, fspace, stat)
-         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
-         call h5sget_simple_extent_dims_f(fspace, dims, maxdims, stat)
-         if (failed(stat, 'extend dataset', where, file, path, err)) exit blk
-         call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, &
-            [integer(hsize_t) :: 0, dims(2) - 1], [dims(1), 1_hsize_t], stat)
-         if (failed(stat, 'select in dataset', where, file, path, err)) exit blk
-         mdims = [dims(1)]
-         call h5screate_simple_f(1, mdims, mspace, stat)
-         if (failed(stat, 'select in dataset', where, file, path, err)) exit blk
-         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, column, mdims, stat, &
-            mem_space_id=mspace, file_space_id=fspace)
-         if (failed(stat, 'write dataset', where, file, path, err)) exit blk
+         call h5screate_simple_f(1, [n], mspace, stat)
+         if (failed(stat, 'select in dataset', where, series%file, series%path, err)) &
+            exit blk
+         series%n_steps = series%n_steps + m
       end block blk
-      call release(mspace)
-      call release(fspace)
+      if (has_error(err)) then
+         call release(fspace)
+         call release(mspace)
+      end if
+   end subroutine prepare_append
+
+   !> Check the write of an append and release its dataspaces.
+   subroutine finish_append(series, stat, fspace, mspace, err)
+      type(hdf5_series_t), intent(in) :: series !< open series
+      integer, intent(in) :: stat               !< status of h5dwrite_f
+      integer(hid_t), intent(inout) :: fspace   !< file dataspace, released
+      integer(hid_t), intent(inout) :: mspace   !< memory dataspace, released
+      type(error_t), intent(inout) :: err       !< status
+      integer :: stat2
+      call check(stat, 'write dataset', 'hdf5_append_steps', series%file, series%path, err)
+      call h5sclose_f(fspace, stat2)
+      call h5sclose_f(mspace, stat2)
+      fspace = -1
+      mspace = -1
+   end subroutine finish_append
+
+   !> Create an empty chunked dataset whose last Fortran dimension (the first in h5py)
+   !> is unlimited; dims is the shape with 0 steps, chunks hold chunk_steps steps.
+   subroutine create_extendible(file, path, dims, ftype, chunk_steps, where, err)
+      type(hdf5_file_t), intent(in) :: file    !< open file
+      character(len=*), intent(in) :: path     !< absolute dataset path
+      integer(hsize_t), intent(in) :: dims(:)  !< shape, last extent 0 (Fortran order)
+      integer(hid_t), intent(in) :: ftype      !< datatype in the file
+      integer, intent(in) :: chunk_steps       !< steps per chunk
+      character(len=*), intent(in) :: where    !< calling routine
+      type(error_t), intent(inout) :: err      !< status
+      integer(hid_t) :: dset, dcpl
+      integer(hsize_t) :: maxdims(size(dims)), chunk(size(dims))
+      integer :: stat, r
+      r = size(dims)
+      maxdims = dims
+      maxdims(r) = H5S_UNLIMITED_F
+      chunk = dims
+      chunk(r) = int(chunk_steps, hsize_t)
+      dset = -1
+      dcpl = -1
+      blk: block
+         call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call h5pset_chunk_f(dcpl, r, chunk, stat)
+         if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
+         call create_dataset(file, path, ftype, dims, dset, where, err, &
+            maxdims=maxdims, dcpl=dcpl)
+      end block blk
       call release(dset)
-   end subroutine hdf5_append_column
+      call release(dcpl)
+   end subroutine create_extendible
 
    ! ------------------------------------------------------------------ attribute writers
 
@@ -794,6 +1016,17 @@ contains
          name = '?'
       end if
    end function file_name
+
+   !> A string that may be unallocated, for messages ('?' when unallocated).
+   pure function text_or(text) result(s)
+      character(len=:), allocatable, intent(in) :: text !< string, maybe unallocated
+      character(len=:), allocatable :: s                 !< its value or '?'
+      if (allocated(text)) then
+         s = text
+      else
+         s = '?'
+      end if
+   end function text_or
 
    !> Close any HDF5 identifier by its kind and mark it closed (-1). Ignores id < 0.
    subroutine release(id)

@@ -92,7 +92,9 @@ contains
    end subroutine output_write_static
 
    !> Write only status.txt into folder `dir` (created if missing): for a run that
-   !> stops before it has results to write. Acts even when err already holds an error.
+   !> stops before it has results to write, and for the dynamic writer (which adds the
+   !> keys dynamic ... step_cutbacks when summary%dynamic is true). Acts even when err
+   !> already holds an error.
    subroutine output_write_status(dir, summary, err, deck_file)
       character(len=*), intent(in) :: dir                 !< output folder
       type(run_summary_t), intent(in) :: summary          !< how the run went
@@ -114,6 +116,14 @@ contains
          call put_line(u, 'iterations = '//int_str(summary%iterations), ios, msg)
          call put_line(u, 'cutbacks = '//int_str(summary%cutbacks), ios, msg)
          call put_line(u, 'wall_time_s = '//real_str(summary%wall_time), ios, msg)
+         if (summary%dynamic) then
+            call put_line(u, 'dynamic = true', ios, msg)
+            call put_line(u, 'time_reached_s = '//real_str(summary%time_reached), ios, msg)
+            call put_line(u, 'steps = '//int_str(summary%steps), ios, msg)
+            call put_line(u, 'step_iterations = '//int_str(summary%step_iterations), ios, &
+               msg)
+            call put_line(u, 'step_cutbacks = '//int_str(summary%step_cutbacks), ios, msg)
+         end if
          call put_line(u, 'rodyn_version = '//rodyn_version, ios, msg)
          if (present(deck_file)) then
             call put_line(u, 'deck = '//one_line(deck_file), ios, msg)

@@ -7,69 +7,80 @@ module rodyn_recovery
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_statics, only: static_problem_t
+   use rodyn_state, only: state_t
    use rodyn_rod_element, only: rod_element_resultants, max_points
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
    implicit none
    private
-   public :: recover_static
+   public :: recover_static, recover_state
 
 contains
 
-   !> Fill one line_result_t per line from the problem's current configuration.
+   !> Fill one line_result_t per line from the static problem's configuration.
    subroutine recover_static(model, prob, lines)
       type(model_t), intent(in) :: model                 !< model
       type(static_problem_t), intent(inout) :: prob      !< solved problem
       type(line_result_t), allocatable, intent(out) :: lines(:) !< results
       type(error_t) :: err
+      call prob%evaluate(.false., err)      ! refresh f_int and the reactions
+      call recover_state(model, prob%mesh, prob%state, prob%lam, prob%r, prob%sup%held, lines)
+   end subroutine recover_static
+
+   !> Results of a configuration: node positions, resultants at the reduced points (with
+   !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
+   subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines)
+      type(model_t), intent(in) :: model                 !< model
+      type(mesh_t), intent(in) :: mesh                   !< mesh
+      type(state_t), intent(in) :: state                 !< configuration
+      real(wp), intent(in) :: eps0_scale                 !< factor on eps0 (1 but in statics)
+      real(wp), intent(in) :: r(:, :)                    !< (6, nn) support forces at held nodes
+      logical, intent(in) :: held(:, :)                  !< (6, nn) held dofs
+      type(line_result_t), allocatable, intent(inout) :: lines(:) !< results (reused)
       real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
       real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points)
       integer :: l, p, ne, el, e, g, ig, n0, nn, k, node, a
-      associate (mesh => prob%mesh, state => prob%state)
-         call prob%evaluate(.false., err)      ! refresh f_int and the reactions
-         allocate (lines(mesh%n_lines))
-         do l = 1, mesh%n_lines
-            p = mesh%line_order(l)
-            ne = model%lines(l)%n_elements
-            nn = mesh%line_n_nodes(l)
-            n0 = mesh%line_first_node(l)
-            lines(l)%name = model%lines(l)%name
-            lines(l)%node_s = mesh%node_s(n0:n0 + nn - 1)
-            lines(l)%node_x = state%x(:, n0:n0 + nn - 1)
-            allocate (lines(l)%gp_element(ne*p), lines(l)%gp_point(ne*p), &
-                      lines(l)%gp_s(ne*p), lines(l)%tension(ne*p), lines(l)%shear(2, ne*p), &
-                      lines(l)%moment(2, ne*p), lines(l)%torque(ne*p), &
-                      lines(l)%curvature(3, ne*p))
-            do el = 1, ne
-               e = mesh%line_first_elem(l) + el - 1
-               associate (nodes => mesh%elem_nodes(1:p + 1, e))
-                  do a = 1, p + 1
-                     xe(:, a) = state%x(:, nodes(a))
-                     de(:, :, a) = state%d(:, :, nodes(a))
-                  end do
-               end associate
-               e0 = prob%lam*mesh%eps0(:, :, e)
-               call rod_element_resultants(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
-                                           xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
-                                           tens(1:p), curv(:, 1:p), xig(1:p))
-               do g = 1, p
-                  ig = (el - 1)*p + g
-                  lines(l)%gp_element(ig) = el
-                  lines(l)%gp_point(ig) = g
-                  lines(l)%gp_s(ig) = mesh%elem_s0(e) + 0.5_wp*mesh%elem_le(e)*(xig(g) + 1.0_wp)
-                  lines(l)%shear(:, ig) = res(1:2, g)
-                  lines(l)%tension(ig) = tens(g)
-                  lines(l)%moment(:, ig) = res(4:5, g)
-                  lines(l)%torque(ig) = res(6, g)
-                  lines(l)%curvature(:, ig) = curv(:, g)
-               end do
+      if (.not. allocated(lines)) allocate (lines(mesh%n_lines))
+      do l = 1, mesh%n_lines
+         p = mesh%line_order(l)
+         ne = model%lines(l)%n_elements
+         nn = mesh%line_n_nodes(l)
+         n0 = mesh%line_first_node(l)
+         lines(l)%name = model%lines(l)%name
+         lines(l)%node_s = mesh%node_s(n0:n0 + nn - 1)
+         lines(l)%node_x = state%x(:, n0:n0 + nn - 1)
+         if (.not. allocated(lines(l)%gp_s)) allocate (lines(l)%gp_element(ne*p), &
+            lines(l)%gp_point(ne*p), lines(l)%gp_s(ne*p), lines(l)%tension(ne*p), &
+            lines(l)%shear(2, ne*p), lines(l)%moment(2, ne*p), lines(l)%torque(ne*p), &
+            lines(l)%curvature(3, ne*p))
+         do el = 1, ne
+            e = mesh%line_first_elem(l) + el - 1
+            do a = 1, p + 1
+               xe(:, a) = state%x(:, mesh%elem_nodes(a, e))
+               de(:, :, a) = state%d(:, :, mesh%elem_nodes(a, e))
             end do
-            do k = 1, 2
-               node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-               lines(l)%end_held(k) = any(prob%sup%held(:, node))
-               if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = prob%r(:, node)
+            e0 = eps0_scale*mesh%eps0(:, :, e)
+            call rod_element_resultants(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
+                                        xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
+                                        tens(1:p), curv(:, 1:p), xig(1:p))
+            do g = 1, p
+               ig = (el - 1)*p + g
+               lines(l)%gp_element(ig) = el
+               lines(l)%gp_point(ig) = g
+               lines(l)%gp_s(ig) = mesh%elem_s0(e) + 0.5_wp*mesh%elem_le(e)*(xig(g) + 1.0_wp)
+               lines(l)%shear(:, ig) = res(1:2, g)
+               lines(l)%tension(ig) = tens(g)
+               lines(l)%moment(:, ig) = res(4:5, g)
+               lines(l)%torque(ig) = res(6, g)
+               lines(l)%curvature(:, ig) = curv(:, g)
             end do
          end do
-      end associate
-   end subroutine recover_static
+         do k = 1, 2
+            node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            lines(l)%end_held(k) = any(held(:, node))
+            lines(l)%reaction(:, k) = 0.0_wp
+            if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = r(:, node)
+         end do
+      end do
+   end subroutine recover_state
 end module rodyn_recovery

@@ -1,0 +1,140 @@
+!> The dynamic analysis as the program runs it: set-up from the start state, the time
+!> loop, and the outputs written while it runs (frames, step log, progress line).
+!> The callbacks of the time loop reach the writer through this module's run context,
+!> which lives for one call of run_dynamic.
+module rodyn_run_dynamic
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   use, intrinsic :: iso_c_binding, only: c_int
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, set_error, stat_input
+   use rodyn_model, only: model_t, scheme_alpha
+   use rodyn_mesh, only: mesh_t
+   use rodyn_state, only: state_t
+   use rodyn_results, only: line_result_t, run_summary_t, step_log_t
+   use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
+   use rodyn_timeloop, only: timeloop_run
+   use rodyn_recovery, only: recover_state
+   use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
+                                   dynamic_output_frame, dynamic_output_step, &
+                                   dynamic_output_close
+   implicit none
+   private
+   public :: run_dynamic, dynamic_not_available, stderr_is_terminal
+
+   interface
+      function c_isatty(fd) result(r) bind(c, name='isatty')
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: r
+      end function c_isatty
+   end interface
+
+   ! run context of one call of run_dynamic (read by the callbacks)
+   type(dynamic_writer_t) :: writer
+   type(line_result_t), allocatable :: frame_lines(:)
+   type(model_t), pointer :: ctx_model => null()
+   real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
+   logical :: show_progress = .false.
+   integer(kind=8) :: clock0, clock_last, clock_rate
+
+contains
+
+   !> Features the deck language accepts but this version does not compute: a message
+   !> for the user (empty when the deck can run).
+   function dynamic_not_available(model) result(msg)
+      type(model_t), intent(in) :: model !< model
+      character(len=:), allocatable :: msg
+      msg = ''
+      if (.not. model%dynamic%requested) return
+      if (model%dynamic%scheme == scheme_alpha) msg = '*DYNAMIC: SCHEME=ALPHA (the '// &
+         'dissipative scheme) is not available in this version; use EMC, MIDPOINT or '// &
+         'TRAPEZOIDAL'
+      if (model%dynamic%rayleigh_beta > 0.0_wp) msg = '*DAMPING: BETA (stiffness-'// &
+         'proportional damping) is not available in this version; use ALPHA only'
+   end function dynamic_not_available
+
+   !> True when standard error is a terminal (the progress line is shown there).
+   logical function stderr_is_terminal()
+      stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
+   end function stderr_is_terminal
+
+   !> Run the dynamic analysis from state (the static solution or the defined start) and
+   !> write its outputs into dir. r0: support forces of the start state (for frame 0).
+   subroutine run_dynamic(model, mesh, state, r0, dir, summary, err, log_unit, progress)
+      type(model_t), intent(in), target :: model     !< model
+      type(mesh_t), intent(in), target :: mesh       !< mesh
+      type(state_t), intent(inout), target :: state  !< start, then final state
+      real(wp), intent(in) :: r0(:, :)               !< (6, nn) start support forces
+      character(len=*), intent(in) :: dir            !< output folder
+      type(run_summary_t), intent(inout) :: summary  !< progress (dynamic fields)
+      type(error_t), intent(inout) :: err            !< status
+      integer, intent(in) :: log_unit                !< Newton log (< 0: none)
+      logical, intent(in) :: progress                !< show the progress line
+      type(dynamic_problem_t) :: prob
+      type(error_t) :: werr
+      ctx_model => model
+      r_start = r0
+      show_progress = progress
+      if (.not. model%dynamic%start_static) call apply_initial_velocities(model, mesh, state)
+      call dynamics_setup(prob, model, mesh, state)
+      call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines)
+      call dynamic_output_open(writer, dir, model, frame_lines, err)
+      if (has_error(err)) return
+      call system_clock(clock0, clock_rate)
+      clock_last = clock0
+      summary%dynamic = .true.
+      call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, on_progress)
+      if (show_progress) write (error_unit, '(a)') ''
+      if (.not. has_error(err)) then
+         summary%complete = .true.
+         summary%status = 'complete'
+      else
+         summary%complete = .false.
+         if (.not. allocated(summary%status)) summary%status = err%message
+      end if
+      call dynamic_output_close(writer, summary, werr)
+      if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, werr%message)
+   end subroutine run_dynamic
+
+   subroutine on_frame(t, prob, err)
+      real(wp), intent(in) :: t                        !< time [s]
+      type(dynamic_problem_t), intent(inout) :: prob   !< converged state
+      type(error_t), intent(inout) :: err              !< status
+      if (t > 0.0_wp) then
+         call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, prob%sup%held, &
+                            frame_lines)
+      else
+         call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
+                            frame_lines)
+      end if
+      call dynamic_output_frame(writer, t, frame_lines, err)
+   end subroutine on_frame
+
+   subroutine on_step(log, err)
+      type(step_log_t), intent(in) :: log   !< step
+      type(error_t), intent(inout) :: err   !< status
+      call dynamic_output_step(writer, log, err)
+   end subroutine on_step
+
+   !> Progress line on stderr, at most twice a second: percent, time, speed, time left.
+   subroutine on_progress(t, prob, err)
+      real(wp), intent(in) :: t                        !< time reached [s]
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem (unused)
+      type(error_t), intent(inout) :: err              !< status (unused)
+      integer(kind=8) :: now
+      real(wp) :: wall, frac, rate, left
+      if (.not. show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
+      call system_clock(now)
+      if (real(now - clock_last, wp) < 0.5_wp*real(clock_rate, wp) .and. &
+          t < ctx_model%dynamic%duration) return
+      clock_last = now
+      wall = real(now - clock0, wp)/real(clock_rate, wp)
+      frac = t/ctx_model%dynamic%duration
+      rate = real(writer%steps, wp)/max(wall, 1.0e-9_wp)
+      left = wall*(1.0_wp - frac)/max(frac, 1.0e-9_wp)
+      write (error_unit, '(a,f6.1,a,es11.4,a,f9.1,a,f8.1,a)', advance='no') &
+         achar(13)//'  ', 100.0_wp*frac, ' %   t = ', t, ' s   ', rate, ' steps/s   ', &
+         left, ' s left  '
+      flush (error_unit)
+   end subroutine on_progress
+end module rodyn_run_dynamic

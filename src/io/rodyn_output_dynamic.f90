@@ -1,0 +1,966 @@
+!> Writers for a dynamic run: time histories written while the run goes, so that a run
+!> that fails or is killed leaves everything up to its last output frame readable.
+!> The layout of every file is documented in docs/output.md ("Dynamic runs").
+!>
+!> Life cycle: dynamic_output_open (after output_write_static has written the static
+!> files), then dynamic_output_step after every time step and dynamic_output_frame at
+!> every output time, in any order, then dynamic_output_close. The files are created
+!> under their final names (truncating older ones) and grow as the run goes; unlike the
+!> static files they are not written under a temporary name.
+!>
+!> What is on disk when (the flush policy; cost measured in test_output_dynamic.pf):
+!> - CSV tables: the rows of a frame, and the row of a step, are flushed (Fortran FLUSH:
+!>   handed to the operating system) before the call that wrote them returns.
+!> - dynamic.h5: each frame is written and the file flushed (H5Fflush) before
+!>   dynamic_output_frame returns. Step rows are kept in memory and written with the
+!>   next frame (or after log_block steps without a frame, or at close): one HDF5 flush
+!>   per step would cost more than the step rows themselves.
+!> - status.txt: rewritten (temporary file + rename) at open, after a frame when at
+!>   least status_interval (1 s) of wall time has passed since the last rewrite, with
+!>   complete = false, status = running and how far the run got, and at close with the
+!>   final summary. A killed run leaves a status.txt that says it did not finish and
+!>   roughly where it was (a rewrite costs ~0.3 ms; one per frame would cost more than
+!>   the frame).
+!> There is no fsync: the files survive the process being killed, not a machine crash.
+!> HDF5 file format: the default (oldest) one, so that a killed run's file opens
+!> without h5clear (see docs/output.md for what HDF5 allows while the run is live).
+!>
+!> Numbers in the CSV tables are written exactly as by rodyn_output (17 significant
+!> digits, 1.2345678901234567E+05), through C's strfromd (ISO C23, glibc >= 2.25), which
+!> is about 6 times faster than a Fortran internal write; non-finite values go through
+!> the Fortran write so that they read as in the static tables (NaN, Infinity).
+module rodyn_output_dynamic
+   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_double, c_null_char
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use rodyn_kinds, only: wp, i8, rodyn_version
+   use rodyn_error, only: error_t, set_error, has_error, stat_io
+   use rodyn_model, only: model_t, scheme_names
+   use rodyn_results, only: line_result_t, run_summary_t, step_log_t
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
+      hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
+      hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
+      hdf5_append_steps
+   use rodyn_output, only: output_write_status
+   implicit none
+   private
+   public :: dynamic_writer_t
+   public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
+   public :: dynamic_output_close
+
+   character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
+   character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
+   character(len=*), parameter :: ends_csv = 'dynamic_ends.csv'
+   character(len=*), parameter :: log_csv = 'dynamic_log.csv'
+   character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
+   character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
+   character(len=*), parameter :: nodes_head = 'time_s,line,node,s_m,x_m,y_m,z_m'
+   character(len=*), parameter :: elements_head = 'time_s,line,element,point,s_m,'// &
+      'effective_tension_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_per_m'
+   character(len=*), parameter :: ends_head = &
+      'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
+   character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
+      'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,total_J,'// &
+      'px,py,pz,Lx,Ly,Lz'
+   character(len=*), parameter :: running = 'running'
+
+   integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
+   integer, parameter :: row_len = 1024    !< longest CSV row (at most 17 fields)
+   integer, parameter :: chunk_bytes = 8192 !< target HDF5 chunk size of the frames
+   integer, parameter :: log_chunk = 1024   !< steps per HDF5 chunk of the step log
+   real(wp), parameter :: status_interval = 1.0_wp !< least wall time between rewrites
+                                                   !< of status.txt while running [s]
+
+   ! Time histories of a line in dynamic.h5 (index into line_out_t%series)
+   integer, parameter :: ls_x = 1, ls_y = 2, ls_z = 3, ls_tension = 4, ls_moment_1 = 5, &
+      ls_moment_2 = 6, ls_torque = 7, ls_curvature = 8, ls_reactions = 9, &
+      ls_end_tension = 10, n_line_series = 10
+   character(len=*), parameter :: line_series_name(n_line_series) = [character(len=17) :: &
+      'x', 'y', 'z', 'effective_tension', 'moment_1', 'moment_2', 'torque', &
+      'bending_curvature', 'reactions', 'end_tension']
+
+   ! Step log in dynamic.h5 (index into dynamic_writer_t%log), one dataset per quantity
+   integer, parameter :: lg_step = 1, lg_time = 2, lg_dt = 3, lg_iterations = 4, &
+      lg_cutbacks = 5, lg_kinetic = 6, lg_strain = 7, lg_gravity = 8, &
+      lg_external_work = 9, lg_damping_work = 10, lg_total = 11, lg_momentum = 12, &
+      lg_angular_momentum = 13, n_log_series = 13
+   character(len=*), parameter :: log_series_name(n_log_series) = [character(len=16) :: &
+      'step', 'time', 'dt', 'iterations', 'cutbacks', 'kinetic', 'strain', 'gravity', &
+      'external_work', 'damping_work', 'total', 'momentum', 'angular_momentum']
+
+   !> C's printf format of a real: as rodyn_output's real_str (17 significant digits,
+   !> an exponent of at least two digits).
+   character(kind=c_char, len=*), parameter :: real_format = c_char_'%.16E'//c_null_char
+
+   interface
+      !> strfromd (ISO C23; glibc >= 2.25): format one double, no varargs.
+      function c_strfromd(str, n, format, fp) bind(c, name='strfromd') result(r)
+         import :: c_char, c_size_t, c_double, c_int
+         character(kind=c_char), intent(out) :: str(*)  !< output, NUL-terminated
+         integer(c_size_t), value :: n                  !< room in str, NUL included
+         character(kind=c_char), intent(in) :: format(*) !< %E / %f / %g / %a format
+         real(c_double), value :: fp                    !< value
+         integer(c_int) :: r                            !< characters (without NUL)
+      end function c_strfromd
+   end interface
+
+   !> A string of its own length (rows of an array of texts differ in length).
+   type :: text_t
+      character(len=:), allocatable :: s !< the text
+   end type text_t
+
+   !> One line: its sizes, the fixed start of its CSV rows and its open HDF5 series.
+   type :: line_out_t
+      integer :: nn = 0                              !< nodes
+      integer :: ng = 0                              !< integration points
+      logical :: end_held(2) = .false.               !< ends written to dynamic_ends.csv
+      type(text_t), allocatable :: node_head(:)      !< (nn) ',LINE,node,s_m'
+      type(text_t), allocatable :: point_head(:)     !< (ng) ',LINE,element,point,s_m'
+      type(text_t) :: end_head(2)                    !< ',LINE,A' and ',LINE,B'
+      type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
+   end type line_out_t
+
+   !> The open output of a dynamic run: file units, the HDF5 file and its open datasets,
+   !> scratch allocated once at open, and counters. Components are private except the
+   !> counters, which callers may read.
+   type :: dynamic_writer_t
+      private
+      logical :: is_open = .false.                   !< between open and close
+      logical :: csv = .false.                       !< CSV tables requested
+      logical :: hdf5 = .false.                      !< dynamic.h5 requested
+      character(len=:), allocatable :: dir           !< output folder
+      character(len=:), allocatable :: deck_file     !< deck path, for status.txt
+      integer :: u_nodes = -1                        !< unit of dynamic_nodes.csv
+      integer :: u_elements = -1                     !< unit of dynamic_elements.csv
+      integer :: u_ends = -1                         !< unit of dynamic_ends.csv
+      integer :: u_log = -1                          !< unit of dynamic_log.csv
+      type(hdf5_file_t) :: h5                        !< dynamic.h5
+      type(hdf5_series_t) :: time                    !< /dynamic/time
+      type(hdf5_series_t) :: log(n_log_series)       !< /dynamic/log/*
+      type(line_out_t), allocatable :: line(:)       !< per line
+      type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
+      integer :: n_pending = 0                       !< rows held in pending
+      type(run_summary_t) :: progress                !< what status.txt says while running
+      real(wp) :: static_wall_time = 0.0_wp          !< wall time before open [s]
+      integer(i8) :: clock_start = 0_i8              !< system_clock count at open
+      integer(i8) :: clock_status = 0_i8             !< count at the last status.txt
+      integer, public :: frames = 0                  !< frames written
+      integer, public :: steps = 0                   !< step rows written
+      real(wp), public :: flush_time = 0.0_wp        !< wall time spent flushing [s]
+   end type dynamic_writer_t
+
+contains
+
+   ! ------------------------------------------------------------------ public
+
+   !> Create the dynamic output files in folder `dir` (created if missing) as
+   !> model%output asks, write their headers, the static datasets of dynamic.h5 and a
+   !> status.txt saying the run is in progress. No frame is written: call
+   !> dynamic_output_frame for the initial state if it is wanted. On failure everything
+   !> opened is closed again (dynamic_output_close may still be called).
+   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary)
+      type(dynamic_writer_t), intent(inout) :: w        !< the writer (not open)
+      character(len=*), intent(in) :: dir               !< output folder
+      type(model_t), intent(in) :: model                !< model (title, deck, options)
+      type(line_result_t), intent(in) :: lines(:)       !< initial state: names, sizes
+      type(error_t), intent(inout) :: err               !< status
+      type(run_summary_t), intent(in), optional :: static_summary !< the static run,
+                                                        !< kept in status.txt meanwhile
+      character(len=*), parameter :: where = 'dynamic_output_open'
+      type(error_t) :: e
+      integer :: i
+      if (has_error(err)) return
+      if (w%is_open) then
+         call set_error(err, stat_io, where//': the writer is already open')
+         return
+      end if
+      w%dir = dir
+      w%deck_file = text_of(model%deck_file)
+      w%csv = model%output%csv
+      w%hdf5 = model%output%hdf5
+      w%frames = 0
+      w%steps = 0
+      w%n_pending = 0
+      w%flush_time = 0.0_wp
+      w%progress = run_summary_t()
+      if (present(static_summary)) w%progress = static_summary
+      w%progress%complete = .false.
+      w%progress%status = running
+      w%progress%dynamic = .true.
+      w%progress%time_reached = 0.0_wp
+      w%progress%steps = 0
+      w%progress%step_iterations = 0
+      w%progress%step_cutbacks = 0
+      w%static_wall_time = w%progress%wall_time
+      call system_clock(w%clock_start)
+      w%clock_status = w%clock_start
+      do i = 1, size(lines)
+         if (.not. line_complete(lines(i))) then
+            call set_error(err, stat_io, where//': results of line '''// &
+               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
+            return
+         end if
+      end do
+      call output_write_status(dir, w%progress, e, w%deck_file)  ! also makes the folder
+      allocate (w%line(size(lines)), w%pending(log_block))
+      do i = 1, size(lines)
+         call set_up_line(w%line(i), lines(i))
+      end do
+      if (w%csv) then
+         call open_csv(w, nodes_csv, nodes_head, w%u_nodes, e)
+         call open_csv(w, elements_csv, elements_head, w%u_elements, e)
+         call open_csv(w, ends_csv, ends_head, w%u_ends, e)
+         call open_csv(w, log_csv, log_head, w%u_log, e)
+      end if
+      if (w%hdf5) call create_h5(w, model, lines, e)
+      if (has_error(e)) then
+         call release_all(w, e)
+         call set_error(err, e%code, e%message)
+         return
+      end if
+      w%is_open = .true.
+   end subroutine dynamic_output_open
+
+   !> Append one output frame at time `time`: every line's nodes, integration points
+   !> and held ends, to the CSV tables and dynamic.h5 (with the step rows still held),
+   !> flush them, and update status.txt if it is older than status_interval.
+   subroutine dynamic_output_frame(w, time, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      real(wp), intent(in) :: time                  !< time of the frame [s]
+      type(line_result_t), intent(in) :: lines(:)   !< state, lines and sizes as at open
+      type(error_t), intent(inout) :: err           !< status
+      character(len=*), parameter :: where = 'dynamic_output_frame'
+      type(error_t) :: e
+      integer :: i
+      if (has_error(err)) return
+      if (.not. w%is_open) then
+         call set_error(err, stat_io, where//': the writer is not open')
+         return
+      end if
+      if (size(lines) /= size(w%line)) then
+         call set_error(err, stat_io, where//': number of lines differs from the one at open')
+         return
+      end if
+      do i = 1, size(lines)
+         if (.not. line_fits(lines(i), w%line(i))) then
+            call set_error(err, stat_io, where//': results of line '''// &
+               trim(lines(i)%name)//''' are missing or of other sizes than at open')
+            return
+         end if
+      end do
+      if (w%csv) call write_frame_csv(w, time, lines, e)
+      if (w%hdf5) call write_frame_h5(w, time, lines, e)
+      if (.not. has_error(e)) then
+         w%frames = w%frames + 1
+         w%progress%time_reached = time
+         w%progress%steps = w%steps
+         if (seconds_since(w%clock_status) >= status_interval) then
+            w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
+            call output_write_status(w%dir, w%progress, e, w%deck_file)
+            call system_clock(w%clock_status)
+         end if
+      end if
+      if (has_error(e)) call set_error(err, e%code, e%message)
+   end subroutine dynamic_output_frame
+
+   !> Append one time step's row: to dynamic_log.csv at once (flushed), to dynamic.h5
+   !> with the next frame (or when log_block rows are held).
+   subroutine dynamic_output_step(w, log, err)
+      type(dynamic_writer_t), intent(inout) :: w  !< open writer
+      type(step_log_t), intent(in) :: log         !< the step's effort and balances
+      type(error_t), intent(inout) :: err         !< status
+      type(error_t) :: e
+      character(len=row_len) :: row
+      character(len=512) :: msg
+      integer :: n, ios
+      if (has_error(err)) return
+      if (.not. w%is_open) then
+         call set_error(err, stat_io, 'dynamic_output_step: the writer is not open')
+         return
+      end if
+      if (w%csv) then
+         n = 0
+         call put_int(row, n, log%step)
+         call put_real(row, n, log%time)
+         call put_real(row, n, log%dt)
+         call put_int(row, n, log%iterations)
+         call put_int(row, n, log%cutbacks)
+         call put_reals(row, n, [log%kinetic, log%strain, log%gravity, log%external_work, &
+            log%damping_work, log%total, log%momentum, log%angular_momentum])
+         write (w%u_log, '(a)', iostat=ios, iomsg=msg) row(:n)
+         if (ios == 0) call flush_unit(w, w%u_log, ios, msg)
+         if (ios /= 0) call set_error(e, stat_io, 'dynamic_output_step: cannot write '''// &
+            path_join(w%dir, log_csv)//''': '//trim(msg))
+      end if
+      if (w%hdf5) then
+         w%n_pending = w%n_pending + 1
+         w%pending(w%n_pending) = log
+         if (w%n_pending == log_block) then
+            call write_pending_log(w, e)
+            call flush_h5(w, e)
+         end if
+      end if
+      w%steps = w%steps + 1
+      w%progress%step_iterations = w%progress%step_iterations + log%iterations
+      w%progress%step_cutbacks = w%progress%step_cutbacks + log%cutbacks
+      if (has_error(e)) call set_error(err, e%code, e%message)
+   end subroutine dynamic_output_step
+
+   !> Finish the run's output: write the step rows still held and the final attributes
+   !> of dynamic.h5 (complete, status, steps, time reached, ...), close every file and
+   !> rewrite status.txt from `summary` with the dynamic keys. Acts even when err
+   !> already holds an error (a failed run still closes its files); an output failure
+   !> is then recorded only if err was clear. Does nothing for a writer never opened.
+   subroutine dynamic_output_close(w, summary, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer (closed on return)
+      type(run_summary_t), intent(in) :: summary   !< how the run went
+      type(error_t), intent(inout) :: err          !< status
+      type(run_summary_t) :: s
+      type(error_t) :: e
+      s = summary
+      s%dynamic = .true.
+      if (w%is_open .and. w%hdf5) then
+         call write_pending_log(w, e)
+         call write_final_attributes(w, s, e)
+      end if
+      call release_all(w, e)
+      if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file))
+      if (has_error(e)) call set_error(err, e%code, e%message)
+   end subroutine dynamic_output_close
+
+   ! ------------------------------------------------------------------ set-up
+
+   !> The fixed start of each CSV row of a line (after the time column).
+   subroutine set_up_line(lo, r)
+      type(line_out_t), intent(out) :: lo       !< the line's output state
+      type(line_result_t), intent(in) :: r      !< the line at open
+      character(len=row_len) :: row
+      character(len=1), parameter :: end_name(2) = ['A', 'B']
+      integer :: k, n
+      lo%nn = size(r%node_s)
+      lo%ng = size(r%gp_s)
+      lo%end_held = r%end_held
+      allocate (lo%node_head(lo%nn), lo%point_head(lo%ng))
+      do k = 1, lo%nn
+         n = 0
+         call put_text(row, n, ','//csv_name(r%name))
+         call put_int(row, n, k)
+         call put_real(row, n, r%node_s(k))
+         lo%node_head(k)%s = row(:n)
+      end do
+      do k = 1, lo%ng
+         n = 0
+         call put_text(row, n, ','//csv_name(r%name))
+         call put_int(row, n, r%gp_element(k))
+         call put_int(row, n, r%gp_point(k))
+         call put_real(row, n, r%gp_s(k))
+         lo%point_head(k)%s = row(:n)
+      end do
+      do k = 1, 2
+         lo%end_head(k)%s = ','//csv_name(r%name)//','//end_name(k)
+      end do
+   end subroutine set_up_line
+
+   !> Create (truncate) one CSV table and write its header.
+   subroutine open_csv(w, name, header, u, err)
+      type(dynamic_writer_t), intent(inout) :: w  !< writer (folder)
+      character(len=*), intent(in) :: name        !< file name
+      character(len=*), intent(in) :: header      !< header row
+      integer, intent(out) :: u                   !< unit (-1 on failure)
+      type(error_t), intent(inout) :: err         !< status
+      character(len=512) :: msg
+      integer :: ios
+      u = -1
+      if (has_error(err)) return
+      open (newunit=u, file=path_join(w%dir, name), status='replace', action='write', &
+         form='formatted', access='sequential', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         u = -1
+      else
+         write (u, '(a)', iostat=ios, iomsg=msg) header
+         if (ios == 0) call flush_unit(w, u, ios, msg)
+      end if
+      if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_open: cannot write '''// &
+         path_join(w%dir, name)//''': '//trim(msg))
+   end subroutine open_csv
+
+   !> Create dynamic.h5: root attributes, /deck, each line's static datasets and empty
+   !> time histories, the empty step log; keep the histories open; flush.
+   subroutine create_h5(w, model, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer
+      type(model_t), intent(in) :: model           !< model
+      type(line_result_t), intent(in) :: lines(:)  !< initial state
+      type(error_t), intent(inout) :: err          !< status
+      character(len=:), allocatable :: g
+      integer :: i, k
+      if (has_error(err)) return
+      call hdf5_create_file(w%h5, path_join(w%dir, dynamic_h5), err)
+      if (has_error(err)) return
+      associate (h5 => w%h5)
+         call hdf5_write_attribute(h5, '/', 'program', 'rodyn', err)
+         call hdf5_write_attribute(h5, '/', 'version', rodyn_version, err)
+         call hdf5_write_attribute(h5, '/', 'deck_file', text_of(model%deck_file), err)
+         call hdf5_write_attribute(h5, '/', 'title', text_of(model%title), err)
+         call hdf5_write_attribute(h5, '/', 'units', units_si, err)
+         call hdf5_write_attribute(h5, '/', 'complete', 0, err)
+         call hdf5_write_attribute(h5, '/', 'status', running, err)
+         call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
+         call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
+         call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
+         call describe(h5, '/deck', '-', 'full text of the input deck, includes expanded', &
+            err)
+         call hdf5_create_group(h5, '/dynamic', err)
+         call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
+            model%dynamic%output_interval, err)
+         call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
+         call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
+         call hdf5_open_series(h5, '/dynamic/time', w%time, err)
+         do i = 1, size(lines)
+            g = '/dynamic/'//group_name(lines(i)%name, i)
+            call create_h5_line(h5, g, lines(i), err)
+            do k = 1, n_line_series
+               call hdf5_open_series(h5, g//'/'//trim(line_series_name(k)), &
+                  w%line(i)%series(k), err)
+            end do
+         end do
+         call create_h5_log(h5, err)
+         do k = 1, n_log_series
+            call hdf5_open_series(h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
+               err)
+         end do
+      end associate
+      call flush_h5(w, err)
+   end subroutine create_h5
+
+   !> One line's group: its static datasets and its empty time histories.
+   subroutine create_h5_line(h5, g, r, err)
+      type(hdf5_file_t), intent(in) :: h5    !< open file
+      character(len=*), intent(in) :: g      !< group path
+      type(line_result_t), intent(in) :: r   !< the line at open
+      type(error_t), intent(inout) :: err    !< status
+      integer :: nn, ng
+      nn = size(r%node_s)
+      ng = size(r%gp_s)
+      call hdf5_create_group(h5, g, err)
+      call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
+      call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
+      call describe(h5, g//'/node_s', 'm', 'unstretched arc length of the nodes', err)
+      call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
+      call describe(h5, g//'/gp_s', 'm', 'unstretched arc length of the integration points', &
+         err)
+      call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
+      call describe(h5, g//'/gp_element', '-', &
+         'element of each integration point, numbered from 1 along the line', err)
+      call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
+      call describe(h5, g//'/gp_point', '-', &
+         'integration point number within its element, from 1', err)
+      call history(g//'/x', nn, 'm', 'x of the nodes (global axes); row per frame')
+      call history(g//'/y', nn, 'm', 'y of the nodes (global axes); row per frame')
+      call history(g//'/z', nn, 'm', 'z of the nodes (global axes); row per frame')
+      call history(g//'/effective_tension', ng, 'N', &
+         'effective tension N3 along d3, positive in tension; row per frame')
+      call history(g//'/moment_1', ng, 'N m', 'bending moment M1 about d1; row per frame')
+      call history(g//'/moment_2', ng, 'N m', 'bending moment M2 about d2; row per frame')
+      call history(g//'/torque', ng, 'N m', 'torsional moment M3 about d3; row per frame')
+      call history(g//'/bending_curvature', ng, '1/m', &
+         'total bending curvature sqrt(K1^2 + K2^2); row per frame')
+      call history(g//'/reactions', 12, 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
+         'force and moment of the support on the line, global axes; row per frame; '// &
+         'columns Fx, Fy, Fz, Mx, My, Mz at end A, then at end B; zero at a free end')
+      call hdf5_write_attribute(h5, g//'/reactions', 'end_held', merge(1, 0, r%end_held), &
+         err)
+      call history(g//'/end_tension', 2, 'N', 'magnitude of the support force, '// &
+         'sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B')
+   contains
+      !> An empty history of n values per frame, with its units and description.
+      subroutine history(path, n, units, description)
+         character(len=*), intent(in) :: path         !< dataset path
+         integer, intent(in) :: n                     !< values per frame
+         character(len=*), intent(in) :: units        !< units text
+         character(len=*), intent(in) :: description  !< one-line description
+         call hdf5_create_series(h5, path, n, err, chunk_steps=max(8, chunk_bytes/(8*n)))
+         call describe(h5, path, units, description, err)
+      end subroutine history
+   end subroutine create_h5_line
+
+   !> /dynamic/log: one empty 1-D dataset per quantity of step_log_t (momenta: 3 columns).
+   subroutine create_h5_log(h5, err)
+      type(hdf5_file_t), intent(in) :: h5    !< open file
+      type(error_t), intent(inout) :: err    !< status
+      character(len=*), parameter :: g = '/dynamic/log/'
+      call hdf5_create_group(h5, '/dynamic/log', err)
+      call column(lg_step, '-', 'step number, from 1', .true.)
+      call column(lg_time, 's', 'time at the end of the step', .false.)
+      call column(lg_dt, 's', 'step length used', .false.)
+      call column(lg_iterations, '-', 'Newton iterations of the step', .true.)
+      call column(lg_cutbacks, '-', 'halvings needed by the step', .true.)
+      call column(lg_kinetic, 'J', 'kinetic energy', .false.)
+      call column(lg_strain, 'J', 'stored (strain) energy', .false.)
+      call column(lg_gravity, 'J', 'potential of the weight', .false.)
+      call column(lg_external_work, 'J', &
+         'work done on the line since t = 0 by prescribed motions and loads', .false.)
+      call column(lg_damping_work, 'J', 'energy taken out by damping since t = 0', .false.)
+      call column(lg_total, 'J', 'kinetic + strain + gravity', .false.)
+      call hdf5_create_series(h5, g//'momentum', 3, err, chunk_steps=log_chunk)
+      call describe(h5, g//'momentum', 'kg m/s', &
+         'total linear momentum; columns x, y, z (global axes)', err)
+      call hdf5_create_series(h5, g//'angular_momentum', 3, err, chunk_steps=log_chunk)
+      call describe(h5, g//'angular_momentum', 'kg m2/s', &
+         'total angular momentum about the origin; columns x, y, z (global axes)', err)
+   contains
+      !> One 1-D dataset of the log.
+      subroutine column(k, units, description, integers)
+         integer, intent(in) :: k                     !< lg_* index
+         character(len=*), intent(in) :: units        !< units text
+         character(len=*), intent(in) :: description  !< one-line description
+         logical, intent(in) :: integers              !< integer values
+         call hdf5_create_series_1d(h5, g//trim(log_series_name(k)), err, &
+            chunk_steps=log_chunk, integers=integers)
+         call describe(h5, g//trim(log_series_name(k)), units, description, err)
+      end subroutine column
+   end subroutine create_h5_log
+
+   ! ------------------------------------------------------------------ frames
+
+   !> The frame's rows of dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv.
+   subroutine write_frame_csv(w, time, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< open writer
+      real(wp), intent(in) :: time                 !< time of the frame [s]
+      type(line_result_t), intent(in) :: lines(:)  !< state
+      type(error_t), intent(inout) :: err          !< status
+      character(len=row_len) :: row
+      character(len=64) :: t
+      character(len=512) :: msg
+      integer :: nt, n, i, k, j, ios
+      if (has_error(err)) return
+      nt = 0
+      call format_real(time, t, nt)
+      ios = 0
+      msg = ''
+      do i = 1, size(lines)
+         associate (r => lines(i), lo => w%line(i))
+            do k = 1, lo%nn
+               n = 0
+               call put_text(row, n, t(:nt)//lo%node_head(k)%s)
+               call put_reals(row, n, r%node_x(:, k))
+               if (ios == 0) write (w%u_nodes, '(a)', iostat=ios, iomsg=msg) row(:n)
+            end do
+         end associate
+      end do
+      if (ios == 0) call flush_unit(w, w%u_nodes, ios, msg)
+      call check_csv(ios, msg, nodes_csv)
+      do i = 1, size(lines)
+         associate (r => lines(i), lo => w%line(i))
+            do k = 1, lo%ng
+               n = 0
+               call put_text(row, n, t(:nt)//lo%point_head(k)%s)
+               call put_reals(row, n, [r%tension(k), r%moment(:, k), r%torque(k), &
+                  hypot(r%curvature(1, k), r%curvature(2, k))])
+               if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
+            end do
+         end associate
+      end do
+      if (ios == 0) call flush_unit(w, w%u_elements, ios, msg)
+      call check_csv(ios, msg, elements_csv)
+      do i = 1, size(lines)
+         associate (r => lines(i), lo => w%line(i))
+            do j = 1, 2
+               if (.not. lo%end_held(j)) cycle
+               n = 0
+               call put_text(row, n, t(:nt)//lo%end_head(j)%s)
+               call put_reals(row, n, [r%reaction(:, j), norm2(r%reaction(1:3, j))])
+               if (ios == 0) write (w%u_ends, '(a)', iostat=ios, iomsg=msg) row(:n)
+            end do
+         end associate
+      end do
+      if (ios == 0) call flush_unit(w, w%u_ends, ios, msg)
+      call check_csv(ios, msg, ends_csv)
+   contains
+      !> Record the first failed write of a table.
+      subroutine check_csv(ios, msg, name)
+         integer, intent(in) :: ios              !< status of the writes
+         character(len=*), intent(in) :: msg     !< message of the failure
+         character(len=*), intent(in) :: name    !< file name
+         if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_frame: cannot write '''// &
+            path_join(w%dir, name)//''': '//trim(msg))
+      end subroutine check_csv
+   end subroutine write_frame_csv
+
+   !> The frame in dynamic.h5 (and the step rows held), then flush the file.
+   subroutine write_frame_h5(w, time, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< open writer
+      real(wp), intent(in) :: time                 !< time of the frame [s]
+      type(line_result_t), intent(in) :: lines(:)  !< state
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i
+      if (has_error(err)) return
+      do i = 1, size(lines)
+         associate (r => lines(i), s => w%line(i)%series)
+            call hdf5_append_steps(s(ls_x), r%node_x(1, :), err)
+            call hdf5_append_steps(s(ls_y), r%node_x(2, :), err)
+            call hdf5_append_steps(s(ls_z), r%node_x(3, :), err)
+            call hdf5_append_steps(s(ls_tension), r%tension, err)
+            call hdf5_append_steps(s(ls_moment_1), r%moment(1, :), err)
+            call hdf5_append_steps(s(ls_moment_2), r%moment(2, :), err)
+            call hdf5_append_steps(s(ls_torque), r%torque, err)
+            call hdf5_append_steps(s(ls_curvature), &
+               hypot(r%curvature(1, :), r%curvature(2, :)), err)
+            call hdf5_append_steps(s(ls_reactions), reshape(r%reaction, [12]), err)
+            call hdf5_append_steps(s(ls_end_tension), &
+               [norm2(r%reaction(1:3, 1)), norm2(r%reaction(1:3, 2))], err)
+         end associate
+      end do
+      call hdf5_append_steps(w%time, [time], err)
+      call write_pending_log(w, err)
+      call flush_h5(w, err)
+   end subroutine write_frame_h5
+
+   !> Append the step rows held in memory to /dynamic/log and forget them.
+   subroutine write_pending_log(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< open writer
+      type(error_t), intent(inout) :: err          !< status
+      real(wp), allocatable :: vec(:, :)
+      integer :: n, k
+      n = w%n_pending
+      if (n == 0 .or. has_error(err)) return
+      associate (p => w%pending(1:n), s => w%log)
+         call hdf5_append_steps(s(lg_step), p%step, err)
+         call hdf5_append_steps(s(lg_time), p%time, err)
+         call hdf5_append_steps(s(lg_dt), p%dt, err)
+         call hdf5_append_steps(s(lg_iterations), p%iterations, err)
+         call hdf5_append_steps(s(lg_cutbacks), p%cutbacks, err)
+         call hdf5_append_steps(s(lg_kinetic), p%kinetic, err)
+         call hdf5_append_steps(s(lg_strain), p%strain, err)
+         call hdf5_append_steps(s(lg_gravity), p%gravity, err)
+         call hdf5_append_steps(s(lg_external_work), p%external_work, err)
+         call hdf5_append_steps(s(lg_damping_work), p%damping_work, err)
+         call hdf5_append_steps(s(lg_total), p%total, err)
+         allocate (vec(3, n))
+         do k = 1, n
+            vec(:, k) = p(k)%momentum
+         end do
+         call hdf5_append_steps(s(lg_momentum), vec, err)
+         do k = 1, n
+            vec(:, k) = p(k)%angular_momentum
+         end do
+         call hdf5_append_steps(s(lg_angular_momentum), vec, err)
+      end associate
+      w%n_pending = 0
+   end subroutine write_pending_log
+
+   !> Final attributes of dynamic.h5 from the run summary.
+   subroutine write_final_attributes(w, s, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< open writer
+      type(run_summary_t), intent(in) :: s         !< how the run went
+      type(error_t), intent(inout) :: err          !< status
+      associate (h5 => w%h5)
+         call hdf5_write_attribute(h5, '/', 'complete', merge(1, 0, s%complete), err)
+         call hdf5_write_attribute(h5, '/', 'status', one_line(status_of(s)), err)
+         call hdf5_write_attribute(h5, '/dynamic', 'frames', w%frames, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'steps', s%steps, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'time_reached_s', s%time_reached, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'step_iterations', s%step_iterations, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'step_cutbacks', s%step_cutbacks, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'wall_time_s', s%wall_time, err)
+      end associate
+   end subroutine write_final_attributes
+
+   ! ------------------------------------------------------------------ files
+
+   !> Close every file and dataset of the writer (errors recorded in err) and free its
+   !> scratch; keeps dir and deck_file for status.txt.
+   subroutine release_all(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i, k
+      call close_unit(w%u_nodes, nodes_csv)
+      call close_unit(w%u_elements, elements_csv)
+      call close_unit(w%u_ends, ends_csv)
+      call close_unit(w%u_log, log_csv)
+      call hdf5_close_series(w%time, err)
+      do k = 1, n_log_series
+         call hdf5_close_series(w%log(k), err)
+      end do
+      if (allocated(w%line)) then
+         do i = 1, size(w%line)
+            do k = 1, n_line_series
+               call hdf5_close_series(w%line(i)%series(k), err)
+            end do
+         end do
+         deallocate (w%line)
+      end if
+      call hdf5_close_file(w%h5, err)
+      if (allocated(w%pending)) deallocate (w%pending)
+      w%n_pending = 0
+      w%is_open = .false.
+   contains
+      !> Close a CSV unit if open.
+      subroutine close_unit(u, name)
+         integer, intent(inout) :: u             !< unit (-1: not open)
+         character(len=*), intent(in) :: name    !< file name, for the message
+         integer :: ios
+         character(len=512) :: msg
+         if (u < 0) return
+         close (u, iostat=ios, iomsg=msg)
+         u = -1
+         if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_close: cannot '// &
+            'write '''//path_join(text_of(w%dir), name)//''': '//trim(msg))
+      end subroutine close_unit
+   end subroutine release_all
+
+   !> Flush a CSV unit, timing it.
+   subroutine flush_unit(w, u, ios, msg)
+      type(dynamic_writer_t), intent(inout) :: w  !< writer (flush_time)
+      integer, intent(in) :: u                    !< unit
+      integer, intent(out) :: ios                 !< status
+      character(len=*), intent(inout) :: msg      !< message on failure
+      integer(i8) :: c0
+      call system_clock(c0)
+      flush (u, iostat=ios, iomsg=msg)
+      w%flush_time = w%flush_time + seconds_since(c0)
+   end subroutine flush_unit
+
+   !> Flush dynamic.h5, timing it.
+   subroutine flush_h5(w, err)
+      type(dynamic_writer_t), intent(inout) :: w  !< writer (flush_time)
+      type(error_t), intent(inout) :: err         !< status
+      integer(i8) :: c0
+      call system_clock(c0)
+      call hdf5_flush(w%h5, err)
+      w%flush_time = w%flush_time + seconds_since(c0)
+   end subroutine flush_h5
+
+   !> Attach the `units` and `description` attributes to a dataset.
+   subroutine describe(h5, path, units, description, err)
+      type(hdf5_file_t), intent(in) :: h5           !< open file
+      character(len=*), intent(in) :: path          !< dataset path
+      character(len=*), intent(in) :: units         !< units text ('-': none)
+      character(len=*), intent(in) :: description  !< one-line description
+      type(error_t), intent(inout) :: err           !< status
+      call hdf5_write_attribute(h5, path, 'units', units, err)
+      call hdf5_write_attribute(h5, path, 'description', description, err)
+   end subroutine describe
+
+   ! ------------------------------------------------------------------ checks
+
+   !> Whether every array of a line result is allocated with consistent sizes.
+   pure logical function line_complete(r)
+      type(line_result_t), intent(in) :: r  !< line result
+      integer :: nn, ng
+      line_complete = allocated(r%node_s) .and. allocated(r%node_x) .and. &
+         allocated(r%gp_element) .and. allocated(r%gp_point) .and. allocated(r%gp_s) .and. &
+         allocated(r%tension) .and. allocated(r%shear) .and. allocated(r%moment) .and. &
+         allocated(r%torque) .and. allocated(r%curvature)
+      if (.not. line_complete) return
+      nn = size(r%node_s)
+      ng = size(r%gp_s)
+      line_complete = all(shape(r%node_x) == [3, nn]) .and. size(r%gp_element) == ng .and. &
+         size(r%gp_point) == ng .and. line_fits_sizes(r, nn, ng)
+   end function line_complete
+
+   !> Whether a frame's line has the sizes the line had at open.
+   pure logical function line_fits(r, lo)
+      type(line_result_t), intent(in) :: r   !< line result of the frame
+      type(line_out_t), intent(in) :: lo     !< the line at open
+      line_fits = allocated(r%node_x) .and. allocated(r%tension) .and. &
+         allocated(r%moment) .and. allocated(r%torque) .and. allocated(r%curvature)
+      if (.not. line_fits) return
+      line_fits = all(shape(r%node_x) == [3, lo%nn]) .and. line_fits_sizes(r, lo%nn, lo%ng)
+   end function line_fits
+
+   !> Whether the integration-point arrays written per frame have ng points.
+   pure logical function line_fits_sizes(r, nn, ng)
+      type(line_result_t), intent(in) :: r  !< line result (arrays allocated)
+      integer, intent(in) :: nn             !< nodes
+      integer, intent(in) :: ng             !< integration points
+      line_fits_sizes = size(r%node_x, 2) == nn .and. size(r%tension) == ng .and. &
+         all(shape(r%moment) == [2, ng]) .and. size(r%torque) == ng .and. &
+         all(shape(r%curvature) == [3, ng])
+   end function line_fits_sizes
+
+   ! ------------------------------------------------------------------ text helpers
+
+   !> Append text at row(n+1:).
+   pure subroutine put_text(row, n, text)
+      character(len=*), intent(inout) :: row  !< row being built
+      integer, intent(inout) :: n             !< characters used
+      character(len=*), intent(in) :: text    !< text to append
+      row(n + 1:n + len(text)) = text
+      n = n + len(text)
+   end subroutine put_text
+
+   !> Append an integer field (',' first unless the row is empty), as '(i0)' writes it
+   !> (digits by hand: an internal write costs ~2 us, as much as a whole row).
+   pure subroutine put_int(row, n, i)
+      character(len=*), intent(inout) :: row  !< row being built
+      integer, intent(inout) :: n             !< characters used
+      integer, intent(in) :: i                !< value
+      character(len=12) :: buf
+      integer :: k, j
+      integer(i8) :: v
+      if (n > 0) call put_text(row, n, ',')
+      v = abs(int(i, i8))
+      k = len(buf) + 1
+      do
+         k = k - 1
+         j = int(mod(v, 10_i8))
+         buf(k:k) = achar(iachar('0') + j)
+         v = v/10_i8
+         if (v == 0_i8) exit
+      end do
+      if (i < 0) then
+         k = k - 1
+         buf(k:k) = '-'
+      end if
+      call put_text(row, n, buf(k:))
+   end subroutine put_int
+
+   !> Append a real field (',' first unless the row is empty).
+   subroutine put_real(row, n, x)
+      character(len=*), intent(inout) :: row  !< row being built
+      integer, intent(inout) :: n             !< characters used
+      real(wp), intent(in) :: x               !< value
+      if (n > 0) call put_text(row, n, ',')
+      call format_real(x, row, n)
+   end subroutine put_real
+
+   !> Append real fields, each preceded by ','.
+   subroutine put_reals(row, n, x)
+      character(len=*), intent(inout) :: row  !< row being built
+      integer, intent(inout) :: n             !< characters used (> 0)
+      real(wp), intent(in) :: x(:)            !< values
+      integer :: k
+      do k = 1, size(x)
+         call put_text(row, n, ',')
+         call format_real(x(k), row, n)
+      end do
+   end subroutine put_reals
+
+   !> Write x at row(n+1:) as rodyn_output's real_str does: 17 significant digits, no
+   !> blanks, exponent of two digits unless three are needed (1.2345678901234567E+05).
+   !> row needs 26 free characters.
+   subroutine format_real(x, row, n)
+      real(wp), intent(in) :: x               !< value
+      character(len=*), intent(inout) :: row  !< row being built
+      integer, intent(inout) :: n             !< characters used
+      character(len=32) :: buf
+      integer :: k
+      if (ieee_is_finite(x)) then
+         k = c_strfromd(row(n + 1:), int(len(row) - n, c_size_t), real_format, &
+            real(x, c_double))
+         n = n + min(k, len(row) - n - 1)
+      else
+         write (buf, '(es25.16e3)') x
+         call put_text(row, n, trim(adjustl(buf)))
+      end if
+   end subroutine format_real
+
+   !> dir/name (no doubled slash).
+   pure function path_join(dir, name) result(path)
+      character(len=*), intent(in) :: dir   !< folder
+      character(len=*), intent(in) :: name  !< file name
+      character(len=:), allocatable :: path !< joined path
+      if (len_trim(dir) == 0) then
+         path = name
+      else if (dir(len_trim(dir):len_trim(dir)) == '/') then
+         path = trim(dir)//name
+      else
+         path = trim(dir)//'/'//name
+      end if
+   end function path_join
+
+   !> A line name as a CSV field: as given, quoted only if it holds a comma or quote.
+   pure function csv_name(name) result(s)
+      character(len=*), intent(in) :: name  !< line name
+      character(len=:), allocatable :: s    !< field
+      integer :: i
+      if (scan(trim(name), ',"') == 0) then
+         s = trim(name)
+         return
+      end if
+      s = '"'
+      do i = 1, len_trim(name)
+         if (name(i:i) == '"') then
+            s = s//'""'
+         else
+            s = s//name(i:i)
+         end if
+      end do
+      s = s//'"'
+   end function csv_name
+
+   !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
+   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time' and 'log' used in
+   !> /dynamic (deck names are upper case, so this does not happen from a deck).
+   pure function group_name(name, i) result(s)
+      character(len=*), intent(in) :: name  !< line name
+      integer, intent(in) :: i              !< line number
+      character(len=:), allocatable :: s    !< group name
+      character(len=16) :: buf
+      integer :: k
+      s = trim(name)
+      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log') then
+         write (buf, '(i0)') i
+         s = 'line_'//trim(buf)
+      end if
+      do k = 1, len(s)
+         if (s(k:k) == '/') s(k:k) = '_'
+      end do
+   end function group_name
+
+   !> The time-integration scheme's name ('EMC', ...).
+   pure function scheme_name(scheme) result(s)
+      integer, intent(in) :: scheme         !< scheme_* constant
+      character(len=:), allocatable :: s    !< its name
+      if (scheme >= 1 .and. scheme <= size(scheme_names)) then
+         s = trim(scheme_names(scheme))
+      else
+         s = 'UNKNOWN'
+      end if
+   end function scheme_name
+
+   !> The text of an optional allocatable string ('' when unallocated).
+   pure function text_of(text) result(s)
+      character(len=:), allocatable, intent(in) :: text !< string, maybe unallocated
+      character(len=:), allocatable :: s                 !< its value or ''
+      if (allocated(text)) then
+         s = text
+      else
+         s = ''
+      end if
+   end function text_of
+
+   !> The status message of a summary, with a default when none was set.
+   pure function status_of(summary) result(s)
+      type(run_summary_t), intent(in) :: summary !< how the run went
+      character(len=:), allocatable :: s         !< message
+      if (allocated(summary%status)) then
+         s = summary%status
+      else if (summary%complete) then
+         s = 'complete'
+      else
+         s = 'incomplete'
+      end if
+   end function status_of
+
+   !> Text on one line: line breaks and tabs become blanks, trailing blanks dropped.
+   pure function one_line(text) result(s)
+      character(len=*), intent(in) :: text  !< text
+      character(len=:), allocatable :: s    !< same text on one line
+      integer :: k
+      s = text
+      do k = 1, len(s)
+         if (iachar(s(k:k)) < 32) s(k:k) = ' '
+      end do
+      s = trim(s)
+   end function one_line
+
+   !> Wall time since a system_clock count [s].
+   real(wp) function seconds_since(c0)
+      integer(i8), intent(in) :: c0  !< earlier count of system_clock
+      integer(i8) :: c, rate
+      call system_clock(c, rate)
+      seconds_since = real(c - c0, wp)/real(max(rate, 1_i8), wp)
+   end function seconds_since
+
+end module rodyn_output_dynamic
