@@ -13,6 +13,7 @@ module rodyn_assembly
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_rotation, only: cross
+   use rodyn_motion, only: amplitude_value
    use rodyn_shape, only: max_nen
    implicit none
    private
@@ -85,12 +86,13 @@ contains
       end do
    end subroutine supports_build
 
-   !> Full-value load vectors: consistent self-weight m g int N_a dS, and point loads.
+   !> Full-value load vectors: consistent self-weight m g int N_a dS, and point loads
+   !> (a load with an *AMPLITUDE enters the static analysis at its value at t = 0).
    subroutine loads_build(model, mesh, loads)
       type(model_t), intent(in) :: model  !< model
       type(mesh_t), intent(in) :: mesh    !< mesh
       type(loads_t), intent(out) :: loads !< loads
-      real(wp) :: fa(3, max_nen)
+      real(wp) :: fa(3, max_nen), fac
       integer :: e, l, p, a, node, i
       allocate (loads%gravity(3, mesh%n_nodes), loads%point(6, mesh%n_nodes))
       loads%gravity = 0.0_wp
@@ -108,8 +110,11 @@ contains
       if (.not. allocated(model%loads)) return
       do i = 1, size(model%loads)
          node = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
-         loads%point(1:3, node) = loads%point(1:3, node) + model%loads(i)%force
-         loads%point(4:6, node) = loads%point(4:6, node) + model%loads(i)%moment
+         fac = 1.0_wp
+         if (model%loads(i)%amplitude > 0) &
+            fac = amplitude_value(model%amplitudes(model%loads(i)%amplitude), 0.0_wp)
+         loads%point(1:3, node) = loads%point(1:3, node) + fac*model%loads(i)%force
+         loads%point(4:6, node) = loads%point(4:6, node) + fac*model%loads(i)%moment
       end do
    end subroutine loads_build
 
