@@ -6,8 +6,8 @@ module rodyn_run_dynamic
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t, has_error, set_error, stat_input
-   use rodyn_model, only: model_t, scheme_alpha
+   use rodyn_error, only: error_t, has_error, set_error
+   use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
@@ -46,9 +46,6 @@ contains
       character(len=:), allocatable :: msg
       msg = ''
       if (.not. model%dynamic%requested) return
-      if (model%dynamic%scheme == scheme_alpha) msg = '*DYNAMIC: SCHEME=ALPHA (the '// &
-         'dissipative scheme) is not available in this version; use EMC, MIDPOINT or '// &
-         'TRAPEZOIDAL'
       if (model%dynamic%rayleigh_beta > 0.0_wp) msg = '*DAMPING: BETA (stiffness-'// &
          'proportional damping) is not available in this version; use ALPHA only'
    end function dynamic_not_available

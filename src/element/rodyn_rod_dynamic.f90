@@ -4,11 +4,13 @@
 !>   EMC          S = C ((eps(q^n) + eps(q^{n+1}))/2 - eps0), B at q^{n+1/2}
 !>   MIDPOINT     S = C (eps(q^{n+1/2}) - eps0),                B at q^{n+1/2}
 !>   TRAPEZOIDAL  f = (f(q^n) + f(q^{n+1}))/2
+!>   ALPHA        S = C (eps(q_f) - eps0), B at q_f = (1 - w) q^n + w q^{n+1}, w = 1 - alpha_f
+!>                (generalized-alpha; the projection uses the directors of q_f too)
 !> With the EMC choice the work of the internal force over the step equals the change of
 !> stored energy exactly (strains quadratic in q), the root of energy conservation.
 module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
-   use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal
+   use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: shape_lagrange, max_nen
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
@@ -20,7 +22,8 @@ module rodyn_rod_dynamic
 contains
 
    !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
-   pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, fe, ke, want_k)
+   pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, wf, fe, ke, &
+                                       want_k)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -30,6 +33,7 @@ contains
       real(wp), intent(in) :: x1(3, p + 1)        !< positions at t_n+1 [m]
       real(wp), intent(in) :: d1(3, 3, p + 1)     !< directors at t_n+1
       integer, intent(in) :: scheme               !< scheme_* constant
+      real(wp), intent(in) :: wf                  !< ALPHA: weight of q^{n+1} in q_f [-]
       real(wp), intent(out) :: fe(6, p + 1)       !< projected internal force [N, N m]
       real(wp), intent(out) :: ke(:, :)           !< (6(p+1), 6(p+1)) tangent, if want_k
       logical, intent(in) :: want_k               !< form the tangent
@@ -38,11 +42,15 @@ contains
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
       type(rod_gp_t) :: k0, k1, km
+      real(wp) :: wq
       integer :: g, nen, nd, np
       nen = p + 1
       nd = 6*nen
-      xm(:, 1:nen) = 0.5_wp*(x0 + x1)
-      dm(:, :, 1:nen) = 0.5_wp*(d0 + d1)
+      ! evaluation point: the midpoint, or q_f for the generalized-alpha scheme
+      wq = 0.5_wp
+      if (scheme == scheme_alpha) wq = wf
+      xm(:, 1:nen) = (1.0_wp - wq)*x0 + wq*x1
+      dm(:, :, 1:nen) = (1.0_wp - wq)*d0 + wq*d1
       call rod_quadrature(p, np, xi, w, mask)
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
@@ -53,16 +61,16 @@ contains
          cg = c*mask(:, g)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
          select case (scheme)
-         case (scheme_midpoint)
+         case (scheme_midpoint, scheme_alpha)
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), dm(:, :, 1:nen), km)
             s = cg*(rod_strains(km) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+            call add_material(nd, cg, bl, br, wq*wj, ke)
             call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                  0.5_wp*wj, ke(1:nd, 1:nd))
+                                  wq*wj, ke(1:nd, 1:nd))
          case (scheme_trapezoidal)
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
             s = cg*(rod_strains(k0) - eps0(:, g))
@@ -89,7 +97,7 @@ contains
          end select
       end do
       call rod_project_qforce(nen, fq(:, :, 1:nen), dm(:, :, 1:nen), fe)
-      if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, 0.5_wp, ke(1:nd, 1:nd))
+      if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, wq, ke(1:nd, 1:nd))
    end subroutine rod_element_dynamic
    !> ke += f bl^T diag(cg) br over the strains integrated at the point (cg /= 0).
    pure subroutine add_material(nd, cg, bl, br, f, ke)

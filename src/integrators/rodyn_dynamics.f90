@@ -10,6 +10,15 @@
 !> The rotation rows are projected with the midpoint directors, so Lagrange multipliers of
 !> the orthonormality constraints never appear (discrete null-space method).
 !>
+!> SCHEME=ALPHA is the generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993)
+!> on the director coordinates, whose mass matrix is constant: inertia at t_{n+1-alpha_m},
+!> forces at q_f = alpha_f q^n + (1 - alpha_f) q^{n+1} (projection with its directors),
+!> Newmark updates a^{n+1} = (q^{n+1} - q^n - dt v^n - dt^2 (1/2 - beta) a^n)/(beta dt^2),
+!> v^{n+1} = v^n + dt ((1 - gamma) a^n + gamma a^{n+1}), and
+!>   alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1),
+!>   gamma = 1/2 - alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2/4:
+!> second order, spectral radius rho = rho_inf at infinite frequency; rho = 1 is the
+!> undamped average-acceleration rule.
 !> The step displacement dx = x^{n+1} - x^n is carried as such (predictor plus Newton
 !> corrections), never recovered as a difference of positions: far from the origin that
 !> difference loses eps |x| / dt of velocity per step (measured on a rod flying away
@@ -17,7 +26,7 @@
 module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, scheme_alpha
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate
    use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
@@ -43,6 +52,9 @@ module rodyn_dynamics
       type(inertia_t) :: inert
       integer :: scheme = 1
       real(wp) :: alpha = 0.0_wp               !< Rayleigh mass-proportional damping [1/s]
+      real(wp) :: wf = 0.5_wp                  !< weight of t_n+1 in the force point
+      real(wp) :: am = 0.5_wp, af = 0.5_wp     !< generalized-alpha alpha_m, alpha_f
+      real(wp) :: beta_n = 0.25_wp, gamma_n = 0.5_wp !< Newmark beta, gamma
       real(wp) :: t0 = 0.0_wp                  !< time t_n [s]
       real(wp) :: dt = 0.0_wp                  !< step [s]
       integer, allocatable :: motion_node(:)   !< (n motions) global node of each motion
@@ -89,6 +101,15 @@ contains
       call state_allocate(prob%s0, nn)
       prob%scheme = model%dynamic%scheme
       prob%alpha = model%dynamic%rayleigh_alpha
+      if (prob%scheme == scheme_alpha) then
+         associate (rho => model%dynamic%rho_inf)
+            prob%am = (2.0_wp*rho - 1.0_wp)/(rho + 1.0_wp)
+            prob%af = rho/(rho + 1.0_wp)
+         end associate
+         prob%gamma_n = 0.5_wp - prob%am + prob%af
+         prob%beta_n = 0.25_wp*(1.0_wp - prob%am + prob%af)**2
+         prob%wf = 1.0_wp - prob%af
+      end if
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%gap(3, nn), prob%fint(6, nn), &
                 prob%fext(6, nn), prob%r(6, nn), prob%rhs(6*nn), prob%du(6*nn), &
                 prob%x_base(3, nn), prob%d_base(3, 3, nn), prob%dx(3, nn), prob%dx_base(3, nn))
@@ -158,8 +179,10 @@ contains
       prob%s0%d = prob%s1%d
       prob%s0%v = prob%s1%v
       prob%s0%dd = prob%s1%dd
+      prob%s0%a = prob%s1%a
+      prob%s0%ad = prob%s1%ad
       ! external forces at the midpoint: weight, point loads times their amplitudes
-      tm = t0 + 0.5_wp*dt
+      tm = t0 + prob%wf*dt
       prob%fext = 0.0_wp
       prob%fext(1:3, :) = prob%loads%gravity
       if (allocated(prob%model%loads)) then
@@ -185,10 +208,23 @@ contains
       prob%s1%d = prob%s0%d
    end subroutine dynamics_begin_step
 
-   !> Close a converged step: velocities by the midpoint relations.
+   !> Close a converged step: velocities by the midpoint relations, or by the Newmark
+   !> relations for the generalized-alpha scheme.
    subroutine dynamics_end_step(prob)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
-      real(wp) :: c
+      real(wp) :: c, bdt2
+      if (prob%scheme == scheme_alpha) then
+         bdt2 = prob%beta_n*prob%dt**2
+         prob%s1%a = (prob%dx - prob%dt*prob%s0%v - prob%dt**2*(0.5_wp - prob%beta_n)* &
+                      prob%s0%a)/bdt2
+         prob%s1%ad = (prob%s1%d - prob%s0%d - prob%dt*prob%s0%dd - prob%dt**2* &
+                       (0.5_wp - prob%beta_n)*prob%s0%ad)/bdt2
+         prob%s1%v = prob%s0%v + prob%dt*((1.0_wp - prob%gamma_n)*prob%s0%a &
+                                          + prob%gamma_n*prob%s1%a)
+         prob%s1%dd = prob%s0%dd + prob%dt*((1.0_wp - prob%gamma_n)*prob%s0%ad &
+                                            + prob%gamma_n*prob%s1%ad)
+         return
+      end if
       c = 2.0_wp/prob%dt
       prob%s1%v = c*prob%dx - prob%s0%v
       prob%s1%dd = c*(prob%s1%d - prob%s0%d) - prob%s0%dd
@@ -199,10 +235,11 @@ contains
       class(dynamic_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                   !< form the tangent
       type(error_t), intent(inout) :: err             !< status (cannot fail)
-      real(wp) :: c2, ca, h(3), dm(3), d1(3), kb(6, 6), fi(3), blk(3, 3), mi, hd, dmd1
+      real(wp) :: c2, h(3), dm(3), d1(3), kb(6, 6), fi(3), blk(3, 3), mi, hd, dmd1, bdt2, wp_
       integer :: node, i, j, k
       if (has_error(err)) return
-      call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%fint, &
+      call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
+                            this%fint, &
                             this%bm, want_k)
       this%f_scale = 0.0_wp
       this%m_scale = 0.0_wp
@@ -210,14 +247,21 @@ contains
          this%f_scale = max(this%f_scale, maxval(abs(this%fint(1:3, node))))
          this%m_scale = max(this%m_scale, maxval(abs(this%fint(4:6, node))))
       end do
-      c2 = 2.0_wp/this%dt**2 + this%alpha/this%dt
-      ca = 2.0_wp/this%dt
+      ! inertia (and mass-proportional damping): force = mass * (c2 dq - g0), its
+      ! derivative mass * c2, projected with the directors of the force point (weight wp)
+      if (this%scheme == scheme_alpha) then
+         bdt2 = this%beta_n*this%dt**2
+         c2 = (1.0_wp - this%am)/bdt2 + this%alpha*(1.0_wp - this%af)*this%gamma_n/ &
+              (this%beta_n*this%dt)
+      else
+         c2 = 2.0_wp/this%dt**2 + this%alpha/this%dt
+      end if
+      wp_ = this%wf
       do node = 1, this%mesh%n_nodes
-         associate (dx => this%dx(:, node), v0 => this%s0%v(:, node), m => this%inert%m(node))
-            fi = m*(c2*dx - ca*v0)
-            this%fint(1:3, node) = this%fint(1:3, node) + fi
-            this%f_scale = max(this%f_scale, maxval(abs(fi)))
-         end associate
+         fi = this%inert%m(node)*(c2*this%dx(:, node) - inertia_rest(this%s0%v(:, node), &
+                                                                     this%s0%a(:, node)))
+         this%fint(1:3, node) = this%fint(1:3, node) + fi
+         this%f_scale = max(this%f_scale, maxval(abs(fi)))
          kb = 0.0_wp
          do j = 1, 3
             kb(j, j) = c2*this%inert%m(node)
@@ -226,18 +270,19 @@ contains
             mi = this%inert%md(i, node)
             if (mi == 0.0_wp) cycle
             d1 = this%s1%d(:, i, node)
-            dm = 0.5_wp*(this%s0%d(:, i, node) + d1)
-            h = mi*(c2*(d1 - this%s0%d(:, i, node)) - ca*this%s0%dd(:, i, node))
+            dm = (1.0_wp - wp_)*this%s0%d(:, i, node) + wp_*d1
+            h = mi*(c2*(d1 - this%s0%d(:, i, node)) &
+                    - inertia_rest(this%s0%dd(:, i, node), this%s0%ad(:, i, node)))
             this%fint(4:6, node) = this%fint(4:6, node) + cross(dm, h)
             if (.not. want_k) cycle
-            ! d(dm x h) = 1/2 (dth x d1) x h + dm x (mi c2 dth x d1)
+            ! d(dm x h) = wp (dth x d1) x h + dm x (mi c2 dth x d1)
             hd = dot_product(h, d1)
             dmd1 = dot_product(dm, d1)
             do k = 1, 3
                do j = 1, 3
-                  blk(j, k) = 0.5_wp*d1(j)*h(k) - mi*c2*d1(j)*dm(k)
+                  blk(j, k) = wp_*d1(j)*h(k) - mi*c2*d1(j)*dm(k)
                end do
-               blk(k, k) = blk(k, k) - 0.5_wp*hd + mi*c2*dmd1
+               blk(k, k) = blk(k, k) - wp_*hd + mi*c2*dmd1
             end do
             kb(4:6, 4:6) = kb(4:6, 4:6) + blk
          end do
@@ -249,6 +294,27 @@ contains
          if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
+   contains
+      !> The part of mass * (inertia + damping) per unit mass that does not depend on the
+      !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest).
+      pure function inertia_rest(v0, a0) result(g)
+         real(wp), intent(in) :: v0(3) !< velocity at t_n
+         real(wp), intent(in) :: a0(3) !< acceleration at t_n
+         real(wp) :: g(3)
+         real(wp) :: b, gm, dt
+         if (this%scheme == scheme_alpha) then
+            ! (1-am) a1 + am a0 + alpha v_f, a1 = (dq - dt v0 - dt^2 (1/2 - b) a0)/(b dt^2),
+            ! v_f = (1-af) v1 + af v0, v1 = v0 + dt ((1-gm) a0 + gm a1)
+            b = this%beta_n
+            gm = this%gamma_n
+            dt = this%dt
+            g = (1.0_wp - this%am)*(v0/(b*dt) + (0.5_wp - b)/b*a0) - this%am*a0 &
+                - this%alpha*(v0 + (1.0_wp - this%af)*dt*((1.0_wp - gm)*a0 &
+                - gm*(v0/(b*dt) + (0.5_wp - b)/b*a0)))
+         else
+            g = 2.0_wp/this%dt*v0
+         end if
+      end function inertia_rest
    end subroutine dyn_evaluate
 
    !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs; the references include the

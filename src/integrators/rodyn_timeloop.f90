@@ -188,6 +188,8 @@ contains
          prob%s1%d = prob%s0%d
          prob%s1%v = prob%s0%v
          prob%s1%dd = prob%s0%dd
+         prob%s1%a = prob%s0%a
+         prob%s1%ad = prob%s0%ad
          if (has_error(nerr) .and. index(nerr%message, 'not finite') > 0) then
             write (msg, '(a,es12.5,a,i0,a)') 'dynamics: NaN or Inf at t = ', t1, &
                ' s (worst node ', worst_node(prob), '); results up to t = '

@@ -11,6 +11,8 @@ module rodyn_state
       real(wp), allocatable :: d(:, :, :)  !< (3, 3, nn) directors d(:, i, a) [-]
       real(wp), allocatable :: v(:, :)     !< (3, nn) velocities [m/s]
       real(wp), allocatable :: dd(:, :, :) !< (3, 3, nn) director velocities [1/s]
+      real(wp), allocatable :: a(:, :)     !< (3, nn) accelerations [m/s2] (generalized-alpha)
+      real(wp), allocatable :: ad(:, :, :) !< (3, 3, nn) director accelerations [1/s2]
    end type state_t
 
 contains
@@ -19,8 +21,12 @@ contains
    subroutine state_allocate(state, nn)
       type(state_t), intent(inout) :: state !< state to allocate
       integer, intent(in) :: nn             !< number of nodes
-      if (allocated(state%x)) deallocate (state%x, state%d, state%v, state%dd)
-      allocate (state%x(3, nn), state%d(3, 3, nn), state%v(3, nn), state%dd(3, 3, nn))
+      if (allocated(state%x)) deallocate (state%x, state%d, state%v, state%dd, state%a, &
+                                          state%ad)
+      allocate (state%x(3, nn), state%d(3, 3, nn), state%v(3, nn), state%dd(3, 3, nn), &
+                state%a(3, nn), state%ad(3, 3, nn))
+      state%a = 0.0_wp
+      state%ad = 0.0_wp
       state%x = 0.0_wp
       state%d = 0.0_wp
       state%v = 0.0_wp

@@ -187,12 +187,13 @@ contains
    !> Step internal force fint (6, nn) of a time-integration scheme between the states
    !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
    !> t_n+1 (rodyn_rod_dynamic), assembled as in assemble_static.
-   subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, fint, bm, want_k)
+   subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, fint, bm, want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: s0         !< state at t_n
       type(state_t), intent(in) :: s1         !< state at t_n+1 (current iterate)
       integer, intent(in) :: scheme           !< scheme_* constant
+      real(wp), intent(in) :: wf              !< ALPHA: weight of t_n+1 in the force point
       real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
@@ -217,7 +218,7 @@ contains
             end do
             call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
-                                     d1(:, :, 1:nen), scheme, fe(:, 1:nen), &
+                                     d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
                                      ke(1:6*nen, 1:6*nen), want_k)
             do a = 1, nen
                fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
