@@ -46,8 +46,6 @@ contains
       character(len=:), allocatable :: msg
       msg = ''
       if (.not. model%dynamic%requested) return
-      if (model%dynamic%rayleigh_beta > 0.0_wp) msg = '*DAMPING: BETA (stiffness-'// &
-         'proportional damping) is not available in this version; use ALPHA only'
    end function dynamic_not_available
 
    !> True when standard error is a terminal (the progress line is shown there).

@@ -52,6 +52,7 @@ module rodyn_dynamics
       type(inertia_t) :: inert
       integer :: scheme = 1
       real(wp) :: alpha = 0.0_wp               !< Rayleigh mass-proportional damping [1/s]
+      real(wp) :: beta_d = 0.0_wp              !< Rayleigh stiffness-proportional damping [s]
       real(wp) :: wf = 0.5_wp                  !< weight of t_n+1 in the force point
       real(wp) :: am = 0.5_wp, af = 0.5_wp     !< generalized-alpha alpha_m, alpha_f
       real(wp) :: beta_n = 0.25_wp, gamma_n = 0.5_wp !< Newmark beta, gamma
@@ -63,6 +64,7 @@ module rodyn_dynamics
       real(wp), allocatable :: gap(:, :)       !< (3, nn) x_held - x at held nodes [m]
       real(wp), allocatable :: fint(:, :)      !< (6, nn) internal + inertia + damping
       real(wp), allocatable :: fext(:, :)      !< (6, nn) external at t_n+1/2
+      real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional damping
       real(wp), allocatable :: r(:, :)         !< (6, nn) residual, global axes
       real(wp), allocatable :: rhs(:), du(:)   !< (6 nn) linear system
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
@@ -101,6 +103,7 @@ contains
       call state_allocate(prob%s0, nn)
       prob%scheme = model%dynamic%scheme
       prob%alpha = model%dynamic%rayleigh_alpha
+      prob%beta_d = model%dynamic%rayleigh_beta
       if (prob%scheme == scheme_alpha) then
          associate (rho => model%dynamic%rho_inf)
             prob%am = (2.0_wp*rho - 1.0_wp)/(rho + 1.0_wp)
@@ -111,7 +114,8 @@ contains
          prob%wf = 1.0_wp - prob%af
       end if
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%gap(3, nn), prob%fint(6, nn), &
-                prob%fext(6, nn), prob%r(6, nn), prob%rhs(6*nn), prob%du(6*nn), &
+                prob%fext(6, nn), prob%fdamp(6, nn), prob%r(6, nn), prob%rhs(6*nn), &
+                prob%du(6*nn), &
                 prob%x_base(3, nn), prob%d_base(3, 3, nn), prob%dx(3, nn), prob%dx_base(3, nn))
       prob%x_start = state%x
       prob%x_held = state%x
@@ -239,7 +243,7 @@ contains
       integer :: node, i, j, k
       if (has_error(err)) return
       call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
-                            this%fint, &
+                            this%beta_d, this%dt, this%fint, this%fdamp, &
                             this%bm, want_k)
       this%f_scale = 0.0_wp
       this%m_scale = 0.0_wp

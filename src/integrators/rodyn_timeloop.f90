@@ -95,6 +95,12 @@ contains
             if (prob%sup%held(4, node)) w_ext = w_ext + dot_product(prob%r(4:6, node), th)
          end if
          if (prob%sup%held(1, node)) w_ext = w_ext + dot_product(prob%r(1:3, node), dx)
+         if (prob%beta_d > 0.0_wp) then
+            th = rotation_cayley_inverse(matmul(prob%s1%d(:, :, node), &
+                                                transpose(prob%s0%d(:, :, node))))
+            w_damp = w_damp + dot_product(prob%fdamp(1:3, node), dx) &
+                     + dot_product(prob%fdamp(4:6, node), th)
+         end if
          if (prob%alpha > 0.0_wp) then
             w_damp = w_damp + prob%alpha*prob%inert%m(node)*dot_product(dx, dx)/prob%dt
             do i = 1, 2

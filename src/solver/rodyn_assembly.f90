@@ -12,7 +12,7 @@ module rodyn_assembly
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_column_axpy
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
    use rodyn_rod_dynamic, only: rod_element_dynamic
-   use rodyn_rotation, only: cross
+   use rodyn_rotation, only: cross, rotation_cayley_inverse
    use rodyn_motion, only: amplitude_value
    use rodyn_shape, only: max_nen
    implicit none
@@ -187,20 +187,31 @@ contains
    !> Step internal force fint (6, nn) of a time-integration scheme between the states
    !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
    !> t_n+1 (rodyn_rod_dynamic), assembled as in assemble_static.
-   subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, fint, bm, want_k)
+   !> Stiffness-proportional Rayleigh damping (beta > 0) adds, element by element,
+   !> f_d = beta/dt K_e(q^{n+1/2}) du_e, du = (x^{n+1} - x^n, theta) with theta the rotation
+   !> of the step (inverse Cayley of d^{n+1} d^n^T), K_e the element tangent at the
+   !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
+   !> The damping forces are also returned in fdamp (for the energy log).
+   subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
+                               want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: s0         !< state at t_n
       type(state_t), intent(in) :: s1         !< state at t_n+1 (current iterate)
       integer, intent(in) :: scheme           !< scheme_* constant
       real(wp), intent(in) :: wf              !< ALPHA: weight of t_n+1 in the force point
+      real(wp), intent(in) :: beta            !< stiffness-proportional damping [s]
+      real(wp), intent(in) :: dt              !< step [s]
       real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
+      real(wp), intent(out) :: fdamp(:, :)    !< (6, nn) damping forces (in fint) [N, N m]
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
-      real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen)
-      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j
+      real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
+      real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
+      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j, nd
       fint = 0.0_wp
+      fdamp = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
          bm%factored = .false.
@@ -223,6 +234,27 @@ contains
             do a = 1, nen
                fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
             end do
+            nd = 6*nen
+            if (beta > 0.0_wp) then
+               do a = 1, nen
+                  xm(:, a) = 0.5_wp*(x0(:, a) + x1(:, a))
+                  dm(:, :, a) = 0.5_wp*(d0(:, :, a) + d1(:, :, a))
+                  du(6*a - 5:6*a - 3) = x1(:, a) - x0(:, a)
+                  du(6*a - 2:6*a) = rotation_cayley_inverse(matmul(d1(:, :, a), &
+                                                                   transpose(d0(:, :, a))))
+               end do
+               call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
+                                       mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
+                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true.)
+               do j = 1, nd
+                  fd(j) = beta/dt*dot_product(ks(j, 1:nd), du(1:nd))
+               end do
+               do a = 1, nen
+                  fint(:, nodes(a)) = fint(:, nodes(a)) + fd(6*a - 5:6*a)
+                  fdamp(:, nodes(a)) = fdamp(:, nodes(a)) + fd(6*a - 5:6*a)
+               end do
+               if (want_k) ke(1:nd, 1:nd) = ke(1:nd, 1:nd) + beta/dt*ks(1:nd, 1:nd)
+            end if
             if (.not. want_k) cycle
             do a = 1, nen
                node = nodes(a)
