@@ -8,8 +8,8 @@ Usage:
 --expect TEXT  must appear in stderr; --stdout TEXT in stdout;
 --status       a `key = value` line of DIR/status.txt (values compared as text, or as
                numbers when --status KEY>VALUE / KEY<VALUE is used);
---csv NAME     DIR/NAME must exist, have a header row and only numeric fields after the
-               first (name) column, i.e. be readable as written so far.
+--csv NAME     DIR/NAME must exist, have a header row and only numbers or names in its
+               rows, every row complete, i.e. be readable as written so far.
 Exit 0 when everything matches, 1 otherwise (saying what differed).
 """
 import argparse
@@ -40,9 +40,10 @@ def check_csv(path):
     for i, row in enumerate(rows[1:], start=2):
         if len(row) != len(header):
             return f"line {i}: {len(row)} fields, header has {len(header)}"
-        for field in row[1:]:
-            if field in ("A", "B"):
-                continue
+        for field in row:
+            if re.fullmatch(r"[A-Za-z][A-Za-z0-9_.-]*", field) and field.lower() not in (
+                    "nan", "inf", "infinity"):
+                continue          # a line name or an end (A, B)
             try:
                 float(field)
             except ValueError:
