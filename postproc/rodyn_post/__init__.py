@@ -2,7 +2,11 @@
 
 `load_static(path)` reads the static results of a run (results.h5, or the CSV tables
 when there is no results.h5) into plain dataclasses; see `rodyn_post.results`.
+`load_dynamic(path)` reads the dynamic results (dynamic.h5, or the dynamic CSV tables)
+the same way; see `rodyn_post.dynamic`.
 """
+from .dynamic import DynamicResults, LineDynamic, StepLog, load_dynamic
 from .results import LineStatic, RodynResultsError, StaticResults, load_static
 
-__all__ = ["LineStatic", "RodynResultsError", "StaticResults", "load_static"]
+__all__ = ["DynamicResults", "LineDynamic", "LineStatic", "RodynResultsError",
+           "StaticResults", "StepLog", "load_dynamic", "load_static"]
