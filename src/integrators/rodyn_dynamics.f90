@@ -29,11 +29,10 @@ module rodyn_dynamics
    use rodyn_model, only: model_t, scheme_alpha
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate
-   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block
-   use rodyn_newton, only: newton_problem_t
-   use rodyn_rotation, only: rotation_cayley, cross
+   use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
+   use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_motion, only: motion_displacement, amplitude_value
    implicit none
@@ -42,12 +41,10 @@ module rodyn_dynamics
    public :: apply_initial_velocities
 
    !> The step problem and its workspace (allocated once in dynamics_setup).
-   type, extends(newton_problem_t) :: dynamic_problem_t
-      type(mesh_t), pointer :: mesh => null()
+   type, extends(rod_problem_t) :: dynamic_problem_t
       type(model_t), pointer :: model => null()
       type(state_t), pointer :: s1 => null()   !< state at t_n+1 (the iterate)
       type(state_t) :: s0                      !< state at t_n
-      type(supports_t) :: sup
       type(loads_t) :: loads
       type(inertia_t) :: inert
       integer :: scheme = 1
@@ -61,24 +58,11 @@ module rodyn_dynamics
       integer, allocatable :: motion_node(:)   !< (n motions) global node of each motion
       real(wp), allocatable :: x_start(:, :)   !< (3, nn) positions at t = 0 [m]
       real(wp), allocatable :: x_held(:, :)    !< (3, nn) prescribed positions at t_n+1 [m]
-      real(wp), allocatable :: gap(:, :)       !< (3, nn) x_held - x at held nodes [m]
-      real(wp), allocatable :: fint(:, :)      !< (6, nn) internal + inertia + damping
-      real(wp), allocatable :: fext(:, :)      !< (6, nn) external at t_n+1/2
       real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional damping
-      real(wp), allocatable :: r(:, :)         !< (6, nn) residual, global axes
-      real(wp), allocatable :: rhs(:), du(:)   !< (6 nn) linear system
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
-      real(wp), allocatable :: x_base(:, :), d_base(:, :, :), dx_base(:, :)
-      type(banded_t) :: bm
-      real(wp) :: lref = 1.0_wp, href = 1.0_wp
-      real(wp) :: f_floor = 0.0_wp, m_floor = 0.0_wp
-      real(wp) :: f_scale = 0.0_wp, m_scale = 0.0_wp !< largest inertia/elastic terms
+      real(wp), allocatable :: dx_base(:, :)   !< (3, nn) dx at the base of the line search
    contains
       procedure :: evaluate => dyn_evaluate
-      procedure :: residual_norm => dyn_residual_norm
-      procedure :: solve => dyn_solve
-      procedure :: correction_norm => dyn_correction_norm
-      procedure :: slope => dyn_slope
       procedure :: save_base => dyn_save_base
       procedure :: apply_correction => dyn_apply_correction
    end type dynamic_problem_t
@@ -92,7 +76,7 @@ contains
       type(mesh_t), intent(in), target :: mesh       !< mesh
       type(state_t), intent(in), target :: state     !< start state, then the iterate
       integer :: nn, i
-      prob%mesh => mesh
+      call rod_problem_init(prob, model, mesh)
       prob%model => model
       prob%s1 => state
       nn = mesh%n_nodes
@@ -113,10 +97,8 @@ contains
          prob%beta_n = 0.25_wp*(1.0_wp - prob%am + prob%af)**2
          prob%wf = 1.0_wp - prob%af
       end if
-      allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%gap(3, nn), prob%fint(6, nn), &
-                prob%fext(6, nn), prob%fdamp(6, nn), prob%r(6, nn), prob%rhs(6*nn), &
-                prob%du(6*nn), &
-                prob%x_base(3, nn), prob%d_base(3, 3, nn), prob%dx(3, nn), prob%dx_base(3, nn))
+      allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%fdamp(6, nn), prob%dx(3, nn), &
+                prob%dx_base(3, nn))
       prob%x_start = state%x
       prob%x_held = state%x
       allocate (prob%motion_node(0))
@@ -128,11 +110,6 @@ contains
             prob%sup%moved(prob%motion_node(i)) = .true.
          end do
       end if
-      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
-      prob%lref = maxval(model%lines%length)
-      prob%href = minval(mesh%elem_le)
-      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
-      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
    end subroutine dynamics_setup
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
@@ -245,11 +222,11 @@ contains
       call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                             this%beta_d, this%dt, this%fint, this%fdamp, &
                             this%bm, want_k)
-      this%f_scale = 0.0_wp
-      this%m_scale = 0.0_wp
+      this%f_extra = 0.0_wp
+      this%m_extra = 0.0_wp
       do node = 1, this%mesh%n_nodes
-         this%f_scale = max(this%f_scale, maxval(abs(this%fint(1:3, node))))
-         this%m_scale = max(this%m_scale, maxval(abs(this%fint(4:6, node))))
+         this%f_extra = max(this%f_extra, maxval(abs(this%fint(1:3, node))))
+         this%m_extra = max(this%m_extra, maxval(abs(this%fint(4:6, node))))
       end do
       ! inertia (and mass-proportional damping): force = mass * (c2 dq - g0), its
       ! derivative mass * c2, projected with the directors of the force point (weight wp)
@@ -265,7 +242,7 @@ contains
          fi = this%inert%m(node)*(c2*this%dx(:, node) - inertia_rest(this%s0%v(:, node), &
                                                                      this%s0%a(:, node)))
          this%fint(1:3, node) = this%fint(1:3, node) + fi
-         this%f_scale = max(this%f_scale, maxval(abs(fi)))
+         this%f_extra = max(this%f_extra, maxval(abs(fi)))
          kb = 0.0_wp
          do j = 1, 3
             kb(j, j) = c2*this%inert%m(node)
@@ -321,53 +298,9 @@ contains
       end function inertia_rest
    end subroutine dyn_evaluate
 
-   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs; the references include the
-   !> largest inertia and internal terms of the step (a free-flying rod has no load).
-   function dyn_residual_norm(this) result(v)
-      class(dynamic_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      real(wp) :: fref, mref, rf, rm
-      integer :: node, k
-      rf = 0.0_wp
-      rm = 0.0_wp
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
-         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
-      end do
-      mref = max(maxval(abs(this%fext(4:6, :))), this%m_scale, this%m_floor)
-      fref = max(maxval(abs(this%fext(1:3, :))), this%f_scale, mref/this%lref, this%f_floor)
-      mref = max(mref, fref*this%href)
-      v = max(rf/fref, rm/mref)
-   end function dyn_residual_norm
 
-   subroutine dyn_solve(this, err)
-      class(dynamic_problem_t), intent(inout) :: this !< problem
-      type(error_t), intent(inout) :: err             !< status
-      call banded_factor(this%bm, err)
-      if (has_error(err)) return
-      this%du = -this%rhs
-      call banded_solve(this%bm, this%du, err)
-   end subroutine dyn_solve
 
-   !> max(|du_x| / L_ref, |du_theta|).
-   function dyn_correction_norm(this) result(v)
-      class(dynamic_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      integer :: node, k
-      v = 0.0_wp
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
-      end do
-   end function dyn_correction_norm
 
-   !> du . r (line search).
-   function dyn_slope(this) result(v)
-      class(dynamic_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      v = dot_product(this%du, this%rhs)
-   end function dyn_slope
 
    subroutine dyn_save_base(this)
       class(dynamic_problem_t), intent(inout) :: this !< problem
@@ -376,21 +309,16 @@ contains
       this%dx_base = this%dx
    end subroutine dyn_save_base
 
-   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.
+   !> x = x^n + dx, dx = dx_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.
    subroutine dyn_apply_correction(this, alpha)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                   !< step length [-]
-      real(wp) :: th(3), r(3, 3), db(3, 3)
       integer :: node, k
       do node = 1, this%mesh%n_nodes
          k = 6*(node - 1)
          this%dx(:, node) = this%dx_base(:, node) + alpha*this%du(k + 1:k + 3)
          this%s1%x(:, node) = this%s0%x(:, node) + this%dx(:, node)
-         th = alpha*this%du(k + 4:k + 6)
-         if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
-         r = rotation_cayley(th)
-         db = this%d_base(:, :, node)
-         this%s1%d(:, :, node) = matmul(r, db)
       end do
+      call this%rotate_from_base(alpha, this%s1%d)
    end subroutine dyn_apply_correction
 end module rodyn_dynamics

@@ -19,47 +19,27 @@ module rodyn_statics
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
-   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force
-   use rodyn_newton, only: newton_problem_t, newton_options_t, newton_stats_t, newton_solve
-   use rodyn_rotation, only: rotation_cayley
+   use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
+   use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_results, only: run_summary_t
    implicit none
    private
    public :: static_problem_t, statics_setup, statics_solve, statics_run
 
    !> The static problem with its workspace (allocated once in statics_setup).
-   type, extends(newton_problem_t) :: static_problem_t
-      type(mesh_t), pointer :: mesh => null()
+   type, extends(rod_problem_t) :: static_problem_t
       type(state_t), pointer :: state => null()
-      type(supports_t) :: sup
       type(loads_t) :: loads
       real(wp) :: lam = 0.0_wp                !< load factor of the current increment
       real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
-      real(wp), allocatable :: fint(:, :)     !< (6, nn) internal forces
-      real(wp), allocatable :: fext(:, :)     !< (6, nn) external forces at lam
       real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
-      real(wp), allocatable :: r(:, :)        !< (6, nn) fint - fext, global axes
       real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
-      real(wp), allocatable :: gap(:, :)      !< (3, nn) x_held - x at moved nodes [m]
-      real(wp), allocatable :: rhs(:)         !< (6 nn) residual in node bases, held = 0
-      real(wp), allocatable :: du(:)          !< (6 nn) Newton correction
-      real(wp), allocatable :: x_base(:, :)   !< (3, nn) base of the line search
-      real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
-      type(banded_t) :: bm                    !< tangent, then its LU factors
-      real(wp) :: lref = 1.0_wp               !< length scale of the criteria [m]
-      real(wp) :: href = 1.0_wp               !< shortest element [m]
-      real(wp) :: f_floor = 0.0_wp            !< round-off level of the section forces [N]
-      real(wp) :: m_floor = 0.0_wp            !< round-off level of the moments [N m]
    contains
       procedure :: evaluate => static_evaluate
-      procedure :: residual_norm => static_residual_norm
-      procedure :: solve => static_solve
-      procedure :: correction_norm => static_correction_norm
-      procedure :: slope => static_slope
       procedure :: save_base => static_save_base
       procedure :: apply_correction => static_apply_correction
    end type static_problem_t
@@ -73,25 +53,15 @@ contains
       type(mesh_t), intent(in), target :: mesh      !< mesh
       type(state_t), intent(in), target :: state    !< configuration, updated by solves
       integer :: nn
-      prob%mesh => mesh
+      call rod_problem_init(prob, model, mesh)
       prob%state => state
       nn = mesh%n_nodes
       call supports_build(model, mesh, state, prob%sup)
       call loads_build(model, mesh, prob%loads)
-      allocate (prob%gfac(mesh%n_lines), prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), &
-                prob%r0(6, nn), &
-                prob%x_held(3, nn), prob%gap(3, nn), &
-                prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn), &
+      allocate (prob%gfac(mesh%n_lines), prob%r0(6, nn), prob%x_held(3, nn), &
                 prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
       prob%gfac = 1.0_wp
       prob%r0 = 0.0_wp
-      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
-      prob%lref = maxval(model%lines%length)
-      ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
-      ! floor of the residual scale when there is no load and no reaction to compare with
-      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
-      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
-      prob%href = minval(mesh%elem_le)
    end subroutine statics_setup
 
    !> Set the load factor: external forces and the prescribed positions of held nodes
@@ -119,61 +89,20 @@ contains
          if (this%sup%moved(node)) this%gap(:, node) = this%x_held(:, node) - this%state%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
+      ! the reactions are this problem's reference force and moment
+      this%f_extra = 0.0_wp
+      this%m_extra = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         if (any(this%sup%held(1:3, node))) &
+            this%f_extra = max(this%f_extra, maxval(abs(this%r(1:3, node))))
+         if (any(this%sup%held(4:6, node))) &
+            this%m_extra = max(this%m_extra, maxval(abs(this%r(4:6, node))))
+      end do
    end subroutine static_evaluate
 
-   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied or
-   !> reaction force (or applied/reaction moment over the line length); M_ref: largest
-   !> applied or reaction moment, or F_ref times the shortest element; neither below
-   !> the round-off level of the section forces (f_floor, m_floor).
-   function static_residual_norm(this) result(v)
-      class(static_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      real(wp) :: fref, mref, rf, rm, reac_f, reac_m
-      integer :: node, k
-      rf = 0.0_wp
-      rm = 0.0_wp
-      reac_f = 0.0_wp
-      reac_m = 0.0_wp
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
-         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
-         if (any(this%sup%held(1:3, node))) reac_f = max(reac_f, maxval(abs(this%r(1:3, node))))
-         if (any(this%sup%held(4:6, node))) reac_m = max(reac_m, maxval(abs(this%r(4:6, node))))
-      end do
-      mref = max(maxval(abs(this%fext(4:6, :))), reac_m, this%m_floor)
-      fref = max(maxval(abs(this%fext(1:3, :))), reac_f, mref/this%lref, this%f_floor)
-      mref = max(mref, fref*this%href)
-      v = max(rf/fref, rm/mref)
-   end function static_residual_norm
 
-   subroutine static_solve(this, err)
-      class(static_problem_t), intent(inout) :: this !< problem
-      type(error_t), intent(inout) :: err            !< status
-      call banded_factor(this%bm, err)
-      if (has_error(err)) return
-      this%du = -this%rhs
-      call banded_solve(this%bm, this%du, err)
-   end subroutine static_solve
 
-   !> max(|du_x| / L_ref, |du_theta|).
-   function static_correction_norm(this) result(v)
-      class(static_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      integer :: node, k
-      v = 0.0_wp
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
-      end do
-   end function static_correction_norm
 
-   !> Energy slope du . r [J] (line search).
-   function static_slope(this) result(v)
-      class(static_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      v = dot_product(this%du, this%rhs)
-   end function static_slope
 
    subroutine static_save_base(this)
       class(static_problem_t), intent(inout) :: this !< problem
@@ -185,17 +114,12 @@ contains
    subroutine static_apply_correction(this, alpha)
       class(static_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                  !< step length [-]
-      real(wp) :: th(3), r(3, 3), db(3, 3)
       integer :: node, k
       do node = 1, this%mesh%n_nodes
          k = 6*(node - 1)
          this%state%x(:, node) = this%x_base(:, node) + alpha*this%du(k + 1:k + 3)
-         th = alpha*this%du(k + 4:k + 6)
-         if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
-         r = rotation_cayley(th)
-         db = this%d_base(:, :, node)
-         this%state%d(:, :, node) = matmul(r, db)
       end do
+      call this%rotate_from_base(alpha, this%state%d)
    end subroutine static_apply_correction
 
    !> Load stepping from lambda = 0 to 1 with bounded halving of failed increments.

@@ -1,0 +1,136 @@
+!> What the static problem and the time-step problem share as Newton problems: the
+!> banded workspace, the supports, the convergence scales, and the residual norm, linear
+!> solve, correction norm and energy slope (rodyn_newton). Each problem adds its own
+!> residual (evaluate) and configuration update (save_base, apply_correction).
+module rodyn_rod_problem
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t
+   use rodyn_mesh, only: mesh_t
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
+   use rodyn_assembly, only: supports_t
+   use rodyn_newton, only: newton_problem_t
+   use rodyn_rotation, only: rotation_cayley
+   implicit none
+   private
+   public :: rod_problem_t, rod_problem_init
+
+   !> Shared part of the rod Newton problems.
+   type, abstract, extends(newton_problem_t) :: rod_problem_t
+      type(mesh_t), pointer :: mesh => null()
+      type(supports_t) :: sup                  !< supports
+      real(wp), allocatable :: fint(:, :)      !< (6, nn) internal forces (and inertia)
+      real(wp), allocatable :: fext(:, :)      !< (6, nn) external forces
+      real(wp), allocatable :: r(:, :)         !< (6, nn) residual, global axes
+      real(wp), allocatable :: gap(:, :)       !< (3, nn) prescribed - current position [m]
+      real(wp), allocatable :: rhs(:)          !< (6 nn) residual in node bases, held = -gap
+      real(wp), allocatable :: du(:)           !< (6 nn) Newton correction
+      real(wp), allocatable :: x_base(:, :)    !< (3, nn) base of the line search
+      real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
+      type(banded_t) :: bm                     !< tangent, then its LU factors
+      real(wp) :: lref = 1.0_wp                !< length scale of the criteria [m]
+      real(wp) :: href = 1.0_wp                !< shortest element [m]
+      real(wp) :: f_floor = 0.0_wp             !< round-off level of the section forces [N]
+      real(wp) :: m_floor = 0.0_wp             !< round-off level of the moments [N m]
+      real(wp) :: f_extra = 0.0_wp             !< problem's own reference force [N]
+      real(wp) :: m_extra = 0.0_wp             !< problem's own reference moment [N m]
+   contains
+      procedure :: residual_norm => rod_residual_norm
+      procedure :: solve => rod_solve
+      procedure :: correction_norm => rod_correction_norm
+      procedure :: slope => rod_slope
+      procedure :: rotate_from_base => rod_rotate_from_base
+   end type rod_problem_t
+
+contains
+
+   !> Allocate the shared workspace of a mesh and set the convergence scales.
+   subroutine rod_problem_init(prob, model, mesh)
+      class(rod_problem_t), intent(inout) :: prob !< problem
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in), target :: mesh    !< mesh
+      integer :: nn
+      prob%mesh => mesh
+      nn = mesh%n_nodes
+      allocate (prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), prob%gap(3, nn), &
+                prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn))
+      prob%fext = 0.0_wp
+      prob%gap = 0.0_wp
+      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
+      prob%lref = maxval(model%lines%length)
+      prob%href = minval(mesh%elem_le)
+      ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
+      ! floor of the residual scale when there is no load and no reaction to compare with
+      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
+      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
+   end subroutine rod_problem_init
+
+   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied force, the
+   !> problem's own reference (reactions in statics, inertia and internal forces in a time
+   !> step) or moment over the line length; M_ref likewise, or F_ref times the shortest
+   !> element; neither below the round-off level of the section forces.
+   function rod_residual_norm(this) result(v)
+      class(rod_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      real(wp) :: fref, mref, rf, rm
+      integer :: node, k
+      rf = 0.0_wp
+      rm = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
+         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
+      end do
+      mref = max(maxval(abs(this%fext(4:6, :))), this%m_extra, this%m_floor)
+      fref = max(maxval(abs(this%fext(1:3, :))), this%f_extra, mref/this%lref, this%f_floor)
+      mref = max(mref, fref*this%href)
+      v = max(rf/fref, rm/mref)
+   end function rod_residual_norm
+
+   !> du = -K^{-1} rhs (banded LU).
+   subroutine rod_solve(this, err)
+      class(rod_problem_t), intent(inout) :: this !< problem
+      type(error_t), intent(inout) :: err         !< status
+      call banded_factor(this%bm, err)
+      if (has_error(err)) return
+      this%du = -this%rhs
+      call banded_solve(this%bm, this%du, err)
+   end subroutine rod_solve
+
+   !> max(|du_x| / L_ref, |du_theta|).
+   function rod_correction_norm(this) result(v)
+      class(rod_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      integer :: node, k
+      v = 0.0_wp
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
+      end do
+   end function rod_correction_norm
+
+   !> Energy slope du . r [J] (line search).
+   function rod_slope(this) result(v)
+      class(rod_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      v = dot_product(this%du, this%rhs)
+   end function rod_slope
+
+   !> d_i = cay(alpha du_theta) d_i,base at every node (note section 3), the rotation
+   !> taken back to global axes at nodes with their own basis.
+   subroutine rod_rotate_from_base(this, alpha, d)
+      class(rod_problem_t), intent(in) :: this !< problem
+      real(wp), intent(in) :: alpha            !< step length [-]
+      real(wp), intent(inout) :: d(:, :, :)    !< (3, 3, nn) directors updated
+      real(wp) :: th(3), rot(3, 3), db(3, 3)
+      integer :: node, k
+      do node = 1, this%mesh%n_nodes
+         k = 6*(node - 1)
+         th = alpha*this%du(k + 4:k + 6)
+         if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
+         rot = rotation_cayley(th)
+         db = this%d_base(:, :, node)
+         d(:, :, node) = matmul(rot, db)
+      end do
+   end subroutine rod_rotate_from_base
+end module rodyn_rod_problem
