@@ -1,5 +1,6 @@
-!> Time stepping of a dynamic run: steps of DT (halved on failure, at most CUTBACKS
-!> times in a row, growing back after two good sub-steps), outputs at the frame times,
+!> Time stepping of a dynamic run: steps of DT (a failed step is retried once with the
+!> energy line search, then halved, at most CUTBACKS times in a row, growing back after
+!> two good sub-steps), outputs at the frame times,
 !> and the energy and momentum balance of every step (formulation note section 3).
 !>
 !> Energy bookkeeping: total = kinetic + strain + gravity potential (-sum f_g . x).
@@ -127,6 +128,7 @@ contains
       type(step_log_t) :: log
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t
       integer :: level, good, step_cuts
+      logical :: retried
       character(len=240) :: msg
       opts%max_iterations = model%dynamic%max_iterations
       opts%force_tol = model%dynamic%force_tol
@@ -148,6 +150,7 @@ contains
       level = 0
       good = 0
       step_cuts = 0
+      retried = .false.
       do while (t < t_end - tol_t)
          h = dt*0.5_wp**level
          t1 = min(t + h, t_end, next_frame)
@@ -155,6 +158,7 @@ contains
          if (t_end - t1 < tol_t) t1 = t_end
          call dynamics_begin_step(prob, t, t1 - t)
          call clear_error(nerr)
+         opts%line_search = retried
          call newton_solve(prob, opts, stats, nerr)
          summary%step_iterations = summary%step_iterations + stats%iterations
          if (stats%converged .and. .not. has_error(nerr)) then
@@ -172,6 +176,7 @@ contains
             t = t1
             summary%time_reached = t
             step_cuts = 0
+            retried = .false.
             call on_step(log, err)
             if (has_error(err)) return
             if (t >= next_frame - tol_t .or. t >= t_end - tol_t) then
@@ -204,6 +209,13 @@ contains
             summary%status = trim(msg)
             return
          end if
+         if (.not. retried) then
+            retried = .true.       ! the same step again, with the line search
+            if (log_unit >= 0) write (log_unit, '(a,es12.5,a)') '  step to t = ', t1, &
+               ' s failed: retry with the line search'
+            cycle
+         end if
+         retried = .false.
          if (log_unit >= 0) write (log_unit, '(a,es12.5,a)') '  step to t = ', t1, &
             ' s failed: halving'
          level = level + 1
