@@ -79,6 +79,13 @@ contains
       clock_last = clock0
       summary%dynamic = .true.
       call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, on_progress)
+      block
+         integer(kind=8) :: clock_end
+         call system_clock(clock_end)
+         ! wall time of the whole run: the static solve before plus the dynamics
+         summary%wall_time = summary%wall_time + real(clock_end - clock0, wp) &
+                             /real(clock_rate, wp)
+      end block
       if (show_progress) write (error_unit, '(a)') ''
       if (.not. has_error(err)) then
          summary%complete = .true.

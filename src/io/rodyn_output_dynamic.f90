@@ -557,7 +557,7 @@ contains
                n = 0
                call put_text(row, n, t(:nt)//lo%point_head(k)%s)
                call put_reals(row, n, [r%tension(k), r%moment(:, k), r%torque(k), &
-                  hypot(r%curvature(1, k), r%curvature(2, k))])
+                  bending_curvature(r%curvature(:, k:k))])
                if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
          end associate
@@ -605,8 +605,7 @@ contains
             call hdf5_append_steps(s(ls_moment_1), r%moment(1, :), err)
             call hdf5_append_steps(s(ls_moment_2), r%moment(2, :), err)
             call hdf5_append_steps(s(ls_torque), r%torque, err)
-            call hdf5_append_steps(s(ls_curvature), &
-               hypot(r%curvature(1, :), r%curvature(2, :)), err)
+            call hdf5_append_steps(s(ls_curvature), bending_curvature(r%curvature), err)
             call hdf5_append_steps(s(ls_reactions), reshape(r%reaction, [12]), err)
             call hdf5_append_steps(s(ls_end_tension), &
                [norm2(r%reaction(1:3, 1)), norm2(r%reaction(1:3, 2))], err)
@@ -890,4 +889,14 @@ contains
       seconds_since = real(c - c0, wp)/real(max(rate, 1_i8), wp)
    end function seconds_since
 
+   !> Bending curvature sqrt(K1^2 + K2^2) of each point [1/m], one code path for the
+   !> CSV and the HDF5 file so both hold the same bits.
+   pure function bending_curvature(curv) result(kb)
+      real(wp), intent(in) :: curv(:, :)  !< (3, n) curvatures K1, K2, K3 [1/m]
+      real(wp) :: kb(size(curv, 2))
+      integer :: k
+      do k = 1, size(curv, 2)
+         kb(k) = hypot(curv(1, k), curv(2, k))
+      end do
+   end function bending_curvature
 end module rodyn_output_dynamic

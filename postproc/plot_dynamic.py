@@ -1,0 +1,312 @@
+#!/usr/bin/env python3
+"""Plot the dynamic results of a rodyn run.
+
+    python3 postproc/plot_dynamic.py [RESULTS] [-o OUT_DIR] [--times T ...]
+                                     [--window T0 T1] [--snapshots N] [--dpi 150]
+
+RESULTS is a results folder (default: paper_case1, the output folder of
+input/paper_case1.inp run from the current directory) or a dynamic.h5 file. Writes
+into OUT_DIR (default: the results folder) and prints the paths written:
+
+  dynamic_snapshots.png  x-z elevation of the lines at a few times of the last period of
+                         the motion, over the static shape (equal axes), as the paper's
+                         Figures 3-6
+  dynamic_tension.png    tension at the top and at the bottom support against time
+  dynamic_energy.png     total energy minus its initial value and the net work done on
+                         the lines (external - damping) against time, and their difference
+
+--times picks the snapshot times (the nearest output frames); by default N (--snapshots,
+8) frames spread over the last period of the harmonic *MOTION of the deck (from
+dynamic.h5; with the CSV tables only, the period is estimated from the motion of the
+node that moves most). --window T0 T1 limits the time histories to T0 <= t <= T1 and
+takes the default snapshots from the last period before T1.
+
+A run that did not complete is still plotted (what is on disk), with a warning on
+stderr and in the plot titles.
+
+Exit status: 0 success, 1 bad input (missing or malformed results, times outside the
+run), 2 bad command line, 3 cannot write the plots.
+"""
+import argparse
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")  # never needs a display
+from matplotlib import colormaps  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from rodyn_post import RodynResultsError, load_dynamic, load_static  # noqa: E402
+
+SNAPSHOTS_PNG = "dynamic_snapshots.png"
+TENSION_PNG = "dynamic_tension.png"
+ENERGY_PNG = "dynamic_energy.png"
+
+
+class PlotInputError(Exception):
+    """Bad plotting request for these results (times outside the run, ...)."""
+
+
+# --- the data behind the plots ------------------------------------------------------
+
+def motion_period(results):
+    """Period [s] of the excitation: 1/f of the lowest harmonic *MOTION frequency of the
+    deck; without the deck text, estimated from the node coordinate that moves most over
+    the second half of the run (mean time between its upward crossings of its mean);
+    None if neither works."""
+    freqs = results.motion_frequencies()
+    if freqs:
+        return 1.0 / min(freqs)
+    t = results.time
+    half = t >= t[len(t) // 2]
+    if half.sum() < 5:
+        return None
+    best, series = 0.0, None
+    for line in results.lines:
+        for coord in (line.x, line.y, line.z):
+            part = coord[half]
+            spread = np.ptp(part, axis=0)
+            node = int(np.argmax(spread))
+            if spread[node] > best:
+                best, series = spread[node], part[:, node] - part[:, node].mean()
+    if series is None:
+        return None
+    th = t[half]
+    up = np.flatnonzero((series[:-1] < 0.0) & (series[1:] >= 0.0))
+    if len(up) < 2:
+        return None
+    # crossing times by linear interpolation
+    tc = th[up] + (th[up + 1] - th[up]) * (-series[up]) / (series[up + 1] - series[up])
+    return float((tc[-1] - tc[0]) / (len(tc) - 1))
+
+
+def snapshot_frames(results, times=None, count=8, t_end=None):
+    """Frame indices of the snapshots: the frames nearest to `times`, or `count` frames
+    spread over the last period before t_end (default: the last frame). Raises
+    PlotInputError for a time outside the run."""
+    t = results.time
+    if times:
+        for value in times:
+            if value < t[0] - 1e-9 or value > t[-1] + 1e-9:
+                raise PlotInputError(f"--times: t = {value:g} s is outside the run "
+                                     f"({t[0]:g} to {t[-1]:g} s)")
+        return sorted({results.frame_at(v) for v in times})
+    t_end = t[-1] if t_end is None else t_end
+    last = int(np.searchsorted(t, t_end + 1e-9)) - 1
+    if last < 0:
+        raise PlotInputError(f"no frame at or before t = {t_end:g} s")
+    period = motion_period(results)
+    if period is None:
+        period = 0.25 * (t[last] - t[0]) if last > 0 else 0.0
+    # `count` times evenly over one period ending at the last frame (the period's
+    # start is the same phase as its end, so it is left out)
+    wanted = t[last] - period * np.arange(count)[::-1] / count
+    frames = sorted({results.frame_at(v) for v in wanted if v >= t[0] - 1e-9})
+    return [f for f in frames if f <= last]
+
+
+def static_shapes(results):
+    """{line name: (x, z)} of the static equilibrium when the run's folder has static
+    results of the same lines, else of the first frame (the start); and a label."""
+    try:
+        static = load_static(results.folder)
+        shapes = {}
+        for line in results.lines:
+            s = static.line(line.name)
+            if s.node_xyz.shape[0] != line.x.shape[1]:
+                raise KeyError(line.name)
+            shapes[line.name] = (s.node_xyz[:, 0], s.node_xyz[:, 2])
+        return shapes, "static"
+    except (RodynResultsError, KeyError):
+        return {line.name: (line.x[0], line.z[0]) for line in results.lines}, \
+            f"start (t = {results.time[0]:g} s)"
+
+
+def snapshot_curves(line, frames):
+    """Plotted data of dynamic_snapshots.png for one line: [(frame, x, z), ...]."""
+    return [(f, line.x[f], line.z[f]) for f in frames]
+
+
+def window_mask(t, window):
+    """Boolean mask of the times inside window (T0, T1), or all."""
+    if window is None:
+        return np.ones(len(t), dtype=bool)
+    return (t >= window[0] - 1e-9) & (t <= window[1] + 1e-9)
+
+
+def tension_curves(results, line, window=None):
+    """Plotted data of dynamic_tension.png for one line: {'top'|'bottom': (end index,
+    time [s], tension [kN])} for the held ends; top is the higher end at t = 0."""
+    mask = window_mask(results.time, window)
+    curves = {}
+    top = line.top_end
+    for role, end in (("top", top), ("bottom", 1 - top)):
+        if line.end_held[end]:
+            curves[role] = (end, results.time[mask], line.end_tension[mask, end] / 1e3)
+    return curves
+
+
+def energy_curves(log, window=None):
+    """Plotted data of dynamic_energy.png: time [s], total - total(0) [J], external
+    minus damping work [J], their difference [J] (the balance error)."""
+    mask = window_mask(log.time, window)
+    return (log.time[mask], log.energy_change[mask], log.net_work[mask],
+            log.energy_error[mask])
+
+
+# --- figures ------------------------------------------------------------------------
+
+def run_title(results, what):
+    """Figure title: the run's *HEADING (or its folder name), what is plotted, and a
+    warning line if the run did not complete."""
+    heading = results.title or f"results {results.folder.name or results.folder}"
+    title = textwrap.fill(heading, 80, break_on_hyphens=False) + f"\n{what}"
+    if not results.complete:
+        title += (f"\nINCOMPLETE RUN (t reached {results.time_reached_s:.4g} s): "
+                  + textwrap.shorten(results.status, 60))
+    return title
+
+
+def snapshots_figure(results, frames):
+    """x-z elevation of every line at the given frames over the static shape."""
+    fig = Figure(figsize=(8, 5.2), layout="constrained")
+    ax = fig.add_subplot()
+    shapes, static_label = static_shapes(results)
+    cmap = colormaps["viridis"]
+    for line in results.lines:
+        x0, z0 = shapes[line.name]
+        ax.plot(x0, z0, "k--", linewidth=1.8, label=f"{line.name}: {static_label}")
+        for k, (f, x, z) in enumerate(snapshot_curves(line, frames)):
+            color = cmap(k / max(1, len(frames) - 1))
+            ax.plot(x, z, "-", color=color, linewidth=1.1,
+                    label=f"{line.name}: t = {results.time[f]:.4g} s")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("z [m]")
+    ax.grid(True, linewidth=0.5, alpha=0.5)
+    ax.legend(loc="best", fontsize=7, ncol=2 if len(frames) > 5 else 1)
+    span = results.time[frames[-1]] - results.time[frames[0]] if frames else 0.0
+    fig.suptitle(run_title(results, f"dynamic configurations, x-z elevation "
+                                    f"({len(frames)} frames over {span:.4g} s)"))
+    return fig
+
+
+def tension_figure(results, window=None):
+    """Top and bottom support tension [kN] against time, one curve per line."""
+    fig = Figure(figsize=(8, 6), layout="constrained")
+    ax_top, ax_bot = fig.subplots(2, 1, sharex=True)
+    for line in results.lines:
+        for role, (end, t, tension) in tension_curves(results, line, window).items():
+            ax = ax_top if role == "top" else ax_bot
+            ax.plot(t, tension, "-", linewidth=0.9, label=f"{line.name} end {'AB'[end]}")
+    ax_top.set_ylabel("top tension [kN]")
+    ax_bot.set_ylabel("bottom tension [kN]")
+    ax_bot.set_xlabel("time [s]")
+    for ax in (ax_top, ax_bot):
+        ax.grid(True, linewidth=0.5, alpha=0.5)
+        if ax.lines:
+            ax.legend(loc="best", fontsize=8)
+    fig.suptitle(run_title(results, "support tension |F| at the held ends"))
+    return fig
+
+
+def energy_figure(results, window=None):
+    """Energy change and net work against time (top), their difference (bottom)."""
+    fig = Figure(figsize=(8, 6), layout="constrained")
+    ax_e, ax_d = fig.subplots(2, 1, sharex=True)
+    t, change, work, error = energy_curves(results.log, window)
+    damped = bool(np.any(results.log.damping_work != 0.0))
+    ax_e.plot(t, change, "-", linewidth=1.2, label="total energy - total(0)")
+    ax_e.plot(t, work, "--", linewidth=1.2,
+              label="external work - damping work" if damped else "external work")
+    ax_d.plot(t, error, "-", linewidth=0.9, color="C3", label="difference")
+    ax_e.set_ylabel("energy [J]")
+    ax_d.set_ylabel("difference [J]")
+    ax_d.set_xlabel("time [s]")
+    for ax in (ax_e, ax_d):
+        ax.grid(True, linewidth=0.5, alpha=0.5)
+        ax.legend(loc="best", fontsize=8)
+    scheme = f"{results.scheme}, " if results.scheme else ""
+    fig.suptitle(run_title(results, f"energy balance ({scheme}total = kinetic + strain + "
+                                    "gravity; total(0) from step 1)"))
+    return fig
+
+
+# --- command line -------------------------------------------------------------------
+
+def parse_args(argv):
+    """Command line arguments."""
+    parser = argparse.ArgumentParser(
+        description="Plot the dynamic configurations, support tensions and energy "
+                    "balance of a rodyn run.",
+        epilog="exit status: 0 success, 1 bad input, 2 bad command line, "
+               "3 cannot write the plots")
+    parser.add_argument("results", nargs="?", default="paper_case1",
+                        help="results folder or dynamic.h5 file (default: paper_case1)")
+    parser.add_argument("-o", "--out-dir", help="folder for the PNGs "
+                        "(default: the results folder)")
+    parser.add_argument("--times", type=float, nargs="+", metavar="T",
+                        help="snapshot times [s] (nearest frames; default: the last "
+                             "period of the motion)")
+    parser.add_argument("--window", type=float, nargs=2, metavar=("T0", "T1"),
+                        help="time range of the histories [s] (default: the whole run)")
+    parser.add_argument("--snapshots", type=int, default=8,
+                        help="number of default snapshots (default: 8)")
+    parser.add_argument("--dpi", type=float, default=150, help="resolution (default: 150)")
+    args = parser.parse_args(argv)
+    if args.dpi <= 0:
+        parser.error("--dpi must be positive")
+    if args.snapshots < 1:
+        parser.error("--snapshots must be at least 1")
+    if args.window and args.window[1] <= args.window[0]:
+        parser.error("--window: T1 must be greater than T0")
+    return args
+
+
+def main(argv=None):
+    """Run the command line; returns the exit status."""
+    args = parse_args(argv)
+    try:
+        results = load_dynamic(args.results)
+        if len(results.time) == 0:
+            raise PlotInputError(f"{results.source}: no output frames")
+        if args.window and (args.window[1] < results.time[0]
+                            or args.window[0] > results.time[-1]):
+            raise PlotInputError(f"--window {args.window[0]:g} {args.window[1]:g} s does not "
+                                 f"overlap the run ({results.time[0]:g} to "
+                                 f"{results.time[-1]:g} s)")
+        t_end = min(args.window[1], results.time[-1]) if args.window else None
+        frames = snapshot_frames(results, args.times, args.snapshots, t_end)
+    except (RodynResultsError, PlotInputError) as exc:
+        print(f"plot_dynamic: error: {exc}", file=sys.stderr)
+        return 1
+    for warning in results.warnings:
+        print(f"plot_dynamic: warning: {warning}", file=sys.stderr)
+    if not results.complete:
+        print(f"plot_dynamic: warning: the run did not complete ({results.status}; t "
+              f"reached {results.time_reached_s:.4g} s): plotting what is on disk",
+              file=sys.stderr)
+    out_dir = Path(args.out_dir) if args.out_dir else results.folder
+    window = tuple(args.window) if args.window else None
+    makers = ((SNAPSHOTS_PNG, lambda: snapshots_figure(results, frames)),
+              (TENSION_PNG, lambda: tension_figure(results, window)),
+              (ENERGY_PNG, lambda: energy_figure(results, window)))
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        for name, make in makers:
+            path = out_dir / name
+            make().savefig(path, dpi=args.dpi)
+            print(path)
+    except OSError as exc:
+        print(f"plot_dynamic: error: cannot write {exc.filename or out_dir}: "
+              f"{exc.strerror or exc}", file=sys.stderr)
+        return 3
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

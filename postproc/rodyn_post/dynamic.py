@@ -1,0 +1,609 @@
+"""Reader for the dynamic results of a rodyn run.
+
+The file layout is described in docs/output.md ("Dynamic runs"). `load_dynamic(path)`
+takes a results folder (or the path of a dynamic.h5) and returns a `DynamicResults`:
+run information, the frame times, one `LineDynamic` per line (deck order) and the step
+log (`StepLog`, one row per time step). dynamic.h5 is read with h5py when it is there
+(opened with locking=False, so a run still going can be read); otherwise the CSV tables
+(dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv, dynamic_log.csv) and
+status.txt. Both give the same arrays: the CSV fields carry 17 significant digits.
+
+A run that was killed or failed is read up to what is on disk: in the CSV tables a
+last frame with missing rows, or a last row cut short, is dropped (docs/output.md,
+"After a killed or failed run").
+
+Every problem with the files raises `RodynResultsError` (from rodyn_post.results),
+whose message names the file and, for CSV, the line number.
+"""
+from __future__ import annotations
+
+import csv
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .results import RodynResultsError
+
+H5_FILE = "dynamic.h5"
+STATUS_FILE = "status.txt"
+NODES_CSV = "dynamic_nodes.csv"
+ELEMENTS_CSV = "dynamic_elements.csv"
+ENDS_CSV = "dynamic_ends.csv"
+LOG_CSV = "dynamic_log.csv"
+
+NODES_HEADER = ("time_s", "line", "node", "s_m", "x_m", "y_m", "z_m")
+ELEMENTS_HEADER = ("time_s", "line", "element", "point", "s_m", "effective_tension_N",
+                   "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_per_m")
+ENDS_HEADER = ("time_s", "line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
+               "tension_N")
+LOG_HEADER = ("step", "time_s", "dt_s", "iterations", "cutbacks", "kinetic_J", "strain_J",
+              "gravity_J", "external_work_J", "damping_work_J", "total_J", "px", "py", "pz",
+              "Lx", "Ly", "Lz")
+
+# Datasets of a line group in dynamic.h5: shapes ('nf' frames, 'nn' nodes, 'ng' points).
+H5_LINE_DATASETS = {
+    "node_s": ("nn",), "gp_s": ("ng",), "gp_element": ("ng",), "gp_point": ("ng",),
+    "x": ("nf", "nn"), "y": ("nf", "nn"), "z": ("nf", "nn"),
+    "effective_tension": ("nf", "ng"), "moment_1": ("nf", "ng"), "moment_2": ("nf", "ng"),
+    "torque": ("nf", "ng"), "bending_curvature": ("nf", "ng"), "reactions": ("nf", 12),
+    "end_tension": ("nf", 2),
+}
+# Datasets of /dynamic/log: (name in the file, shape) per StepLog field.
+H5_LOG_DATASETS = {
+    "step": ("ns",), "time": ("ns",), "dt": ("ns",), "iterations": ("ns",),
+    "cutbacks": ("ns",), "kinetic": ("ns",), "strain": ("ns",), "gravity": ("ns",),
+    "external_work": ("ns",), "damping_work": ("ns",), "total": ("ns",),
+    "momentum": ("ns", 3), "angular_momentum": ("ns", 3),
+}
+_LOG_INTEGERS = ("step", "iterations", "cutbacks")
+# Keys of a dynamic run's status.txt and how to read them (docs/output.md).
+STATUS_KEYS = {
+    "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
+    "iterations": "int", "cutbacks": "int", "wall_time_s": "float", "dynamic": "bool",
+    "time_reached_s": "float", "steps": "int", "step_iterations": "int",
+    "step_cutbacks": "int", "rodyn_version": "str", "deck": "str",
+}
+
+
+@dataclass(frozen=True, eq=False)
+class LineDynamic:
+    """Time histories of one line, SI units, conventions of docs/output.md.
+
+    Frame arrays have nf rows (one per output frame); node columns run from end A.
+    """
+    name: str
+    node_s: np.ndarray             # (nn,)      m    unstretched arc length S of the nodes
+    gp_s: np.ndarray               # (ng,)      m    S of the integration points
+    gp_element: np.ndarray         # (ng,)      -    element of each point, from 1
+    gp_point: np.ndarray           # (ng,)      -    point within its element, from 1
+    x: np.ndarray                  # (nf, nn)   m    node positions, global axes
+    y: np.ndarray                  # (nf, nn)   m
+    z: np.ndarray                  # (nf, nn)   m
+    effective_tension: np.ndarray  # (nf, ng)   N    N3, positive in tension
+    moment_1: np.ndarray           # (nf, ng)   N m  M1 about d1
+    moment_2: np.ndarray           # (nf, ng)   N m  M2 about d2
+    torque: np.ndarray             # (nf, ng)   N m  M3 about d3
+    bending_curvature: np.ndarray  # (nf, ng)   1/m  sqrt(K1^2 + K2^2)
+    reactions: np.ndarray          # (nf, 12)   N, N m  Fx Fy Fz Mx My Mz at A, then at B
+    end_tension: np.ndarray        # (nf, 2)    N    |support force| at A, B (0 if free)
+    end_held: np.ndarray           # (2,)       bool end A, B has a support
+
+    def xyz(self, frame: int) -> np.ndarray:
+        """Node positions (nn, 3) of one frame [m]."""
+        return np.column_stack([self.x[frame], self.y[frame], self.z[frame]])
+
+    @property
+    def top_end(self) -> int:
+        """0 if end A is the higher end at the first frame, else 1 (end B)."""
+        return 0 if self.z[0, 0] >= self.z[0, -1] else 1
+
+
+@dataclass(frozen=True, eq=False)
+class StepLog:
+    """The step log: one entry per converged time step (docs/output.md, dynamic_log.csv)."""
+    step: np.ndarray              # (ns,)    -        step number, from 1
+    time: np.ndarray              # (ns,)    s        time at the end of the step
+    dt: np.ndarray                # (ns,)    s        step length used
+    iterations: np.ndarray        # (ns,)    -        Newton iterations of the step
+    cutbacks: np.ndarray          # (ns,)    -        halvings the step needed
+    kinetic: np.ndarray           # (ns,)    J
+    strain: np.ndarray            # (ns,)    J
+    gravity: np.ndarray           # (ns,)    J        potential of the weight
+    external_work: np.ndarray     # (ns,)    J        since t = 0
+    damping_work: np.ndarray      # (ns,)    J        since t = 0
+    total: np.ndarray             # (ns,)    J        kinetic + strain + gravity
+    momentum: np.ndarray          # (ns, 3)  kg m/s
+    angular_momentum: np.ndarray  # (ns, 3)  kg m2/s
+
+    def __len__(self) -> int:
+        return len(self.step)
+
+    @property
+    def net_work(self) -> np.ndarray:
+        """External work minus damping work since t = 0 [J]."""
+        return self.external_work - self.damping_work
+
+    @property
+    def initial_total(self) -> float:
+        """Total energy at t = 0 [J], from the first step: total(step 1) minus the net
+        work of that step (the log has no row for t = 0). nan for an empty log."""
+        if len(self) == 0:
+            return float("nan")
+        return float(self.total[0] - self.net_work[0])
+
+    @property
+    def energy_change(self) -> np.ndarray:
+        """total(t) - total(0) [J]."""
+        return self.total - self.initial_total
+
+    @property
+    def energy_error(self) -> np.ndarray:
+        """Energy balance error (total(t) - total(0)) - (external - damping work) [J]."""
+        return self.energy_change - self.net_work
+
+    def relative_energy_error(self) -> float:
+        """max |energy_error| / max |external work| (nan without work or steps)."""
+        if len(self) == 0:
+            return float("nan")
+        scale = float(np.max(np.abs(self.external_work)))
+        if scale == 0.0:
+            return float("nan")
+        return float(np.max(np.abs(self.energy_error))) / scale
+
+
+@dataclass(frozen=True, eq=False)
+class DynamicResults:
+    """Dynamic results of a run: run information, frames, lines (deck order), step log."""
+    time: np.ndarray         # (nf,) s, time of each frame
+    lines: tuple             # of LineDynamic
+    log: StepLog
+    complete: bool           # the analysis reached its end
+    status: str              # 'complete', what failed, or 'running'
+    steps: int               # time steps completed
+    step_iterations: int     # Newton iterations over all steps
+    step_cutbacks: int       # step halvings in total
+    time_reached_s: float    # last time reached [s]
+    wall_time_s: float       # as recorded by rodyn (nan if not recorded)
+    scheme: str              # 'EMC', ...; '' when read from CSV (not stored there)
+    dt: float                # *DYNAMIC DT [s]; from the log when read from CSV
+    title: str               # *HEADING text; '' when read from CSV
+    deck: str                # deck text; '' when read from CSV
+    version: str
+    deck_file: str
+    folder: Path
+    source: Path             # dynamic.h5 or dynamic_nodes.csv
+    warnings: tuple = field(default=())  # what was dropped or looked odd
+
+    def line(self, name: str) -> LineDynamic:
+        """The line called `name` (KeyError if there is none)."""
+        for line in self.lines:
+            if line.name == name:
+                return line
+        raise KeyError(name)
+
+    def frame_at(self, t: float) -> int:
+        """Index of the frame nearest to time t."""
+        return int(np.argmin(np.abs(self.time - t)))
+
+    def motion_frequencies(self) -> list:
+        """Frequencies [Hz] of the harmonic *MOTION cards of the deck (needs the deck
+        text, i.e. dynamic.h5); [] when unknown."""
+        return harmonic_frequencies(self.deck)
+
+
+def harmonic_frequencies(deck: str) -> list:
+    """Non-zero frequencies [Hz] on the data lines of *MOTION, TYPE=HARMONIC cards."""
+    freqs, in_harmonic = [], False
+    for raw in deck.splitlines():
+        text = raw.strip()
+        if not text or text.startswith("**"):
+            continue
+        if text.startswith("*"):
+            upper = re.sub(r"\s+", "", text.upper())
+            in_harmonic = upper.startswith("*MOTION,") and "TYPE=HARMONIC" in upper
+            continue
+        if in_harmonic:
+            parts = [p.strip() for p in text.split(",")]
+            try:
+                f = float(parts[2])
+            except (IndexError, ValueError):
+                continue
+            if f > 0.0:
+                freqs.append(f)
+    return freqs
+
+
+def load_dynamic(path) -> DynamicResults:
+    """Read the dynamic results in folder `path` (or in the dynamic.h5 file `path`).
+
+    dynamic.h5 is used when present, unless status.txt shows that it was left by an
+    earlier run (other step counters); otherwise the CSV tables.
+    """
+    path = Path(path)
+    if path.is_file():
+        if path.suffix != ".h5":
+            raise RodynResultsError(f"{path}: expected a results folder or a dynamic.h5 file")
+        return _read_h5(path, None)
+    if not path.is_dir():
+        raise RodynResultsError(f"{path}: no such results folder")
+    status_path = path / STATUS_FILE
+    status = _read_status(status_path) if status_path.is_file() else None
+    have_csv = (path / NODES_CSV).is_file()
+    if (path / H5_FILE).is_file():
+        results = _read_h5(path / H5_FILE, status)
+        if status is None or not have_csv or _same_run(results, status):
+            return results
+    elif not have_csv:
+        raise RodynResultsError(f"{path}: no dynamic results here (neither {H5_FILE} "
+                                f"nor {NODES_CSV})")
+    if status is None:
+        raise RodynResultsError(f"{status_path}: missing (it says whether the run completed)")
+    return _read_csv_folder(path, status)
+
+
+def _same_run(results: DynamicResults, status: dict) -> bool:
+    """Whether dynamic.h5 and status.txt come from the same run. A finished dynamic.h5
+    carries the step counters of its run; one still being written does not (then it
+    belongs to the run status.txt describes as running)."""
+    if not results.complete and results.status == "running":
+        return not status["complete"]
+    return (results.steps, results.step_iterations, results.step_cutbacks) == (
+        status["steps"], status["step_iterations"], status["step_cutbacks"])
+
+
+def _check_shapes(arrays: dict, spec: dict, sizes: dict, where: str):
+    """Check arrays against shapes of `spec` ('nf', 'nn', ... fixed via `sizes`)."""
+    for key, shape in spec.items():
+        data = arrays[key]
+        expected = tuple(sizes.setdefault(d, n) if isinstance(d, str) else d
+                         for d, n in zip(shape, data.shape))
+        if data.ndim != len(shape) or data.shape != expected:
+            want = "(" + ", ".join(str(sizes.get(d, d)) for d in shape) + ")"
+            raise RodynResultsError(f"{where}: {key} has shape {data.shape}, expected {want}")
+
+
+def _make_line(name, arrays, n_frames, where) -> LineDynamic:
+    """LineDynamic from arrays named as in H5_LINE_DATASETS plus end_held."""
+    sizes = {"nf": n_frames}
+    _check_shapes(arrays, H5_LINE_DATASETS, sizes, where)
+    if sizes["nn"] < 2 or sizes["ng"] < 1:
+        raise RodynResultsError(f"{where}: {sizes['nn']} nodes and {sizes['ng']} "
+                                "integration points; need at least 2 and 1")
+    values = {k: np.asarray(arrays[k], dtype=int if k in ("gp_element", "gp_point")
+                            else float) for k in H5_LINE_DATASETS}
+    return LineDynamic(name=name, end_held=np.asarray(arrays["end_held"], dtype=bool),
+                       **values)
+
+
+def _make_log(arrays, where) -> StepLog:
+    _check_shapes(arrays, H5_LOG_DATASETS, {}, where)
+    return StepLog(**{k: np.asarray(arrays[k], dtype=int if k in _LOG_INTEGERS else float)
+                      for k in H5_LOG_DATASETS})
+
+
+# --- HDF5 ---------------------------------------------------------------------------
+
+def _read_h5(path: Path, status) -> DynamicResults:
+    """Dynamic results from a dynamic.h5 file (status: status.txt values or None)."""
+    import h5py  # only needed here: the CSV fallback works without h5py
+
+    try:
+        f = h5py.File(path, "r", locking=False)
+    except OSError as exc:
+        raise RodynResultsError(f"{path}: cannot read as HDF5 ({exc})") from None
+    with f:
+        info = {k: _h5_attr(f, k, path) for k in
+                ("complete", "status", "title", "version", "deck_file", "scheme", "dt")}
+        dyn = f.get("dynamic")
+        if not isinstance(dyn, h5py.Group):
+            raise RodynResultsError(f"{path}: group /dynamic missing")
+        time = np.asarray(_h5_dataset(dyn, "time", path)[...], dtype=float)
+        if time.ndim != 1:
+            raise RodynResultsError(f"{path}: /dynamic/time has shape {time.shape}, "
+                                    "expected (n_frames,)")
+        log_group = dyn.get("log")
+        if not isinstance(log_group, h5py.Group):
+            raise RodynResultsError(f"{path}: group /dynamic/log missing")
+        log = _make_log({k: _h5_dataset(log_group, k, path)[...] for k in H5_LOG_DATASETS},
+                        f"{path}: /dynamic/log")
+        lines = []
+        for key, group in dyn.items():
+            if key in ("time", "log"):
+                continue
+            if not isinstance(group, h5py.Group):
+                raise RodynResultsError(f"{path}: {group.name} is not a line group")
+            arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
+            arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
+                                          "end_held", path)
+            lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
+                                    f"{path}: {group.name}"))
+        deck = f["deck"].asstr()[()] if isinstance(f.get("deck"), h5py.Dataset) else ""
+        finished = "steps" in dyn.attrs
+        counters = {}
+        if finished:
+            counters = {k: _h5_attr(dyn, k, path) for k in
+                        ("steps", "step_iterations", "step_cutbacks", "time_reached_s",
+                         "wall_time_s")}
+    if not lines:
+        raise RodynResultsError(f"{path}: no lines in /dynamic")
+    if not finished:  # running or killed: counters from what was flushed
+        counters = {"steps": len(log), "step_iterations": int(log.iterations.sum()),
+                    "step_cutbacks": int(log.cutbacks.sum()),
+                    "time_reached_s": float(time[-1]) if len(time) else 0.0,
+                    "wall_time_s": float("nan")}
+    return DynamicResults(
+        time=time, lines=tuple(lines), log=log, complete=bool(info["complete"]),
+        status=str(info["status"]), steps=int(counters["steps"]),
+        step_iterations=int(counters["step_iterations"]),
+        step_cutbacks=int(counters["step_cutbacks"]),
+        time_reached_s=float(counters["time_reached_s"]),
+        wall_time_s=float(counters["wall_time_s"]), scheme=str(info["scheme"]),
+        dt=float(info["dt"]), title=str(info["title"]), deck=str(deck),
+        version=str(info["version"]), deck_file=str(info["deck_file"]),
+        folder=path.parent, source=path)
+
+
+def _h5_attr(obj, key, path):
+    """Attribute `key` of an HDF5 object; str for strings, Python/numpy values else."""
+    if key not in obj.attrs:
+        raise RodynResultsError(f"{path}: attribute '{key}' missing on {obj.name}")
+    value = obj.attrs[key]
+    if isinstance(value, bytes):
+        value = value.decode("utf-8")
+    return value.item() if isinstance(value, np.generic) else value
+
+
+def _h5_dataset(group, key, path):
+    """Dataset `key` of an HDF5 group."""
+    import h5py
+
+    data = group.get(key)
+    if not isinstance(data, h5py.Dataset):
+        raise RodynResultsError(f"{path}: dataset {group.name.rstrip('/')}/{key} missing")
+    return data
+
+
+# --- CSV + status.txt ---------------------------------------------------------------
+
+def _read_status(path: Path) -> dict:
+    """status.txt of a dynamic run as a dict of typed values (keys of STATUS_KEYS)."""
+    raw = {}
+    with open(path, encoding="utf-8") as f:
+        for number, text in enumerate(f, 1):
+            if text.strip():
+                key, sep, value = text.partition("=")
+                if not sep:
+                    raise RodynResultsError(f"{path}: line {number}: expected 'key = value', "
+                                            f"got {text.strip()!r}")
+                raw[key.strip()] = value.strip()
+    if raw.get("dynamic") != "true":
+        raise RodynResultsError(f"{path}: not the status of a dynamic run (no "
+                                "'dynamic = true')")
+    status = {}
+    for key, kind in STATUS_KEYS.items():
+        if key not in raw:
+            raise RodynResultsError(f"{path}: key '{key}' missing")
+        value = raw[key]
+        try:
+            if kind == "bool":
+                status[key] = {"true": True, "false": False}[value]
+            else:
+                status[key] = {"str": str, "int": int, "float": float}[kind](value)
+        except (KeyError, ValueError):
+            raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid {kind}") from None
+    return status
+
+
+def _read_rows(path: Path, header: tuple, warnings: list) -> list:
+    """Rows of a rodyn CSV table as lists of strings (header checked). A last row with
+    the wrong number of fields (cut short by a kill) is dropped with a warning."""
+    if not path.is_file():
+        raise RodynResultsError(f"{path}: file missing")
+    with open(path, newline="", encoding="utf-8") as f:
+        reader = csv.reader(f)
+        first = next(reader, [])
+        if tuple(first) != header:
+            raise RodynResultsError(f"{path}: line 1: header is {','.join(first)!r}, "
+                                    f"expected {','.join(header)!r}")
+        rows, bad = [], None
+        for fields in reader:
+            if not fields:
+                continue
+            if bad is not None:  # a short row followed by more rows: malformed
+                raise RodynResultsError(f"{path}: line {bad[0]}: {bad[1]} fields, "
+                                        f"expected {len(header)}")
+            if len(fields) != len(header):
+                bad = (reader.line_num, len(fields))
+                continue
+            rows.append((reader.line_num, fields))
+    if bad is not None:
+        warnings.append(f"{path.name}: last row (line {bad[0]}) cut short, dropped")
+    return rows
+
+
+def _column(rows, index, column, kind, path):
+    """One column of rows as a numpy array of `kind` (float or int)."""
+    out = np.empty(len(rows), dtype=kind)
+    for i, (number, fields) in enumerate(rows):
+        try:
+            out[i] = kind(fields[index])
+        except ValueError:
+            raise RodynResultsError(f"{path}: line {number}: column {column}: "
+                                    f"{fields[index]!r} is not "
+                                    f"{'an integer' if kind is int else 'a number'}") from None
+    return out
+
+
+def _frames(rows, header, path, integer_columns=()):
+    """Rows grouped into frames: (times (nf,), {line: {column: (nf, n) array}}).
+
+    Each frame holds the same rows per line; a last frame with fewer rows (a kill
+    while writing it) is reported as `short` so that the caller can drop it."""
+    columns = {c: _column(rows, i, c, int if c in integer_columns else float, path)
+               for i, c in enumerate(header) if c not in ("line", "end")}
+    names = [fields[1] for _, fields in rows]
+    times = columns["time_s"]
+    # frame boundaries: where the time changes
+    starts = np.flatnonzero(np.r_[True, times[1:] != times[:-1]])
+    counts = np.diff(np.r_[starts, len(rows)])
+    return columns, names, times[starts], starts, counts
+
+
+def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
+    """Dynamic results from the CSV tables of `folder` and its status.txt."""
+    warnings = []
+    node_rows = _read_rows(folder / NODES_CSV, NODES_HEADER, warnings)
+    point_rows = _read_rows(folder / ELEMENTS_CSV, ELEMENTS_HEADER, warnings)
+    end_rows = _read_rows(folder / ENDS_CSV, ENDS_HEADER, warnings)
+    log_rows = _read_rows(folder / LOG_CSV, LOG_HEADER, warnings)
+    for name, rows in ((NODES_CSV, node_rows), (ELEMENTS_CSV, point_rows)):
+        if not rows:
+            raise RodynResultsError(f"{folder / name}: no frames (header only)")
+
+    nodes = _frames(node_rows, NODES_HEADER, folder / NODES_CSV, ("node",))
+    points = _frames(point_rows, ELEMENTS_HEADER, folder / ELEMENTS_CSV,
+                     ("element", "point"))
+    # frames: those of the nodes table; the last one may be short in any table
+    times = nodes[2]
+    n_frames = len(times)
+    full = {}
+    for name, table in ((NODES_CSV, nodes), (ELEMENTS_CSV, points)):
+        counts = table[4]
+        if len(counts) and np.any(counts[:-1] != counts[0]):
+            k = int(np.flatnonzero(counts[:-1] != counts[0])[0])
+            raise RodynResultsError(f"{folder / name}: frame at t = {table[2][k]!r} has "
+                                    f"{counts[k]} rows, the first frame {counts[0]}")
+        full[name] = len(counts) > 0 and counts[-1] == counts[0]
+        n_frames = min(n_frames, len(counts) if full[name] else len(counts) - 1)
+    if n_frames < len(times):
+        warnings.append(f"last frame (t = {times[-1]:g} s) incomplete, dropped")
+    times = times[:n_frames]
+    for name, table in ((ELEMENTS_CSV, points),):
+        if not np.array_equal(table[2][:n_frames], times):
+            raise RodynResultsError(f"{folder / name}: frame times differ from {NODES_CSV}")
+
+    lines = []
+    per_frame_nodes = int(nodes[4][0])
+    per_frame_points = int(points[4][0]) if len(points[4]) else 0
+    node_names = nodes[1][:per_frame_nodes]
+    point_names = points[1][:per_frame_points]
+    line_names = list(dict.fromkeys(node_names))
+    for name in dict.fromkeys(point_names):
+        if name not in line_names:
+            raise RodynResultsError(f"{folder / ELEMENTS_CSV}: line {name!r} is not in "
+                                    f"{NODES_CSV}")
+    ends, complete_frames = _ends(end_rows, folder / ENDS_CSV, times, line_names)
+    if complete_frames < n_frames:
+        warnings.append(f"last frame (t = {times[-1]:g} s) incomplete in {ENDS_CSV}, "
+                        "dropped")
+        n_frames = complete_frames
+        times = times[:n_frames]
+        for line in ends.values():
+            line["reactions"] = line["reactions"][:n_frames]
+            line["end_tension"] = line["end_tension"][:n_frames]
+    for name in line_names:
+        nsel = np.array([n == name for n in node_names])
+        psel = np.array([n == name for n in point_names], dtype=bool)
+        if not psel.any():
+            raise RodynResultsError(f"{folder / ELEMENTS_CSV}: no rows for line {name!r}")
+
+        def block(table, sel, column, per_frame):
+            data = table[0][column][:n_frames * per_frame].reshape(n_frames, per_frame)
+            return data[:, sel]
+
+        arrays = {
+            "node_s": block(nodes, nsel, "s_m", per_frame_nodes)[0],
+            "x": block(nodes, nsel, "x_m", per_frame_nodes),
+            "y": block(nodes, nsel, "y_m", per_frame_nodes),
+            "z": block(nodes, nsel, "z_m", per_frame_nodes),
+            "gp_s": block(points, psel, "s_m", per_frame_points)[0],
+            "gp_element": block(points, psel, "element", per_frame_points)[0],
+            "gp_point": block(points, psel, "point", per_frame_points)[0],
+            "effective_tension": block(points, psel, "effective_tension_N", per_frame_points),
+            "moment_1": block(points, psel, "moment_1_Nm", per_frame_points),
+            "moment_2": block(points, psel, "moment_2_Nm", per_frame_points),
+            "torque": block(points, psel, "torque_Nm", per_frame_points),
+            "bending_curvature": block(points, psel, "curvature_per_m", per_frame_points),
+        }
+        arrays.update(ends[name])
+        lines.append(_make_line(name, arrays, n_frames, f"{folder}: line {name!r}"))
+
+    log = _make_log(_log_arrays(log_rows, folder / LOG_CSV), f"{folder / LOG_CSV}")
+    dt = float(log.dt.max()) if len(log) else float("nan")
+    return DynamicResults(
+        time=times, lines=tuple(lines), log=log, complete=status["complete"],
+        status=status["status"], steps=status["steps"],
+        step_iterations=status["step_iterations"], step_cutbacks=status["step_cutbacks"],
+        time_reached_s=status["time_reached_s"], wall_time_s=status["wall_time_s"],
+        scheme="", dt=dt, title="", deck="", version=status["rodyn_version"],
+        deck_file=status["deck"], folder=folder, source=folder / NODES_CSV,
+        warnings=tuple(warnings))
+
+
+def _ends(rows, path, times, line_names):
+    """reactions (nf, 12), end_tension (nf, 2), end_held (2,) of every line from the
+    rows of dynamic_ends.csv (held ends only; free ends stay zero), and the number of
+    frames that have all their rows (the last one may be cut short by a kill)."""
+    n_frames = len(times)
+    out = {name: {"reactions": np.zeros((n_frames, 12)), "end_tension": np.zeros((n_frames, 2)),
+                  "end_held": np.zeros(2, dtype=bool)} for name in line_names}
+    index = {t: i for i, t in enumerate(times)}
+    seen = {}
+    for number, fields in rows:
+        where = f"{path}: line {number}"
+        try:
+            t = float(fields[0])
+        except ValueError:
+            raise RodynResultsError(f"{where}: column time_s: {fields[0]!r} is not "
+                                    "a number") from None
+        name, end = fields[1], fields[2]
+        if name not in out:
+            raise RodynResultsError(f"{where}: line {name!r} is not in {NODES_CSV}")
+        if end not in ("A", "B"):
+            raise RodynResultsError(f"{where}: column end: {end!r} is not A or B")
+        k = "AB".index(end)
+        if t not in index:
+            if t > times[-1]:
+                continue  # rows of a dropped last frame
+            raise RodynResultsError(f"{where}: time {t!r} is not a frame of {NODES_CSV}")
+        values = []
+        for column, text in zip(ENDS_HEADER[3:], fields[3:]):
+            try:
+                values.append(float(text))
+            except ValueError:
+                raise RodynResultsError(f"{where}: column {column}: {text!r} is not "
+                                        "a number") from None
+        i = index[t]
+        line = out[name]
+        line["reactions"][i, 6 * k:6 * k + 6] = values[:6]
+        line["end_tension"][i, k] = values[6]
+        line["end_held"][k] = True
+        seen[(name, k, i)] = True
+    complete_frames = n_frames
+    for name, line in out.items():
+        for k in (0, 1):
+            if line["end_held"][k]:
+                missing = [i for i in range(n_frames) if (name, k, i) not in seen]
+                if missing and missing[0] < n_frames - 1:
+                    raise RodynResultsError(f"{path}: no row for line {name!r} end "
+                                            f"{'AB'[k]} at t = {times[missing[0]]!r}")
+                if missing:
+                    complete_frames = n_frames - 1
+    return out, complete_frames
+
+
+def _log_arrays(rows, path) -> dict:
+    """The step log columns under the StepLog names."""
+    cols = {c: _column(rows, i, c, int if c in ("step", "iterations", "cutbacks") else float,
+                       path) for i, c in enumerate(LOG_HEADER)}
+    return {
+        "step": cols["step"], "time": cols["time_s"], "dt": cols["dt_s"],
+        "iterations": cols["iterations"], "cutbacks": cols["cutbacks"],
+        "kinetic": cols["kinetic_J"], "strain": cols["strain_J"],
+        "gravity": cols["gravity_J"], "external_work": cols["external_work_J"],
+        "damping_work": cols["damping_work_J"], "total": cols["total_J"],
+        "momentum": np.column_stack([cols["px"], cols["py"], cols["pz"]]).reshape(-1, 3),
+        "angular_momentum": np.column_stack([cols["Lx"], cols["Ly"], cols["Lz"]]).reshape(-1, 3),
+    }
