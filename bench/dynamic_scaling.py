@@ -180,6 +180,8 @@ def machine_facts(rodyn):
         "os": f"{platform.system()} {platform.release()}",
         "rodyn": cmd([rodyn, "--version"]),
         "gfortran": cmd(["gfortran", "--version"]),
+        "load average before the run (1/5/15 min)":
+            " / ".join(f"{x:.2f}" for x in os.getloadavg()),
     }
 
 
@@ -211,8 +213,8 @@ of the static-only deck**. It holds the dynamic set-up, the 20 steps and closing
 output (only `status.txt` is written). Time per step = dynamic time / steps, Newton
 iterations per step = `step_iterations` / `steps` of `status.txt`. In these first
 0.3 s the ramp-in has the motion at under 3 % of its amplitude, so the steps are
-gentle; a full-amplitude step may need one more iteration (the paper's case 2 over
-15 s averages about 3.3 iterations per step).
+gentle; a full-amplitude step may need one more iteration (the paper's case 2, with
+30 elements over 15 s, averages about 3.3 iterations per step).
 
 """
 
