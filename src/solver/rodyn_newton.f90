@@ -11,7 +11,9 @@
 !> rod at second order and the axial rows grow, even for tiny steps.
 !>
 !> Convergence: scaled residual <= force_tol AND scaled correction <= disp_tol, or the
-!> residual already below force_tol at the first evaluation. With stiff sections
+!> residual already below force_tol at the first evaluation, or (quadratic regime) a
+!> full step that cut the residual tenfold to below force_tol with a correction below
+!> sqrt(disp_tol): the error left is of order correction^2 <= disp_tol. With stiff sections
 !> (EA/EI ~ 1e4 and more) round-off puts a floor under the residual: a correction below
 !> roundoff_correction with a residual below roundoff_factor * force_tol is accepted
 !> too (the configuration can no longer change in double precision), and logged so.
@@ -104,7 +106,7 @@ contains
       type(newton_stats_t), intent(out) :: stats     !< what happened
       type(error_t), intent(inout) :: err            !< reason of a failure
       real(wp) :: rn, cn, alpha, s0, st, a_lo, s_lo, a_hi, s_hi, a_new
-      real(wp) :: rn_trial
+      real(wp) :: rn_trial, rn_prev
       integer :: it, bt
       rn_trial = 0.0_wp
       call prob%evaluate(.true., err)
@@ -162,11 +164,20 @@ contains
             call set_error(err, stat_numerical, 'newton_solve: residual is not finite')
             return
          end if
+         rn_prev = rn
          rn = rn_trial
          stats%residual = rn
          stats%correction = alpha*cn
          call log_line(it, rn, alpha*cn, alpha)
          if (rn <= opts%force_tol .and. alpha*cn <= opts%disp_tol) then
+            stats%converged = .true.
+            return
+         end if
+         ! quadratic regime: a full step that cut the residual tenfold to below FORCE TOL
+         ! leaves an error of order correction^2, so a correction below sqrt(DISP TOL)
+         ! already meets DISP TOL (saves the iteration that would only confirm it)
+         if (rn <= opts%force_tol .and. alpha == 1.0_wp .and. rn <= 0.1_wp*rn_prev .and. &
+             cn <= sqrt(opts%disp_tol)) then
             stats%converged = .true.
             return
          end if
