@@ -47,7 +47,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "postproc"))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
 from rodyn_post import load_dynamic  # noqa: E402
-from static_scaling import machine_facts  # noqa: E402
+from benchlib import machine_facts  # noqa: E402
 
 SECTION_INC = "paper_cable_section.inc"
 # name: (deck in input/, final window [s], edits: RAMP on *MOTION, TIME, OUTPUT INTERVAL)

@@ -26,6 +26,8 @@ import subprocess
 import sys
 import tempfile
 
+from benchlib import read_status, machine_facts
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ORDERS = [3, 2, 1]
 MESHES = [10, 20, 40]
@@ -81,14 +83,6 @@ Z, {AMPLITUDE}, {FREQUENCY}, 0.0
 """
 
 
-def read_status(path):
-    st = {}
-    with open(path) as f:
-        for line in f:
-            if "=" in line:
-                k, v = line.split("=", 1)
-                st[k.strip()] = v.strip()
-    return st
 
 
 def run_mesh(rodyn, tmp, n, p, time):
@@ -169,31 +163,6 @@ def paper_spread():
     return out
 
 
-def machine_facts(rodyn):
-    cpu = "unknown"
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-
-    def cmd(args):
-        try:
-            r = subprocess.run(args, capture_output=True, text=True)
-            return (r.stdout or r.stderr).strip().splitlines()[0]
-        except (OSError, IndexError):
-            return "unknown"
-    return {
-        "date": datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z"),
-        "cpu": cpu,
-        "cores": str(os.cpu_count()),
-        "os": f"{platform.system()} {platform.release()}",
-        "rodyn": cmd([rodyn, "--version"]),
-        "gfortran": cmd(["gfortran", "--version"]),
-    }
 
 
 def e(v, spec=".2e"):

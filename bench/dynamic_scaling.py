@@ -35,6 +35,8 @@ import sys
 import tempfile
 import time
 
+from benchlib import read_status, fit_exponent, machine_facts
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 SIZES = [10, 30, 100, 300, 1000, 3000, 10000]
@@ -68,14 +70,6 @@ Z, {AMPLITUDE}, {FREQUENCY}, 0.0
     return text
 
 
-def read_status(path):
-    status = {}
-    with open(path) as f:
-        for line in f:
-            if "=" in line:
-                k, v = line.split("=", 1)
-                status[k.strip()] = v.strip()
-    return status
 
 
 def repeats_for(n):
@@ -144,45 +138,8 @@ def run_case(rodyn, workdir, n, order):
     return row
 
 
-def fit_exponent(rows, key):
-    pts = [(math.log(r["elements"]), math.log(r[key])) for r in rows
-           if r["elements"] >= FIT_MIN_N and not r["failed"] and r[key] > 0]
-    if len(pts) < 2:
-        return float("nan")
-    mx = sum(p[0] for p in pts) / len(pts)
-    my = sum(p[1] for p in pts) / len(pts)
-    sxx = sum((p[0] - mx) ** 2 for p in pts)
-    sxy = sum((p[0] - mx) * (p[1] - my) for p in pts)
-    return sxy / sxx
 
 
-def machine_facts(rodyn):
-    cpu = "unknown"
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-
-    def cmd(args):
-        try:
-            r = subprocess.run(args, capture_output=True, text=True)
-            return (r.stdout or r.stderr).strip().splitlines()[0]
-        except (OSError, IndexError):
-            return "unknown"
-    return {
-        "date": datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z"),
-        "cpu": cpu,
-        "cores": str(os.cpu_count()),
-        "os": f"{platform.system()} {platform.release()}",
-        "rodyn": cmd([rodyn, "--version"]),
-        "gfortran": cmd(["gfortran", "--version"]),
-        "load average before the run (1/5/15 min)":
-            " / ".join(f"{x:.2f}" for x in os.getloadavg()),
-    }
 
 
 INTRO = f"""# Benchmark: cost of a dynamic time step against element count
@@ -240,7 +197,7 @@ def main():
     if not os.access(rodyn, os.X_OK):
         sys.exit(f"no executable rodyn at {rodyn} (build it, or give --rodyn)")
 
-    facts = machine_facts(rodyn)
+    facts = machine_facts(rodyn, load_average=True)
     rows = []
     with tempfile.TemporaryDirectory(prefix="rodyn_dynscaling_") as tmp:
         for order in ORDERS:
@@ -279,8 +236,8 @@ def main():
     fits = {}
     for order in ORDERS:
         sub = [r for r in rows if r["order"] == order]
-        fits[order] = (fit_exponent(sub, "per_step_s"),
-                       fit_exponent(sub, "per_iteration_per_element_us") + 1.0)
+        fits[order] = (fit_exponent(sub, "per_step_s", FIT_MIN_N),
+                       fit_exponent(sub, "per_iteration_per_element_us", FIT_MIN_N) + 1.0)
         L.append(f"- order {order}: time per step ~ n^{fits[order][0]:.3f} "
                  f"(least squares on log-log over n >= {FIT_MIN_N}); time per Newton "
                  f"iteration ~ n^{fits[order][1]:.3f}")

@@ -22,6 +22,8 @@ import subprocess
 import sys
 import tempfile
 
+from benchlib import read_status
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ORDERS = [1, 2, 3]
 MESHES = [10, 20, 40, 80]
@@ -69,14 +71,6 @@ Paper cable, {n_elements} elements of order {order}
 """
 
 
-def read_status(path):
-    st = {}
-    with open(path) as f:
-        for line in f:
-            if "=" in line:
-                k, v = line.split("=", 1)
-                st[k.strip()] = v.strip()
-    return st
 
 
 def run_mesh(rodyn, tmp, n, p):

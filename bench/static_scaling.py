@@ -26,6 +26,8 @@ import sys
 import tempfile
 import time
 
+from benchlib import read_status, fit_exponent, machine_facts
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 FULL_SIZES = [10, 30, 100, 300, 1000, 3000, 10000]
@@ -54,14 +56,6 @@ Paper cable, {n_elements} elements of order {order}
 """
 
 
-def read_status(path):
-    status = {}
-    with open(path) as f:
-        for line in f:
-            if "=" in line:
-                k, v = line.split("=", 1)
-                status[k.strip()] = v.strip()
-    return status
 
 
 def run_case(rodyn, workdir, n, order, repeats):
@@ -101,43 +95,8 @@ def run_case(rodyn, workdir, n, order, repeats):
     }
 
 
-def fit_exponent(rows, key):
-    pts = [(math.log(r["elements"]), math.log(r[key])) for r in rows
-           if r["elements"] >= FIT_MIN_N and not r["failed"] and r[key] > 0]
-    if len(pts) < 2:
-        return float("nan")
-    mx = sum(p[0] for p in pts) / len(pts)
-    my = sum(p[1] for p in pts) / len(pts)
-    sxx = sum((p[0] - mx) ** 2 for p in pts)
-    sxy = sum((p[0] - mx) * (p[1] - my) for p in pts)
-    return sxy / sxx
 
 
-def machine_facts(rodyn):
-    cpu = "unknown"
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-
-    def cmd(args):
-        try:
-            r = subprocess.run(args, capture_output=True, text=True)
-            return (r.stdout or r.stderr).strip().splitlines()[0]
-        except (OSError, IndexError):
-            return "unknown"
-    return {
-        "date": datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z"),
-        "cpu": cpu,
-        "cores": str(os.cpu_count()),
-        "os": f"{platform.system()} {platform.release()}",
-        "rodyn": cmd([rodyn, "--version"]),
-        "gfortran": cmd(["gfortran", "--version"]),
-    }
 
 
 def repeats_for(n, quick):
@@ -204,7 +163,7 @@ def main():
     fits = {}
     for order in orders:
         sub = [r for r in rows if r["order"] == order]
-        fits[order] = (fit_exponent(sub, "solve_s"), fit_exponent(sub, "process_s"))
+        fits[order] = (fit_exponent(sub, "solve_s", FIT_MIN_N), fit_exponent(sub, "process_s", FIT_MIN_N))
         print(f"order {order}: fitted exponent over n >= {FIT_MIN_N}: solve time ~ n^"
               f"{fits[order][0]:.3f}, process time ~ n^{fits[order][1]:.3f}")
 

@@ -24,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .results import RodynResultsError
+from .results import RodynResultsError, _h5_attr, _h5_dataset, _read_key_values
+from .results import _read_status as _read_static_status
 
 H5_FILE = "dynamic.h5"
 STATUS_FILE = "status.txt"
@@ -345,55 +346,19 @@ def _read_h5(path: Path, status) -> DynamicResults:
         folder=path.parent, source=path)
 
 
-def _h5_attr(obj, key, path):
-    """Attribute `key` of an HDF5 object; str for strings, Python/numpy values else."""
-    if key not in obj.attrs:
-        raise RodynResultsError(f"{path}: attribute '{key}' missing on {obj.name}")
-    value = obj.attrs[key]
-    if isinstance(value, bytes):
-        value = value.decode("utf-8")
-    return value.item() if isinstance(value, np.generic) else value
 
 
-def _h5_dataset(group, key, path):
-    """Dataset `key` of an HDF5 group."""
-    import h5py
-
-    data = group.get(key)
-    if not isinstance(data, h5py.Dataset):
-        raise RodynResultsError(f"{path}: dataset {group.name.rstrip('/')}/{key} missing")
-    return data
 
 
 # --- CSV + status.txt ---------------------------------------------------------------
 
 def _read_status(path: Path) -> dict:
     """status.txt of a dynamic run as a dict of typed values (keys of STATUS_KEYS)."""
-    raw = {}
-    with open(path, encoding="utf-8") as f:
-        for number, text in enumerate(f, 1):
-            if text.strip():
-                key, sep, value = text.partition("=")
-                if not sep:
-                    raise RodynResultsError(f"{path}: line {number}: expected 'key = value', "
-                                            f"got {text.strip()!r}")
-                raw[key.strip()] = value.strip()
-    if raw.get("dynamic") != "true":
+    if _read_key_values(path).get("dynamic") != "true":
         raise RodynResultsError(f"{path}: not the status of a dynamic run (no "
                                 "'dynamic = true')")
-    status = {}
-    for key, kind in STATUS_KEYS.items():
-        if key not in raw:
-            raise RodynResultsError(f"{path}: key '{key}' missing")
-        value = raw[key]
-        try:
-            if kind == "bool":
-                status[key] = {"true": True, "false": False}[value]
-            else:
-                status[key] = {"str": str, "int": int, "float": float}[kind](value)
-        except (KeyError, ValueError):
-            raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid {kind}") from None
-    return status
+    return _read_static_status(path, STATUS_KEYS)
+
 
 
 def _read_rows(path: Path, header: tuple, warnings: list) -> list:

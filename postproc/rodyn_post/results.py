@@ -208,25 +208,19 @@ def _h5_dataset(group, key, path):
 
     data = group.get(key)
     if not isinstance(data, h5py.Dataset):
-        raise RodynResultsError(f"{path}: dataset {group.name}/{key} missing")
+        raise RodynResultsError(f"{path}: dataset {group.name.rstrip('/')}/{key} missing")
     return data
 
 
 # --- CSV + status.txt ---------------------------------------------------------------
 
-def _read_status(path: Path) -> dict:
-    """status.txt as a dict of typed values (keys as in STATUS_KEYS)."""
-    raw = {}
-    with open(path, encoding="utf-8") as f:
-        for number, text in enumerate(f, 1):
-            if text.strip():
-                key, sep, value = text.partition("=")
-                if not sep:
-                    raise RodynResultsError(f"{path}: line {number}: expected 'key = value', "
-                                            f"got {text.strip()!r}")
-                raw[key.strip()] = value.strip()
+def _read_status(path: Path, keys: dict = None) -> dict:
+    """status.txt as a dict of typed values for `keys` (name -> 'str', 'int', 'float' or
+    'bool'; default STATUS_KEYS). Shared by the static and the dynamic reader."""
+    keys = STATUS_KEYS if keys is None else keys
+    raw = _read_key_values(path)
     status = {}
-    for key, kind in STATUS_KEYS.items():
+    for key, kind in keys.items():
         if key not in raw:
             raise RodynResultsError(f"{path}: key '{key}' missing")
         value = raw[key]
@@ -238,6 +232,20 @@ def _read_status(path: Path) -> dict:
         except (KeyError, ValueError):
             raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid {kind}") from None
     return status
+
+
+def _read_key_values(path: Path) -> dict:
+    """The 'key = value' lines of a status file, values as text."""
+    raw = {}
+    with open(path, encoding="utf-8") as f:
+        for number, text in enumerate(f, 1):
+            if text.strip():
+                key, sep, value = text.partition("=")
+                if not sep:
+                    raise RodynResultsError(f"{path}: line {number}: expected 'key = value', "
+                                            f"got {text.strip()!r}")
+                raw[key.strip()] = value.strip()
+    return raw
 
 
 def _read_csv_folder(folder: Path, status: dict) -> StaticResults:
