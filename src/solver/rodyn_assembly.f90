@@ -148,7 +148,7 @@ contains
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
       real(wp) :: de(3, 3, max_nen), e0(6, max_points)
-      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j
+      integer :: e, l, p, nen, a
       fint = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
@@ -167,22 +167,36 @@ contains
             call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
                                     ke(1:6*nen, 1:6*nen), want_k)
-            do a = 1, nen
-               fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
-            end do
-            if (.not. want_k) cycle
-            do a = 1, nen
-               node = nodes(a)
-               do j = 1, 6
-                  dofs(6*(a - 1) + j) = 6*(node - 1) + j
-               end do
-               if (sup%rotated(node)) call rotate_rows_cols(ke(1:6*nen, 1:6*nen), a, &
-                                                        sup%basis(:, :, node))
-            end do
-            call banded_add(bm, dofs(1:6*nen), ke(1:6*nen, 1:6*nen))
+            call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
+                                 want_k)
          end associate
       end do
    end subroutine assemble_static
+
+   !> Add an element's forces to fint and, if want_k, its matrix (in the node bases of
+   !> rotated nodes) to the banded tangent.
+   subroutine scatter_element(sup, nodes, fe, ke, fint, bm, want_k)
+      type(supports_t), intent(in) :: sup   !< supports (node bases)
+      integer, intent(in) :: nodes(:)       !< (nen) global nodes of the element
+      real(wp), intent(in) :: fe(:, :)      !< (6, nen) element forces
+      real(wp), intent(inout) :: ke(:, :)   !< (6 nen, 6 nen) element matrix (rotated here)
+      real(wp), intent(inout) :: fint(:, :) !< (6, nn) global forces
+      type(banded_t), intent(inout) :: bm   !< tangent
+      logical, intent(in) :: want_k         !< add the matrix
+      integer :: dofs(6*max_nen), a, j, nen
+      nen = size(nodes)
+      do a = 1, nen
+         fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
+      end do
+      if (.not. want_k) return
+      do a = 1, nen
+         do j = 1, 6
+            dofs(6*(a - 1) + j) = 6*(nodes(a) - 1) + j
+         end do
+         if (sup%rotated(nodes(a))) call rotate_rows_cols(ke, a, sup%basis(:, :, nodes(a)))
+      end do
+      call banded_add(bm, dofs(1:6*nen), ke)
+   end subroutine scatter_element
 
    !> Step internal force fint (6, nn) of a time-integration scheme between the states
    !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
@@ -209,7 +223,7 @@ contains
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
-      integer :: dofs(6*max_nen), e, l, p, nen, a, node, j, nd
+      integer :: e, l, p, nen, a, j, nd
       fint = 0.0_wp
       fdamp = 0.0_wp
       if (want_k) then
@@ -231,9 +245,6 @@ contains
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
                                      ke(1:6*nen, 1:6*nen), want_k)
-            do a = 1, nen
-               fint(:, nodes(a)) = fint(:, nodes(a)) + fe(:, a)
-            end do
             nd = 6*nen
             if (beta > 0.0_wp) then
                do a = 1, nen
@@ -255,16 +266,7 @@ contains
                end do
                if (want_k) ke(1:nd, 1:nd) = ke(1:nd, 1:nd) + beta/dt*ks(1:nd, 1:nd)
             end if
-            if (.not. want_k) cycle
-            do a = 1, nen
-               node = nodes(a)
-               do j = 1, 6
-                  dofs(6*(a - 1) + j) = 6*(node - 1) + j
-               end do
-               if (sup%rotated(node)) call rotate_rows_cols(ke(1:6*nen, 1:6*nen), a, &
-                                                            sup%basis(:, :, node))
-            end do
-            call banded_add(bm, dofs(1:6*nen), ke(1:6*nen, 1:6*nen))
+            call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:nd, 1:nd), fint, bm, want_k)
          end associate
       end do
    end subroutine assemble_dynamic
