@@ -132,8 +132,9 @@ program rodyn
                        show_progress)
       if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
       if (.not. opts%quiet .and. .not. has_error(err)) write (output_unit, &
-         '(a,i0,a,i0,a,i0,a)') 'dynamic solution: ', summary%steps, ' steps, ', &
-         summary%step_iterations, ' Newton iterations, ', summary%step_cutbacks, ' halvings'
+         '(a,i0,a,i0,a,i0,a,i0,a)') 'dynamic solution: ', summary%steps, ' steps, ', &
+         summary%step_iterations, ' Newton iterations, ', summary%step_tangents, &
+         ' tangents, ', summary%step_cutbacks, ' halvings'
    end if
    if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
    if (has_error(err)) call finish(err%code)

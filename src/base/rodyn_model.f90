@@ -148,6 +148,7 @@ module rodyn_model
       integer :: max_cutbacks = 6         !< halvings of a step
       real(wp) :: force_tol = 1.0e-8_wp   !< residual / reference force [-]
       real(wp) :: disp_tol = 1.0e-8_wp    !< correction / reference length [-]
+      logical :: reuse_tangent = .true.   !< TANGENT=REUSE: modified Newton (rodyn_newton)
       real(wp) :: rayleigh_alpha = 0.0_wp !< mass-proportional damping [1/s]
       real(wp) :: rayleigh_beta = 0.0_wp  !< stiffness-proportional damping [s]
    end type dynamic_options_t

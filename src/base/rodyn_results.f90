@@ -34,6 +34,7 @@ module rodyn_results
       real(wp) :: time = 0.0_wp                 !< time at the end of the step [s]
       real(wp) :: dt = 0.0_wp                   !< step length used [s]
       integer :: iterations = 0                 !< Newton iterations of the step
+      integer :: tangents = 0                   !< tangents formed in the step (summary only)
       integer :: cutbacks = 0                   !< halvings needed by the step
       real(wp) :: kinetic = 0.0_wp              !< kinetic energy [J]
       real(wp) :: strain = 0.0_wp               !< stored (strain) energy [J]
@@ -61,5 +62,6 @@ module rodyn_results
       integer :: steps = 0                     !< time steps completed
       integer :: step_cutbacks = 0             !< step halvings in total
       integer :: step_iterations = 0           !< Newton iterations over all steps
+      integer :: step_tangents = 0             !< tangents formed and factorised, all steps
    end type run_summary_t
 end module rodyn_results

@@ -11,10 +11,10 @@
 module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
-   use rodyn_shape, only: shape_lagrange, max_nen
+   use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
-                                rod_rotation_geometric, rod_quadrature, max_points
+                                rod_rotation_geometric, rod_rule_t, rod_rule, max_points
    implicit none
    private
    public :: rod_element_dynamic
@@ -23,7 +23,7 @@ contains
 
    !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
    pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, wf, fe, ke, &
-                                       want_k)
+                                       want_k, rule)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -37,7 +37,8 @@ contains
       real(wp), intent(out) :: fe(6, p + 1)       !< projected internal force [N, N m]
       real(wp), intent(out) :: ke(:, :)           !< (6(p+1), 6(p+1)) tangent, if want_k
       logical, intent(in) :: want_k               !< form the tangent
-      real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
+      type(rod_rule_t), intent(in), optional :: rule !< rod_rule(p), if already formed
+      type(rod_rule_t) :: rl
       real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6)
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
@@ -51,14 +52,19 @@ contains
       if (scheme == scheme_alpha) wq = wf
       xm(:, 1:nen) = (1.0_wp - wq)*x0 + wq*x1
       dm(:, :, 1:nen) = (1.0_wp - wq)*d0 + wq*d1
-      call rod_quadrature(p, np, xi, w, mask)
+      if (present(rule)) then
+         rl = rule
+      else
+         rl = rod_rule(p)
+      end if
+      np = rl%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
       do g = 1, np
-         call shape_lagrange(p, xi(g), n(1:nen), dn(1:nen))
-         dn(1:nen) = dn(1:nen)*2.0_wp/le
-         wj = w(g)*0.5_wp*le
-         cg = c*mask(:, g)
+         n(1:nen) = rl%n(1:nen, g)
+         dn(1:nen) = rl%dn(1:nen, g)*2.0_wp/le
+         wj = rl%w(g)*0.5_wp*le
+         cg = c*rl%mask(:, g)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
          select case (scheme)
          case (scheme_midpoint, scheme_alpha)
@@ -85,7 +91,10 @@ contains
                                   0.5_wp*wj, ke(1:nd, 1:nd))
          case default ! scheme_emc
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), dm(:, :, 1:nen), km)
+            ! the fields are linear in the nodal values: midpoint = mean of the ends
+            km%xp = 0.5_wp*(k0%xp + k1%xp)
+            km%d = 0.5_wp*(k0%d + k1%d)
+            km%dp = 0.5_wp*(k0%dp + k1%dp)
             s = cg*(0.5_wp*(rod_strains(k0) + rod_strains(k1)) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
@@ -107,15 +116,19 @@ contains
       real(wp), intent(in) :: br(:, :)     !< (6, >= nd) increment-side strain Jacobian
       real(wp), intent(in) :: f            !< weight
       real(wp), intent(inout) :: ke(:, :)  !< element matrix
-      real(wp) :: acc
-      integer :: i, j, k
+      real(wp) :: blt(6*max_nen, 6), cr(6, 6*max_nen)
+      integer :: j, k, nk
+      ! active rows only, bl transposed so that the update runs down contiguous columns
+      nk = 0
+      do k = 1, 6
+         if (cg(k) == 0.0_wp) cycle
+         nk = nk + 1
+         blt(1:nd, nk) = bl(k, 1:nd)
+         cr(nk, 1:nd) = (f*cg(k))*br(k, 1:nd)
+      end do
       do j = 1, nd
-         do i = 1, nd
-            acc = 0.0_wp
-            do k = 1, 6
-               if (cg(k) /= 0.0_wp) acc = acc + bl(k, i)*cg(k)*br(k, j)
-            end do
-            ke(i, j) = ke(i, j) + f*acc
+         do k = 1, nk
+            ke(1:nd, j) = ke(1:nd, j) + blt(1:nd, k)*cr(k, j)
          end do
       end do
    end subroutine add_material

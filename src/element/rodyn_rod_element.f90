@@ -22,7 +22,7 @@
 !>   r_x = f_x,   r_theta = sum_i d_i x f_di.
 module rodyn_rod_element
    use rodyn_kinds, only: wp
-   use rodyn_rotation, only: cross, skew
+   use rodyn_rotation, only: cross
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_nen
    implicit none
    private
@@ -30,7 +30,7 @@ module rodyn_rod_element
    public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
    public :: rod_element_static, rod_element_strains, rod_element_energy
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
-   public :: rod_element_resultants
+   public :: rod_element_resultants, rod_rule_t, rod_rule
 
    integer, parameter :: max_points = 7  !< most quadrature points of one element
 
@@ -41,7 +41,31 @@ module rodyn_rod_element
       real(wp) :: dp(3, 3) = 0.0_wp    !< d(:, i)': derivative of director d_i [1/m]
    end type rod_gp_t
 
+   !> The quadrature of an element order with its shape functions at the points,
+   !> formed once per assembly (rod_rule) rather than once per element.
+   type :: rod_rule_t
+      integer :: p = 0                            !< element order
+      integer :: np = 0                           !< number of points
+      real(wp) :: xi(max_points) = 0.0_wp         !< parent coordinates
+      real(wp) :: w(max_points) = 0.0_wp          !< weights
+      real(wp) :: mask(6, max_points) = 0.0_wp    !< strains integrated at each point
+      real(wp) :: n(max_nen, max_points) = 0.0_wp !< N_a at the points
+      real(wp) :: dn(max_nen, max_points) = 0.0_wp !< dN_a/dxi at the points
+   end type rod_rule_t
+
 contains
+
+   !> Quadrature and shape functions of order p (rod_quadrature, shape_lagrange).
+   pure function rod_rule(p) result(rule)
+      integer, intent(in) :: p !< element order
+      type(rod_rule_t) :: rule
+      integer :: g
+      rule%p = p
+      call rod_quadrature(p, rule%np, rule%xi, rule%w, rule%mask)
+      do g = 1, rule%np
+         call shape_lagrange(p, rule%xi(g), rule%n(1:p + 1, g), rule%dn(1:p + 1, g))
+      end do
+   end function rod_rule
 
    !> Quadrature of the stored energy of an element of order p: np points, parent
    !> coordinates xi, weights w, and mask(k, g) = 1 where strain k is integrated at
@@ -169,7 +193,13 @@ contains
 
    !> Add wj * P(dl)^T [sum_k s_k d2 eps_k / dq dq] P(dr) to ke: the stress (geometric)
    !> stiffness at one point. The strains are quadratic, so the second derivatives are
-   !> constant blocks (identity times shape-function products).
+   !> constant blocks (identity times shape-function products). With P(d) = -skew(d):
+   !>   x_a - theta_b:      -dN_a N_b skew(sum_k s_k dr_kb)
+   !>   theta_a - x_b:       N_a dN_b skew(sum_k s_k dl_ka)
+   !>   theta_a - theta_b:  (dN_a N_b - N_a dN_b)/2 (tr(M) I - M),  M = Dr_b S^T Dl_a^T
+   !> where Dl_a, Dr_b hold the directors as columns and S is the skew matrix of the
+   !> moments, S_23 = M1, S_31 = M2, S_12 = M3 (sum over the pairs of P(u)^T P(v) =
+   !> (u.v) I - v u^T of the curvature terms).
    pure subroutine rod_gp_geometric(nen, n, dn, s, dl, dr, wj, ke)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: n(nen)             !< shape functions
@@ -179,55 +209,70 @@ contains
       real(wp), intent(in) :: dr(3, 3, nen)      !< nodal directors of the increment (cols)
       real(wp), intent(in) :: wj                 !< Gauss weight times Jacobian [m]
       real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
-      real(wp) :: blk(3, 3), aab, h
-      integer :: a, b, k, ra, rb
+      real(wp) :: skl(3, 3, nen), skr(3, 3, nen), wr(3, 3, nen), st(3, 3), m(3, 3), h, tr, f
+      integer :: a, b, i, j, ra, rb
       logical :: forces, moments
       forces = any(s(1:3) /= 0.0_wp)
       moments = any(s(4:6) /= 0.0_wp)
+      if (forces) then
+         do a = 1, nen
+            skl(:, :, a) = skew3(s(1)*dl(:, 1, a) + s(2)*dl(:, 2, a) + s(3)*dl(:, 3, a))
+            skr(:, :, a) = skew3(s(1)*dr(:, 1, a) + s(2)*dr(:, 2, a) + s(3)*dr(:, 3, a))
+         end do
+      end if
+      if (moments) then
+         ! S^T with S_23 = M1, S_31 = M2, S_12 = M3 (S skew)
+         st(:, 1) = [0.0_wp, s(6), -s(5)]
+         st(:, 2) = [-s(6), 0.0_wp, s(4)]
+         st(:, 3) = [s(5), -s(4), 0.0_wp]
+         do b = 1, nen
+            do j = 1, 3
+               do i = 1, 3
+                  wr(i, j, b) = dr(i, 1, b)*st(1, j) + dr(i, 2, b)*st(2, j) &
+                                + dr(i, 3, b)*st(3, j)
+               end do
+            end do
+         end do
+      end if
       do b = 1, nen
          rb = 6*(b - 1)
          do a = 1, nen
             ra = 6*(a - 1)
-            ! shear/extension: couples x_a with d_kb and d_ka with x_b
             if (forces) then
-            blk = 0.0_wp
-            do k = 1, 3
-               blk = blk - s(k)*dn(a)*n(b)*skew(dr(:, k, b))
-            end do
-            ke(ra + 1:ra + 3, rb + 4:rb + 6) = ke(ra + 1:ra + 3, rb + 4:rb + 6) + wj*blk
-            blk = 0.0_wp
-            do k = 1, 3
-               blk = blk + s(k)*n(a)*dn(b)*skew(dl(:, k, a))
-            end do
-            ke(ra + 4:ra + 6, rb + 1:rb + 3) = ke(ra + 4:ra + 6, rb + 1:rb + 3) + wj*blk
+               f = -wj*dn(a)*n(b)
+               ke(ra + 1:ra + 3, rb + 4:rb + 6) = ke(ra + 1:ra + 3, rb + 4:rb + 6) &
+                                                   + f*skr(:, :, b)
+               f = wj*n(a)*dn(b)
+               ke(ra + 4:ra + 6, rb + 1:rb + 3) = ke(ra + 4:ra + 6, rb + 1:rb + 3) &
+                                                   + f*skl(:, :, a)
             end if
-            ! bending/torsion: couples d_ia with d_jb
-            aab = dn(a)*n(b) - n(a)*dn(b)
-            if (.not. moments .or. aab == 0.0_wp) cycle
-            h = 0.5_wp*aab*wj
-            blk = s(4)*(mpair(dl(:, 2, a), dr(:, 3, b)) - mpair(dl(:, 3, a), dr(:, 2, b))) &
-                  + s(5)*(mpair(dl(:, 3, a), dr(:, 1, b)) - mpair(dl(:, 1, a), dr(:, 3, b))) &
-                  + s(6)*(mpair(dl(:, 1, a), dr(:, 2, b)) - mpair(dl(:, 2, a), dr(:, 1, b)))
-            ke(ra + 4:ra + 6, rb + 4:rb + 6) = ke(ra + 4:ra + 6, rb + 4:rb + 6) + h*blk
+            h = 0.5_wp*wj*(dn(a)*n(b) - n(a)*dn(b))
+            if (.not. moments .or. h == 0.0_wp) cycle
+            do j = 1, 3
+               do i = 1, 3
+                  m(i, j) = wr(i, 1, b)*dl(j, 1, a) + wr(i, 2, b)*dl(j, 2, a) &
+                            + wr(i, 3, b)*dl(j, 3, a)
+               end do
+            end do
+            tr = m(1, 1) + m(2, 2) + m(3, 3)
+            do j = 1, 3
+               do i = 1, 3
+                  ke(ra + 3 + i, rb + 3 + j) = ke(ra + 3 + i, rb + 3 + j) - h*m(i, j)
+               end do
+               ke(ra + 3 + j, rb + 3 + j) = ke(ra + 3 + j, rb + 3 + j) + h*tr
+            end do
          end do
       end do
-   contains
-      !> P(u)^T P(v) = (u.v) I - v u^T, with P(d) = -skew(d).
-      pure function mpair(u, v) result(m)
-         real(wp), intent(in) :: u(3) !< director on the row side
-         real(wp), intent(in) :: v(3) !< director on the column side
-         real(wp) :: m(3, 3)
-         real(wp) :: uv
-         integer :: i, j
-         uv = u(1)*v(1) + u(2)*v(2) + u(3)*v(3)
-         do j = 1, 3
-            do i = 1, 3
-               m(i, j) = -v(i)*u(j)
-            end do
-            m(j, j) = m(j, j) + uv
-         end do
-      end function mpair
    end subroutine rod_gp_geometric
+
+   !> skew(v) w = v x w (as rodyn_rotation's skew, local so that it is inlined).
+   pure function skew3(v) result(sk)
+      real(wp), intent(in) :: v(3) !< axial vector
+      real(wp) :: sk(3, 3)
+      sk(:, 1) = [0.0_wp, v(3), -v(2)]
+      sk(:, 2) = [-v(3), 0.0_wp, v(1)]
+      sk(:, 3) = [v(2), -v(1), 0.0_wp]
+   end function skew3
 
    !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di.
    pure subroutine rod_project_qforce(nen, fq, dnode, fe)
@@ -271,7 +316,7 @@ contains
 
    !> Internal force and consistent tangent of one element in statics: the projected
    !> gradient of the stored energy and its derivative (note sections 2 and 3, statics).
-   pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k)
+   pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k, rule)
       integer, intent(in) :: p                     !< element order
       real(wp), intent(in) :: le                   !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                 !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -281,22 +326,28 @@ contains
       real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
       real(wp), intent(out) :: ke(:, :)            !< (6(p+1), 6(p+1)) tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
+      type(rod_rule_t), intent(in), optional :: rule !< rod_rule(p), if already formed
       ! fixed-size work arrays: nothing is allocated per call
-      real(wp) :: xi(max_points), w(max_points), mask(6, max_points)
+      type(rod_rule_t) :: rl
       real(wp) :: n(max_nen), dn(max_nen), s(6), wj, cg(6), acc
       real(wp) :: fq(3, 4, max_nen), bt(6, 6*max_nen), cb(6, 6*max_nen)
       type(rod_gp_t) :: kin
       integer :: g, nen, nd, k, np, i, j, nk, rows(6)
       nen = p + 1
       nd = 6*nen
-      call rod_quadrature(p, np, xi, w, mask)
+      if (present(rule)) then
+         rl = rule
+      else
+         rl = rod_rule(p)
+      end if
+      np = rl%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
       do g = 1, np
-         call shape_lagrange(p, xi(g), n(1:nen), dn(1:nen))
-         dn(1:nen) = dn(1:nen)*2.0_wp/le
-         wj = w(g)*0.5_wp*le
-         cg = c*mask(:, g)
+         n(1:nen) = rl%n(1:nen, g)
+         dn(1:nen) = rl%dn(1:nen, g)*2.0_wp/le
+         wj = rl%w(g)*0.5_wp*le
+         cg = c*rl%mask(:, g)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xe, de, kin)
          s = cg*(rod_strains(kin) - eps0(:, g))
          call rod_gp_qforce(nen, n(1:nen), dn(1:nen), kin, s, wj, fq(:, :, 1:nen))

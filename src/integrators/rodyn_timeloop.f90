@@ -156,11 +156,15 @@ contains
          t1 = min(t + h, t_end, next_frame)
          if (next_frame - t1 < tol_t) t1 = next_frame
          if (t_end - t1 < tol_t) t1 = t_end
+         ! factors of a tangent formed for another step size no longer fit
+         if (abs((t1 - t) - prob%dt) > tol_t) prob%factors_ok = .false.
          call dynamics_begin_step(prob, t, t1 - t)
          call clear_error(nerr)
          opts%line_search = retried
+         opts%reuse_tangent = model%dynamic%reuse_tangent .and. .not. retried
          call newton_solve(prob, opts, stats, nerr)
          summary%step_iterations = summary%step_iterations + stats%iterations
+         summary%step_tangents = summary%step_tangents + stats%tangents
          if (stats%converged .and. .not. has_error(nerr)) then
             call dynamics_end_step(prob)
             call step_work(prob, w_ext, w_damp)
@@ -169,6 +173,7 @@ contains
             log%time = t1
             log%dt = t1 - t
             log%iterations = stats%iterations
+            log%tangents = stats%tangents
             log%cutbacks = step_cuts
             log%external_work = log%external_work + w_ext
             log%damping_work = log%damping_work + w_damp

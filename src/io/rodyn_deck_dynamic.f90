@@ -37,8 +37,8 @@ contains
    ! ================================================================ card readers
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
-   !> CUTBACKS=, FORCE TOL=, DISP TOL=]: time step, duration, scheme (formulation note,
-   !> sections 3 and 4) and Newton controls. No data lines; at most one. RHO INF only
+   !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=]: time step, duration, scheme (formulation
+   !> note, sections 3 and 4) and Newton controls. No data lines; at most one. RHO INF only
    !> with SCHEME=ALPHA, where it defaults to 0.8 (1 otherwise: no numerical damping).
    subroutine read_dynamic_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
@@ -47,6 +47,7 @@ contains
       type(pending_t), intent(inout) :: pend  !< remembers the first *DYNAMIC
       type(error_t), intent(inout) :: err     !< status
       character(len=8), parameter :: starts(2) = [character(len=8) :: 'STATIC', 'DEFINED']
+      character(len=8), parameter :: tangents(2) = [character(len=8) :: 'NEW', 'REUSE']
       integer :: k
 
       associate (card => deck%cards(ic), dy => model%dynamic)
@@ -54,7 +55,7 @@ contains
          if (has_error(err)) return
          call card_check_params(card, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
                                 'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
-                                'CUTBACKS', 'FORCE TOL', 'DISP TOL'], err)
+                                'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT'], err)
          if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
@@ -119,6 +120,10 @@ contains
          call card_get_choice(card, 'START', starts, k, err)
          if (has_error(err)) return
          dy%start_static = k == 1
+         k = merge(2, 1, dy%reuse_tangent)
+         call card_get_choice(card, 'TANGENT', tangents, k, err)
+         if (has_error(err)) return
+         dy%reuse_tangent = k == 2
          call get_int_range(card, 'MAX ITERATIONS', 1, huge(1), dy%max_iterations, err)
          call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, dy%max_cutbacks, err)
          call get_tolerance(card, 'FORCE TOL', dy%force_tol, err)

@@ -124,6 +124,7 @@ contains
             call put_line(u, 'steps = '//int_str(summary%steps), ios, msg)
             call put_line(u, 'step_iterations = '//int_str(summary%step_iterations), ios, &
                msg)
+            call put_line(u, 'step_tangents = '//int_str(summary%step_tangents), ios, msg)
             call put_line(u, 'step_cutbacks = '//int_str(summary%step_cutbacks), ios, msg)
          end if
          call put_line(u, 'rodyn_version = '//rodyn_version, ios, msg)

@@ -191,6 +191,7 @@ contains
       w%progress%time_reached = 0.0_wp
       w%progress%steps = 0
       w%progress%step_iterations = 0
+      w%progress%step_tangents = 0
       w%progress%step_cutbacks = 0
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
@@ -303,6 +304,7 @@ contains
       end if
       w%steps = w%steps + 1
       w%progress%step_iterations = w%progress%step_iterations + log%iterations
+      w%progress%step_tangents = w%progress%step_tangents + log%tangents
       w%progress%step_cutbacks = w%progress%step_cutbacks + log%cutbacks
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_step
@@ -661,6 +663,7 @@ contains
          call hdf5_write_attribute(h5, '/dynamic', 'steps', s%steps, err)
          call hdf5_write_attribute(h5, '/dynamic', 'time_reached_s', s%time_reached, err)
          call hdf5_write_attribute(h5, '/dynamic', 'step_iterations', s%step_iterations, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'step_tangents', s%step_tangents, err)
          call hdf5_write_attribute(h5, '/dynamic', 'step_cutbacks', s%step_cutbacks, err)
          call hdf5_write_attribute(h5, '/dynamic', 'wall_time_s', s%wall_time, err)
       end associate

@@ -9,12 +9,14 @@ module rodyn_assembly
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_column_axpy
-   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
+   use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
+                           banded_kept_axpy
+   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, &
+                                rod_rule_t, rod_rule
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_rotation, only: cross, rotation_cayley_inverse
    use rodyn_motion, only: amplitude_value
-   use rodyn_shape, only: max_nen
+   use rodyn_shape, only: max_nen, max_order
    implicit none
    private
    public :: supports_t, loads_t, supports_build, loads_build
@@ -148,7 +150,11 @@ contains
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
       real(wp) :: de(3, 3, max_nen), e0(6, max_points)
+      type(rod_rule_t) :: rules(max_order)
       integer :: e, l, p, nen, a
+      do p = 1, max_order
+         rules(p) = rod_rule(p)
+      end do
       fint = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
@@ -166,7 +172,7 @@ contains
             e0 = eps0_scale*mesh%eps0(:, :, e)
             call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
-                                    ke(1:6*nen, 1:6*nen), want_k)
+                                    ke(1:6*nen, 1:6*nen), want_k, rules(p))
             call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
                                  want_k)
          end associate
@@ -223,7 +229,11 @@ contains
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
+      type(rod_rule_t) :: rules(max_order)
       integer :: e, l, p, nen, a, j, nd
+      do p = 1, max_order
+         rules(p) = rod_rule(p)
+      end do
       fint = 0.0_wp
       fdamp = 0.0_wp
       if (want_k) then
@@ -244,7 +254,7 @@ contains
             call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
-                                     ke(1:6*nen, 1:6*nen), want_k)
+                                     ke(1:6*nen, 1:6*nen), want_k, rules(p))
             nd = 6*nen
             if (beta > 0.0_wp) then
                do a = 1, nen
@@ -256,7 +266,7 @@ contains
                end do
                call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
                                        mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
-                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true.)
+                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true., rules(p))
                do j = 1, nd
                   fd(j) = beta/dt*dot_product(ks(j, 1:nd), du(1:nd))
                end do
@@ -312,14 +322,16 @@ contains
    !> a prescribed position), and K_fk gap_k moved to the free rows before the held rows
    !> and columns of the tangent are replaced by the identity:
    !>   K_ff du_f = -(r_f + K_fk gap_k).
-   !> Without the tangent (want_k false) the gaps are ignored.
+   !> The columns K_fk of moved nodes are kept when the tangent is formed (want_k), so
+   !> that a later residual-only evaluation, solved with a reused tangent, moves its gaps
+   !> the same way.
    subroutine apply_supports(sup, r, gap, rhs, bm, want_k)
       type(supports_t), intent(in) :: sup   !< supports
       real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
       real(wp), intent(in) :: gap(:, :)     !< (3, nn) prescribed position - position [m]
       real(wp), intent(out) :: rhs(:)       !< (6 nn) right-hand side
       type(banded_t), intent(inout) :: bm   !< tangent
-      logical, intent(in) :: want_k         !< also fix the tangent
+      logical, intent(in) :: want_k         !< the tangent was formed: fix its held dofs
       integer :: node, j, k
       do node = 1, size(r, 2)
          k = 6*(node - 1)
@@ -327,21 +339,20 @@ contains
          if (sup%rotated(node)) rhs(k + 4:k + 6) = matmul(transpose(sup%basis(:, :, node)), &
                                                           r(4:6, node))
       end do
-      if (want_k) then
-         do node = 1, size(r, 2)
-            if (.not. sup%moved(node)) cycle
-            do j = 1, 3
-               if (gap(j, node) /= 0.0_wp) call banded_column_axpy(bm, 6*(node - 1) + j, &
-                                                                    gap(j, node), rhs)
-            end do
+      do node = 1, size(r, 2)
+         if (.not. sup%moved(node)) cycle
+         do j = 1, 3
+            if (want_k) call banded_keep_column(bm, 6*(node - 1) + j)
+            if (gap(j, node) /= 0.0_wp) call banded_kept_axpy(bm, 6*(node - 1) + j, &
+                                                              gap(j, node), rhs)
          end do
-      end if
+      end do
       do node = 1, size(r, 2)
          k = 6*(node - 1)
          do j = 1, 6
             if (.not. sup%held(j, node)) cycle
             rhs(k + j) = 0.0_wp
-            if (j <= 3 .and. want_k) rhs(k + j) = -gap(j, node)
+            if (j <= 3) rhs(k + j) = -gap(j, node)
             if (want_k) call banded_fix_dof(bm, k + j)
          end do
       end do

@@ -8,7 +8,8 @@ module rodyn_banded
    implicit none
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
-   public :: banded_factor, banded_solve, banded_matvec, banded_column_axpy
+   public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
+   public :: banded_kept_axpy
 
    !> A square banded matrix with kl sub- and ku super-diagonals, stored for dgbtrf
    !> (rows kl+1 .. 2kl+ku+1 of ab hold the band; the first kl rows are LU fill).
@@ -20,6 +21,9 @@ module rodyn_banded
       real(wp), allocatable :: ab(:, :)       !< (ldab, n) band storage
       integer, allocatable :: ipiv(:)         !< (n) pivots of the LU factors
       logical :: factored = .false.           !< ab holds LU factors
+      integer :: n_kept = 0                   !< columns kept (banded_keep_column)
+      integer, allocatable :: kept_dof(:)     !< (n_kept) their dofs
+      real(wp), allocatable :: kept(:, :)     !< (kl + ku + 1, n_kept) their band entries
    end type banded_t
 
    interface
@@ -54,6 +58,8 @@ contains
       bm%ldab = 2*bm%kl + bm%ku + 1
       if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv)
       allocate (bm%ab(bm%ldab, n), bm%ipiv(n))
+      if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
+      bm%n_kept = 0
       bm%ab = 0.0_wp
       bm%factored = .false.
    end subroutine banded_init
@@ -95,19 +101,60 @@ contains
       bm%ab(off, k) = 1.0_wp
    end subroutine banded_fix_dof
 
-   !> y(i) = y(i) + value * A(i, k) for the rows i /= k in the band of column k: moves a
-   !> prescribed value of dof k to the right-hand side before the column is cleared.
-   pure subroutine banded_column_axpy(bm, k, value, y)
-      type(banded_t), intent(in) :: bm  !< matrix (not factored)
+   !> Keep a copy of column k (its band) before the column is cleared for a held dof, so
+   !> that a prescribed value of that dof can be moved to the right-hand side later, also
+   !> while the matrix holds LU factors (a tangent reused over several Newton steps).
+   !> The storage grows only when a new dof is kept (the first tangent of a run).
+   subroutine banded_keep_column(bm, k)
+      type(banded_t), intent(inout) :: bm !< matrix (not factored)
+      integer, intent(in) :: k            !< column
+      integer, allocatable :: dofs(:)
+      real(wp), allocatable :: cols(:, :)
+      integer :: slot
+      slot = kept_slot(bm, k)
+      if (slot == 0) then
+         if (.not. allocated(bm%kept_dof)) allocate (bm%kept_dof(0), bm%kept(bm%kl + bm%ku + 1, 0))
+         allocate (dofs(bm%n_kept + 1), cols(bm%kl + bm%ku + 1, bm%n_kept + 1))
+         dofs(1:bm%n_kept) = bm%kept_dof(1:bm%n_kept)
+         cols(:, 1:bm%n_kept) = bm%kept(:, 1:bm%n_kept)
+         call move_alloc(dofs, bm%kept_dof)
+         call move_alloc(cols, bm%kept)
+         bm%n_kept = bm%n_kept + 1
+         slot = bm%n_kept
+         bm%kept_dof(slot) = k
+      end if
+      bm%kept(:, slot) = bm%ab(bm%kl + 1:bm%ldab, k)
+   end subroutine banded_keep_column
+
+   !> y(i) = y(i) + value * A(i, k) for the rows i /= k in the band of column k, A(:, k)
+   !> as kept by banded_keep_column (nothing if it was never kept): moves a prescribed
+   !> value of the held dof k to the right-hand side.
+   pure subroutine banded_kept_axpy(bm, k, value, y)
+      type(banded_t), intent(in) :: bm  !< matrix (factored or not)
       integer, intent(in) :: k          !< column
       real(wp), intent(in) :: value     !< prescribed value of dof k
       real(wp), intent(inout) :: y(:)   !< vector (n)
-      integer :: i, off
-      off = bm%kl + bm%ku + 1
+      integer :: i, slot
+      slot = kept_slot(bm, k)
+      if (slot == 0) return
       do i = max(1, k - bm%ku), min(bm%n, k + bm%kl)
-         if (i /= k) y(i) = y(i) + value*bm%ab(off + i - k, k)
+         if (i /= k) y(i) = y(i) + value*bm%kept(bm%ku + 1 + i - k, slot)
       end do
-   end subroutine banded_column_axpy
+   end subroutine banded_kept_axpy
+
+   !> Slot of dof k among the kept columns, 0 if not kept.
+   pure integer function kept_slot(bm, k)
+      type(banded_t), intent(in) :: bm !< matrix
+      integer, intent(in) :: k         !< column
+      integer :: i
+      kept_slot = 0
+      do i = 1, bm%n_kept
+         if (bm%kept_dof(i) == k) then
+            kept_slot = i
+            return
+         end if
+      end do
+   end function kept_slot
 
    !> y = A x (before factorisation; used by tests).
    pure subroutine banded_matvec(bm, x, y)

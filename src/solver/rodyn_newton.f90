@@ -17,6 +17,13 @@
 !> (EA/EI ~ 1e4 and more) round-off puts a floor under the residual: a correction below
 !> roundoff_correction with a residual below roundoff_factor * force_tol is accepted
 !> too (the configuration can no longer change in double precision), and logged so.
+!>
+!> Tangent reuse (modified Newton, opts%reuse_tangent): the factorised tangent of an
+!> earlier iteration, or of an earlier time step, is used again while it still contracts
+!> the residual by the factor opts%reuse_ratio per iteration; an iteration that does
+!> worse makes the next one form and factorise a new tangent. Residual-only evaluations
+!> then cost a fraction of a tangent (docs/benchmarks.md, "skips"). With a reused tangent
+!> convergence is linear, so the quadratic-regime acceptance is not used for it.
 module rodyn_newton
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
@@ -37,18 +44,26 @@ module rodyn_newton
       integer :: log_unit = -1                !< unit for the iteration log (< 0: none)
       real(wp) :: roundoff_correction = 1.0e-12_wp !< correction at round-off level [-]
       real(wp) :: roundoff_factor = 1.0e4_wp  !< residual floor allowed, x force_tol
+      logical :: reuse_tangent = .false.      !< keep factorised tangents while they work
+      real(wp) :: reuse_ratio = 0.25_wp       !< new tangent if rn > reuse_ratio rn_prev
    end type newton_options_t
 
    !> What one solve did.
    type :: newton_stats_t
       logical :: converged = .false.
       integer :: iterations = 0               !< linear solves done
+      integer :: tangents = 0                 !< tangents formed and factorised
       real(wp) :: residual = 0.0_wp           !< final scaled residual
       real(wp) :: correction = 0.0_wp         !< last scaled correction
    end type newton_stats_t
 
-   !> A nonlinear problem r(u) = 0 on a configuration updated by u.
+   !> A nonlinear problem r(u) = 0 on a configuration updated by u. The flags tell the
+   !> problem's solve whether the tangent was just formed (factorise it) or whether the
+   !> factors of an earlier one are to be used; whoever changes the problem so that they
+   !> no longer fit (a new time step size) clears factors_ok.
    type, abstract :: newton_problem_t
+      logical :: tangent_new = .false.        !< tangent formed, not yet factorised
+      logical :: factors_ok = .false.         !< factors of a tangent are held
    contains
       !> Evaluate the residual at the current configuration (and the tangent).
       procedure(evaluate_iface), deferred :: evaluate
@@ -108,8 +123,10 @@ contains
       real(wp) :: rn, cn, alpha, s0, st, a_lo, s_lo, a_hi, s_hi, a_new
       real(wp) :: rn_trial, rn_prev
       integer :: it, bt
+      logical :: refresh, fresh
       rn_trial = 0.0_wp
-      call prob%evaluate(.true., err)
+      refresh = .not. opts%reuse_tangent .or. .not. prob%factors_ok
+      call evaluate(refresh)
       if (has_error(err)) return
       rn = prob%residual_norm()
       if (.not. ieee_is_finite(rn)) then
@@ -123,6 +140,12 @@ contains
          return
       end if
       do it = 1, opts%max_iterations
+         if (refresh .and. .not. prob%tangent_new) then
+            call evaluate(.true.)          ! same residual, with its tangent
+            if (has_error(err)) return
+         end if
+         fresh = prob%tangent_new
+         if (fresh) stats%tangents = stats%tangents + 1
          call prob%solve(err)
          if (has_error(err)) return
          stats%iterations = it
@@ -136,7 +159,9 @@ contains
          s_hi = 0.0_wp
          do bt = 0, opts%max_backtracks
             call prob%apply_correction(alpha)
-            call prob%evaluate(.true., err)
+            ! a correction small enough for the quadratic-regime acceptance most likely
+            ! ends the solve: its residual is evaluated alone (a tangent follows if not)
+            call evaluate(.not. opts%reuse_tangent .and. alpha*cn > sqrt(opts%disp_tol))
             if (has_error(err)) return
             rn_trial = prob%residual_norm()
             if (.not. ieee_is_finite(rn_trial)) then
@@ -176,8 +201,8 @@ contains
          ! quadratic regime: a full step that cut the residual tenfold to below FORCE TOL
          ! leaves an error of order correction^2, so a correction below sqrt(DISP TOL)
          ! already meets DISP TOL (saves the iteration that would only confirm it)
-         if (rn <= opts%force_tol .and. alpha == 1.0_wp .and. rn <= 0.1_wp*rn_prev .and. &
-             cn <= sqrt(opts%disp_tol)) then
+         if (fresh .and. rn <= opts%force_tol .and. alpha == 1.0_wp .and. &
+             rn <= 0.1_wp*rn_prev .and. cn <= sqrt(opts%disp_tol)) then
             stats%converged = .true.
             return
          end if
@@ -187,8 +212,18 @@ contains
             stats%converged = .true.
             return
          end if
+         ! a tangent that no longer contracts the residual fast enough is renewed
+         refresh = .not. opts%reuse_tangent .or. rn > opts%reuse_ratio*rn_prev
       end do
    contains
+      !> Evaluate the residual, and the tangent if want_k (then to be factorised).
+      subroutine evaluate(want_k)
+         logical, intent(in) :: want_k
+         call prob%evaluate(want_k, err)
+         if (.not. want_k) return
+         prob%tangent_new = .true.
+         prob%factors_ok = .false.
+      end subroutine evaluate
       subroutine log_line(i, r, c, a)
          integer, intent(in) :: i
          real(wp), intent(in) :: r, c, a

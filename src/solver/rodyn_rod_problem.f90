@@ -4,7 +4,7 @@
 !> residual (evaluate) and configuration update (save_base, apply_correction).
 module rodyn_rod_problem
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t, has_error
+   use rodyn_error, only: error_t, has_error, set_error, stat_numerical
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
@@ -87,12 +87,20 @@ contains
       v = max(rf/fref, rm/mref)
    end function rod_residual_norm
 
-   !> du = -K^{-1} rhs (banded LU).
+   !> du = -K^{-1} rhs (banded LU): a tangent just formed is factorised first, otherwise
+   !> the factors held are used again.
    subroutine rod_solve(this, err)
       class(rod_problem_t), intent(inout) :: this !< problem
       type(error_t), intent(inout) :: err         !< status
-      call banded_factor(this%bm, err)
-      if (has_error(err)) return
+      if (this%tangent_new) then
+         this%tangent_new = .false.
+         call banded_factor(this%bm, err)
+         if (has_error(err)) return
+         this%factors_ok = .true.
+      else if (.not. this%factors_ok) then
+         call set_error(err, stat_numerical, 'rod_solve: no tangent to solve with')
+         return
+      end if
       this%du = -this%rhs
       call banded_solve(this%bm, this%du, err)
    end subroutine rod_solve
