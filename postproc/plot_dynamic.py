@@ -2,24 +2,33 @@
 """Plot the dynamic results of a rodyn run.
 
     python3 postproc/plot_dynamic.py [RESULTS] [-o OUT_DIR] [--times T ...]
-                                     [--window T0 T1] [--snapshots N] [--dpi 150]
+                                     [--window T0 T1] [--snapshots N] [--no-envelope]
+                                     [--dpi 150]
 
 RESULTS is a results folder (default: paper_case1, the output folder of
 input/paper_case1.inp run from the current directory) or a dynamic.h5 file. Writes
 into OUT_DIR (default: the results folder) and prints the paths written:
 
   dynamic_snapshots.png  x-z elevation of the lines at a few times of the last period of
-                         the motion, over the static shape (equal axes), as the paper's
+                         the motion, over the static shape (equal axes) and the envelope
+                         (every frame of the window, light grey), as the paper's
                          Figures 3-6
   dynamic_tension.png    tension at the top and at the bottom support against time
   dynamic_energy.png     total energy minus its initial value and the net work done on
                          the lines (external - damping) against time, and their difference
+  dynamic_momentum.png   linear and angular momentum (x, y, z) minus their values at the
+                         first step of the log, against time
 
 --times picks the snapshot times (the nearest output frames); by default N (--snapshots,
 8) frames spread over the last period of the harmonic *MOTION of the deck (from
 dynamic.h5; with the CSV tables only, the period is estimated from the motion of the
-node that moves most). --window T0 T1 limits the time histories to T0 <= t <= T1 and
-takes the default snapshots from the last period before T1.
+node that moves most). --window T0 T1 limits the time histories and the envelope to
+T0 <= t <= T1 and takes the default snapshots from the last period before T1.
+--no-envelope leaves the envelope out.
+
+Momentum: the step log has no row for t = 0, so the drift is measured from step 1. It is
+zero (to the solver tolerance, for EMC) only for a line without supports, gravity or
+loads; otherwise it shows the impulse of the supports and loads.
 
 A run that did not complete is still plotted (what is on disk), with a warning on
 stderr and in the plot titles.
@@ -29,7 +38,6 @@ run), 2 bad command line, 3 cannot write the plots.
 """
 import argparse
 import sys
-import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -39,17 +47,18 @@ matplotlib.use("Agg")  # never needs a display
 from matplotlib import colormaps  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
 
+from matplotlib.collections import LineCollection  # noqa: E402
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import RodynResultsError, load_dynamic, load_static  # noqa: E402
+from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
+from rodyn_post.cli import dynamic_title as run_title  # noqa: E402,F401
+from rodyn_post.quantities import InputError as PlotInputError  # noqa: E402
+from rodyn_post.quantities import matching_static, window_mask  # noqa: E402
 
 SNAPSHOTS_PNG = "dynamic_snapshots.png"
 TENSION_PNG = "dynamic_tension.png"
 ENERGY_PNG = "dynamic_energy.png"
-
-
-class PlotInputError(Exception):
-    """Bad plotting request for these results (times outside the run, ...)."""
-
+MOMENTUM_PNG = "dynamic_momentum.png"
 
 # --- the data behind the plots ------------------------------------------------------
 
@@ -112,18 +121,13 @@ def snapshot_frames(results, times=None, count=8, t_end=None):
 def static_shapes(results):
     """{line name: (x, z)} of the static equilibrium when the run's folder has static
     results of the same lines, else of the first frame (the start); and a label."""
-    try:
-        static = load_static(results.folder)
-        shapes = {}
-        for line in results.lines:
-            s = static.line(line.name)
-            if s.node_xyz.shape[0] != line.x.shape[1]:
-                raise KeyError(line.name)
-            shapes[line.name] = (s.node_xyz[:, 0], s.node_xyz[:, 2])
-        return shapes, "static"
-    except (RodynResultsError, KeyError):
-        return {line.name: (line.x[0], line.z[0]) for line in results.lines}, \
-            f"start (t = {results.time[0]:g} s)"
+    static = matching_static(results)
+    if static is not None:
+        return {line.name: (static.line(line.name).node_xyz[:, 0],
+                            static.line(line.name).node_xyz[:, 2])
+                for line in results.lines}, "static"
+    return {line.name: (line.x[0], line.z[0]) for line in results.lines}, \
+        f"start (t = {results.time[0]:g} s)"
 
 
 def snapshot_curves(line, frames):
@@ -131,11 +135,9 @@ def snapshot_curves(line, frames):
     return [(f, line.x[f], line.z[f]) for f in frames]
 
 
-def window_mask(t, window):
-    """Boolean mask of the times inside window (T0, T1), or all."""
-    if window is None:
-        return np.ones(len(t), dtype=bool)
-    return (t >= window[0] - 1e-9) & (t <= window[1] + 1e-9)
+def envelope_frames(results, window=None):
+    """Frames drawn as the envelope: every frame in the window (default: all)."""
+    return [int(f) for f in np.flatnonzero(window_mask(results.time, window))]
 
 
 def tension_curves(results, line, window=None):
@@ -158,25 +160,33 @@ def energy_curves(log, window=None):
             log.energy_error[mask])
 
 
+def momentum_curves(log, window=None):
+    """Plotted data of dynamic_momentum.png: time [s], linear momentum minus its value at
+    step 1 (n, 3) [kg m/s], angular momentum minus its value at step 1 (n, 3) [kg m2/s]."""
+    mask = window_mask(log.time, window)
+    if len(log) == 0:
+        return log.time, log.momentum, log.angular_momentum
+    return (log.time[mask], (log.momentum - log.momentum[0])[mask],
+            (log.angular_momentum - log.angular_momentum[0])[mask])
+
+
 # --- figures ------------------------------------------------------------------------
 
-def run_title(results, what):
-    """Figure title: the run's *HEADING (or its folder name), what is plotted, and a
-    warning line if the run did not complete."""
-    heading = results.title or f"results {results.folder.name or results.folder}"
-    title = textwrap.fill(heading, 80, break_on_hyphens=False) + f"\n{what}"
-    if not results.complete:
-        title += (f"\nINCOMPLETE RUN (t reached {results.time_reached_s:.4g} s): "
-                  + textwrap.shorten(results.status, 60))
-    return title
-
-
-def snapshots_figure(results, frames):
-    """x-z elevation of every line at the given frames over the static shape."""
+def snapshots_figure(results, frames, envelope=None):
+    """x-z elevation of every line at the given frames over the static shape, and over
+    the envelope (every frame of `envelope`, light grey) when given."""
     fig = Figure(figsize=(8, 5.2), layout="constrained")
     ax = fig.add_subplot()
     shapes, static_label = static_shapes(results)
     cmap = colormaps["viridis"]
+    if envelope:
+        t0, t1 = results.time[envelope[0]], results.time[envelope[-1]]
+        for k, line in enumerate(results.lines):
+            segments = [np.column_stack([line.x[f], line.z[f]]) for f in envelope]
+            ax.add_collection(LineCollection(
+                segments, colors="0.8", linewidths=0.6, zorder=0,
+                label=(f"envelope: {len(envelope)} frames, {t0:.4g} to {t1:.4g} s"
+                       if k == 0 else None)))
     for line in results.lines:
         x0, z0 = shapes[line.name]
         ax.plot(x0, z0, "k--", linewidth=1.8, label=f"{line.name}: {static_label}")
@@ -236,13 +246,34 @@ def energy_figure(results, window=None):
     return fig
 
 
+def momentum_figure(results, window=None):
+    """Linear (top) and angular (bottom) momentum components minus their step-1 values."""
+    fig = Figure(figsize=(8, 6), layout="constrained")
+    ax_p, ax_l = fig.subplots(2, 1, sharex=True)
+    t, dp, dl = momentum_curves(results.log, window)
+    for k, axis in enumerate("xyz"):
+        ax_p.plot(t, dp[:, k], "-", linewidth=1.0, label=f"p{axis} - p{axis}(step 1)")
+        ax_l.plot(t, dl[:, k], "-", linewidth=1.0, label=f"L{axis} - L{axis}(step 1)")
+    ax_p.set_ylabel("linear momentum drift [kg m/s]")
+    ax_l.set_ylabel("angular momentum drift [kg m2/s]")
+    ax_l.set_xlabel("time [s]")
+    for ax in (ax_p, ax_l):
+        ax.grid(True, linewidth=0.5, alpha=0.5)
+        if len(t):
+            ax.legend(loc="best", fontsize=8)
+    start = f"t = {results.log.time[0]:.4g} s" if len(results.log) else "none"
+    fig.suptitle(run_title(results, f"momentum minus its value at step 1 ({start}); "
+                                    "angular momentum about the origin"))
+    return fig
+
+
 # --- command line -------------------------------------------------------------------
 
 def parse_args(argv):
     """Command line arguments."""
     parser = argparse.ArgumentParser(
-        description="Plot the dynamic configurations, support tensions and energy "
-                    "balance of a rodyn run.",
+        description="Plot the dynamic configurations, support tensions, energy "
+                    "balance and momentum drift of a rodyn run.",
         epilog="exit status: 0 success, 1 bad input, 2 bad command line, "
                "3 cannot write the plots")
     parser.add_argument("results", nargs="?", default="paper_case1",
@@ -256,6 +287,8 @@ def parse_args(argv):
                         help="time range of the histories [s] (default: the whole run)")
     parser.add_argument("--snapshots", type=int, default=8,
                         help="number of default snapshots (default: 8)")
+    parser.add_argument("--no-envelope", action="store_true",
+                        help="leave the envelope (every frame, grey) out of the snapshots")
     parser.add_argument("--dpi", type=float, default=150, help="resolution (default: 150)")
     args = parser.parse_args(argv)
     if args.dpi <= 0:
@@ -292,9 +325,11 @@ def main(argv=None):
               file=sys.stderr)
     out_dir = Path(args.out_dir) if args.out_dir else results.folder
     window = tuple(args.window) if args.window else None
-    makers = ((SNAPSHOTS_PNG, lambda: snapshots_figure(results, frames)),
+    envelope = None if args.no_envelope else envelope_frames(results, window)
+    makers = ((SNAPSHOTS_PNG, lambda: snapshots_figure(results, frames, envelope)),
               (TENSION_PNG, lambda: tension_figure(results, window)),
-              (ENERGY_PNG, lambda: energy_figure(results, window)))
+              (ENERGY_PNG, lambda: energy_figure(results, window)),
+              (MOMENTUM_PNG, lambda: momentum_figure(results, window)))
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
         for name, make in makers:

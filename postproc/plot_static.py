@@ -18,7 +18,6 @@ line, 3 cannot write the plots.
 """
 import argparse
 import sys
-import textwrap
 from pathlib import Path
 
 import matplotlib
@@ -28,6 +27,7 @@ from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from rodyn_post import RodynResultsError, load_static  # noqa: E402
+from rodyn_post.cli import static_title as run_title  # noqa: E402
 
 SHAPE_PNG = "static_shape.png"
 TENSION_PNG = "static_tension.png"
@@ -42,17 +42,6 @@ def tension_curves(line):
     """Plotted data of static_tension.png for one line: S [m] of the integration
     points, effective tension [kN], bending moment magnitude sqrt(M1^2+M2^2) [kN m]."""
     return line.gp_s, line.effective_tension / 1e3, line.moment_magnitude / 1e3
-
-
-def run_title(results, what):
-    """Figure title: the run's *HEADING (or its folder name), what is plotted, and a
-    warning line if the run did not complete."""
-    heading = results.title or f"results {results.folder.name or results.folder}"
-    title = textwrap.fill(heading, 80, break_on_hyphens=False) + f"\n{what}"
-    if not results.complete:
-        title += (f"\nINCOMPLETE RUN (load factor {results.load_factor:.4g}): "
-                  + textwrap.shorten(results.status, 60))
-    return title
 
 
 def shape_figure(results):

@@ -4,6 +4,14 @@
 when there is no results.h5) into plain dataclasses; see `rodyn_post.results`.
 `load_dynamic(path)` reads the dynamic results (dynamic.h5, or the dynamic CSV tables)
 the same way; see `rodyn_post.dynamic`.
+
+The command-line scripts of postproc/ share:
+  rodyn_post.quantities  quantities at points of a line, values at an arc length,
+                         range statistics (what is interpolated, and how)
+  rodyn_post.units       units in CSV headers and their SI factors
+  rodyn_post.reference   reading another tool's CSV, resampling, error metrics
+  rodyn_post.vtk         ParaView .vtp / .pvd text
+  rodyn_post.cli         arguments, messages, exit statuses, writing files (Agg backend)
 """
 from .dynamic import DynamicResults, LineDynamic, StepLog, load_dynamic
 from .results import LineStatic, RodynResultsError, StaticResults, load_static

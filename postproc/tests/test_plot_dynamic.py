@@ -30,7 +30,8 @@ from rodyn_post.dynamic import (ELEMENTS_HEADER, ENDS_HEADER, LOG_HEADER,  # noq
                                 NODES_HEADER)
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-PNGS = ("dynamic_snapshots.png", "dynamic_tension.png", "dynamic_energy.png")
+PNGS = ("dynamic_snapshots.png", "dynamic_tension.png", "dynamic_energy.png",
+        "dynamic_momentum.png")
 TITLE = "Synthetic dynamic run"
 FREQ = 2.5  # Hz, of the *MOTION in the synthetic deck: period 0.4 s
 DECK = f"""*HEADING
@@ -95,7 +96,7 @@ def synthetic():
     return lines, log
 
 
-def write_status(folder, complete=True, counters=COUNTERS):
+def write_status(folder, complete=True, counters=COUNTERS, times=TIMES):
     """status.txt of a dynamic run as rodyn writes it."""
     c = counters
     (folder / "status.txt").write_text(
@@ -103,12 +104,12 @@ def write_status(folder, complete=True, counters=COUNTERS):
         f"status = {'complete' if complete else 'running'}\n"
         "load_factor = 1.0000000000000000E+00\nincrements = 1\niterations = 6\n"
         "cutbacks = 0\nwall_time_s = 1.2345678901234567E+00\ndynamic = true\n"
-        f"time_reached_s = {TIMES[-1]:.16E}\nsteps = {c['steps']}\n"
+        f"time_reached_s = {times[-1]:.16E}\nsteps = {c['steps']}\n"
         f"step_iterations = {c['step_iterations']}\nstep_cutbacks = {c['step_cutbacks']}\n"
         "rodyn_version = 0.1.0\ndeck = decks/synthetic.inp\n")
 
 
-def write_h5(path, lines, log, complete=True, counters=COUNTERS):
+def write_h5(path, lines, log, complete=True, counters=COUNTERS, times=TIMES):
     """dynamic.h5 with the layout of docs/output.md (a finished run when complete,
     else one still running: no counters on /dynamic)."""
     with h5py.File(path, "w", track_order=True) as f:
@@ -118,12 +119,12 @@ def write_h5(path, lines, log, complete=True, counters=COUNTERS):
                        else "running", scheme="EMC", dt=0.05)
         f["deck"] = DECK
         dyn = f.create_group("dynamic", track_order=True)
-        dyn.attrs.update(duration_s=1.1, output_interval_s=0.1)
+        dyn.attrs.update(duration_s=times[-1], output_interval_s=times[1] - times[0])
         if complete:
-            dyn.attrs.update(frames=np.int32(len(TIMES)), time_reached_s=TIMES[-1],
+            dyn.attrs.update(frames=np.int32(len(times)), time_reached_s=times[-1],
                              wall_time_s=1.2345678901234567,
                              **{k: np.int32(v) for k, v in counters.items()})
-        dyn["time"] = TIMES
+        dyn["time"] = times
         for name, a in lines.items():
             g = dyn.create_group(name.replace("/", "_"), track_order=True)
             g.attrs["name"] = name
@@ -136,14 +137,14 @@ def write_h5(path, lines, log, complete=True, counters=COUNTERS):
             lg[key] = value
 
 
-def write_csv(folder, lines, log):
+def write_csv(folder, lines, log, times=TIMES):
     """dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv, dynamic_log.csv."""
     def real(v):
         return f"{v:.16E}"
 
     tables = {"dynamic_nodes.csv": [NODES_HEADER], "dynamic_elements.csv": [ELEMENTS_HEADER],
               "dynamic_ends.csv": [ENDS_HEADER], "dynamic_log.csv": [LOG_HEADER]}
-    for i, t in enumerate(TIMES):
+    for i, t in enumerate(times):
         for name, a in lines.items():
             for k in range(len(a["node_s"])):
                 tables["dynamic_nodes.csv"].append(
@@ -162,7 +163,7 @@ def write_csv(folder, lines, log):
                     tables["dynamic_ends.csv"].append(
                         [real(t), name, end] + [real(v) for v in r]
                         + [real(a["end_tension"][i, k])])
-    for s in range(N_STEPS):
+    for s in range(len(log["step"])):
         tables["dynamic_log.csv"].append(
             [log["step"][s], real(log["time"][s]), real(log["dt"][s]), log["iterations"][s],
              log["cutbacks"][s]] + [real(log[k][s]) for k in (
@@ -288,7 +289,7 @@ def test_running_h5_without_counters(tmp_path):
 
 # --- (b) the script and the data behind the plots -----------------------------------
 
-def test_script_writes_three_pngs(tmp_path):
+def test_script_writes_four_pngs(tmp_path):
     folder = tmp_path / "run"
     write_results(folder, csv_tables=False)
     out = tmp_path / "plots" / "new"
@@ -337,6 +338,15 @@ def test_plotted_quantities_match_raw_data(tmp_path):
     np.testing.assert_array_equal(ax_d.lines[0].get_ydata(), change - net)
     np.testing.assert_array_equal(ax_d.lines[0].get_xdata(), log["time"])
     assert "damping" in ax_e.lines[1].get_label()
+    # momentum: minus the values at step 1, components x, y, z
+    ax_p, ax_l = plot_dynamic.momentum_figure(res).axes
+    for k in range(3):
+        np.testing.assert_array_equal(ax_p.lines[k].get_ydata(),
+                                      log["momentum"][:, k] - log["momentum"][0, k])
+        np.testing.assert_array_equal(ax_l.lines[k].get_ydata(), log["angular_momentum"][:, k]
+                                      - log["angular_momentum"][0, k])
+    t, dp, dl = plot_dynamic.momentum_curves(res.log, (0.3, 0.6))
+    assert len(t) == 7 and np.all(dp[0] == log["momentum"][5] - log["momentum"][0])
     # snapshots: the last period (0.4 s) of the motion, over the start shape (no
     # static results in this folder), equal axes
     frames = plot_dynamic.snapshot_frames(res, None, 4)
@@ -351,6 +361,17 @@ def test_plotted_quantities_match_raw_data(tmp_path):
             (c,) = [c for c in ax.lines if c.get_label() == f"{name}: t = {TIMES[f]:.4g} s"]
             np.testing.assert_array_equal(c.get_xydata(), np.column_stack(
                 [a["x"][f], a["z"][f]]))
+    # envelope: every frame of the window, one grey collection per line
+    envelope = plot_dynamic.envelope_frames(res, (0.25, 0.75))
+    assert envelope == [3, 4, 5, 6, 7]
+    ax = plot_dynamic.snapshots_figure(res, frames, envelope).axes[0]
+    assert len(ax.collections) == len(lines)
+    for coll, a in zip(ax.collections, lines.values()):
+        segments = coll.get_segments()
+        assert len(segments) == len(envelope)
+        for seg, f in zip(segments, envelope):
+            np.testing.assert_array_equal(seg, np.column_stack([a["x"][f], a["z"][f]]))
+    assert ax.collections[0].get_label().startswith("envelope: 5 frames, 0.3 to 0.7 s")
 
 
 def test_times_and_window(tmp_path):

@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Range graphs of a rodyn dynamic run: minimum, mean and maximum over a time window
+against arc length, for effective tension, bending moment and bending curvature.
+
+    python3 postproc/range_graph.py [RESULTS] [-o OUT_DIR] [--window T0 T1]
+                                    [--line NAME] [--dpi 150]
+
+RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
+OUT_DIR (default: the results folder) and prints the paths written:
+
+  range_graph.png  three panels against the unstretched arc length S from end A:
+                   effective tension [kN], bending moment |M| [kN m], bending
+                   curvature [1/m]; min and max (band) and mean (dashed) over the
+                   window, the static equilibrium (dotted) when the folder has it
+  range_graph.csv  the numbers, SI: line, s_m, then tension_min_N, tension_mean_N,
+                   tension_max_N, moment_*_Nm, curvature_*_per_m; one row per
+                   integration point of each line
+
+The statistics are over the output frames with T0 <= t <= T1 (default: all), at the
+integration points themselves (no interpolation); the mean is the plain mean of those
+frames. Extremes between two frames are not seen: a finer OUTPUT INTERVAL sees more.
+"""
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from rodyn_post import cli, load_dynamic  # noqa: E402
+from rodyn_post.quantities import (QUANTITIES, RANGE_QUANTITIES, STATS,  # noqa: E402
+                                   check_window, matching_static, pick_line, point_values,
+                                   range_stats, window_mask)
+
+PROG = "range_graph"
+PNG = "range_graph.png"
+CSV = "range_graph.csv"
+
+
+def csv_header():
+    """Columns of range_graph.csv."""
+    return ["line", "s_m"] + [f"{key}_{stat}_{QUANTITIES[key].suffix}"
+                              for key in RANGE_QUANTITIES for stat in STATS]
+
+
+def range_table(results, lines, window=None):
+    """{line name: (S of the integration points, {quantity: {stat: array}})} in SI."""
+    mask = window_mask(results.time, window)
+    table = {}
+    for line in lines:
+        stats = {}
+        for key in RANGE_QUANTITIES:
+            s, stats[key] = range_stats(line, key, mask)
+        table[line.name] = (s, stats)
+    return table
+
+
+def csv_rows(table):
+    """Rows of range_graph.csv (formatted fields)."""
+    rows = []
+    for name, (s, stats) in table.items():
+        for i in range(len(s)):
+            rows.append([name, cli.real(s[i])] + [cli.real(stats[key][stat][i])
+                                                  for key in RANGE_QUANTITIES
+                                                  for stat in STATS])
+    return rows
+
+
+def range_figure(results, table, window=None):
+    """The three panels; curves in plotted units (kN, kN m, 1/m)."""
+    fig = cli.new_figure(8, 8.5)
+    axes = fig.subplots(len(RANGE_QUANTITIES), 1, sharex=True)
+    static = matching_static(results)
+    for k, (name, (s, stats)) in enumerate(table.items()):
+        color = f"C{k}"
+        for ax, key in zip(axes, RANGE_QUANTITIES):
+            q = QUANTITIES[key]
+            lo, mean, hi = (stats[key][stat] * q.scale for stat in STATS)
+            ax.fill_between(s, lo, hi, color=color, alpha=0.25, linewidth=0)
+            ax.plot(s, hi, "-", color=color, linewidth=1.2, label=f"{name}: max")
+            ax.plot(s, mean, "--", color=color, linewidth=1.0, label=f"{name}: mean")
+            ax.plot(s, lo, "-", color=color, linewidth=0.8, label=f"{name}: min")
+            if static is not None:
+                s0, v0 = point_values(static.line(name), key)
+                ax.plot(s0, v0 * q.scale, ":", color="k", linewidth=1.2,
+                        label=f"{name}: static")
+    for ax, key in zip(axes, RANGE_QUANTITIES):
+        q = QUANTITIES[key]
+        ax.set_ylabel(f"{q.label} [{q.unit}]")
+        cli.finish_axes(ax, fontsize=7)
+    axes[-1].set_xlabel("arc length S (unstretched, from end A) [m]")
+    mask = window_mask(results.time, window)
+    fig.suptitle(cli.dynamic_title(results, "range graph: min, mean, max over "
+                                   + cli.window_text(results.time, mask)))
+    return fig
+
+
+def parse_args(argv):
+    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__))
+    cli.add_window(parser)
+    cli.add_line(parser, every=True)
+    return cli.parse(parser, argv)
+
+
+def main(argv=None):
+    """Run the command line; returns the exit status."""
+    args = parse_args(argv)
+
+    def body():
+        results = load_dynamic(args.results)
+        check_window(results, args.window)
+        lines = [pick_line(results, args.line)] if args.line else list(results.lines)
+        cli.warn_dynamic(PROG, results)
+        table = range_table(results, lines, args.window)
+        out = cli.output_dir(args, results.folder)
+        print(cli.save_figure(range_figure(results, table, args.window), out / PNG,
+                              args.dpi))
+        print(cli.write_csv(out / CSV, csv_header(), csv_rows(table)))
+    return cli.run(PROG, body)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
