@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
-# Main job: set up, build (Release), run the default deck (the paper's cable) and plot it.
+# Main job: set up, build (Release), run the paper's cable and plot it.
 # Usage: bash tools/run.sh [DECK]     results in ./<deck name>/
+# Without DECK: the paper's static cable (input/paper_cable.inp) and its four dynamic
+# cases (input/paper_case1.inp .. paper_case4.inp, the paper's Figures 3 to 6), each
+# into ./<deck name>/ with every plot of postproc/plot_all.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-deck="${1:-input/paper_cable.inp}"
+if [ $# -gt 0 ]; then
+  decks=("$1")
+else
+  decks=(input/paper_cable.inp input/paper_case1.inp input/paper_case2.inp
+         input/paper_case3.inp input/paper_case4.inp)
+fi
 bash tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
 cmake --build build -j "$(nproc)" >/dev/null
-./build/rodyn "$deck"
-out="$(basename "${deck%.*}")"
-python3 postproc/plot_static.py "$out"
+for deck in "${decks[@]}"; do
+  ./build/rodyn "$deck"
+  python3 postproc/plot_all.py "$(basename "${deck%.*}")"
+done
