@@ -312,10 +312,8 @@ contains
       end function inertia_rest
    end subroutine dyn_evaluate
 
-
-
-
-
+   !> Remember the iterate (positions, directors, step displacement) as the base of the
+   !> update.
    subroutine dyn_save_base(this)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       this%x_base = this%s1%x
