@@ -142,6 +142,9 @@ contains
       summary%dynamic = .true.
       t = 0.0_wp
       next_frame = interval
+      ! an output time less than half a step before the end is replaced by the end (no
+      ! sliver of a step between the two)
+      if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
       call step_energies(prob, log)
       log%external_work = 0.0_wp
       log%damping_work = 0.0_wp
@@ -154,6 +157,12 @@ contains
       do while (t < t_end - tol_t)
          h = dt*0.5_wp**level
          t1 = min(t + h, t_end, next_frame)
+         ! a remainder of less than half a step before the next output time (or the end) is
+         ! shared with the step before it: no step is cut down to a sliver (a step of 1e-5 s
+         ! after steps of 0.1 s gave a top tension of 27.9 kN instead of 7 kN, the inertia of
+         ! the unresolved axial vibration averaged over too short a time)
+         if (min(t_end, next_frame) - t > h + tol_t .and. &
+             min(t_end, next_frame) - t < 1.5_wp*h) t1 = t + 0.5_wp*(min(t_end, next_frame) - t)
          if (next_frame - t1 < tol_t) t1 = next_frame
          if (t_end - t1 < tol_t) t1 = t_end
          ! factors of a tangent formed for another step size no longer fit
@@ -188,6 +197,7 @@ contains
                call on_frame(t, prob, err)
                if (has_error(err)) return
                next_frame = next_frame + interval
+               if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
             end if
             if (present(progress)) call progress(t, prob, err)
             if (level > 0) then
