@@ -38,7 +38,7 @@ module rodyn_dynamics
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
-   public :: apply_initial_velocities
+   public :: apply_initial_velocities, dynamics_accept_step
 
    !> The step problem and its workspace (allocated once in dynamics_setup).
    type, extends(rod_problem_t) :: dynamic_problem_t
@@ -198,14 +198,19 @@ contains
       prob%s1%d = prob%s0%d
    end subroutine dynamics_begin_step
 
+   !> A step is accepted: its forces become the residual's reference of the next step.
+   subroutine dynamics_accept_step(prob)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      prob%f_conv = prob%f_last
+      prob%m_conv = prob%m_last
+      prob%have_conv = .true.
+   end subroutine dynamics_accept_step
+
    !> Close a converged step: velocities by the midpoint relations, or by the Newmark
    !> relations for the generalized-alpha scheme.
    subroutine dynamics_end_step(prob)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp) :: c, bdt2
-      prob%f_conv = prob%f_last
-      prob%m_conv = prob%m_last
-      prob%have_conv = .true.
       if (prob%scheme == scheme_alpha) then
          bdt2 = prob%beta_n*prob%dt**2
          prob%s1%a = (prob%dx - prob%dt*prob%s0%v - prob%dt**2*(0.5_wp - prob%beta_n)* &
