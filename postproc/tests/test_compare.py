@@ -317,7 +317,19 @@ def test_example_reference_against_a_real_run(short_run, tmp_path, capsys):
                               "end_tension", "--tol", "0.05", "--dpi", "40")
     assert status == 0, err
     assert "points = 11 (reference points, t 0 to 0.6 s)" in out
-    assert m["max_abs_error"] < 5.0  # N; 0.5 N of rounding if rodyn is unchanged
+    # the short run's last frame (t = 0.6 s) has its support force extrapolated from the
+    # steps before it (docs/output.md, dynamic_ends.csv); the example, from a longer run,
+    # has it interpolated: 29 N apart (0.24 %). The other points agree to the rounding.
+    assert m["max_abs_error"] < 60.0
+    lines = EXAMPLE.read_text().splitlines()
+    inner = tmp_path / "example_inner.csv"
+    inner.write_text("\n".join(ln for ln in lines
+                               if ln.startswith("#") or not ln[:1].isdigit()
+                               or float(ln.split(",")[0]) < 0.59) + "\n")
+    status, m_in, _, err = run(capsys, folder, inner, "--at", "top", "--quantity",
+                               "end_tension", "--no-plot")
+    assert status == 0, err
+    assert m_in["max_abs_error"] < 1.0  # N; 0.5 N of rounding if rodyn is unchanged
     assert (folder / "compare_top_tension_case2.png").is_file()
     # the effective tension at the nearest integration point is not the support force:
     # a tolerance of 1e-6 of the range fails (exit 4)
