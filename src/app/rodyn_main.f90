@@ -14,6 +14,7 @@ program rodyn
    use rodyn_mesh, only: mesh_t, mesh_build
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
+   use rodyn_banded, only: banded_free
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_output, only: output_write_static, output_write_status
@@ -117,6 +118,8 @@ program rodyn
          dstate = state
          r0 = prob%r
       end if
+      ! the static tangent is not needed any more: a dynamic run has its own
+      call banded_free(prob%bm)
    end if
 
    if (model%dynamic%requested) then

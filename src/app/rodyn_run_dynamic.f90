@@ -147,23 +147,28 @@ contains
    end subroutine on_frame
 
    !> Write the pending frame with its support forces at the frame time t_k: the step
-   !> forces belong to the middle of their steps, R_{k-1/2} to t_k - h_k/2, so written
-   !> at t_k they would lag by half a step (a first-order error in time: 7 % of the top
-   !> tension's dynamic range on the paper's case 1 at dt = 0.1 s against a converged
-   !> run; linearly interpolated as here, 0.7 %). With the step after the frame (next,
-   !> its force in prob%r, length prob%dt) the value is interpolated,
-   !>   R(t_k) = (h_{k+1} R_{k-1/2} + h_k R_{k+1/2}) / (h_k + h_{k+1}),
+   !> force of step k belongs to its force point t_{k-1} + w h_k (w = 1/2, or 1 - alpha_f
+   !> with SCHEME=ALPHA), so written at t_k it would lag by (1 - w) h_k (a first-order
+   !> error in time: 7 % of the top tension's dynamic range on the paper's case 1 at
+   !> dt = 0.1 s against a converged run; linearly interpolated as here, 0.6 %). With the
+   !> step after the frame (next: its force in prob%r, its length prob%dt) the value is
+   !> interpolated between the two force points,
+   !>   R(t_k) = R_k + (R_{k+1} - R_k) (1 - w) h_k / ((1 - w) h_k + w h_{k+1}),
    !> otherwise (the last frame of a run) extrapolated from the step before,
-   !>   R(t_k) = R_{k-1/2} + (R_{k-1/2} - R_{k-3/2}) h_k / (h_k + h_{k-1}).
+   !>   R(t_k) = R_k + (R_k - R_{k-1}) (1 - w) h_k / (w h_k + (1 - w) h_{k-1}).
    subroutine write_pending(prob, next, err)
       type(dynamic_problem_t), intent(in) :: prob !< problem (after the next step if next)
       logical, intent(in) :: next                 !< prob%r is the force of the next step
       type(error_t), intent(inout) :: err         !< status
+      real(wp) :: w
       integer :: l, k, node
+      w = prob%wf
       if (next) then
-         r_frame = (prob%dt*r_pend + h_pend*prob%r)/(h_pend + prob%dt)
+         r_frame = r_pend + (prob%r - r_pend)*(1.0_wp - w)*h_pend &
+                   /((1.0_wp - w)*h_pend + w*prob%dt)
       else if (have_back) then
-         r_frame = r_pend + (r_pend - r_back)*h_pend/(h_pend + h_back)
+         r_frame = r_pend + (r_pend - r_back)*(1.0_wp - w)*h_pend &
+                   /(w*h_pend + (1.0_wp - w)*h_back)
       else
          r_frame = r_pend
       end if

@@ -9,7 +9,7 @@ module rodyn_banded
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
    public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
-   public :: banded_kept_axpy
+   public :: banded_kept_axpy, banded_free
 
    !> A square banded matrix with kl sub- and ku super-diagonals, stored for dgbtrf
    !> (rows kl+1 .. 2kl+ku+1 of ab hold the band; the first kl rows are LU fill).
@@ -63,6 +63,16 @@ contains
       bm%ab = 0.0_wp
       bm%factored = .false.
    end subroutine banded_init
+
+   !> Release the storage (the matrix is no longer needed).
+   subroutine banded_free(bm)
+      type(banded_t), intent(inout) :: bm !< matrix
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv)
+      if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
+      bm%n = 0
+      bm%n_kept = 0
+      bm%factored = .false.
+   end subroutine banded_free
 
    !> Set all entries to zero.
    subroutine banded_zero(bm)
