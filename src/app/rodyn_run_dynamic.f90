@@ -91,7 +91,7 @@ contains
       call system_clock(clock0, clock_rate)
       clock_last = clock0
       summary%dynamic = .true.
-      call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, on_progress)
+      call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, after_step)
       block
          integer(kind=8) :: clock_end
          call system_clock(clock_end)
@@ -191,7 +191,7 @@ contains
 
    !> After every converged step: the pending frame's support forces, and the progress
    !> line on stderr, at most twice a second: percent, time, speed, time left.
-   subroutine on_progress(t, prob, err)
+   subroutine after_step(t, prob, err)
       real(wp), intent(in) :: t                        !< time reached [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
       type(error_t), intent(inout) :: err              !< status
@@ -217,5 +217,5 @@ contains
          achar(13)//'  ', 100.0_wp*frac, ' %   t = ', t, ' s   ', rate, ' steps/s   ', &
          left, ' s left  '
       flush (error_unit)
-   end subroutine on_progress
+   end subroutine after_step
 end module rodyn_run_dynamic

@@ -14,7 +14,7 @@ module rodyn_rod_dynamic
    use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
-                                rod_rotation_geometric, rod_rule_t, rod_rule, max_points
+                                rod_rotation_geometric, rod_rule_t, max_points
    implicit none
    private
    public :: rod_element_dynamic
@@ -37,8 +37,7 @@ contains
       real(wp), intent(out) :: fe(6, p + 1)       !< projected internal force [N, N m]
       real(wp), intent(out) :: ke(:, :)           !< (6(p+1), 6(p+1)) tangent, if want_k
       logical, intent(in) :: want_k               !< form the tangent
-      type(rod_rule_t), intent(in), optional :: rule !< rod_rule(p), if already formed
-      type(rod_rule_t) :: rl
+      type(rod_rule_t), intent(in) :: rule        !< rod_rule(p): points, shape functions
       real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6)
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
@@ -52,19 +51,14 @@ contains
       if (scheme == scheme_alpha) wq = wf
       xm(:, 1:nen) = (1.0_wp - wq)*x0 + wq*x1
       dm(:, :, 1:nen) = (1.0_wp - wq)*d0 + wq*d1
-      if (present(rule)) then
-         rl = rule
-      else
-         rl = rod_rule(p)
-      end if
-      np = rl%np
+      np = rule%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
       do g = 1, np
-         n(1:nen) = rl%n(1:nen, g)
-         dn(1:nen) = rl%dn(1:nen, g)*2.0_wp/le
-         wj = rl%w(g)*0.5_wp*le
-         cg = c*rl%mask(:, g)
+         n(1:nen) = rule%n(1:nen, g)
+         dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
+         wj = rule%w(g)*0.5_wp*le
+         cg = c*rule%mask(:, g)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
          select case (scheme)
          case (scheme_midpoint, scheme_alpha)

@@ -42,7 +42,7 @@ module rodyn_rod_element
    end type rod_gp_t
 
    !> The quadrature of an element order with its shape functions at the points,
-   !> formed once per assembly (rod_rule) rather than once per element.
+   !> formed once per mesh (mesh_t%rules) rather than once per element.
    type :: rod_rule_t
       integer :: p = 0                            !< element order
       integer :: np = 0                           !< number of points
@@ -335,19 +335,14 @@ contains
       integer :: g, nen, nd, k, np, i, j, nk, rows(6)
       nen = p + 1
       nd = 6*nen
-      if (present(rule)) then
-         rl = rule
-      else
-         rl = rod_rule(p)
-      end if
-      np = rl%np
+      np = rule%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
       do g = 1, np
-         n(1:nen) = rl%n(1:nen, g)
-         dn(1:nen) = rl%dn(1:nen, g)*2.0_wp/le
-         wj = rl%w(g)*0.5_wp*le
-         cg = c*rl%mask(:, g)
+         n(1:nen) = rule%n(1:nen, g)
+         dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
+         wj = rule%w(g)*0.5_wp*le
+         cg = c*rule%mask(:, g)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xe, de, kin)
          s = cg*(rod_strains(kin) - eps0(:, g))
          call rod_gp_qforce(nen, n(1:nen), dn(1:nen), kin, s, wj, fq(:, :, 1:nen))

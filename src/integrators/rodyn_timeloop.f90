@@ -114,7 +114,7 @@ contains
    end subroutine step_work
 
    !> Run the dynamic analysis from the state in prob (time 0) to model%dynamic%duration.
-   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, progress)
+   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, after_step)
       type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
       type(model_t), intent(in) :: model              !< model (dynamic options)
       type(run_summary_t), intent(inout) :: summary   !< progress
@@ -122,7 +122,7 @@ contains
       integer, intent(in) :: log_unit                 !< Newton log unit (< 0: silent)
       procedure(frame_callback) :: on_frame           !< output of a frame
       procedure(step_callback) :: on_step             !< output of a step log
-      procedure(frame_callback), optional :: progress !< called after every step
+      procedure(frame_callback), optional :: after_step !< called after every step
       type(newton_options_t) :: opts
       type(newton_stats_t) :: stats
       type(error_t) :: nerr
@@ -194,20 +194,15 @@ contains
          if (accepted) then
             call dynamics_accept_step(prob)
             summary%steps = summary%steps + 1
-            log%step = summary%steps
-            log%time = t1
-            log%dt = t1 - t
-            log%iterations = stats%iterations
-            log%tangents = stats%tangents
-            log%cutbacks = step_cuts
-            log%external_work = log%external_work + w_ext
-            log%damping_work = log%damping_work + w_damp
-            log%kinetic = trial%kinetic
-            log%strain = trial%strain
-            log%gravity = trial%gravity
-            log%total = trial%total
-            log%momentum = trial%momentum
-            log%angular_momentum = trial%angular_momentum
+            trial%step = summary%steps
+            trial%time = t1
+            trial%dt = t1 - t
+            trial%iterations = stats%iterations
+            trial%tangents = stats%tangents
+            trial%cutbacks = step_cuts
+            trial%external_work = log%external_work + w_ext
+            trial%damping_work = log%damping_work + w_damp
+            log = trial
             t = t1
             summary%time_reached = t
             step_cuts = 0
@@ -220,7 +215,7 @@ contains
                next_frame = next_frame + interval
                if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
             end if
-            if (present(progress)) call progress(t, prob, err)
+            if (present(after_step)) call after_step(t, prob, err)
             if (level > 0) then
                good = good + 1
                if (good >= 2) then

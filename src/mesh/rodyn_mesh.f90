@@ -13,8 +13,8 @@ module rodyn_mesh
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point
-   use rodyn_rod_element, only: rod_element_strains, max_points
-   use rodyn_shape, only: max_nen
+   use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule
+   use rodyn_shape, only: max_nen, max_order
    implicit none
    private
    public :: mesh_t, mesh_build, mesh_node
@@ -25,6 +25,7 @@ module rodyn_mesh
       integer :: n_nodes = 0
       integer :: n_elements = 0
       integer :: max_nen = 2                   !< most nodes in one element
+      type(rod_rule_t) :: rules(max_order)     !< quadrature and shape functions per order
       ! per line
       integer, allocatable :: line_first_node(:)  !< (nl) global number of node A
       integer, allocatable :: line_n_nodes(:)     !< (nl)
@@ -65,6 +66,9 @@ contains
       type(state_t), intent(inout) :: state  !< initial configuration
       type(error_t), intent(inout) :: err    !< status
       integer :: l, nl, nn, ne, p, e, a, k, node, el
+      do p = 1, max_order
+         mesh%rules(p) = rod_rule(p)
+      end do
       nl = size(model%lines)
       mesh%n_lines = nl
       allocate (mesh%line_first_node(nl), mesh%line_n_nodes(nl), mesh%line_first_elem(nl), &

@@ -11,12 +11,11 @@ module rodyn_assembly
    use rodyn_state, only: state_t
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
-   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, &
-                                rod_rule_t, rod_rule
+   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_rotation, only: cross, rotation_cayley_inverse
    use rodyn_motion, only: amplitude_value
-   use rodyn_shape, only: max_nen, max_order
+   use rodyn_shape, only: max_nen
    implicit none
    private
    public :: supports_t, loads_t, supports_build, loads_build
@@ -150,11 +149,7 @@ contains
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
       real(wp) :: de(3, 3, max_nen), e0(6, max_points)
-      type(rod_rule_t) :: rules(max_order)
       integer :: e, l, p, nen, a
-      do p = 1, max_order
-         rules(p) = rod_rule(p)
-      end do
       fint = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
@@ -172,7 +167,7 @@ contains
             e0 = eps0_scale*mesh%eps0(:, :, e)
             call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
-                                    ke(1:6*nen, 1:6*nen), want_k, rules(p))
+                                    ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
             call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
                                  want_k)
          end associate
@@ -229,11 +224,7 @@ contains
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
-      type(rod_rule_t) :: rules(max_order)
       integer :: e, l, p, nen, a, j, nd
-      do p = 1, max_order
-         rules(p) = rod_rule(p)
-      end do
       fint = 0.0_wp
       fdamp = 0.0_wp
       if (want_k) then
@@ -254,7 +245,7 @@ contains
             call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
-                                     ke(1:6*nen, 1:6*nen), want_k, rules(p))
+                                     ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
             nd = 6*nen
             if (beta > 0.0_wp) then
                do a = 1, nen
@@ -266,7 +257,7 @@ contains
                end do
                call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
                                        mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
-                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true., rules(p))
+                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true., mesh%rules(p))
                do j = 1, nd
                   fd(j) = beta/dt*dot_product(ks(j, 1:nd), du(1:nd))
                end do
