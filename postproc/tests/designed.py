@@ -14,7 +14,6 @@ in S, so that interpolating along the line is exact:
 with w = 2 pi 1.25 rad/s (period 0.8 s), frames every 0.025 s from 0 to 2 s. The
 second line, 'TAIL, 1/2', is random data (held at end A only).
 """
-import os
 import re
 import shutil
 import subprocess
@@ -24,6 +23,7 @@ import numpy as np
 import pytest
 
 from test_plot_dynamic import write_csv, write_h5, write_status
+from test_plot_static import rodyn_exe  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[2]
 OMEGA = 2 * np.pi * 1.25
@@ -95,17 +95,6 @@ def write_designed(folder, h5=True, csv_tables=True):
         write_csv(folder, lines, log, times=TIMES)
     write_status(folder, counters=counters, times=TIMES)
     return lines, log
-
-
-def rodyn_exe():
-    """The executable named by RODYN_EXE (relative to the cwd or the repo), or None."""
-    value = os.environ.get("RODYN_EXE")
-    if not value:
-        return None
-    for candidate in (Path(value), REPO / value):
-        if candidate.is_file() and os.access(candidate, os.X_OK):
-            return candidate.resolve()
-    pytest.fail(f"RODYN_EXE={value} is not an executable file")
 
 
 def short_case2(folder):

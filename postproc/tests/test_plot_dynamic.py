@@ -8,7 +8,6 @@ the rodyn executable, a short run of the paper's case 2 (0.3 s) is also made and
     RODYN_EXE=build/rodyn python3 -m pytest postproc/tests -q
 """
 import csv
-import os
 import re
 import shutil
 import subprocess
@@ -24,6 +23,7 @@ REPO = POSTPROC.parent
 SCRIPT = POSTPROC / "plot_dynamic.py"
 sys.path.insert(0, str(POSTPROC))
 
+from test_plot_static import rodyn_exe  # noqa: E402
 import plot_dynamic  # noqa: E402
 from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
 from rodyn_post.dynamic import (ELEMENTS_HEADER, ENDS_HEADER, LOG_HEADER,  # noqa: E402
@@ -461,17 +461,6 @@ def test_missing_dataset_and_bad_status(tmp_path, capsys):
 
 
 # --- (d) a real rodyn run -----------------------------------------------------------
-
-def rodyn_exe():
-    """The executable named by RODYN_EXE (relative to the cwd or the repo), or None."""
-    value = os.environ.get("RODYN_EXE")
-    if not value:
-        return None
-    for candidate in (Path(value), REPO / value):
-        if candidate.is_file() and os.access(candidate, os.X_OK):
-            return candidate.resolve()
-    pytest.fail(f"RODYN_EXE={value} is not an executable file")
-
 
 def test_real_paper_case2_short(tmp_path):
     exe = rodyn_exe()
