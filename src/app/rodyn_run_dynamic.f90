@@ -100,7 +100,8 @@ contains
                              /real(clock_rate, wp)
       end block
       if (show_progress) write (error_unit, '(a)') ''
-      ! a frame still waiting for the step after it (the run stopped): extrapolated
+      ! a frame still waiting for the step after it (the run stopped, or the step past
+      ! the end failed): extrapolated
       if (pending) then
          call clear_error(werr)
          call write_pending(prob, .false., werr)
@@ -119,8 +120,8 @@ contains
    end subroutine run_dynamic
 
    !> A frame: positions and section forces of the state at t; its support forces wait
-   !> for the next step (frame_reactions), but at t = 0 (the start state's) and at the
-   !> end of the run (extrapolated).
+   !> for the next step (write_pending), but at t = 0 (the start state's). The last
+   !> frame's next step is the time loop's step past the end.
    subroutine on_frame(t, prob, err)
       real(wp), intent(in) :: t                        !< time [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< converged state
@@ -137,8 +138,6 @@ contains
          h_back = h_prev
          have_back = have_prev
          pending = .true.
-         if (t >= ctx_model%dynamic%duration - 1.0e-9_wp*ctx_model%dynamic%dt) &
-            call write_pending(prob, .false., err)
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
                             frame_lines)
@@ -154,7 +153,8 @@ contains
    !> step after the frame (next: its force in prob%r, its length prob%dt) the value is
    !> interpolated between the two force points,
    !>   R(t_k) = R_k + (R_{k+1} - R_k) (1 - w) h_k / ((1 - w) h_k + w h_{k+1}),
-   !> otherwise (the last frame of a run) extrapolated from the step before,
+   !> otherwise (a run that stopped, or whose step past the end failed) extrapolated from
+   !> the step before,
    !>   R(t_k) = R_k + (R_k - R_{k-1}) (1 - w) h_k / (w h_k + (1 - w) h_{k-1}).
    subroutine write_pending(prob, next, err)
       type(dynamic_problem_t), intent(in) :: prob !< problem (after the next step if next)
@@ -205,6 +205,7 @@ contains
       h_prev = prob%dt
       have_prev = .true.
       if (.not. show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
+      if (t > ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) return ! past the end
       call system_clock(now)
       if (real(now - clock_last, wp) < 0.5_wp*real(clock_rate, wp) .and. &
           t < ctx_model%dynamic%duration) return

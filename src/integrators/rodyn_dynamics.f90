@@ -28,7 +28,7 @@ module rodyn_dynamics
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, scheme_alpha
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t, state_allocate
+   use rodyn_state, only: state_t, state_allocate, state_copy
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
@@ -160,12 +160,7 @@ contains
       integer :: node, i, k
       prob%t0 = t0
       prob%dt = dt
-      prob%s0%x = prob%s1%x
-      prob%s0%d = prob%s1%d
-      prob%s0%v = prob%s1%v
-      prob%s0%dd = prob%s1%dd
-      prob%s0%a = prob%s1%a
-      prob%s0%ad = prob%s1%ad
+      call state_copy(prob%s1, prob%s0)
       ! external forces at the midpoint: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
       prob%fext = 0.0_wp

@@ -3,7 +3,7 @@ module rodyn_state
    use rodyn_kinds, only: wp
    implicit none
    private
-   public :: state_t, state_allocate
+   public :: state_t, state_allocate, state_copy
 
    !> Configuration and velocities of all nodes.
    type :: state_t
@@ -32,4 +32,17 @@ contains
       state%v = 0.0_wp
       state%dd = 0.0_wp
    end subroutine state_allocate
+
+   !> dst = src, field by field into dst's arrays (allocated for the same nodes; no
+   !> reallocation, unlike an assignment of the whole type).
+   subroutine state_copy(src, dst)
+      type(state_t), intent(in) :: src    !< state copied
+      type(state_t), intent(inout) :: dst !< overwritten
+      dst%x = src%x
+      dst%d = src%d
+      dst%v = src%v
+      dst%dd = src%dd
+      dst%a = src%a
+      dst%ad = src%ad
+   end subroutine state_copy
 end module rodyn_state
