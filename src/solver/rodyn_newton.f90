@@ -23,7 +23,13 @@
 !> the residual by the factor opts%reuse_ratio per iteration; an iteration that does
 !> worse makes the next one form and factorise a new tangent. Residual-only evaluations
 !> then cost a fraction of a tangent (docs/benchmarks.md, "skips"). With a reused tangent
-!> convergence is linear, so the quadratic-regime acceptance is not used for it.
+!> convergence is linear, so the quadratic-regime acceptance is not used for it. When
+!> the reused tangent made the residual grow, the new one is formed at the iterate
+!> before (the better of the two): on the paper's case 1 the tangent of the step before
+!> takes the first iteration from 6e4 to about 0.3 and then diverges, and a tangent
+!> formed at the diverged iterate contracts by only 0.1 per iteration, one formed at the
+!> first iterate by 0.01 (30 s of case 1: 2234 iterations and 421 tangents against 2555
+!> and 464, 9 % fewer instructions; no change where reused tangents do not diverge).
 module rodyn_newton
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
@@ -212,8 +218,17 @@ contains
             stats%converged = .true.
             return
          end if
-         ! a tangent that no longer contracts the residual fast enough is renewed
+         ! a tangent that no longer contracts the residual fast enough is renewed, at the
+         ! iterate before if this reused one made things worse (full step: back to base)
          refresh = .not. opts%reuse_tangent .or. rn > opts%reuse_ratio*rn_prev
+         if (refresh .and. opts%reuse_tangent .and. .not. fresh .and. rn > rn_prev .and. &
+             alpha == 1.0_wp) then
+            call prob%apply_correction(0.0_wp)
+            call evaluate(.true.)
+            if (has_error(err)) return
+            rn = prob%residual_norm()
+            stats%residual = rn
+         end if
       end do
    contains
       !> Evaluate the residual, and the tangent if want_k (then to be factorised).
