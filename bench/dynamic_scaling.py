@@ -272,7 +272,7 @@ def main():
                   "Below FORCE TOL = 1e-8 the second iteration ends the step; above it a "
                   "step ends by a round-off rule: a full correction within DISP TOL that "
                   "does not halve a residual within 100 × FORCE TOL (before 2026-11-23 "
-                  "08:40 UTC only a correction below 1e-12, one or two iterations and "
+                  "08:20 UTC only a correction below 1e-12, one or two iterations and "
                   "often a tangent later: 20 steps of 1000 cubic elements took 88 "
                   "iterations and 38 tangents, now 58 and 10).", ""]
     text = "\n".join(L)
