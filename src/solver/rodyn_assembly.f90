@@ -149,7 +149,7 @@ contains
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
       real(wp) :: de(3, 3, max_nen), e0(6, max_points)
-      integer :: e, l, p, nen, a
+      integer :: e, l, p, nen
       fint = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
@@ -160,10 +160,7 @@ contains
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            do a = 1, nen
-               xe(:, a) = state%x(:, nodes(a))
-               de(:, :, a) = state%d(:, :, nodes(a))
-            end do
+            call gather(state, nodes, xe, de)
             e0 = eps0_scale*mesh%eps0(:, :, e)
             call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
@@ -173,6 +170,19 @@ contains
          end associate
       end do
    end subroutine assemble_static
+
+   !> Positions and directors of an element's nodes from a state.
+   pure subroutine gather(state, nodes, xe, de)
+      type(state_t), intent(in) :: state     !< configuration
+      integer, intent(in) :: nodes(:)        !< (nen) global nodes of the element
+      real(wp), intent(inout) :: xe(:, :)    !< (3, >= nen) positions [m]
+      real(wp), intent(inout) :: de(:, :, :) !< (3, 3, >= nen) directors
+      integer :: a
+      do a = 1, size(nodes)
+         xe(:, a) = state%x(:, nodes(a))
+         de(:, :, a) = state%d(:, :, nodes(a))
+      end do
+   end subroutine gather
 
    !> Add an element's forces to fint and, if want_k, its matrix (in the node bases of
    !> rotated nodes) to the banded tangent.
@@ -236,12 +246,8 @@ contains
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            do a = 1, nen
-               x0(:, a) = s0%x(:, nodes(a))
-               d0(:, :, a) = s0%d(:, :, nodes(a))
-               x1(:, a) = s1%x(:, nodes(a))
-               d1(:, :, a) = s1%d(:, :, nodes(a))
-            end do
+            call gather(s0, nodes, x0, d0)
+            call gather(s1, nodes, x1, d1)
             call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
