@@ -84,7 +84,11 @@ QUICK_REF_CHECKS = [{"elements": 10, "dt": 0.00625}]
 SWEEPS = {
     # "output": frames every OUT_DT like the peers (the reference writes every step)
     "rodyn": [{"elements": n, "dt": dt, "output": common.OUT_DT} for n in (10, 20, 40)
-              for dt in (0.025, 0.0125, 0.00625) if n / dt < 5000],
+              for dt in (0.025, 0.0125, 0.00625) if n / dt < 5000]
+    # quadratic elements too: about half the cost of cubic ones per element
+    # (docs/benchmarks_work_precision.md)
+    + [{"elements": n, "order": 2, "dt": dt, "output": common.OUT_DT} for n in (10, 20)
+       for dt in (0.025, 0.0125, 0.00625)],
     # explicit: the step is the largest 0.05/k below 5e-3/N s (stable for 0.5 m
     # segments at 2.5e-4 s with BA = -0.5; see README), plus checks at half that step
     # and with BA = -1 (which needs a smaller step)
@@ -116,7 +120,8 @@ TARGETS_X = (1e-2, 1e-3)
 def label(tool, cfg):
     if tool == "moordyn":
         return f"N={cfg['segments']}, dt={cfg['dt']:.3g}, BA={cfg['ba']:g}"
-    return f"{cfg['elements']} el., dt={cfg['dt']:g}"
+    order = f" p{cfg['order']}" if "order" in cfg else ""
+    return f"{cfg['elements']} el.{order}, dt={cfg['dt']:g}"
 
 
 def run_one(tool, case, cfg, t_end, rodyn, rep, fresh, logf):
@@ -135,6 +140,8 @@ def run_one(tool, case, cfg, t_end, rodyn, rep, fresh, logf):
         cmd += ["--elements", str(cfg["elements"])]
     if tool == "rodyn":
         cmd += ["--rodyn", rodyn]
+        if "order" in cfg:
+            cmd += ["--order", str(cfg["order"])]
         if not cfg.get("output"):
             cmd += ["--every-step"]
     print(f"  {case} {TOOL_NAMES[tool]} {label(tool, cfg)} (repeat {rep + 1}) ...",
