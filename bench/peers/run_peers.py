@@ -24,6 +24,7 @@ import datetime
 import json
 import os
 import platform
+import shutil
 import statistics
 import subprocess
 import sys
@@ -393,6 +394,11 @@ def main():
     facts = machine_facts(rodyn, load_average=True)
     facts["rodyn binary"] = f"{rodyn}, built " + datetime.datetime.fromtimestamp(
         os.path.getmtime(rodyn)).astimezone().strftime("%Y-%m-%d %H:%M %Z")
+    # the runs use a copy: a rebuild of the binary during the half hour of the benchmark
+    # (while it is being linked it cannot be executed) must not fail or mix its runs
+    snapshot = os.path.join(WORK, "rodyn_snapshot")
+    shutil.copy2(rodyn, snapshot)
+    rodyn = snapshot
     facts["python"] = platform.python_version()
     for k, v in package_versions().items():
         facts[f"package {k}"] = v
