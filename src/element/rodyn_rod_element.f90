@@ -22,7 +22,7 @@
 !>   r_x = f_x,   r_theta = sum_i d_i x f_di.
 module rodyn_rod_element
    use rodyn_kinds, only: wp
-   use rodyn_rotation, only: cross
+   use rodyn_rotation, only: cross, skew
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_nen
    implicit none
    private
@@ -216,15 +216,12 @@ contains
       moments = any(s(4:6) /= 0.0_wp)
       if (forces) then
          do a = 1, nen
-            skl(:, :, a) = skew3(s(1)*dl(:, 1, a) + s(2)*dl(:, 2, a) + s(3)*dl(:, 3, a))
-            skr(:, :, a) = skew3(s(1)*dr(:, 1, a) + s(2)*dr(:, 2, a) + s(3)*dr(:, 3, a))
+            skl(:, :, a) = skew(s(1)*dl(:, 1, a) + s(2)*dl(:, 2, a) + s(3)*dl(:, 3, a))
+            skr(:, :, a) = skew(s(1)*dr(:, 1, a) + s(2)*dr(:, 2, a) + s(3)*dr(:, 3, a))
          end do
       end if
       if (moments) then
-         ! S^T with S_23 = M1, S_31 = M2, S_12 = M3 (S skew)
-         st(:, 1) = [0.0_wp, s(6), -s(5)]
-         st(:, 2) = [-s(6), 0.0_wp, s(4)]
-         st(:, 3) = [s(5), -s(4), 0.0_wp]
+         st = skew(s(4:6))   ! S^T, S skew with S_23 = M1, S_31 = M2, S_12 = M3
          do b = 1, nen
             do j = 1, 3
                do i = 1, 3
@@ -264,15 +261,6 @@ contains
          end do
       end do
    end subroutine rod_gp_geometric
-
-   !> skew(v) w = v x w (as rodyn_rotation's skew, local so that it is inlined).
-   pure function skew3(v) result(sk)
-      real(wp), intent(in) :: v(3) !< axial vector
-      real(wp) :: sk(3, 3)
-      sk(:, 1) = [0.0_wp, v(3), -v(2)]
-      sk(:, 2) = [-v(3), 0.0_wp, v(1)]
-      sk(:, 3) = [v(2), -v(1), 0.0_wp]
-   end function skew3
 
    !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di.
    pure subroutine rod_project_qforce(nen, fq, dnode, fe)
@@ -326,9 +314,8 @@ contains
       real(wp), intent(out) :: fe(6, p + 1)        !< internal force and moment [N, N m]
       real(wp), intent(out) :: ke(:, :)            !< (6(p+1), 6(p+1)) tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
-      type(rod_rule_t), intent(in), optional :: rule !< rod_rule(p), if already formed
+      type(rod_rule_t), intent(in) :: rule         !< rod_rule(p): points, shape functions
       ! fixed-size work arrays: nothing is allocated per call
-      type(rod_rule_t) :: rl
       real(wp) :: n(max_nen), dn(max_nen), s(6), wj, cg(6), acc
       real(wp) :: fq(3, 4, max_nen), bt(6, 6*max_nen), cb(6, 6*max_nen)
       type(rod_gp_t) :: kin

@@ -20,7 +20,7 @@ module rodyn_timeloop
    use rodyn_rotation, only: rotation_cayley_inverse
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
-   use rodyn_state, only: state_copy
+   use rodyn_state, only: state_copy, state_gather
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -49,16 +49,13 @@ contains
       type(dynamic_problem_t), intent(in) :: prob !< problem
       real(wp) :: w
       real(wp) :: xe(3, max_nen), de(3, 3, max_nen)
-      integer :: e, l, p, a
+      integer :: e, l, p
       w = 0.0_wp
       associate (mesh => prob%mesh)
          do e = 1, mesh%n_elements
             l = mesh%elem_line(e)
             p = mesh%line_order(l)
-            do a = 1, p + 1
-               xe(:, a) = prob%s1%x(:, mesh%elem_nodes(a, e))
-               de(:, :, a) = prob%s1%d(:, :, mesh%elem_nodes(a, e))
-            end do
+            call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
             w = w + rod_element_energy(p, mesh%elem_le(e), mesh%line_c(:, l), &
                                        mesh%eps0(:, :, e), xe(:, 1:p + 1), de(:, :, 1:p + 1))
          end do

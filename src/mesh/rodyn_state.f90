@@ -3,7 +3,7 @@ module rodyn_state
    use rodyn_kinds, only: wp
    implicit none
    private
-   public :: state_t, state_allocate, state_copy
+   public :: state_t, state_allocate, state_copy, state_gather
 
    !> Configuration and velocities of all nodes.
    type :: state_t
@@ -45,4 +45,17 @@ contains
       dst%a = src%a
       dst%ad = src%ad
    end subroutine state_copy
+
+   !> Positions and directors of an element's nodes.
+   pure subroutine state_gather(state, nodes, xe, de)
+      type(state_t), intent(in) :: state     !< configuration
+      integer, intent(in) :: nodes(:)        !< (nen) global nodes of the element
+      real(wp), intent(inout) :: xe(:, :)    !< (3, >= nen) positions [m]
+      real(wp), intent(inout) :: de(:, :, :) !< (3, 3, >= nen) directors
+      integer :: a
+      do a = 1, size(nodes)
+         xe(:, a) = state%x(:, nodes(a))
+         de(:, :, a) = state%d(:, :, nodes(a))
+      end do
+   end subroutine state_gather
 end module rodyn_state

@@ -8,7 +8,7 @@ module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t
+   use rodyn_state, only: state_t, state_gather
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
@@ -160,7 +160,7 @@ contains
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            call gather(state, nodes, xe, de)
+            call state_gather(state, nodes, xe, de)
             e0 = eps0_scale*mesh%eps0(:, :, e)
             call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
@@ -170,19 +170,6 @@ contains
          end associate
       end do
    end subroutine assemble_static
-
-   !> Positions and directors of an element's nodes from a state.
-   pure subroutine gather(state, nodes, xe, de)
-      type(state_t), intent(in) :: state     !< configuration
-      integer, intent(in) :: nodes(:)        !< (nen) global nodes of the element
-      real(wp), intent(inout) :: xe(:, :)    !< (3, >= nen) positions [m]
-      real(wp), intent(inout) :: de(:, :, :) !< (3, 3, >= nen) directors
-      integer :: a
-      do a = 1, size(nodes)
-         xe(:, a) = state%x(:, nodes(a))
-         de(:, :, a) = state%d(:, :, nodes(a))
-      end do
-   end subroutine gather
 
    !> Add an element's forces to fint and, if want_k, its matrix (in the node bases of
    !> rotated nodes) to the banded tangent.
@@ -246,8 +233,8 @@ contains
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            call gather(s0, nodes, x0, d0)
-            call gather(s1, nodes, x1, d1)
+            call state_gather(s0, nodes, x0, d0)
+            call state_gather(s1, nodes, x1, d1)
             call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &

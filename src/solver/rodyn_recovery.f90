@@ -7,7 +7,7 @@ module rodyn_recovery
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_statics, only: static_problem_t
-   use rodyn_state, only: state_t
+   use rodyn_state, only: state_t, state_gather
    use rodyn_rod_element, only: rod_element_resultants, max_points
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
@@ -39,7 +39,7 @@ contains
       type(line_result_t), allocatable, intent(inout) :: lines(:) !< results (reused)
       real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
       real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points)
-      integer :: l, p, ne, el, e, g, ig, n0, nn, k, node, a
+      integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
       if (.not. allocated(lines)) allocate (lines(mesh%n_lines))
       do l = 1, mesh%n_lines
          p = mesh%line_order(l)
@@ -55,10 +55,7 @@ contains
             lines(l)%curvature(3, ne*p))
          do el = 1, ne
             e = mesh%line_first_elem(l) + el - 1
-            do a = 1, p + 1
-               xe(:, a) = state%x(:, mesh%elem_nodes(a, e))
-               de(:, :, a) = state%d(:, :, mesh%elem_nodes(a, e))
-            end do
+            call state_gather(state, mesh%elem_nodes(1:p + 1, e), xe, de)
             e0 = eps0_scale*mesh%eps0(:, :, e)
             call rod_element_resultants(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
                                         xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
