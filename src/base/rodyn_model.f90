@@ -8,12 +8,14 @@ module rodyn_model
    public :: section_t, line_def_t, constraint_t, point_load_t, static_options_t
    public :: output_options_t, model_t
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
+   public :: water_t, seabed_t, attachment_t, rho_water_default
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
+   real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
 
    ! Kinds of node constraint (*BOUNDARY, TYPE=...)
    integer, parameter :: bc_free = 0       !< no constraint
@@ -55,6 +57,17 @@ module rodyn_model
       real(wp) :: rhoi1 = -1.0_wp   !< rotary inertia per length about d1 [kg m]; < 0: default
       real(wp) :: rhoi2 = -1.0_wp   !< rotary inertia per length about d2 [kg m]; < 0: default
       real(wp) :: kappa0(3) = 0.0_wp !< stress-free curvature (K1, K2, K3) [1/m]
+      ! hydrodynamics and contents (used only when the deck has *WATER); docs/water.md
+      real(wp) :: db = -1.0_wp      !< buoyancy (displacement) diameter [m]; < 0: OD
+      real(wp) :: dd = -1.0_wp      !< drag diameter [m]; < 0: the buoyancy diameter
+      real(wp) :: cdn = 1.2_wp      !< normal drag coefficient, on dd [-]
+      real(wp) :: cda = 0.008_wp    !< axial drag coefficient, on pi dd (skin) [-]
+      real(wp) :: can = 1.0_wp      !< normal added-mass coefficient, on pi db^2/4 [-]
+      real(wp) :: caa = 0.0_wp      !< axial added-mass coefficient, on pi db^2/4 [-]
+      real(wp) :: id = 0.0_wp       !< internal (contents) diameter [m]
+      real(wp) :: rho_i = 0.0_wp    !< contents density [kg/m3]
+      real(wp) :: p_i = 0.0_wp      !< contents gauge pressure at z = z_pi [Pa]
+      real(wp) :: z_pi = 0.0_wp     !< reference level of the contents pressure [m]
    end type section_t
 
    !> One line (*LINE): a rod of given unstretched length between end A and end B.
@@ -68,7 +81,56 @@ module rodyn_model
       real(wp) :: end_b(3) = 0.0_wp !< position of end B (S = L) [m]
       logical :: has_d1_hint = .false.
       real(wp) :: d1_hint(3) = 0.0_wp !< direction d1 should point to (projected) [-]
+      ! segments in order from end A (*SEGMENT cards; one segment when the *LINE card
+      ! gives SECTION=, LENGTH=, ELEMENTS=): section, length and n_elements above are
+      ! then those of the first segment's section and the line's totals
+      integer, allocatable :: seg_section(:)    !< (nseg) index into model%sections
+      real(wp), allocatable :: seg_length(:)    !< (nseg) unstretched length [m]
+      integer, allocatable :: seg_elements(:)   !< (nseg) number of elements
    end type line_def_t
+
+   !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an
+   !> unstretched arc length S from end A, applied at the node nearest to S (the mesh
+   !> reports the distance). Force: (mass g - rho_w g volume submerged) plus Morison drag
+   !> 1/2 rho_w cda_area |u| u on the relative velocity; inertia mass + ca rho_w volume.
+   type :: attachment_t
+      integer :: line = 0           !< index into model%lines
+      real(wp) :: s = 0.0_wp        !< arc length from end A [m]
+      real(wp) :: mass = 0.0_wp     !< mass [kg]
+      real(wp) :: volume = 0.0_wp   !< displaced volume [m3]
+      real(wp) :: cda_area = 0.0_wp !< drag coefficient times area, Cd A [m2]
+      real(wp) :: ca = 0.0_wp       !< added-mass coefficient on rho_w volume [-]
+   end type attachment_t
+
+   !> The sea (*WATER, *CURRENT): still water level, depth, density and a steady current
+   !> profile (speed and heading at levels z, linear between, constant beyond).
+   type :: water_t
+      logical :: present = .false.     !< the deck has *WATER (else a dry scene)
+      real(wp) :: surface = 0.0_wp     !< z of the still water level [m]
+      real(wp) :: depth = 0.0_wp       !< water depth at x = y = 0 [m] (seabed below)
+      real(wp) :: density = rho_water_default !< [kg/m3]
+      real(wp), allocatable :: cur_z(:)       !< (nc) levels, increasing [m]
+      real(wp), allocatable :: cur_speed(:)   !< (nc) current speed [m/s]
+      real(wp), allocatable :: cur_heading(:) !< (nc) direction it flows towards,
+                                              !< from +x towards +y [rad] (deg in the deck)
+      real(wp) :: cur_ramp = 0.0_wp    !< ramp-in duration of the current in dynamics [s]
+   end type water_t
+
+   !> The seabed (*SEABED): a plane through (0, 0, surface - depth) rising at angle
+   !> slope towards the horizontal direction slope_dir. Contact per unit length of line:
+   !> normal force (k pen + c pen_rate) D, D the buoyancy diameter (MoorDyn's kbot/cbot
+   !> convention); Coulomb friction mu N with separate axial and lateral coefficients,
+   !> regularised linearly below the mobilisation velocity v_mob (dynamics only).
+   type :: seabed_t
+      logical :: present = .false.     !< a seabed under the water
+      real(wp) :: slope = 0.0_wp       !< angle [rad] (deg in the deck)
+      real(wp) :: slope_dir = 0.0_wp   !< heading of steepest ascent [rad] (deg in the deck)
+      real(wp) :: stiffness = 3.0e6_wp !< normal stiffness per contact area [N/m3 = Pa/m]
+      real(wp) :: damping = 3.0e5_wp   !< normal damping per contact area [Pa s/m]
+      real(wp) :: mu_axial = 0.0_wp    !< axial friction coefficient [-]
+      real(wp) :: mu_lateral = 0.0_wp  !< lateral friction coefficient [-]
+      real(wp) :: v_mob = 0.01_wp      !< friction mobilisation velocity [m/s]
+   end type seabed_t
 
    !> A node constraint (*BOUNDARY).
    type :: constraint_t
@@ -172,6 +234,9 @@ module rodyn_model
       type(amplitude_t), allocatable :: amplitudes(:)
       type(motion_t), allocatable :: motions(:)
       type(initial_velocity_t), allocatable :: initial_velocities(:)
+      type(attachment_t), allocatable :: attachments(:)
+      type(water_t) :: water
+      type(seabed_t) :: seabed
       type(static_options_t) :: static
       type(dynamic_options_t) :: dynamic
       type(output_options_t) :: output

@@ -18,10 +18,16 @@ module rodyn_results
       integer, allocatable :: gp_point(:)      !< (ng) point number within the element
       real(wp), allocatable :: gp_s(:)         !< (ng) unstretched arc length [m]
       real(wp), allocatable :: tension(:)      !< (ng) effective tension N3 [N]
+      real(wp), allocatable :: wall_tension(:) !< (ng) wall (true) tension
+                                               !< T_eff + p_o A_o - p_i A_i [N] (docs/water.md)
       real(wp), allocatable :: shear(:, :)     !< (2, ng) shear forces N1, N2 [N]
       real(wp), allocatable :: moment(:, :)    !< (2, ng) bending moments M1, M2 [N m]
       real(wp), allocatable :: torque(:)       !< (ng) torsional moment M3 [N m]
       real(wp), allocatable :: curvature(:, :) !< (3, ng) K1, K2 bending, K3 twist [1/m]
+      ! seabed contact at the nodes (0 without a seabed)
+      real(wp), allocatable :: seabed_normal(:)   !< (nn) normal force per length [N/m]
+      real(wp), allocatable :: seabed_friction(:) !< (nn) friction force per length [N/m]
+      real(wp) :: touchdown_s = -1.0_wp        !< largest arc length in contact [m]; < 0: none
       ! ends: force and moment the support exerts on the line, global axes
       real(wp) :: reaction(6, 2) = 0.0_wp      !< (Fx,Fy,Fz,Mx,My,Mz) at end A, end B [N, N m]
       logical :: end_held(2) = .false.         !< end A / end B carries a support
@@ -42,6 +48,10 @@ module rodyn_results
       real(wp) :: external_work = 0.0_wp        !< work done on the line since t = 0 by
                                                 !< prescribed motions and loads [J]
       real(wp) :: damping_work = 0.0_wp         !< energy taken out by damping since t = 0 [J]
+      real(wp) :: hydro_work = 0.0_wp           !< work done on the line since t = 0 by the
+                                                !< water: buoyancy, drag, added mass [J]
+      real(wp) :: seabed_work = 0.0_wp          !< work done on the line since t = 0 by the
+                                                !< seabed: contact, damping, friction [J]
       real(wp) :: total = 0.0_wp                !< kinetic + strain + gravity [J]
       real(wp) :: momentum(3) = 0.0_wp          !< total linear momentum [kg m/s]
       real(wp) :: angular_momentum(3) = 0.0_wp  !< about the origin [kg m2/s]

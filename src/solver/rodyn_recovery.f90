@@ -52,7 +52,12 @@ contains
          if (.not. allocated(lines(l)%gp_s)) allocate (lines(l)%gp_element(ne*p), &
             lines(l)%gp_point(ne*p), lines(l)%gp_s(ne*p), lines(l)%tension(ne*p), &
             lines(l)%shear(2, ne*p), lines(l)%moment(2, ne*p), lines(l)%torque(ne*p), &
-            lines(l)%curvature(3, ne*p))
+            lines(l)%curvature(3, ne*p), lines(l)%wall_tension(ne*p))
+         if (.not. allocated(lines(l)%seabed_normal)) allocate (lines(l)%seabed_normal(nn), &
+            lines(l)%seabed_friction(nn))
+         lines(l)%seabed_normal = 0.0_wp
+         lines(l)%seabed_friction = 0.0_wp
+         lines(l)%touchdown_s = -1.0_wp
          do el = 1, ne
             e = mesh%line_first_elem(l) + el - 1
             call state_gather(state, mesh%elem_nodes(1:p + 1, e), xe, de)
@@ -67,6 +72,7 @@ contains
                lines(l)%gp_s(ig) = mesh%elem_s0(e) + 0.5_wp*mesh%elem_le(e)*(xig(g) + 1.0_wp)
                lines(l)%shear(:, ig) = res(1:2, g)
                lines(l)%tension(ig) = tens(g)
+               lines(l)%wall_tension(ig) = tens(g)
                lines(l)%moment(:, ig) = res(4:5, g)
                lines(l)%torque(ig) = res(6, g)
                lines(l)%curvature(:, ig) = curv(:, g)
