@@ -30,11 +30,13 @@ module rodyn_dynamics
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
-                             assemble_dynamic, apply_supports, add_node_block
+                             assemble_dynamic, apply_supports, add_node_block, &
+                             external_force, assemble_water
+   use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
-   use rodyn_motion, only: motion_displacement, amplitude_value
+   use rodyn_motion, only: motion_displacement
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
@@ -46,6 +48,11 @@ module rodyn_dynamics
       type(state_t), pointer :: s1 => null()   !< state at t_n+1 (the iterate)
       type(state_t) :: s0                      !< state at t_n
       type(loads_t) :: loads
+      type(water_loads_t) :: water             !< water and seabed (scene in water only)
+      real(wp), allocatable :: xf(:, :)        !< (3, nn) positions at the force point [m]
+      real(wp), allocatable :: vf(:, :)        !< (3, nn) velocities at the force point [m/s]
+      real(wp), allocatable :: af_acc(:, :)    !< (3, nn) accelerations of the scheme [m/s2]
+      real(wp), allocatable :: gfac(:)         !< (nl) ones: the weight in full
       type(inertia_t) :: inert
       integer :: scheme = 1
       real(wp) :: alpha = 0.0_wp               !< Rayleigh mass-proportional damping [1/s]
@@ -87,6 +94,15 @@ contains
       call supports_build(model, mesh, state, prob%sup)
       prob%sup%moved = .false.     ! POSITION targets were reached in statics
       call loads_build(model, mesh, prob%loads)
+      call water_loads_build(model, mesh, prob%water)
+      allocate (prob%gfac(mesh%n_lines))
+      prob%gfac = 1.0_wp
+      if (prob%water%active) then
+         allocate (prob%xf(3, nn), prob%vf(3, nn), prob%af_acc(3, nn))
+         prob%xf = 0.0_wp
+         prob%vf = 0.0_wp
+         prob%af_acc = 0.0_wp
+      end if
       call inertia_build(model, mesh, prob%inert)
       call state_allocate(prob%s0, nn)
       prob%scheme = model%dynamic%scheme
@@ -156,26 +172,15 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: tm, fac
-      integer :: node, i, k
+      real(wp) :: tm
+      integer :: node, i
       prob%t0 = t0
       prob%dt = dt
       call state_copy(prob%s1, prob%s0)
-      ! external forces at the midpoint: weight, point loads times their amplitudes
+      ! external forces at the force point: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
-      prob%fext = 0.0_wp
-      prob%fext(1:3, :) = prob%loads%gravity
-      if (allocated(prob%model%loads)) then
-         do k = 1, size(prob%model%loads)
-            associate (ld => prob%model%loads(k))
-               node = mesh_node(prob%mesh, ld%line, ld%node)
-               fac = 1.0_wp
-               if (ld%amplitude > 0) fac = amplitude_value(prob%model%amplitudes(ld%amplitude), tm)
-               prob%fext(1:3, node) = prob%fext(1:3, node) + fac*ld%force
-               prob%fext(4:6, node) = prob%fext(4:6, node) + fac*ld%moment
-            end associate
-         end do
-      end if
+      call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
+      if (prob%water%active) call water_set_time(prob%water, tm, .true.)
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
@@ -235,6 +240,7 @@ contains
       call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                             this%beta_d, this%dt, this%fint, this%fdamp, &
                             this%bm, want_k)
+      if (this%water%active) call water_loads_step(this, want_k)
       fx = 0.0_wp
       mx = 0.0_wp
       do node = 1, this%mesh%n_nodes
@@ -325,6 +331,42 @@ contains
          end if
       end function inertia_rest
    end subroutine dyn_evaluate
+
+   !> The water's and seabed's loads of the step (rodyn_water) at the force point of the
+   !> scheme: x_f = x^n + w dx, with the scheme's velocity and acceleration there,
+   !>   midpoint family: v_f = dx/dt, a_f = (v^{n+1} - v^n)/dt = 2 dx/dt^2 - 2 v^n/dt
+   !>   generalized-alpha: v_f = (1 - af) v^{n+1} + af v^n, a_f = (1 - am) a^{n+1} + am a^n
+   !> and their derivatives with respect to x^{n+1} (c_v, c_a), so that the tangent holds
+   !> the velocity dependence through the scheme's update.
+   subroutine water_loads_step(this, want_k)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      logical, intent(in) :: want_k                   !< form the tangent
+      real(wp) :: cv, ca, b, gm, dt, a1(3), v1(3)
+      integer :: node
+      dt = this%dt
+      if (this%scheme == scheme_alpha) then
+         b = this%beta_n
+         gm = this%gamma_n
+         do node = 1, this%mesh%n_nodes
+            associate (v0 => this%s0%v(:, node), a0 => this%s0%a(:, node))
+               a1 = (this%dx(:, node) - dt*v0 - dt**2*(0.5_wp - b)*a0)/(b*dt**2)
+               v1 = v0 + dt*((1.0_wp - gm)*a0 + gm*a1)
+               this%vf(:, node) = (1.0_wp - this%af)*v1 + this%af*v0
+               this%af_acc(:, node) = (1.0_wp - this%am)*a1 + this%am*a0
+            end associate
+         end do
+         cv = (1.0_wp - this%af)*gm/(b*dt)
+         ca = (1.0_wp - this%am)/(b*dt**2)
+      else
+         this%vf = this%dx/dt
+         this%af_acc = 2.0_wp*this%dx/dt**2 - 2.0_wp*this%s0%v/dt
+         cv = 1.0_wp/dt
+         ca = 2.0_wp/dt**2
+      end if
+      this%xf = this%s0%x + this%wf*this%dx
+      call assemble_water(this%water, this%mesh, this%xf, this%vf, this%af_acc, this%wf, cv, &
+                          ca, this%fint, this%bm, want_k)
+   end subroutine water_loads_step
 
    !> Remember the iterate (positions, directors, step displacement) as the base of the
    !> update.

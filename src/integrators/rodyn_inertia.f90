@@ -5,7 +5,7 @@
 module rodyn_inertia
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t
-   use rodyn_mesh, only: mesh_t
+   use rodyn_mesh, only: mesh_t, mesh_nearest_node
    use rodyn_state, only: state_t
    use rodyn_rod_element, only: rod_element_lumped_mass
    use rodyn_rotation, only: cross
@@ -35,8 +35,8 @@ contains
       do e = 1, mesh%n_elements
          l = mesh%elem_line(e)
          p = mesh%line_order(l)
-         associate (sec => model%sections(model%lines(l)%section))
-            call rod_element_lumped_mass(p, mesh%elem_le(e), sec%mass, ma(1:p + 1))
+         associate (sec => model%sections(mesh%elem_sec(e)))
+            call rod_element_lumped_mass(p, mesh%elem_le(e), mesh%elem_mass(e), ma(1:p + 1))
             call rod_element_lumped_mass(p, mesh%elem_le(e), sec%rhoi2, m1(1:p + 1))
             call rod_element_lumped_mass(p, mesh%elem_le(e), sec%rhoi1, m2(1:p + 1))
          end associate
@@ -46,6 +46,14 @@ contains
             inert%md(1, node) = inert%md(1, node) + m1(a)
             inert%md(2, node) = inert%md(2, node) + m2(a)
          end do
+      end do
+      ! attachments: their mass and the isotropic added mass Ca rho_w V at their node
+      if (.not. allocated(model%attachments)) return
+      do e = 1, size(model%attachments)
+         associate (at => model%attachments(e))
+            node = mesh_nearest_node(mesh, at%line, at%s)
+            inert%m(node) = inert%m(node) + at%mass + at%ca*model%water%density*at%volume
+         end associate
       end do
    end subroutine inertia_build
 

@@ -6,8 +6,11 @@
 !> Energy bookkeeping: total = kinetic + strain + gravity potential (-sum f_g . x).
 !> External work sums what the supports (prescribed motions) and the point loads did to
 !> the line, R . dx with R the residual at held nodes (the force the support applies) and
-!> F(t_{n+1/2}) . dx; damping work sums what Rayleigh damping took out. Under EMC,
-!> total(t) - total(0) = external work - damping work to the Newton tolerance.
+!> F(t_{n+1/2}) . dx; damping work sums what Rayleigh damping took out; hydro and seabed
+!> work sum f_water . dx and f_seabed . dx (buoyancy, drag, added mass; contact, damping,
+!> friction) with the forces of the converged step. Under EMC,
+!> total(t) - total(0) = external + hydro + seabed work - damping work to the Newton
+!> tolerance.
 module rodyn_timeloop
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
@@ -56,7 +59,7 @@ contains
             l = mesh%elem_line(e)
             p = mesh%line_order(l)
             call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
-            w = w + rod_element_energy(p, mesh%elem_le(e), mesh%line_c(:, l), &
+            w = w + rod_element_energy(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                        mesh%eps0(:, :, e), xe(:, 1:p + 1), de(:, :, 1:p + 1))
          end do
       end associate
@@ -75,14 +78,22 @@ contains
    end subroutine step_energies
 
    !> Work of supports and point loads, and work of damping, over the step just solved.
-   subroutine step_work(prob, w_ext, w_damp)
+   subroutine step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
       type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
       real(wp), intent(out) :: w_ext              !< external work [J]
       real(wp), intent(out) :: w_damp             !< energy taken by damping [J]
+      real(wp), intent(out) :: w_hydro            !< work of the water [J]
+      real(wp), intent(out) :: w_seabed           !< work of the seabed [J]
       real(wp) :: dx(3), th(3), grav(3)
       integer :: node, i
       w_ext = 0.0_wp
       w_damp = 0.0_wp
+      w_hydro = 0.0_wp
+      w_seabed = 0.0_wp
+      if (prob%water%active) then
+         w_hydro = sum(prob%water%fh*prob%dx)
+         w_seabed = sum(prob%water%fs*prob%dx)
+      end if
       do node = 1, prob%mesh%n_nodes
          dx = prob%dx(:, node)
          grav = prob%loads%gravity(:, node)
@@ -126,6 +137,7 @@ contains
       type(error_t) :: nerr
       type(step_log_t) :: log, trial
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
+      real(wp) :: w_hydro, w_seabed
       integer :: level, good, step_cuts
       logical :: retried, accepted
       character(len=240) :: msg
@@ -149,6 +161,8 @@ contains
       call step_energies(prob, log)
       log%external_work = 0.0_wp
       log%damping_work = 0.0_wp
+      log%hydro_work = 0.0_wp
+      log%seabed_work = 0.0_wp
       call on_frame(t, prob, err)
       if (has_error(err)) return
       level = 0
@@ -182,6 +196,8 @@ contains
             trial%cutbacks = step_cuts
             trial%external_work = log%external_work + w_ext
             trial%damping_work = log%damping_work + w_damp
+            trial%hydro_work = log%hydro_work + w_hydro
+            trial%seabed_work = log%seabed_work + w_seabed
             log = trial
             t = t1
             summary%time_reached = t
@@ -257,11 +273,11 @@ contains
          accepted = stats%converged .and. .not. has_error(nerr)
          if (.not. accepted) return
          call dynamics_end_step(prob)
-         call step_work(prob, w_ext, w_damp)
+         call step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
          trial = log
          call step_energies(prob, trial)
          if (prob%scheme /= scheme_emc) return
-         accepted = energy_identity_holds(log, trial, w_ext, w_damp, e_tol)
+         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, w_damp, e_tol)
          if (.not. accepted) call set_error(nerr, stat_numerical, 'the converged '// &
             'step breaks the energy identity of EMC (a spurious root)')
          if (.not. accepted .and. log_unit >= 0) write (log_unit, '(a)') &

@@ -7,12 +7,19 @@
 !> tension and V0 the vertical tension component at A (positive upwards along the line).
 !> Used to start a line held at both ends (note section 5, zero-tension singularity) and
 !> as the reference solution of the catenary verification test.
+!>
+!> With a grounded length (catenary_grounded): the lower end A lies on a horizontal
+!> seabed, without friction, the line lies on it from A to S = L_B and hangs above
+!> (Jonkman, NREL/TP-500-47535, 2009, eq. 2-2 with C_B = 0; MoorPy's catenary):
+!>   X_F = L_B + (H/w) asinh(V_F/H) + H L/EA,   L_B = L - V_F/w
+!>   Z_F = (H/w) [sqrt(1 + (V_F/H)^2) - 1] + V_F^2/(2 EA w)
+!> with V_F the vertical tension at B; the grounded part carries T = H.
 module rodyn_catenary
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, stat_numerical
    implicit none
    private
-   public :: catenary_t, catenary_solve, catenary_point
+   public :: catenary_t, catenary_solve, catenary_point, catenary_grounded
 
    !> A solved catenary.
    type :: catenary_t
@@ -21,6 +28,7 @@ module rodyn_catenary
       real(wp) :: length = 0.0_wp !< unstretched length [m]
       real(wp) :: h = 0.0_wp     !< horizontal tension [N]
       real(wp) :: v0 = 0.0_wp    !< vertical tension component at A [N]
+      real(wp) :: lb = 0.0_wp    !< grounded length from A (catenary_grounded) [m]
    end type catenary_t
 
 contains
@@ -99,20 +107,99 @@ contains
    end subroutine catenary_solve
 
    !> Position (X, Z) and unit tangent (tX, tZ) at unstretched arc length s; tension.
+   !> With a grounded length lb > 0 (v0 = 0): on the seabed for s <= lb, stretched by H.
    pure subroutine catenary_point(cat, s, xz, tangent, tension)
       type(catenary_t), intent(in) :: cat  !< solved catenary
       real(wp), intent(in) :: s            !< unstretched arc length from A [m]
       real(wp), intent(out) :: xz(2)       !< (X, Z) relative to A [m]
       real(wp), intent(out) :: tangent(2)  !< unit tangent [-]
       real(wp), intent(out) :: tension     !< effective tension T(s) [N]
-      real(wp) :: vs, h, w
+      real(wp) :: vs, h, w, ss, x0
       h = cat%h
       w = cat%w
-      vs = cat%v0 + w*s
-      xz(1) = h*s/cat%ea + h/w*(asinh(vs/h) - asinh(cat%v0/h))
-      xz(2) = (cat%v0*s + 0.5_wp*w*s**2)/cat%ea &
+      ss = s - cat%lb
+      x0 = 0.0_wp
+      if (cat%lb > 0.0_wp) then
+         x0 = min(s, cat%lb)*(1.0_wp + h/cat%ea)
+         if (ss <= 0.0_wp) then
+            xz = [x0, 0.0_wp]
+            tangent = [1.0_wp, 0.0_wp]
+            tension = h
+            return
+         end if
+      else
+         ss = s
+      end if
+      vs = cat%v0 + w*ss
+      xz(1) = x0 + h*ss/cat%ea + h/w*(asinh(vs/h) - asinh(cat%v0/h))
+      xz(2) = (cat%v0*ss + 0.5_wp*w*ss**2)/cat%ea &
               + (sqrt(h**2 + vs**2) - sqrt(h**2 + cat%v0**2))/w
       tension = sqrt(h**2 + vs**2)
       tangent = [h, vs]/tension
    end subroutine catenary_point
+
+   !> The catenary with a grounded length (module header): H and V_F such that end B
+   !> sits at span xs > 0 and height zs > 0 above end A on the seabed. ok is false when
+   !> the line does not touch (V_F > w L: the free catenary applies) or no solution.
+   subroutine catenary_grounded(w, ea, length, xs, zs, cat, ok)
+      real(wp), intent(in) :: w            !< submerged weight per unstretched length [N/m]
+      real(wp), intent(in) :: ea           !< axial stiffness [N]
+      real(wp), intent(in) :: length       !< unstretched length [m]
+      real(wp), intent(in) :: xs           !< horizontal span of B from A, > 0 [m]
+      real(wp), intent(in) :: zs           !< height of B above A, > 0 [m]
+      type(catenary_t), intent(out) :: cat !< solution (v0 = 0, lb the grounded length)
+      logical, intent(out) :: ok           !< a grounded solution was found
+      real(wp) :: h, v, f(2), j(2, 2), det, dh, dv, res, res_new, a, h1, v1
+      integer :: it, ls
+      ok = .false.
+      cat%w = w
+      cat%ea = ea
+      cat%length = length
+      ! start: inextensible hanging part with H = w zs
+      h = w*zs
+      v = min(w*sqrt(3.0_wp)*zs, 0.9_wp*w*length)
+      call residual(h, v, f, j)
+      res = norm2(f)
+      do it = 1, 200
+         if (res <= 1.0e-13_wp*length) exit
+         det = j(1, 1)*j(2, 2) - j(1, 2)*j(2, 1)
+         dh = -(j(2, 2)*f(1) - j(1, 2)*f(2))/det
+         dv = -(-j(2, 1)*f(1) + j(1, 1)*f(2))/det
+         a = 1.0_wp
+         do ls = 1, 60
+            h1 = h + a*dh
+            v1 = v + a*dv
+            if (h1 > 0.0_wp .and. v1 > 0.0_wp) then
+               call residual(h1, v1, f, j)
+               res_new = norm2(f)
+               if (res_new < res) exit
+            end if
+            a = 0.5_wp*a
+         end do
+         if (ls > 60) exit
+         h = h1
+         v = v1
+         res = res_new
+      end do
+      if (res > 1.0e-9_wp*length .or. v > w*length) return
+      cat%h = h
+      cat%v0 = 0.0_wp
+      cat%lb = length - v/w
+      ok = .true.
+   contains
+      !> Misfit of the end (Jonkman's equations) and its Jacobian in (H, V_F).
+      pure subroutine residual(hh, vv, r, jac)
+         real(wp), intent(in) :: hh, vv
+         real(wp), intent(out) :: r(2), jac(2, 2)
+         real(wp) :: u, q
+         u = vv/hh
+         q = sqrt(1.0_wp + u**2)
+         r(1) = length - vv/w + hh/w*asinh(u) + hh*length/ea - xs
+         r(2) = hh/w*(q - 1.0_wp) + vv**2/(2.0_wp*ea*w) - zs
+         jac(1, 1) = asinh(u)/w - u/(w*q) + length/ea
+         jac(1, 2) = -1.0_wp/w + 1.0_wp/(w*q)
+         jac(2, 1) = (q - 1.0_wp)/w - u**2/(w*q)
+         jac(2, 2) = u/(w*q) + vv/(ea*w)
+      end subroutine residual
+   end subroutine catenary_grounded
 end module rodyn_catenary

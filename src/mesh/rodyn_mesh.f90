@@ -5,19 +5,20 @@
 !> Nodes of all lines are numbered consecutively, line after line, each line from
 !> end A (S = 0) to end B (S = L); an element of order p has p+1 equally spaced nodes.
 module rodyn_mesh
-   use rodyn_kinds, only: wp
+   use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_section, only: section_stiffness
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
                           bc_position, end_a, end_b
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
-   use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point
+   use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
+   use rodyn_environment, only: seabed_z
    use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule
    use rodyn_shape, only: max_nen, max_order
    implicit none
    private
-   public :: mesh_t, mesh_build, mesh_node
+   public :: mesh_t, mesh_build, mesh_node, mesh_nearest_node
 
    !> The discretised model.
    type :: mesh_t
@@ -31,11 +32,13 @@ module rodyn_mesh
       integer, allocatable :: line_n_nodes(:)     !< (nl)
       integer, allocatable :: line_first_elem(:)  !< (nl)
       integer, allocatable :: line_order(:)       !< (nl) element order p
-      real(wp), allocatable :: line_c(:, :)       !< (6, nl) diag(GA1,GA2,EA,EI1,EI2,GJ)
-      real(wp), allocatable :: line_mass(:)       !< (nl) mass per length [kg/m]
       logical, allocatable :: line_catenary(:)    !< (nl) started as a catenary (held at both ends)
       ! per element
       integer, allocatable :: elem_line(:)        !< (ne)
+      integer, allocatable :: elem_sec(:)         !< (ne) section (model%sections index)
+      real(wp), allocatable :: elem_c(:, :)       !< (6, ne) diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), allocatable :: elem_mass(:)       !< (ne) mass per length, structure and
+                                                  !< contents rho_i pi ID^2/4 [kg/m]
       integer, allocatable :: elem_nodes(:, :)    !< (max_nen, ne) global node numbers
       real(wp), allocatable :: elem_le(:)         !< (ne) unstretched length [m]
       real(wp), allocatable :: elem_s0(:)         !< (ne) arc length of its first node [m]
@@ -59,6 +62,17 @@ contains
       end if
    end function mesh_node
 
+   !> Global number of the node of line l nearest to unstretched arc length s.
+   pure integer function mesh_nearest_node(mesh, l, s)
+      type(mesh_t), intent(in) :: mesh !< mesh
+      integer, intent(in) :: l         !< line index
+      real(wp), intent(in) :: s        !< arc length from end A [m]
+      integer :: n0
+      n0 = mesh%line_first_node(l)
+      mesh_nearest_node = n0 - 1 + minloc(abs(mesh%node_s(n0:n0 + mesh%line_n_nodes(l) - 1) - s), &
+                                          dim=1)
+   end function mesh_nearest_node
+
    !> Build the mesh and the initial configuration from the model.
    subroutine mesh_build(model, mesh, state, err)
       type(model_t), intent(in) :: model     !< validated model
@@ -72,8 +86,7 @@ contains
       nl = size(model%lines)
       mesh%n_lines = nl
       allocate (mesh%line_first_node(nl), mesh%line_n_nodes(nl), mesh%line_first_elem(nl), &
-                mesh%line_order(nl), mesh%line_c(6, nl), mesh%line_mass(nl), &
-                mesh%line_catenary(nl))
+                mesh%line_order(nl), mesh%line_catenary(nl))
       nn = 0
       ne = 0
       mesh%max_nen = 2
@@ -83,8 +96,6 @@ contains
          mesh%line_first_node(l) = nn + 1
          mesh%line_first_elem(l) = ne + 1
          mesh%line_n_nodes(l) = model%lines(l)%n_elements*p + 1
-         mesh%line_c(:, l) = section_stiffness(model%sections(model%lines(l)%section))
-         mesh%line_mass(l) = model%sections(model%lines(l)%section)%mass
          mesh%line_catenary(l) = held_in_position(model, l, end_a) .and. &
                                  held_in_position(model, l, end_b)
          nn = nn + mesh%line_n_nodes(l)
@@ -95,33 +106,92 @@ contains
       mesh%n_elements = ne
       allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
                 mesh%elem_s0(ne), mesh%eps0(6, max_points, ne), mesh%node_line(nn), &
-                mesh%node_s(nn))
+                mesh%node_s(nn), mesh%elem_sec(ne), mesh%elem_c(6, ne), mesh%elem_mass(ne))
       mesh%elem_nodes = 0
       mesh%eps0 = 0.0_wp
       call state_allocate(state, nn)
       do l = 1, nl
          p = mesh%line_order(l)
-         associate (ld => model%lines(l))
-            do el = 1, ld%n_elements
-               e = mesh%line_first_elem(l) + el - 1
-               mesh%elem_line(e) = l
-               mesh%elem_le(e) = ld%length/real(ld%n_elements, wp)
-               mesh%elem_s0(e) = mesh%elem_le(e)*real(el - 1, wp)
-               do a = 1, p + 1
-                  mesh%elem_nodes(a, e) = mesh%line_first_node(l) + (el - 1)*p + a - 1
-               end do
-            end do
-            do k = 1, mesh%line_n_nodes(l)
-               node = mesh%line_first_node(l) + k - 1
-               mesh%node_line(node) = l
-               mesh%node_s(node) = ld%length*real(k - 1, wp)/real(mesh%line_n_nodes(l) - 1, wp)
-            end do
-         end associate
+         call line_elements(model, mesh, l)
          call line_stress_free_strains(model, mesh, l)
          call line_initial_shape(model, mesh, l, state, err)
          if (has_error(err)) return
       end do
    end subroutine mesh_build
+
+   !> Elements and nodes of line l, segment after segment from end A: each element of a
+   !> segment has the segment's section and length / elements; nodes equally spaced in
+   !> each element. Mass per length includes the contents, rho_i pi ID^2/4.
+   subroutine line_elements(model, mesh, l)
+      type(model_t), intent(in) :: model   !< model
+      type(mesh_t), intent(inout) :: mesh  !< mesh (line l's elements and nodes filled)
+      integer, intent(in) :: l             !< line index
+      real(wp) :: s0, seg_len
+      integer :: p, el, e, a, iseg, k, node, nseg, isec, nel
+      p = mesh%line_order(l)
+      associate (ld => model%lines(l))
+         el = 0
+         s0 = 0.0_wp
+         nseg = 1
+         if (allocated(ld%seg_section)) nseg = size(ld%seg_section)
+         do iseg = 1, nseg
+            ! a line without segment arrays (built in code) is one segment
+            isec = ld%section
+            seg_len = ld%length
+            nel = ld%n_elements
+            if (allocated(ld%seg_section)) then
+               isec = ld%seg_section(iseg)
+               seg_len = ld%seg_length(iseg)
+               nel = ld%seg_elements(iseg)
+            end if
+            associate (sec => model%sections(isec))
+               do k = 1, nel
+                  el = el + 1
+                  e = mesh%line_first_elem(l) + el - 1
+                  mesh%elem_line(e) = l
+                  mesh%elem_sec(e) = isec
+                  mesh%elem_c(:, e) = section_stiffness(sec)
+                  mesh%elem_mass(e) = sec%mass + sec%rho_i*0.25_wp*pi*sec%id**2
+                  mesh%elem_le(e) = seg_len/real(nel, wp)
+                  mesh%elem_s0(e) = s0 + mesh%elem_le(e)*real(k - 1, wp)
+                  do a = 1, p + 1
+                     node = mesh%line_first_node(l) + (el - 1)*p + a - 1
+                     mesh%elem_nodes(a, e) = node
+                     mesh%node_line(node) = l
+                     mesh%node_s(node) = mesh%elem_s0(e) + mesh%elem_le(e)*real(a - 1, wp) &
+                                         /real(p, wp)
+                  end do
+               end do
+            end associate
+            s0 = s0 + seg_len
+         end do
+         ! the last node at the line's length exactly (no round-off of the sums)
+         mesh%node_s(mesh%line_first_node(l) + mesh%line_n_nodes(l) - 1) = ld%length
+      end associate
+   end subroutine line_elements
+
+   !> Length-weighted mean weight per unstretched length of line l for its starting
+   !> catenary, in water the submerged weight (m - rho_w pi D_b^2/4) g, and mean EA.
+   subroutine line_mean_weight(model, mesh, l, w, ea)
+      type(model_t), intent(in) :: model !< model
+      type(mesh_t), intent(in) :: mesh   !< mesh
+      integer, intent(in) :: l           !< line index
+      real(wp), intent(out) :: w         !< mean weight per length [N/m]
+      real(wp), intent(out) :: ea        !< mean axial stiffness [N]
+      real(wp) :: m
+      integer :: e
+      w = 0.0_wp
+      ea = 0.0_wp
+      do e = mesh%line_first_elem(l), mesh%line_first_elem(l) + model%lines(l)%n_elements - 1
+         m = mesh%elem_mass(e)
+         if (model%water%present) m = m - model%water%density*0.25_wp*pi* &
+                                      max(model%sections(mesh%elem_sec(e))%db, 0.0_wp)**2
+         w = w + m*mesh%elem_le(e)
+         ea = ea + mesh%elem_c(3, e)*mesh%elem_le(e)
+      end do
+      w = w*norm2(model%gravity)/model%lines(l)%length
+      ea = ea/model%lines(l)%length
+   end subroutine line_mean_weight
 
    !> True when node k of line l is held in position by a *BOUNDARY.
    pure logical function held_in_position(model, l, k)
@@ -166,13 +236,13 @@ contains
       real(wp) :: kap(3), xe(3, max_nen), de(3, 3, max_nen), xig(max_points), s, k
       real(wp) :: kk(3, 3), r(3, 3), integral(3, 3)
       integer :: e, el, a, p, i
-      kap = model%sections(model%lines(l)%section)%kappa0
-      if (all(kap == 0.0_wp)) return
       p = mesh%line_order(l)
-      kk = skew(kap)
-      k = norm2(kap)
       do el = 1, model%lines(l)%n_elements
          e = mesh%line_first_elem(l) + el - 1
+         kap = model%sections(mesh%elem_sec(e))%kappa0
+         if (all(kap == 0.0_wp)) cycle
+         kk = skew(kap)
+         k = norm2(kap)
          do a = 1, p + 1
             s = mesh%elem_s0(e) + mesh%elem_le(e)*real(a - 1, wp)/real(p, wp)
             r = rotation_exp(s*kap)
@@ -199,9 +269,10 @@ contains
       type(state_t), intent(inout) :: state  !< configuration (line l filled)
       type(error_t), intent(inout) :: err    !< status
       real(wp) :: chord(3), up(3), eh(3), span, rise, w, gmag, xz(2), tg(2), tens, t(3)
-      real(wp) :: hint(3), dist
+      real(wp) :: hint(3), dist, ea, sk, z_lo, xy(3)
       type(catenary_t) :: cat
       integer :: k, node
+      logical :: grounded, b_low
       character(len=200) :: msg
       associate (ld => model%lines(l))
          chord = ld%end_b - ld%end_a
@@ -215,7 +286,7 @@ contains
          eh = chord - dot_product(chord, up)*up
          span = norm2(eh)
          rise = dot_product(chord, up)
-         w = mesh%line_mass(l)*gmag
+         call line_mean_weight(model, mesh, l, w, ea)
          if (mesh%line_catenary(l) .and. dist < ld%length*(1.0_wp - 1.0e-12_wp)) then
             ! slack line held at both ends: needs weight and a horizontal span to hang
             if (w <= 0.0_wp .or. span < 1.0e-9_wp*ld%length) then
@@ -228,16 +299,36 @@ contains
          end if
          if (mesh%line_catenary(l) .and. w > 0.0_wp .and. span >= 1.0e-9_wp*ld%length) then
             eh = eh/span
-            call catenary_solve(w, mesh%line_c(3, l), ld%length, span, rise, cat, err)
-            if (has_error(err)) then
-               err%message = 'line '//trim(ld%name)//': '//err%message
-               return
+            ! the lower end on the seabed: the catenary with a grounded length if it touches
+            grounded = .false.
+            b_low = rise < 0.0_wp
+            if (model%seabed%present .and. abs(rise) > 1.0e-9_wp*ld%length) then
+               xy = merge(ld%end_b, ld%end_a, b_low)
+               z_lo = seabed_z(model, xy(1), xy(2))
+               if (xy(3) - z_lo < 1.0e-6_wp*ld%length + 1.0e-9_wp) &
+                  call catenary_grounded(w, ea, ld%length, span, abs(rise), cat, grounded)
             end if
+            if (.not. grounded) then
+               b_low = .false.
+               call catenary_solve(w, ea, ld%length, span, rise, cat, err)
+               if (has_error(err)) then
+                  err%message = 'line '//trim(ld%name)//': '//err%message
+                  return
+               end if
+            end if
+            ! from the lower end when grounded at B: arc length L - s, span reversed
             do k = 1, mesh%line_n_nodes(l)
                node = mesh%line_first_node(l) + k - 1
-               call catenary_point(cat, mesh%node_s(node), xz, tg, tens)
-               state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
-               t = tg(1)*eh + tg(2)*up
+               sk = mesh%node_s(node)
+               if (b_low) sk = ld%length - sk
+               call catenary_point(cat, sk, xz, tg, tens)
+               if (b_low) then
+                  state%x(:, node) = ld%end_b - xz(1)*eh + xz(2)*up
+                  t = tg(1)*eh - tg(2)*up
+               else
+                  state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
+                  t = tg(1)*eh + tg(2)*up
+               end if
                state%d(:, :, node) = line_frame(t, cross(up, eh))
             end do
          else

@@ -6,8 +6,10 @@
 !> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T.
 module rodyn_assembly
    use rodyn_kinds, only: wp
-   use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position
-   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
+                          bc_position
+   use rodyn_mesh, only: mesh_t, mesh_node, mesh_nearest_node
+   use rodyn_water, only: water_loads_t, water_element, water_attachment
    use rodyn_state, only: state_t, state_gather
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
@@ -20,7 +22,7 @@ module rodyn_assembly
    private
    public :: supports_t, loads_t, supports_build, loads_build
    public :: assemble_static, assemble_dynamic, apply_supports, external_force
-   public :: add_node_block
+   public :: add_node_block, assemble_water
 
    !> Node constraints, fixed for the run.
    type :: supports_t
@@ -32,10 +34,14 @@ module rodyn_assembly
       real(wp), allocatable :: x_target(:, :)  !< (3, nn) position at load factor 1 [m]
    end type supports_t
 
-   !> External loads at full value (load factor 1), global axes.
+   !> External loads given by the deck, global axes: the weight, and the point loads with
+   !> the amplitudes that scale them in time (one path for statics and dynamics).
    type :: loads_t
       real(wp), allocatable :: gravity(:, :)   !< (3, nn) consistent self-weight [N]
-      real(wp), allocatable :: point(:, :)     !< (6, nn) point forces and moments [N, N m]
+      integer, allocatable :: pt_node(:)       !< (np) node of each point load
+      integer, allocatable :: pt_amp(:)        !< (np) its amplitude (0: constant)
+      real(wp), allocatable :: pt_fm(:, :)     !< (6, np) force and moment [N, N m]
+      type(amplitude_t), allocatable :: amps(:) !< the deck's amplitudes
    end type loads_t
 
 contains
@@ -87,53 +93,127 @@ contains
       end do
    end subroutine supports_build
 
-   !> Full-value load vectors: consistent self-weight m g int N_a dS, and point loads
-   !> (a load with an *AMPLITUDE enters the static analysis at its value at t = 0).
+   !> Load vectors: consistent self-weight m g int N_a dS (m with the contents) plus the
+   !> weight of the attachments at their nodes, and the point loads with their amplitudes.
    subroutine loads_build(model, mesh, loads)
       type(model_t), intent(in) :: model  !< model
       type(mesh_t), intent(in) :: mesh    !< mesh
       type(loads_t), intent(out) :: loads !< loads
-      real(wp) :: fa(3, max_nen), fac
-      integer :: e, l, p, a, node, i
-      allocate (loads%gravity(3, mesh%n_nodes), loads%point(6, mesh%n_nodes))
+      real(wp) :: fa(3, max_nen)
+      integer :: e, l, p, a, node, i, np
+      allocate (loads%gravity(3, mesh%n_nodes))
       loads%gravity = 0.0_wp
-      loads%point = 0.0_wp
       do e = 1, mesh%n_elements
          l = mesh%elem_line(e)
          p = mesh%line_order(l)
-         call rod_element_line_load(p, mesh%elem_le(e), mesh%line_mass(l)*model%gravity, &
+         call rod_element_line_load(p, mesh%elem_le(e), mesh%elem_mass(e)*model%gravity, &
                                     fa(:, 1:p + 1))
          do a = 1, p + 1
             node = mesh%elem_nodes(a, e)
             loads%gravity(:, node) = loads%gravity(:, node) + fa(:, a)
          end do
       end do
-      if (.not. allocated(model%loads)) return
-      do i = 1, size(model%loads)
-         node = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
-         fac = 1.0_wp
-         if (model%loads(i)%amplitude > 0) &
-            fac = amplitude_value(model%amplitudes(model%loads(i)%amplitude), 0.0_wp)
-         loads%point(1:3, node) = loads%point(1:3, node) + fac*model%loads(i)%force
-         loads%point(4:6, node) = loads%point(4:6, node) + fac*model%loads(i)%moment
+      if (allocated(model%attachments)) then
+         do i = 1, size(model%attachments)
+            associate (at => model%attachments(i))
+               node = mesh_nearest_node(mesh, at%line, at%s)
+               loads%gravity(:, node) = loads%gravity(:, node) + at%mass*model%gravity
+            end associate
+         end do
+      end if
+      np = 0
+      if (allocated(model%loads)) np = size(model%loads)
+      allocate (loads%pt_node(np), loads%pt_amp(np), loads%pt_fm(6, np))
+      do i = 1, np
+         loads%pt_node(i) = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
+         loads%pt_amp(i) = model%loads(i)%amplitude
+         loads%pt_fm(1:3, i) = model%loads(i)%force
+         loads%pt_fm(4:6, i) = model%loads(i)%moment
       end do
+      if (allocated(model%amplitudes)) then
+         loads%amps = model%amplitudes
+      else
+         allocate (loads%amps(0))
+      end if
    end subroutine loads_build
 
-   !> External force at load factor lam: gravity scaled per line by gfac(line), point
-   !> loads by lam.
-   pure subroutine external_force(mesh, loads, gfac, lam, fext)
+   !> External force at time t and load factor lam: gravity scaled per line by
+   !> gfac(line), point loads by lam a(t) (a their amplitude, 1 without). Statics is
+   !> t = 0; a time step passes its force time and lam = gfac = 1.
+   pure subroutine external_force(mesh, loads, gfac, lam, t, fext)
       type(mesh_t), intent(in) :: mesh        !< mesh
-      type(loads_t), intent(in) :: loads      !< full loads
+      type(loads_t), intent(in) :: loads      !< loads
       real(wp), intent(in) :: gfac(:)         !< (nl) gravity factor of each line
       real(wp), intent(in) :: lam             !< load factor of the point loads
+      real(wp), intent(in) :: t               !< time [s]
       real(wp), intent(out) :: fext(:, :)     !< (6, nn) external force [N, N m]
-      integer :: node
+      real(wp) :: fac
+      integer :: node, i
       do node = 1, mesh%n_nodes
-         fext(1:3, node) = gfac(mesh%node_line(node))*loads%gravity(:, node) &
-                           + lam*loads%point(1:3, node)
-         fext(4:6, node) = lam*loads%point(4:6, node)
+         fext(1:3, node) = gfac(mesh%node_line(node))*loads%gravity(:, node)
+         fext(4:6, node) = 0.0_wp
+      end do
+      do i = 1, size(loads%pt_node)
+         fac = lam
+         if (loads%pt_amp(i) > 0) fac = lam*amplitude_value(loads%amps(loads%pt_amp(i)), t)
+         node = loads%pt_node(i)
+         fext(:, node) = fext(:, node) + fac*loads%pt_fm(:, i)
       end do
    end subroutine external_force
+
+   !> The water's and seabed's loads (rodyn_water) subtracted from fint, their tangent
+   !> from the matrix; xf, vf, af the nodes' positions, velocities and accelerations at
+   !> the force point, moving with the unknowns by cx, cv, ca. The nodal forces are kept
+   !> in wl%fh (water) and wl%fs (seabed).
+   subroutine assemble_water(wl, mesh, xf, vf, af, cx, cv, ca, fint, bm, want_k)
+      type(water_loads_t), intent(inout) :: wl !< loads (nodal forces updated)
+      type(mesh_t), intent(in) :: mesh         !< mesh
+      real(wp), intent(in) :: xf(:, :)         !< (3, nn) positions [m]
+      real(wp), intent(in) :: vf(:, :)         !< (3, nn) velocities [m/s]
+      real(wp), intent(in) :: af(:, :)         !< (3, nn) accelerations [m/s2]
+      real(wp), intent(in) :: cx               !< d x_f / d x^{n+1} [-]
+      real(wp), intent(in) :: cv               !< d v_f / d x^{n+1} [1/s]
+      real(wp), intent(in) :: ca               !< d a_f / d x^{n+1} [1/s2]
+      real(wp), intent(inout) :: fint(:, :)    !< (6, nn) internal forces [N]
+      type(banded_t), intent(inout) :: bm      !< tangent
+      logical, intent(in) :: want_k            !< add the tangent
+      real(wp) :: fh(3, max_nen), fs(3, max_nen), ke(3*max_nen, 3*max_nen), f(3), k(3, 3)
+      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen)
+      integer :: e, p, nen, a, j, node, dofs(3*max_nen), i
+      wl%fh = 0.0_wp
+      wl%fs = 0.0_wp
+      do e = 1, mesh%n_elements
+         p = mesh%line_order(mesh%elem_line(e))
+         nen = p + 1
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            do a = 1, nen
+               xe(:, a) = xf(:, nodes(a))
+               ve(:, a) = vf(:, nodes(a))
+               ae(:, a) = af(:, nodes(a))
+            end do
+            call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
+                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k)
+            do a = 1, nen
+               fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
+               wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
+               wl%fs(:, nodes(a)) = wl%fs(:, nodes(a)) + fs(:, a)
+               do j = 1, 3
+                  dofs(3*(a - 1) + j) = 6*(nodes(a) - 1) + j
+               end do
+            end do
+            if (want_k) call banded_add(bm, dofs(1:3*nen), -ke(1:3*nen, 1:3*nen))
+         end associate
+      end do
+      do i = 1, size(wl%att_node)
+         node = wl%att_node(i)
+         call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), vf(:, node), &
+                               cx, cv, f, k, want_k)
+         fint(1:3, node) = fint(1:3, node) - f
+         wl%fh(:, node) = wl%fh(:, node) + f
+         if (want_k) call banded_add(bm, [(6*(node - 1) + j, j=1, 3)], -k)
+      end do
+   end subroutine assemble_water
 
    !> Internal force fint (6, nn) in global axes and, if want_k, the tangent assembled
    !> into bm with the rotated nodes' bases applied (note section 3, statics). The
@@ -162,7 +242,7 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(state, nodes, xe, de)
             e0 = eps0_scale*mesh%eps0(:, :, e)
-            call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
+            call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
                                     xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
                                     ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
             call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
@@ -235,7 +315,7 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
-            call rod_element_dynamic(p, mesh%elem_le(e), mesh%line_c(:, l), mesh%eps0(:, :, e), &
+            call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), mesh%eps0(:, :, e), &
                                      x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                      d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
                                      ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
@@ -248,7 +328,7 @@ contains
                   du(6*a - 2:6*a) = rotation_cayley_inverse(matmul(d1(:, :, a), &
                                                                    transpose(d0(:, :, a))))
                end do
-               call rod_element_static(p, mesh%elem_le(e), mesh%line_c(:, l), &
+               call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                        mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
                                        fs(:, 1:nen), ks(1:nd, 1:nd), .true., mesh%rules(p))
                do j = 1, nd

@@ -62,7 +62,7 @@ contains
             e = mesh%line_first_elem(l) + el - 1
             call state_gather(state, mesh%elem_nodes(1:p + 1, e), xe, de)
             e0 = eps0_scale*mesh%eps0(:, :, e)
-            call rod_element_resultants(p, mesh%elem_le(e), mesh%line_c(:, l), e0, &
+            call rod_element_resultants(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
                                         xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
                                         tens(1:p), curv(:, 1:p), xig(1:p))
             do g = 1, p

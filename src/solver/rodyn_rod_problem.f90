@@ -61,8 +61,8 @@ contains
       prob%href = minval(mesh%elem_le)
       ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
       ! floor of the residual scale when there is no load and no reaction to compare with
-      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(1:3, :))
-      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%line_c(4:6, :))/prob%lref
+      prob%f_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%elem_c(1:3, :))
+      prob%m_floor = sqrt(epsilon(1.0_wp))*maxval(mesh%elem_c(4:6, :))/prob%lref
    end subroutine rod_problem_init
 
    !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied force, the

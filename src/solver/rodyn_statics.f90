@@ -20,7 +20,8 @@ module rodyn_statics
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
-                             assemble_static, apply_supports, external_force
+                             assemble_static, apply_supports, external_force, assemble_water
+   use rodyn_water, only: water_loads_t, water_loads_build
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_results, only: run_summary_t
@@ -32,6 +33,8 @@ module rodyn_statics
    type, extends(rod_problem_t) :: static_problem_t
       type(state_t), pointer :: state => null()
       type(loads_t) :: loads
+      type(water_loads_t) :: water            !< water and seabed (scene in water only)
+      real(wp), allocatable :: zero3(:, :)    !< (3, nn) zero velocities and accelerations
       real(wp) :: lam = 0.0_wp                !< load factor of the current increment
       real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
       real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
@@ -58,6 +61,9 @@ contains
       nn = mesh%n_nodes
       call supports_build(model, mesh, state, prob%sup)
       call loads_build(model, mesh, prob%loads)
+      call water_loads_build(model, mesh, prob%water)
+      allocate (prob%zero3(3, nn))
+      prob%zero3 = 0.0_wp
       allocate (prob%gfac(mesh%n_lines), prob%r0(6, nn), prob%x_held(3, nn), &
                 prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
       prob%gfac = 1.0_wp
@@ -71,10 +77,12 @@ contains
       real(wp), intent(in) :: lam                   !< load factor [-]
       prob%lam = lam
       where (.not. prob%mesh%line_catenary) prob%gfac = lam
-      call external_force(prob%mesh, prob%loads, prob%gfac, lam, prob%fext)
+      call external_force(prob%mesh, prob%loads, prob%gfac, lam, 0.0_wp, prob%fext)
       prob%x_held = prob%sup%x_start + lam*(prob%sup%x_target - prob%sup%x_start)
    end subroutine static_set_load_factor
 
+   !> Residual r = f_int - f_water - f_ext - (1 - lambda) r_0 (module header) and, if
+   !> want_k, its tangent; the supports applied (apply_supports).
    subroutine static_evaluate(this, want_k, err)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< form the tangent
@@ -83,6 +91,10 @@ contains
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
+      ! buoyancy, steady current drag and seabed contact, in full from the start
+      if (this%water%active) call assemble_water(this%water, this%mesh, this%state%x, &
+                                                 this%zero3, this%zero3, 1.0_wp, 0.0_wp, &
+                                                 0.0_wp, this%fint, this%bm, want_k)
       this%r = this%fint - this%fext - (1.0_wp - this%lam)*this%r0
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
@@ -99,10 +111,6 @@ contains
             this%m_extra = max(this%m_extra, maxval(abs(this%r(4:6, node))))
       end do
    end subroutine static_evaluate
-
-
-
-
 
    subroutine static_save_base(this)
       class(static_problem_t), intent(inout) :: this !< problem

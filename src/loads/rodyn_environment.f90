@@ -1,0 +1,95 @@
+!> The sea around the lines (docs/water.md): still water level, the seabed plane and the
+!> water's kinematics. Everything a load needs to know of the water at a point and time
+!> comes through fluid_kinematics, so that waves only add to it.
+!>
+!> Current: speed U(z) and heading psi(z) linear between the levels of *CURRENT, constant
+!> beyond them, u = r(t) U (cos psi, sin psi, 0), r(t) the ramp-in (1 - cos(pi t/T))/2
+!> (statics is t = 0: no current when a ramp is given).
+!> Seabed: z_bed(x, y) = z_s - h + tan(alpha) (x cos(beta) + y sin(beta)), outward unit
+!> normal n = (-tan(alpha) cos(beta), -tan(alpha) sin(beta), 1) / sqrt(1 + tan^2(alpha)),
+!> gap g(x) = (x - x_bed) . n, the distance above the plane (negative: penetration).
+module rodyn_environment
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: model_t, water_t, seabed_t
+   use rodyn_motion, only: ramp_factor
+   implicit none
+   private
+   public :: seabed_z, seabed_normal, seabed_gap, fluid_kinematics, current_factor
+
+contains
+
+   !> Height of the seabed plane under (x, y) [m].
+   pure real(wp) function seabed_z(model, x, y)
+      type(model_t), intent(in) :: model !< model (water and seabed)
+      real(wp), intent(in) :: x          !< [m]
+      real(wp), intent(in) :: y          !< [m]
+      associate (sb => model%seabed)
+         seabed_z = model%water%surface - model%water%depth &
+                    + tan(sb%slope)*(x*cos(sb%slope_dir) + y*sin(sb%slope_dir))
+      end associate
+   end function seabed_z
+
+   !> Outward (upward) unit normal of the seabed plane.
+   pure function seabed_normal(sb) result(n)
+      type(seabed_t), intent(in) :: sb !< seabed
+      real(wp) :: n(3)
+      real(wp) :: ts
+      ts = tan(sb%slope)
+      n = [-ts*cos(sb%slope_dir), -ts*sin(sb%slope_dir), 1.0_wp]/sqrt(1.0_wp + ts**2)
+   end function seabed_normal
+
+   !> Distance of x above the seabed plane, along its normal [m] (< 0: penetration).
+   pure real(wp) function seabed_gap(model, n, x)
+      type(model_t), intent(in) :: model !< model
+      real(wp), intent(in) :: n(3)       !< seabed_normal
+      real(wp), intent(in) :: x(3)       !< point [m]
+      seabed_gap = n(3)*(x(3) - seabed_z(model, 0.0_wp, 0.0_wp)) + n(1)*x(1) + n(2)*x(2)
+   end function seabed_gap
+
+   !> Ramp factor of the current at time t (1 without a ramp) [-].
+   pure real(wp) function current_factor(water, t)
+      type(water_t), intent(in) :: water !< water
+      real(wp), intent(in) :: t          !< time [s]
+      current_factor = ramp_factor(t, water%cur_ramp)
+   end function current_factor
+
+   !> Velocity u and acceleration a of the water at point x and time t, and du/dx
+   !> (u_i,j), for the Morison loads; r = current_factor(water, t) passed in.
+   pure subroutine fluid_kinematics(water, r, x, u, dudx, a)
+      type(water_t), intent(in) :: water !< water (current profile)
+      real(wp), intent(in) :: r          !< current ramp factor [-]
+      real(wp), intent(in) :: x(3)       !< point [m]
+      real(wp), intent(out) :: u(3)      !< water velocity [m/s]
+      real(wp), intent(out) :: dudx(3, 3) !< du_i/dx_j [1/s]
+      real(wp), intent(out) :: a(3)      !< water acceleration [m/s2]
+      real(wp) :: sp, hd, dsp, dhd, f
+      integer :: n, k
+      u = 0.0_wp
+      dudx = 0.0_wp
+      a = 0.0_wp
+      if (.not. allocated(water%cur_z)) return
+      n = size(water%cur_z)
+      if (n == 0 .or. r == 0.0_wp) return
+      dsp = 0.0_wp
+      dhd = 0.0_wp
+      if (x(3) <= water%cur_z(1)) then
+         sp = water%cur_speed(1)
+         hd = water%cur_heading(1)
+      else if (x(3) >= water%cur_z(n)) then
+         sp = water%cur_speed(n)
+         hd = water%cur_heading(n)
+      else
+         do k = 1, n - 1
+            if (x(3) < water%cur_z(k + 1)) exit
+         end do
+         f = (x(3) - water%cur_z(k))/(water%cur_z(k + 1) - water%cur_z(k))
+         dsp = (water%cur_speed(k + 1) - water%cur_speed(k))/(water%cur_z(k + 1) - water%cur_z(k))
+         dhd = (water%cur_heading(k + 1) - water%cur_heading(k)) &
+               /(water%cur_z(k + 1) - water%cur_z(k))
+         sp = water%cur_speed(k) + f*(water%cur_speed(k + 1) - water%cur_speed(k))
+         hd = water%cur_heading(k) + f*(water%cur_heading(k + 1) - water%cur_heading(k))
+      end if
+      u = r*sp*[cos(hd), sin(hd), 0.0_wp]
+      dudx(:, 3) = r*(dsp*[cos(hd), sin(hd), 0.0_wp] + sp*dhd*[-sin(hd), cos(hd), 0.0_wp])
+   end subroutine fluid_kinematics
+end module rodyn_environment

@@ -1,0 +1,222 @@
+!> Distributed loads of the water and the seabed at one point of a line (docs/water.md),
+!> per unit UNSTRETCHED length, with their derivatives for the Newton tangent.
+!>
+!> With t = x'/|x'| the unit tangent, lambda = |x'| the stretch, u the water velocity,
+!> a_w its acceleration, v and a the line's velocity and acceleration, u_r = u - v:
+!>   buoyancy     f_b = rho_w g A_b phi(h) e_z,   h = z_s - z the depth of the centre,
+!>                phi(h) = 1 - [acos(h/r) - (h/r) sqrt(1 - (h/r)^2)]/pi  (|h| < r = D_b/2)
+!>                the submerged fraction of a horizontal circular section (1 below, 0 above)
+!>   drag         f_d = 1/2 rho_w C_dn D_d lambda |u_n| u_n + 1/2 rho_w C_da pi D_d lambda
+!>                |u_t| u_t,   u_t = (u_r.t) t, u_n = u_r - u_t  (drag on the stretched
+!>                length; the axial coefficient acts on the surface, pi D_d, as in MoorDyn)
+!>   inertia      f_a = -rho_w A_b [C_an P + C_aa t t] a + rho_w A_b [(1 + C_an) P
+!>                + (1 + C_aa) t t] a_w,   P = I - t t  (added mass and Froude-Krylov)
+!>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap > 0
+!>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
+!>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
+!>                velocity in the seabed plane (dynamics only)
+!> A_b = pi D_b^2/4. Buoyancy and added mass act per unstretched length (the volume of
+!> the line is taken as conserved when it stretches).
+module rodyn_hydro
+   use rodyn_kinds, only: wp, pi
+   use rodyn_model, only: water_t
+   use rodyn_environment, only: fluid_kinematics
+   implicit none
+   private
+   public :: water_section_t, water_env_t, water_point_load, submerged_fraction
+
+   !> Per section: the constants of the laws above.
+   type :: water_section_t
+      real(wp) :: fb = 0.0_wp   !< rho_w g A_b [N/m]
+      real(wp) :: rb = 0.0_wp   !< D_b / 2 [m]
+      real(wp) :: cn = 0.0_wp   !< 1/2 rho_w C_dn D_d [kg/m2]
+      real(wp) :: ct = 0.0_wp   !< 1/2 rho_w C_da pi D_d [kg/m2]
+      real(wp) :: man = 0.0_wp  !< rho_w A_b C_an [kg/m]
+      real(wp) :: maa = 0.0_wp  !< rho_w A_b C_aa [kg/m]
+      real(wp) :: mw = 0.0_wp   !< rho_w A_b [kg/m]
+      real(wp) :: dc = 0.0_wp   !< contact width D_b [m]
+   end type water_section_t
+
+   !> The water and seabed as the point law needs them, with the state of the step.
+   type :: water_env_t
+      type(water_t) :: water             !< water and current profile
+      real(wp) :: r_current = 1.0_wp     !< current ramp factor at the force time [-]
+      real(wp) :: gmag = 0.0_wp          !< |g| [m/s2]
+      logical :: dynamic = .false.       !< seabed damping and friction (not in statics)
+      logical :: seabed = .false.        !< a seabed is present
+      real(wp) :: n(3) = [0.0_wp, 0.0_wp, 1.0_wp] !< seabed outward normal
+      real(wp) :: c0 = 0.0_wp            !< seabed plane: gap = n.x - c0 [m]
+      real(wp) :: k = 0.0_wp             !< normal stiffness per contact area [Pa/m]
+      real(wp) :: c = 0.0_wp             !< normal damping per contact area [Pa s/m]
+      real(wp) :: mu_ax = 0.0_wp         !< axial friction coefficient [-]
+      real(wp) :: mu_lat = 0.0_wp        !< lateral friction coefficient [-]
+      real(wp) :: v_mob = 0.01_wp        !< mobilisation velocity [m/s]
+   end type water_env_t
+
+contains
+
+   !> Submerged fraction phi(h) of a circle of radius r whose centre is h below the
+   !> surface, and dphi/dh (module header).
+   pure subroutine submerged_fraction(h, r, phi, dphi)
+      real(wp), intent(in) :: h     !< depth of the centre below the surface [m]
+      real(wp), intent(in) :: r     !< radius [m]
+      real(wp), intent(out) :: phi  !< fraction [-]
+      real(wp), intent(out) :: dphi !< dphi/dh [1/m]
+      real(wp) :: q
+      dphi = 0.0_wp
+      if (h >= r) then
+         phi = 1.0_wp
+         if (h == 0.0_wp) phi = 0.5_wp
+      else if (h <= -r) then
+         phi = 0.0_wp
+      else
+         q = h/r
+         phi = 1.0_wp - (acos(q) - q*sqrt(1.0_wp - q**2))/pi
+         dphi = 2.0_wp*sqrt(1.0_wp - q**2)/(pi*r)
+      end if
+   end subroutine submerged_fraction
+
+   !> Water and seabed force per unstretched length at a point (module header): fh from
+   !> the water, fs from the seabed; with want_k their derivatives with respect to the
+   !> position x, the tangent x', the velocity v and the acceleration a of the line.
+   pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k)
+      type(water_env_t), intent(in) :: env      !< environment
+      type(water_section_t), intent(in) :: ws   !< section constants
+      real(wp), intent(in) :: x(3)              !< position [m]
+      real(wp), intent(in) :: xp(3)             !< x' = dx/dS [-]
+      real(wp), intent(in) :: v(3)              !< velocity [m/s]
+      real(wp), intent(in) :: acc(3)            !< acceleration [m/s2]
+      real(wp), intent(out) :: fh(3)            !< water force [N/m]
+      real(wp), intent(out) :: fs(3)            !< seabed force [N/m]
+      real(wp), intent(out) :: kx(3, 3)         !< d(fh + fs)/dx [N/m2]
+      real(wp), intent(out) :: kxp(3, 3)        !< d(fh + fs)/dx' [N/m]
+      real(wp), intent(out) :: kv(3, 3)         !< d(fh + fs)/dv [N s/m2]
+      real(wp), intent(out) :: ka(3, 3)         !< d(fh + fs)/da [kg/m]
+      logical, intent(in) :: want_k             !< form the derivatives
+      real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
+      real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, eye(3, 3), gap, vn, nf, m(3, 3)
+      real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
+      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), dnx(3)
+      integer :: i
+      fh = 0.0_wp
+      fs = 0.0_wp
+      if (want_k) then
+         kx = 0.0_wp
+         kxp = 0.0_wp
+         kv = 0.0_wp
+         ka = 0.0_wp
+      end if
+      eye = 0.0_wp
+      do i = 1, 3
+         eye(i, i) = 1.0_wp
+      end do
+      lam = norm2(xp)
+      t = xp/lam
+      do i = 1, 3
+         tt(:, i) = t*t(i)
+         pm(:, i) = eye(:, i) - tt(:, i)
+      end do
+      ! buoyancy; drag and inertia act on the submerged fraction too
+      call submerged_fraction(env%water%surface - x(3), ws%rb, phi, dphi)
+      if (ws%fb > 0.0_wp) then
+         fh(3) = ws%fb*phi
+         if (want_k) kx(3, 3) = -ws%fb*dphi
+      end if
+      if (phi > 0.0_wp) then
+         fd = 0.0_wp
+         if (want_k) then
+            kxd = 0.0_wp
+            kxpd = 0.0_wp
+            kvd = 0.0_wp
+            kad = 0.0_wp
+         end if
+         if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
+            call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
+            ur = u - v
+            s = dot_product(ur, t)
+            un = ur - s*t
+            unm = norm2(un)
+            fd = ws%cn*lam*unm*un + ws%ct*lam*abs(s)*s*t
+            if (want_k) then
+               ! g = d f_d / d u_r
+               gn = unm*eye
+               if (unm > 0.0_wp) gn = gn + outer(un, un)/unm
+               g = ws%cn*lam*matmul(gn, pm) + 2.0_wp*ws%ct*lam*abs(s)*tt
+               kvd = -g
+               kxd = matmul(g, dudx)
+               kxpd = ws%cn*(unm*outer(un, t) - matmul(matmul(gn, outer(t, ur) + s*eye), pm)) &
+                      + ws%ct*(abs(s)*s*tt + matmul(2.0_wp*abs(s)*outer(t, ur) + abs(s)*s*eye, pm))
+            end if
+         end if
+         if (ws%man > 0.0_wp .or. ws%maa > 0.0_wp) then
+            m = ws%man*pm + ws%maa*tt
+            fd = fd - matmul(m, acc)
+            if (want_k) then
+               kad = -m
+               ta = dot_product(t, acc)
+               kxpd = kxpd - (ws%maa - ws%man)*matmul(outer(t, acc) + ta*eye, pm)/lam
+            end if
+         end if
+         fh = fh + phi*fd
+         if (want_k) then
+            kx = kx + phi*kxd
+            kx(:, 3) = kx(:, 3) - dphi*fd
+            kxp = kxp + phi*kxpd
+            kv = kv + phi*kvd
+            ka = ka + phi*kad
+         end if
+      end if
+      ! seabed
+      if (.not. env%seabed) return
+      gap = dot_product(env%n, x) - env%c0
+      if (gap >= 0.0_wp) return
+      vn = dot_product(v, env%n)
+      nf = env%k*(-gap)*ws%dc
+      if (env%dynamic) nf = nf - env%c*vn*ws%dc
+      if (nf <= 0.0_wp) return
+      fs = nf*env%n
+      if (want_k) then
+         kx = kx - env%k*ws%dc*outer(env%n, env%n)
+         if (env%dynamic) kv = kv - env%c*ws%dc*outer(env%n, env%n)
+      end if
+      ! regularised Coulomb friction in the seabed plane (module header), dynamics only
+      if (.not. env%dynamic .or. (env%mu_ax <= 0.0_wp .and. env%mu_lat <= 0.0_wp)) return
+      vt = v - vn*env%n
+      ts = t - dot_product(t, env%n)*env%n
+      tsn = norm2(ts)
+      if (tsn > 0.0_wp) then
+         ts = ts/tsn
+      else
+         ts = 0.0_wp
+      end if
+      va = dot_product(vt, ts)
+      vl = vt - va*ts
+      vlm = norm2(vl)
+      ff = -env%mu_ax*nf*va/max(abs(va), env%v_mob)*ts &
+           - env%mu_lat*nf*vl/max(vlm, env%v_mob)
+      fs = fs + ff
+      if (.not. want_k) return
+      ! through N: dN/dx = -k D n, dN/dv = -c D n
+      dnx = -env%k*ws%dc*env%n
+      kx = kx + outer(ff/nf, dnx)
+      kv = kv + outer(ff/nf, -env%c*ws%dc*env%n)
+      if (abs(va) < env%v_mob) kv = kv - env%mu_ax*nf/env%v_mob*outer(ts, ts)
+      pl = eye - outer(env%n, env%n) - outer(ts, ts)
+      if (vlm < env%v_mob) then
+         kv = kv - env%mu_lat*nf/env%v_mob*pl
+      else
+         kv = kv - env%mu_lat*nf/vlm*(pl - outer(vl, vl)/vlm**2)
+      end if
+   end subroutine water_point_load
+
+   !> a b^T.
+   pure function outer(a, b) result(m)
+      real(wp), intent(in) :: a(3) !< column
+      real(wp), intent(in) :: b(3) !< row
+      real(wp) :: m(3, 3)
+      integer :: j
+      do j = 1, 3
+         m(:, j) = a*b(j)
+      end do
+   end function outer
+end module rodyn_hydro

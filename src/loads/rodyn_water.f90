@@ -1,0 +1,200 @@
+!> The water's and the seabed's loads on the whole mesh (docs/water.md): the point law
+!> of rodyn_hydro integrated over each element with Gauss rules of p + 1 points, and the
+!> forces of the point attachments (buoyancy of their volume, drag on Cd A). One path
+!> for statics and dynamics: the caller gives the configuration at the force point and
+!> how it moves with the unknowns x^{n+1},
+!>   x_f = x^n + c_x dx,  d v_f / d x^{n+1} = c_v,  d a_f / d x^{n+1} = c_a,
+!> (statics: x_f = x, v_f = a_f = 0, c_x = 1, c_v = c_a = 0), and receives the element
+!> force vectors f_a = int N_a f(S) dS and their tangents
+!>   K_ab = int N_a [c_x (N_b df/dx + N_b' df/dx') + c_v N_b df/dv + c_a N_b df/da] dS.
+!> Only translational unknowns are loaded. A scene without *WATER builds nothing here.
+module rodyn_water
+   use rodyn_kinds, only: wp, pi
+   use rodyn_model, only: model_t
+   use rodyn_mesh, only: mesh_t, mesh_nearest_node
+   use rodyn_shape, only: shape_lagrange, gauss_rule, max_order, max_nen
+   use rodyn_environment, only: seabed_normal, seabed_z, fluid_kinematics, current_factor
+   use rodyn_hydro, only: water_section_t, water_env_t, water_point_load, submerged_fraction
+   implicit none
+   private
+   public :: water_loads_t, water_loads_build, water_element, water_attachment
+   public :: water_set_time
+
+   integer, parameter :: max_wp = max_order + 1 !< most load points per element
+
+   !> The distributed loads of a scene in water, fixed for the run, and the last
+   !> nodal forces evaluated (for the work and the results).
+   type :: water_loads_t
+      logical :: active = .false.                  !< the scene has water
+      type(water_env_t) :: env                     !< environment of the point law
+      type(water_section_t), allocatable :: sec(:) !< per model section
+      integer :: ng(max_order) = 0                 !< load points per element order
+      real(wp) :: w(max_wp, max_order) = 0.0_wp    !< Gauss weights
+      real(wp) :: xi(max_wp, max_order) = 0.0_wp   !< Gauss points
+      real(wp) :: n(max_nen, max_wp, max_order) = 0.0_wp  !< N_a at the points
+      real(wp) :: dn(max_nen, max_wp, max_order) = 0.0_wp !< dN_a/dxi at the points
+      integer, allocatable :: att_node(:)          !< (na) node of each attachment
+      real(wp), allocatable :: att_volume(:)       !< (na) displaced volume [m3]
+      real(wp), allocatable :: att_cda(:)          !< (na) drag coefficient x area [m2]
+      real(wp), allocatable :: fh(:, :)            !< (3, nn) water force on the nodes [N]
+      real(wp), allocatable :: fs(:, :)            !< (3, nn) seabed force on the nodes [N]
+   end type water_loads_t
+
+contains
+
+   !> Section constants, Gauss rules and attachment nodes of a scene in water.
+   subroutine water_loads_build(model, mesh, wl)
+      type(model_t), intent(in) :: model      !< model
+      type(mesh_t), intent(in) :: mesh        !< mesh
+      type(water_loads_t), intent(out) :: wl  !< loads
+      real(wp) :: rho, gmag, ab, dd
+      integer :: i, p, g
+      wl%active = model%water%present
+      if (.not. wl%active) return
+      rho = model%water%density
+      gmag = norm2(model%gravity)
+      wl%env%water = model%water
+      wl%env%gmag = gmag
+      wl%env%r_current = current_factor(model%water, 0.0_wp)
+      wl%env%seabed = model%seabed%present
+      if (wl%env%seabed) then
+         wl%env%n = seabed_normal(model%seabed)
+         wl%env%c0 = wl%env%n(3)*seabed_z(model, 0.0_wp, 0.0_wp)
+         wl%env%k = model%seabed%stiffness
+         wl%env%c = model%seabed%damping
+         wl%env%mu_ax = model%seabed%mu_axial
+         wl%env%mu_lat = model%seabed%mu_lateral
+         wl%env%v_mob = model%seabed%v_mob
+      end if
+      allocate (wl%sec(size(model%sections)))
+      do i = 1, size(model%sections)
+         associate (s => model%sections(i), ws => wl%sec(i))
+            ab = 0.25_wp*pi*max(s%db, 0.0_wp)**2
+            dd = max(s%dd, 0.0_wp)
+            ws%fb = rho*gmag*ab
+            ws%rb = 0.5_wp*max(s%db, 0.0_wp)
+            ws%cn = 0.5_wp*rho*s%cdn*dd
+            ws%ct = 0.5_wp*rho*s%cda*pi*dd
+            ws%man = rho*ab*s%can
+            ws%maa = rho*ab*s%caa
+            ws%mw = rho*ab
+            ws%dc = max(s%db, 0.0_wp)
+         end associate
+      end do
+      do p = 1, max_order
+         wl%ng(p) = p + 1
+         call gauss_rule(p + 1, wl%xi(1:p + 1, p), wl%w(1:p + 1, p))
+         do g = 1, p + 1
+            call shape_lagrange(p, wl%xi(g, p), wl%n(1:p + 1, g, p), wl%dn(1:p + 1, g, p))
+         end do
+      end do
+      allocate (wl%att_node(0), wl%att_volume(0), wl%att_cda(0))
+      if (allocated(model%attachments)) then
+         wl%att_node = [(mesh_nearest_node(mesh, model%attachments(i)%line, &
+                                           model%attachments(i)%s), i=1, size(model%attachments))]
+         wl%att_volume = model%attachments%volume
+         wl%att_cda = model%attachments%cda_area
+      end if
+      allocate (wl%fh(3, mesh%n_nodes), wl%fs(3, mesh%n_nodes))
+      wl%fh = 0.0_wp
+      wl%fs = 0.0_wp
+   end subroutine water_loads_build
+
+   !> The state of the water at the force time of a step: current ramp; seabed damping
+   !> and friction on in dynamics.
+   subroutine water_set_time(wl, t, dynamic)
+      type(water_loads_t), intent(inout) :: wl !< loads
+      real(wp), intent(in) :: t                !< force time [s]
+      logical, intent(in) :: dynamic           !< a time step (not statics)
+      wl%env%r_current = current_factor(wl%env%water, t)
+      wl%env%dynamic = dynamic
+   end subroutine water_set_time
+
+   !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
+   !> tangent of their sum with respect to x^{n+1} (module header).
+   pure subroutine water_element(wl, ws, p, le, xf, vf, af, cx, cv, ca, fh, fs, ke, want_k)
+      type(water_loads_t), intent(in) :: wl    !< loads
+      type(water_section_t), intent(in) :: ws  !< section constants
+      integer, intent(in) :: p                 !< element order
+      real(wp), intent(in) :: le               !< unstretched length [m]
+      real(wp), intent(in) :: xf(:, :)         !< (3, p+1) positions at the force point [m]
+      real(wp), intent(in) :: vf(:, :)         !< (3, p+1) velocities [m/s]
+      real(wp), intent(in) :: af(:, :)         !< (3, p+1) accelerations [m/s2]
+      real(wp), intent(in) :: cx               !< d x_f / d x^{n+1} [-]
+      real(wp), intent(in) :: cv               !< d v_f / d x^{n+1} [1/s]
+      real(wp), intent(in) :: ca               !< d a_f / d x^{n+1} [1/s2]
+      real(wp), intent(out) :: fh(:, :)        !< (3, p+1) water forces [N]
+      real(wp), intent(out) :: fs(:, :)        !< (3, p+1) seabed forces [N]
+      real(wp), intent(out) :: ke(:, :)        !< (3(p+1), 3(p+1)) d(fh + fs)/dx^{n+1} [N/m]
+      logical, intent(in) :: want_k            !< form ke
+      real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
+      real(wp) :: ka(3, 3), wj, nn(max_nen), ds(max_nen), kb(3, 3)
+      integer :: g, a, b, nen
+      nen = p + 1
+      fh = 0.0_wp
+      fs = 0.0_wp
+      if (want_k) ke = 0.0_wp
+      do g = 1, wl%ng(p)
+         nn(1:nen) = wl%n(1:nen, g, p)
+         ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
+         wj = wl%w(g, p)*0.5_wp*le
+         x = matmul(xf, nn(1:nen))
+         xp = matmul(xf, ds(1:nen))
+         v = matmul(vf, nn(1:nen))
+         acc = matmul(af, nn(1:nen))
+         call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k)
+         do a = 1, nen
+            fh(:, a) = fh(:, a) + wj*nn(a)*gh
+            fs(:, a) = fs(:, a) + wj*nn(a)*gs
+         end do
+         if (.not. want_k) cycle
+         do b = 1, nen
+            kb = cx*(nn(b)*kx + ds(b)*kxp) + cv*nn(b)*kv + ca*nn(b)*ka
+            do a = 1, nen
+               ke(3*a - 2:3*a, 3*b - 2:3*b) = ke(3*a - 2:3*a, 3*b - 2:3*b) + wj*nn(a)*kb
+            end do
+         end do
+      end do
+   end subroutine water_element
+
+   !> Water force on a point attachment (*ATTACHMENT): buoyancy rho_w g V of the
+   !> submerged fraction of a sphere of that volume, drag 1/2 rho_w Cd A |u_r| u_r; and
+   !> with want_k its derivative with respect to x^{n+1} (c_x, c_v as in water_element).
+   !> Its weight is in the gravity loads and its added mass in the inertia.
+   pure subroutine water_attachment(wl, volume, cda_area, x, v, cx, cv, f, k, want_k)
+      type(water_loads_t), intent(in) :: wl !< loads
+      real(wp), intent(in) :: volume        !< displaced volume [m3]
+      real(wp), intent(in) :: cda_area      !< Cd A [m2]
+      real(wp), intent(in) :: x(3)          !< position [m]
+      real(wp), intent(in) :: v(3)          !< velocity [m/s]
+      real(wp), intent(in) :: cx            !< d x_f / d x^{n+1} [-]
+      real(wp), intent(in) :: cv            !< d v_f / d x^{n+1} [1/s]
+      real(wp), intent(out) :: f(3)         !< force [N]
+      real(wp), intent(out) :: k(3, 3)      !< df/dx^{n+1} [N/m]
+      logical, intent(in) :: want_k         !< form k
+      real(wp) :: rho, gmag, r, phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), urm, g(3, 3)
+      integer :: i
+      rho = wl%env%water%density
+      gmag = wl%env%gmag
+      r = 0.5_wp*(6.0_wp*volume/pi)**(1.0_wp/3.0_wp)
+      call submerged_fraction(wl%env%water%surface - x(3), r, phi, dphi)
+      f = 0.0_wp
+      k = 0.0_wp
+      f(3) = rho*gmag*volume*phi
+      if (want_k) k(3, 3) = -cx*rho*gmag*volume*dphi
+      if (cda_area <= 0.0_wp .or. phi <= 0.0_wp) return
+      call fluid_kinematics(wl%env%water, wl%env%r_current, x, u, dudx, aw)
+      ur = u - v
+      urm = norm2(ur)
+      f = f + phi*0.5_wp*rho*cda_area*urm*ur
+      if (.not. want_k) return
+      g = 0.0_wp
+      do i = 1, 3
+         g(i, i) = urm
+         if (urm > 0.0_wp) g(:, i) = g(:, i) + ur*ur(i)/urm
+      end do
+      g = phi*0.5_wp*rho*cda_area*g
+      k = k - cv*g + cx*matmul(g, dudx)
+      k(:, 3) = k(:, 3) - cx*dphi*0.5_wp*rho*cda_area*urm*ur
+   end subroutine water_attachment
+end module rodyn_water
