@@ -96,7 +96,8 @@ contains
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
       real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, eye(3, 3), gap, vn, nf, m(3, 3)
       real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
-      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), dnx(3)
+      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), dnx(3), gl(3, 3)
+      real(wp) :: dts(3, 3)
       integer :: i
       fh = 0.0_wp
       fs = 0.0_wp
@@ -202,11 +203,19 @@ contains
       kv = kv + outer(ff/nf, -env%c*ws%dc*env%n)
       if (abs(va) < env%v_mob) kv = kv - env%mu_ax*nf/env%v_mob*outer(ts, ts)
       pl = eye - outer(env%n, env%n) - outer(ts, ts)
+      ! dF_lat/dv_lat (gl) and dF_ax/dt_s, dF_lat/dt_s (orientation of the axial direction)
       if (vlm < env%v_mob) then
-         kv = kv - env%mu_lat*nf/env%v_mob*pl
+         gl = -env%mu_lat*nf/env%v_mob*eye
       else
-         kv = kv - env%mu_lat*nf/vlm*(pl - outer(vl, vl)/vlm**2)
+         gl = -env%mu_lat*nf/vlm*(eye - outer(vl, vl)/vlm**2)
       end if
+      kv = kv + matmul(gl, pl)
+      if (tsn <= 0.0_wp) return
+      dts = -env%mu_ax*nf*va/max(abs(va), env%v_mob)*eye - matmul(gl, outer(ts, vt) + va*eye)
+      if (abs(va) < env%v_mob) dts = dts - env%mu_ax*nf/env%v_mob*outer(ts, vt)
+      ! t_s = P_n t/|P_n t|, t = x'/|x'|
+      kxp = kxp + matmul(matmul(dts, eye - outer(ts, ts)), &
+                         matmul(eye - outer(env%n, env%n), pm))/(tsn*lam)
    end subroutine water_point_load
 
    !> a b^T.
