@@ -2,15 +2,18 @@
 !>
 !> deck_read lexes the deck (rodyn_deck_lexer), hands each card to the reader of its
 !> keyword (one routine per *KEYWORD), then validates the whole model: names referred
-!> to exist, node numbers exist, no node is constrained twice, defaults resolved,
+!> to exist, lines get their segments and total length, node numbers exist, no node is
+!> constrained twice, the sea is consistent, defaults resolved,
 !> and a line that is not held at both ends starts straight (its end distance equals
 !> its length). The first error found ends the reading with a located message
 !> 'FILE:LINE: error: *KEYWORD: message' in err (code stat_input).
 !>
 !> The readers of the dynamic-analysis keywords (*DYNAMIC, *DAMPING, *AMPLITUDE,
 !> *MOTION, *INITIAL VELOCITY) and their whole-deck checks are in rodyn_deck_dynamic;
-!> what the readers remember for validation and their shared checks, in
-!> rodyn_deck_support.
+!> those of the sea (*WATER, *CURRENT, *SEABED), of *SEGMENT and *ATTACHMENT, the
+!> hydrodynamic parameters of *SECTION, the lines' segments and totals and the checks
+!> of the sea in rodyn_deck_water; what the readers remember for validation and their
+!> shared checks, in rodyn_deck_support.
 module rodyn_deck
    use rodyn_section, only: section_default_rotary_inertia
    use rodyn_kinds, only: wp

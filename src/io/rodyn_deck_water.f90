@@ -420,7 +420,8 @@ contains
    end subroutine check_segment_totals
 
    !> Whole-deck checks of the sea, once lines, segments and boundaries are resolved:
-   !> *CURRENT and *SEABED need *WATER; no current level above the sea surface; every
+   !> *CURRENT and *SEABED need *WATER; no current level above the sea surface; with
+   !> *WATER, gravity along -z (the surface is a level z = SURFACE); every
    !> *ATTACHMENT names a line, lies within it, and has no VOLUME, CDA or CA without
    !> *WATER; in water, every section used by a line has a buoyancy diameter (OD= or
    !> BUOYANCY DIAMETER=); no end of a line lies below the seabed.
@@ -457,6 +458,17 @@ contains
             call card_error(deck%cards(pend%seabed), 'a seabed needs *WATER: it lies at'// &
                             ' the water DEPTH'//no_water, err)
             return
+         end if
+         if (w%present .and. pend%gravity > 0) then
+            associate (g => model%gravity)
+               if (g(1) /= 0.0_wp .or. g(2) /= 0.0_wp .or. .not. g(3) < 0.0_wp) then
+                  call card_data_error(deck%cards(pend%gravity), 1, 'with *WATER (at '// &
+                                       location(deck, pend%water)//') gravity must point'// &
+                                       ' along -z (gx = gy = 0, gz < 0): the sea surface'// &
+                                       ' is the level z = SURFACE', err)
+                  return
+               end if
+            end associate
          end if
       end associate
 
