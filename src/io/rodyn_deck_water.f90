@@ -9,7 +9,7 @@
 module rodyn_deck_water
    use rodyn_kinds, only: wp, i8, pi
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a
+   use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a, bc_position
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_get_real, card_get_int, &
                                card_get_name, card_check_data, card_data_table, &
@@ -424,7 +424,7 @@ contains
    !> *WATER, gravity along -z (the surface is a level z = SURFACE); every
    !> *ATTACHMENT names a line, lies within it, and has no VOLUME, CDA or CA without
    !> *WATER; in water, every section used by a line has a buoyancy diameter (OD= or
-   !> BUOYANCY DIAMETER=); no end of a line lies below the seabed.
+   !> BUOYANCY DIAMETER=); no end of a line nor a POSITION target lies below the seabed.
    subroutine validate_water(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
@@ -542,8 +542,9 @@ contains
       end do
    end subroutine check_sections_in_water
 
-   !> No end of a line (as given on the *LINE data line) lies below the seabed plane by
-   !> more than bed_tol_rel DEPTH + bed_tol_abs. Reported at the *LINE data line.
+   !> No end of a line (as given on the *LINE data line) and no TYPE=POSITION target of a
+   !> *BOUNDARY lies below the seabed plane by more than bed_tol_rel DEPTH + bed_tol_abs.
+   !> Reported at the data line of the *LINE or *BOUNDARY.
    subroutine check_ends_above_seabed(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< card of each line
@@ -570,6 +571,17 @@ contains
                                  real_str(x(3) + below)//' there)', err)
             return
          end do
+      end do
+      do k = 1, size(model%constraints)
+         if (model%constraints(k)%kind /= bc_position) cycle
+         x = model%constraints(k)%position
+         below = seabed_z(model, x(1), x(2)) - x(3)
+         if (below <= tol) cycle
+         call card_data_error(deck%cards(pend%bc_line(k)%card), 1, 'the position is '// &
+                              real_str(below)//' m below the seabed (z = '// &
+                              real_str(x(3))//', the seabed is at z = '// &
+                              real_str(x(3) + below)//' there)', err)
+         return
       end do
    end subroutine check_ends_above_seabed
 
