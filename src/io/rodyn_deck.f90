@@ -2,15 +2,18 @@
 !>
 !> deck_read lexes the deck (rodyn_deck_lexer), hands each card to the reader of its
 !> keyword (one routine per *KEYWORD), then validates the whole model: names referred
-!> to exist, node numbers exist, no node is constrained twice, defaults resolved,
+!> to exist, lines get their segments and total length, node numbers exist, no node is
+!> constrained twice, the sea is consistent, defaults resolved,
 !> and a line that is not held at both ends starts straight (its end distance equals
 !> its length). The first error found ends the reading with a located message
 !> 'FILE:LINE: error: *KEYWORD: message' in err (code stat_input).
 !>
 !> The readers of the dynamic-analysis keywords (*DYNAMIC, *DAMPING, *AMPLITUDE,
 !> *MOTION, *INITIAL VELOCITY) and their whole-deck checks are in rodyn_deck_dynamic;
-!> what the readers remember for validation and their shared checks, in
-!> rodyn_deck_support.
+!> those of the sea (*WATER, *CURRENT, *SEABED), of *SEGMENT and *ATTACHMENT, the
+!> hydrodynamic parameters of *SECTION, the lines' segments and totals and the checks
+!> of the sea in rodyn_deck_water; what the readers remember for validation and their
+!> shared checks, in rodyn_deck_support.
 module rodyn_deck
    use rodyn_section, only: section_default_rotary_inertia
    use rodyn_kinds, only: wp
@@ -22,17 +25,20 @@ module rodyn_deck
                                card_data_error, card_get_real, card_get_int, card_get_name, &
                                card_get_choice, card_get_yesno, card_check_data, &
                                card_data_count, card_data_reals, real_str, int_str, param_len
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
+                                 get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  location, resolve_line, node_count, node_number, node_label
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics
+   use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
+                               read_segment_card, read_attachment_card, read_section_hydro, &
+                               resolve_segments, validate_water
    implicit none
    private
    public :: deck_read
 
-   integer, parameter :: max_elements = 10000000       !< most elements in one line
    real(wp), parameter :: coincide_tol = 1.0e-9_wp     !< ends coincide below tol*LENGTH
    real(wp), parameter :: overlong_tol = 1.0e-12_wp    !< ends too far above (1+tol)*LENGTH
    real(wp), parameter :: straight_tol = 1.0e-9_wp     !< relative tolerance, free lines
@@ -66,6 +72,8 @@ contains
       allocate (model%amplitudes(keyword_count(deck, 'AMPLITUDE')))
       allocate (model%motions(keyword_count(deck, 'MOTION')))
       allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
+      allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
+      allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
       allocate (pend%section_card(size(model%sections)))
       allocate (pend%line_section(size(model%lines)))
       allocate (pend%bc_line(size(model%constraints)))
@@ -74,6 +82,11 @@ contains
       allocate (pend%amplitude_card(size(model%amplitudes)))
       allocate (pend%motion_line(size(model%motions)))
       allocate (pend%iv_line(size(model%initial_velocities)))
+      allocate (pend%seg_line(keyword_count(deck, 'SEGMENT')))
+      allocate (pend%seg_section(size(pend%seg_line)))
+      allocate (pend%seg_length(size(pend%seg_line)))
+      allocate (pend%seg_elements(size(pend%seg_line)))
+      allocate (pend%att_line(size(model%attachments)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -108,6 +121,7 @@ contains
       model%amplitudes = model%amplitudes(1:pend%n_amplitudes)
       model%motions = model%motions(1:pend%n_motions)
       model%initial_velocities = model%initial_velocities(1:pend%n_ivs)
+      model%attachments = model%attachments(1:pend%n_attachments)
    end subroutine trim_model
 
    !> Hand card `ic` to the reader of its keyword.
@@ -146,6 +160,16 @@ contains
             call read_motion_card(deck, ic, model, pend, err)
          case ('INITIAL VELOCITY')
             call read_initial_velocity_card(deck, ic, model, pend, err)
+         case ('WATER')
+            call read_water_card(deck, ic, model, pend, err)
+         case ('CURRENT')
+            call read_current_card(deck, ic, model, pend, err)
+         case ('SEABED')
+            call read_seabed_card(deck, ic, model, pend, err)
+         case ('SEGMENT')
+            call read_segment_card(card, ic, pend, err)
+         case ('ATTACHMENT')
+            call read_attachment_card(deck, ic, model, pend, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -203,7 +227,9 @@ contains
 
    !> *SECTION: cross-section properties; data line EA, EI1, EI2, GJ, MASS and an
    !> optional line K1, K2, K3 (stress-free curvature). GA/RHOI set both components.
-   !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16) are resolved in validate_model.
+   !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16, the buoyancy and drag diameters) are
+   !> resolved in validate_model; the hydrodynamic and contents parameters are read by
+   !> rodyn_deck_water's read_section_hydro.
    subroutine read_section_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *SECTION card
@@ -219,7 +245,10 @@ contains
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'OD', 'GA', &
-                                'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2'], err)
+                                'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2', &
+                                'BUOYANCY DIAMETER', 'DRAG DIAMETER', 'CDN', 'CDA', 'CAN', &
+                                'CAA', 'ID', 'CONTENTS DENSITY', 'CONTENTS PRESSURE', &
+                                'PRESSURE Z'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -235,6 +264,7 @@ contains
          call get_bounded(card, 'OD', sec%od, .false., err)
          call get_pair(card, 'GA', sec%ga1, sec%ga2, .true., err)
          call get_pair(card, 'RHOI', sec%rhoi1, sec%rhoi2, .false., err)
+         call read_section_hydro(card, sec, err)
          if (has_error(err)) return
 
          call card_check_data(card, 1, 2, err, what1)
@@ -264,8 +294,10 @@ contains
    end subroutine read_section_card
 
    !> *LINE: a rod between end A and end B; data line xA, yA, zA, xB, yB, zB and an
-   !> optional line v1x, v1y, v1z (direction d1 should point to).
-   !> Checks the geometry that does not depend on the boundaries.
+   !> optional line v1x, v1y, v1z (direction d1 should point to). SECTION=, LENGTH= and
+   !> ELEMENTS= are required together; without SECTION= the line is made of *SEGMENT
+   !> cards, and LENGTH= and ELEMENTS= are optional (checked against the segments).
+   !> The geometry that depends on the length is checked by check_line_geometry.
    subroutine read_line_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *LINE card
@@ -276,7 +308,8 @@ contains
       character(len=*), parameter :: what2 = 'v1x, v1y, v1z'
       type(line_def_t) :: line
       character(len=:), allocatable :: name, section
-      real(wp) :: x(6), v(3), chord(3), dist, vn
+      real(wp) :: x(6), v(3), vn
+      logical :: plain
       integer :: il
 
       associate (card => deck%cards(ic))
@@ -293,19 +326,22 @@ contains
             end if
          end do
          line%name = name
-         call card_get_name(card, 'SECTION', section, err, required=.true.)
+         section = ''
+         call card_get_name(card, 'SECTION', section, err)
          if (has_error(err)) return
+         plain = len(section) > 0     ! else segmented: LENGTH, ELEMENTS optional
 
-         call card_get_real(card, 'LENGTH', line%length, err, required=.true.)
+         call card_get_real(card, 'LENGTH', line%length, err, required=plain)
          if (has_error(err)) return
-         if (.not. line%length > 0.0_wp) then
+         if (card_find_param(card, 'LENGTH') > 0 .and. .not. line%length > 0.0_wp) then
             call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
                             real_str(line%length), err)
             return
          end if
-         call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=.true.)
+         call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=plain)
          if (has_error(err)) return
-         if (line%n_elements < 1 .or. line%n_elements > max_elements) then
+         if (card_find_param(card, 'ELEMENTS') > 0 .and. &
+             (line%n_elements < 1 .or. line%n_elements > max_elements)) then
             call param_fail(card, 'ELEMENTS', 'ELEMENTS must be between 1 and '// &
                             int_str(max_elements)//', got '//int_str(line%n_elements), err)
             return
@@ -324,18 +360,6 @@ contains
          if (has_error(err)) return
          line%end_a = x(1:3)
          line%end_b = x(4:6)
-         chord = line%end_b - line%end_a
-         dist = norm2(chord)
-         if (dist < coincide_tol*line%length) then
-            call card_data_error(card, 1, 'ends A and B coincide', err)
-            return
-         end if
-         if (dist > line%length*(1.0_wp + overlong_tol)) then
-            call card_data_error(card, 1, 'the distance between ends A and B ('// &
-                                 real_str(dist)//' m) is greater than LENGTH ('// &
-                                 real_str(line%length)//' m)', err)
-            return
-         end if
 
          if (card%n_data >= 2) then
             call card_data_reals(card, 2, 3, v, err, what2)
@@ -343,11 +367,6 @@ contains
             vn = norm2(v)
             if (.not. vn > 0.0_wp) then
                call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is zero', err)
-               return
-            end if
-            if (norm2(cross(v/vn, chord/dist)) < parallel_tol) then
-               call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is parallel '// &
-                                    'to the chord from end A to end B', err)
                return
             end if
             line%has_d1_hint = .true.
@@ -571,10 +590,11 @@ contains
    ! ================================================================ validation
 
    !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE;
-   !> references resolved in card order (SECTION=, LINE=, NODE range, one *BOUNDARY
-   !> per node); the dynamic keywords' references (validate_dynamics); section
-   !> defaults; lines not held at both ends start straight; every line is held somewhere
-   !> when a static analysis will run.
+   !> the lines' sections and segments (resolve_segments), then their geometry with the
+   !> total length; references resolved in card order (LINE=, NODE range, one *BOUNDARY
+   !> per node); the dynamic keywords' references (validate_dynamics); the sea, seabed
+   !> and attachments (validate_water); section defaults; lines not held at both ends
+   !> start straight; every line is held somewhere when a static analysis will run.
    subroutine validate_model(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
@@ -591,16 +611,18 @@ contains
          return
       end if
 
-      il = 0
+      call resolve_segments(deck, pend, model, err)
+      if (has_error(err)) return
+      do il = 1, size(model%lines)
+         call check_line_geometry(deck%cards(pend%line_section(il)%card), model%lines(il), &
+                                  err)
+         if (has_error(err)) return
+      end do
+
       ib = 0
       iload = 0
       do ic = 1, deck%n_cards
          select case (deck%cards(ic)%keyword)
-         case ('LINE')
-            il = il + 1
-            call resolve_section(deck%cards(ic), pend%line_section(il)%name, model, &
-                                 iref, err)
-            model%lines(il)%section = iref
          case ('BOUNDARY')
             ib = ib + 1
             call resolve_line(deck%cards(ic), pend%bc_line(ib)%name, model, &
@@ -618,6 +640,8 @@ contains
       end do
       call validate_dynamics(deck, pend, model, err)
       if (has_error(err)) return
+      call validate_water(deck, pend, model, err)
+      if (has_error(err)) return
 
       call resolve_section_defaults(model)
 
@@ -629,6 +653,34 @@ contains
          if (has_error(err)) return
       end do
    end subroutine validate_model
+
+   !> The geometry of a line with its total length (segments resolved): the ends do not
+   !> coincide, are not farther apart than the length, and the d1 hint is not parallel
+   !> to the chord. Reported at the *LINE card's data lines.
+   subroutine check_line_geometry(card, line, err)
+      type(card_t), intent(in) :: card       !< the *LINE card
+      type(line_def_t), intent(in) :: line   !< the line, length resolved
+      type(error_t), intent(inout) :: err    !< status
+      real(wp) :: chord(3), dist
+
+      chord = line%end_b - line%end_a
+      dist = norm2(chord)
+      if (dist < coincide_tol*line%length) then
+         call card_data_error(card, 1, 'ends A and B coincide', err)
+         return
+      end if
+      if (dist > line%length*(1.0_wp + overlong_tol)) then
+         call card_data_error(card, 1, 'the distance between ends A and B ('// &
+                              real_str(dist)//' m) is greater than LENGTH ('// &
+                              real_str(line%length)//' m)', err)
+         return
+      end if
+      if (.not. line%has_d1_hint) return
+      if (norm2(cross(line%d1_hint, chord/dist)) < parallel_tol) then
+         call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is parallel '// &
+                              'to the chord from end A to end B', err)
+      end if
+   end subroutine check_line_geometry
 
    !> True unless the deck asks only for a dynamic analysis from the defined shape
    !> (*DYNAMIC with START=DEFINED and no *STATIC): a static analysis then never runs.
@@ -654,21 +706,6 @@ contains
                       ' in position: a static analysis needs at least one *BOUNDARY of'// &
                       ' TYPE PINNED, HINGED, CLAMPED or POSITION on it', err)
    end subroutine check_supported
-
-   !> Find the section named by a *LINE card's SECTION=.
-   subroutine resolve_section(card, name, model, isec, err)
-      type(card_t), intent(in) :: card      !< the *LINE card
-      character(len=*), intent(in) :: name  !< section name, upper case
-      type(model_t), intent(in) :: model    !< model with all sections
-      integer, intent(out) :: isec          !< index of the section
-      type(error_t), intent(inout) :: err   !< status
-      do isec = 1, size(model%sections)
-         if (model%sections(isec)%name == name) return
-      end do
-      isec = 0
-      call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
-                      ' with NAME='//name//' in the deck)', err)
-   end subroutine resolve_section
 
    !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
    !> END=B is the last node).
@@ -696,7 +733,9 @@ contains
    end subroutine check_unique_boundary
 
    !> Resolve the section defaults: GA1, GA2 -> EA (penalty on shear, formulation
-   !> note); RHOI1, RHOI2 -> MASS*OD**2/16 (solid circular section; 0 without OD).
+   !> note); RHOI1, RHOI2 -> MASS*OD**2/16 (solid circular section; 0 without OD);
+   !> buoyancy diameter -> OD (0 without OD: validate_water has refused that in water);
+   !> drag diameter -> the buoyancy diameter.
    subroutine resolve_section_defaults(model)
       type(model_t), intent(inout) :: model  !< model whose sections are completed
       integer :: is
@@ -706,6 +745,8 @@ contains
             if (s%ga2 < 0.0_wp) s%ga2 = s%ea
             if (s%rhoi1 < 0.0_wp) s%rhoi1 = section_default_rotary_inertia(s%mass, s%od)
             if (s%rhoi2 < 0.0_wp) s%rhoi2 = section_default_rotary_inertia(s%mass, s%od)
+            if (s%db < 0.0_wp) s%db = max(s%od, 0.0_wp)
+            if (s%dd < 0.0_wp) s%dd = s%db
          end associate
       end do
    end subroutine resolve_section_defaults

@@ -2,7 +2,8 @@
 !> (pending_t: names referred to, the card of each item, the first card of keywords
 !> allowed once) and the checks they share: parameters in a range, END=/NODE=, a line
 !> name resolved with its node number, error locations. Used by rodyn_deck (the reader
-!> and the static-analysis keywords) and rodyn_deck_dynamic (the dynamic keywords).
+!> and the static-analysis keywords), rodyn_deck_dynamic (the dynamic keywords) and
+!> rodyn_deck_water (the sea, seabed, segments and attachments).
 module rodyn_deck_support
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -12,11 +13,12 @@ module rodyn_deck_support
                                card_get_int, card_get_choice, real_str, int_str
    implicit none
    private
-   public :: ref_t, pending_t, max_cutbacks
+   public :: ref_t, pending_t, max_cutbacks, max_elements
    public :: check_once, get_node, get_bounded, get_tolerance, data_check, param_fail
-   public :: location, resolve_line, node_count, node_number, node_label
+   public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
+   integer, parameter :: max_elements = 10000000       !< most elements in one line
 
    !> A reference by name from one card to a section, line or amplitude, resolved after
    !> all cards are read.
@@ -27,12 +29,17 @@ module rodyn_deck_support
 
    !> What the readers remember for the validation pass (not part of the model).
    type :: pending_t
-      type(ref_t), allocatable :: line_section(:) !< per line: its SECTION=
+      type(ref_t), allocatable :: line_section(:) !< per line: its SECTION= ('' if none)
       type(ref_t), allocatable :: bc_line(:)      !< per constraint: its LINE=
       type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
       type(ref_t), allocatable :: load_amp(:)     !< per load: its AMPLITUDE= ('' if none)
       type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE=
       type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE=
+      type(ref_t), allocatable :: seg_line(:)     !< per *SEGMENT: its LINE=
+      type(ref_t), allocatable :: seg_section(:)  !< per *SEGMENT: its SECTION=
+      real(wp), allocatable :: seg_length(:)      !< per *SEGMENT: LENGTH [m]
+      integer, allocatable :: seg_elements(:)     !< per *SEGMENT: ELEMENTS
+      type(ref_t), allocatable :: att_line(:)     !< per attachment: its LINE=
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far
@@ -42,12 +49,17 @@ module rodyn_deck_support
       integer :: n_amplitudes = 0   !< amplitudes read so far
       integer :: n_motions = 0      !< motions read so far
       integer :: n_ivs = 0          !< initial velocities read so far
+      integer :: n_segments = 0     !< segments read so far
+      integer :: n_attachments = 0  !< attachments read so far
       integer :: heading = 0   !< card of the first *HEADING (0: none yet)
       integer :: gravity = 0   !< card of the first *GRAVITY
       integer :: static = 0    !< card of the first *STATIC
       integer :: output = 0    !< card of the first *OUTPUT
       integer :: dynamic = 0   !< card of the first *DYNAMIC
       integer :: damping = 0   !< card of the first *DAMPING
+      integer :: water = 0     !< card of the first *WATER
+      integer :: current = 0   !< card of the first *CURRENT
+      integer :: seabed = 0    !< card of the first *SEABED
    end type pending_t
 
 contains
@@ -196,6 +208,21 @@ contains
                          ' of line '//trim(name)//' ('//int_str(nn)//')', err)
       end if
    end subroutine resolve_line
+
+   !> Find the section named by SECTION= of a *LINE or *SEGMENT card.
+   subroutine resolve_section(card, name, model, isec, err)
+      type(card_t), intent(in) :: card      !< the card naming the section
+      character(len=*), intent(in) :: name  !< section name, upper case
+      type(model_t), intent(in) :: model    !< model with all sections
+      integer, intent(out) :: isec          !< index of the section (0 if not found)
+      type(error_t), intent(inout) :: err   !< status
+      do isec = 1, size(model%sections)
+         if (model%sections(isec)%name == name) return
+      end do
+      isec = 0
+      call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
+                      ' with NAME='//name//' in the deck)', err)
+   end subroutine resolve_section
 
    !> Number of nodes of a line: ELEMENTS*ORDER + 1.
    pure integer function node_count(line) result(nn)
