@@ -197,3 +197,73 @@ def _make(values, arrays, seabed, path) -> Environment:
     return Environment(current_z=arrays["current_z"], current_speed=arrays["current_speed"],
                        current_heading=arrays["current_heading"], seabed=seabed,
                        source=Path(path), **known)
+
+
+# --- drawing (matplotlib is imported by the callers' figures only) --------------------
+
+SURFACE_GID, SEABED_GID, CURRENT_GID = "sea_surface", "seabed", "current_profile"
+
+
+def elevation_range(xs, margin=0.1):
+    """(x0, x1) spanning the arrays of x in `xs` with a margin of `margin` of the span on
+    each side (at least 1 m)."""
+    lo = min(float(np.nanmin(x)) for x in xs)
+    hi = max(float(np.nanmax(x)) for x in xs)
+    pad = max(margin * (hi - lo), 1.0)
+    return lo - pad, hi + pad
+
+
+def draw_sea(ax, env, x_range, y=0.0):
+    """Draw the still water level (z = surface, blue) and the seabed's trace in the
+    plane y = const (brown, shaded below) on an x-z elevation; returns {'surface':
+    Line2D, 'seabed': Line2D or None} (gids SURFACE_GID, SEABED_GID). Nothing (and {})
+    for env None."""
+    if env is None:
+        return {}
+    x0, x1 = x_range
+    surface, = ax.plot([x0, x1], [env.surface_z, env.surface_z], "-", color="tab:blue",
+                       linewidth=1.2, zorder=0.5, label=f"sea surface, z = {env.surface_z:g} m")
+    surface.set_gid(SURFACE_GID)
+    artists = {"surface": surface, "seabed": None}
+    trace = seabed_trace(env, x_range, y)
+    if trace is not None:
+        xb, zb = trace
+        bed, = ax.plot(xb, zb, "-", color="saddlebrown", linewidth=1.5, zorder=0.5,
+                       label=f"seabed (y = {y:g} m)")
+        bed.set_gid(SEABED_GID)
+        ax.fill_between(xb, zb, zb - 0.03 * max(env.depth, 1.0), color="tan", alpha=0.5,
+                        zorder=0.4, linewidth=0)
+        artists["seabed"] = bed
+    return artists
+
+
+def draw_current(ax, env):
+    """Draw the current profile (speed [m/s] against z [m], from the seabed to the
+    surface) on `ax`; returns the Line2D (gid CURRENT_GID), or None without a current."""
+    profile = current_profile(env)
+    if profile is None:
+        return None
+    z, speed = profile
+    line, = ax.plot(speed, z, "-o", color="tab:blue", markersize=2.5, linewidth=1.2)
+    line.set_gid(CURRENT_GID)
+    ax.axhline(env.surface_z, color="tab:blue", linewidth=0.6, alpha=0.6)
+    if env.seabed:
+        ax.axhline(env.mudline_z, color="saddlebrown", linewidth=0.6, alpha=0.6)
+    ax.set_xlim(left=0.0, right=1.1 * max(float(np.max(speed)), 1e-9))
+    ax.set_xlabel("current [m/s]", fontsize=7)
+    ax.set_ylabel("z [m]", fontsize=7)
+    ax.tick_params(labelsize=6)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    ax.set_title("current", fontsize=7)
+    return line
+
+
+def current_inset(ax, env):
+    """An inset in the lower left corner of `ax` with the current profile (draw_current);
+    returns the inset Axes, or None without a current."""
+    if env is None or not env.has_current:
+        return None
+    inset = ax.inset_axes([0.07, 0.08, 0.2, 0.38])
+    inset.patch.set_alpha(0.85)
+    draw_current(inset, env)
+    return inset

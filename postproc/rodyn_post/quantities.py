@@ -180,13 +180,17 @@ def history(line, key: str, where: Location) -> np.ndarray:
     return at_s(points, values, where.s)
 
 
-def range_stats(line, key: str, mask: np.ndarray) -> tuple:
+def range_stats(line, key: str, mask: np.ndarray, at=None) -> tuple:
     """(S of the points, {'min', 'mean', 'max': array}) of quantity `key` over the
     frames selected by `mask`, at the integration points (or nodes) themselves: no
-    interpolation. The mean is the plain mean over those frames."""
+    interpolation; or, with `at` (arc lengths S), at those S, each frame's values
+    interpolated first (at_s's rule). The mean is the plain mean over those frames."""
     if not np.any(mask):
         raise InputError("no output frame in the time window")
     points, values = point_values(line, key)
+    if at is not None:
+        values = values @ resample_matrix(points, at).T
+        points = np.asarray(at, float)
     part = values[mask]
     return points, {"min": part.min(axis=0), "mean": part.mean(axis=0),
                     "max": part.max(axis=0)}
