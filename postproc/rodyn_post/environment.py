@@ -215,12 +215,18 @@ def elevation_range(xs, margin=0.1):
 
 def draw_sea(ax, env, x_range, y=0.0):
     """Draw the still water level (z = surface, blue) and the seabed's trace in the
-    plane y = const (brown, shaded below) on an x-z elevation; returns {'surface':
+    plane y = const (brown, shaded below) on an x-z elevation, over x_range widened to
+    at least 1.5 water depths about its centre; returns {'surface':
     Line2D, 'seabed': Line2D or None} (gids SURFACE_GID, SEABED_GID). Nothing (and {})
     for env None."""
     if env is None:
         return {}
     x0, x1 = x_range
+    half = 0.75 * env.depth            # at least 1.5 depths wide: the view is water deep
+    if x1 - x0 < 2.0 * half:
+        centre = 0.5 * (x0 + x1)
+        x0, x1 = centre - half, centre + half
+        x_range = (x0, x1)
     surface, = ax.plot([x0, x1], [env.surface_z, env.surface_z], "-", color="tab:blue",
                        linewidth=1.2, zorder=0.5, label=f"sea surface, z = {env.surface_z:g} m")
     surface.set_gid(SURFACE_GID)
