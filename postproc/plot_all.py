@@ -9,7 +9,8 @@ input/paper_cable.inp) or a results.h5 / dynamic.h5 file. What is made depends o
 results found there:
 
   static results   plot_static.py: static_shape.png (the paper's Figure 2),
-                   static_tension.png
+                   static_tension.png; in water also static_wall_tension.png and,
+                   when a line touches the seabed, static_seabed.png
   dynamic results  plot_dynamic.py: dynamic_snapshots.png (Figures 3-6),
                    dynamic_tension.png, dynamic_energy.png, dynamic_momentum.png;
                    range_graph.py: range_graph.png and .csv;

@@ -12,10 +12,12 @@ into OUT_DIR (default: the results folder) and prints the paths written:
   dynamic_snapshots.png  x-z elevation of the lines at a few times of the last period of
                          the motion, over the static shape (equal axes) and the envelope
                          (every frame of the window, light grey), as the paper's
-                         Figures 3-6
+                         Figures 3-6; with water, the sea surface, the seabed's trace in
+                         the plane of the lines and an inset of the current profile
   dynamic_tension.png    tension at the top and at the bottom support against time
   dynamic_energy.png     total energy minus its initial value and the net work done on
-                         the lines (external - damping) against time, and their difference
+                         the lines (external + hydro + seabed - damping) against time,
+                         and their difference
   dynamic_momentum.png   linear and angular momentum (x, y, z) minus their values at the
                          first step of the log, against time
 
@@ -52,6 +54,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
 from rodyn_post.cli import dynamic_title as run_title  # noqa: E402,F401
+from rodyn_post.environment import current_inset, draw_sea, elevation_range  # noqa: E402
 from rodyn_post.quantities import InputError as PlotInputError  # noqa: E402
 from rodyn_post.quantities import matching_static, window_mask  # noqa: E402
 
@@ -153,8 +156,8 @@ def tension_curves(results, line, window=None):
 
 
 def energy_curves(log, window=None):
-    """Plotted data of dynamic_energy.png: time [s], total - total(0) [J], external
-    minus damping work [J], their difference [J] (the balance error)."""
+    """Plotted data of dynamic_energy.png: time [s], total - total(0) [J], the net work
+    external + hydro + seabed - damping [J], their difference [J] (the balance error)."""
     mask = window_mask(log.time, window)
     return (log.time[mask], log.energy_change[mask], log.net_work[mask],
             log.energy_error[mask])
@@ -194,6 +197,13 @@ def snapshots_figure(results, frames, envelope=None):
             color = cmap(k / max(1, len(frames) - 1))
             ax.plot(x, z, "-", color=color, linewidth=1.1,
                     label=f"{line.name}: t = {results.time[f]:.4g} s")
+    env = results.environment
+    if env is not None:
+        shown = envelope or frames or [0]
+        xs = [line.x[f] for line in results.lines for f in shown]
+        y = float(np.mean([line.y[f].mean() for line in results.lines for f in shown]))
+        draw_sea(ax, env, elevation_range(xs), y)
+        current_inset(ax, env)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
@@ -229,10 +239,8 @@ def energy_figure(results, window=None):
     fig = Figure(figsize=(8, 6), layout="constrained")
     ax_e, ax_d = fig.subplots(2, 1, sharex=True)
     t, change, work, error = energy_curves(results.log, window)
-    damped = bool(np.any(results.log.damping_work != 0.0))
     ax_e.plot(t, change, "-", linewidth=1.2, label="total energy - total(0)")
-    ax_e.plot(t, work, "--", linewidth=1.2,
-              label="external work - damping work" if damped else "external work")
+    ax_e.plot(t, work, "--", linewidth=1.2, label=work_label(results.log))
     ax_d.plot(t, error, "-", linewidth=0.9, color="C3", label="difference")
     ax_e.set_ylabel("energy [J]")
     ax_d.set_ylabel("difference [J]")
@@ -244,6 +252,17 @@ def energy_figure(results, window=None):
     fig.suptitle(run_title(results, f"energy balance ({scheme}total = kinetic + strain + "
                                     "gravity; total(0) from step 1)"))
     return fig
+
+
+def work_label(log):
+    """Legend of the net work: the terms the log holds (external work always)."""
+    text = "external work"
+    for name, values in (("hydro", log.hydro_work), ("seabed", log.seabed_work)):
+        if np.any(values != 0.0):
+            text += f" + {name} work"
+    if np.any(log.damping_work != 0.0):
+        text += " - damping work"
+    return text
 
 
 def momentum_figure(results, window=None):

@@ -7,8 +7,15 @@ RESULTS is a results folder (default: paper_cable, the output folder of
 input/paper_cable.inp run from the current directory) or a results.h5 file. Writes
 into OUT_DIR (default: the results folder) and prints the paths written:
 
-  static_shape.png    x-z elevation of every line (equal axes), nodes and supports
+  static_shape.png    x-z elevation of every line (equal axes), nodes and supports; with
+                      water, the sea surface, the seabed's trace in the plane of the
+                      lines (y = mean y of the nodes) and an inset of the current
+                      profile (speed against z) when a current is given
   static_tension.png  effective tension and bending moment magnitude against arc length
+  static_wall_tension.png   with water (or a wall tension other than the effective one):
+                      wall and effective tension against arc length
+  static_seabed.png   when a line touches the seabed: seabed normal and friction force
+                      per length against arc length, touchdown points marked
 
 A run that did not complete is still plotted (its last converged state), with a
 warning on stderr and in the plot titles.
@@ -21,6 +28,7 @@ import sys
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")  # never needs a display
 from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
@@ -28,9 +36,12 @@ from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from rodyn_post import RodynResultsError, load_static  # noqa: E402
 from rodyn_post.cli import static_title as run_title  # noqa: E402
+from rodyn_post.environment import current_inset, draw_sea, elevation_range  # noqa: E402
 
 SHAPE_PNG = "static_shape.png"
 TENSION_PNG = "static_tension.png"
+WALL_PNG = "static_wall_tension.png"
+SEABED_PNG = "static_seabed.png"
 
 
 def shape_curve(line):
@@ -44,8 +55,40 @@ def tension_curves(line):
     return line.gp_s, line.effective_tension / 1e3, line.moment_magnitude / 1e3
 
 
+def wall_curves(line):
+    """Plotted data of static_wall_tension.png for one line: S [m] of the integration
+    points, wall tension [kN], effective tension [kN]."""
+    return line.gp_s, line.wall_tension / 1e3, line.effective_tension / 1e3
+
+
+def seabed_curves(line):
+    """Plotted data of static_seabed.png for one line: S [m] of the nodes, seabed normal
+    and friction force per length [kN/m], touchdown S [m] (None when none)."""
+    touchdown = line.touchdown_s if line.touchdown_s >= 0.0 else None
+    return line.node_s, line.seabed_normal / 1e3, line.seabed_friction / 1e3, touchdown
+
+
+def plane_y(lines_xyz):
+    """y of the plotted x-z plane: the mean y of all nodes [m]."""
+    return float(np.mean(np.concatenate([xyz[:, 1] for xyz in lines_xyz])))
+
+
+def wants_wall(results):
+    """Whether static_wall_tension.png is drawn: the run has water, or some wall tension
+    differs from the effective tension."""
+    return results.environment is not None or any(
+        np.any(line.wall_tension != line.effective_tension) for line in results.lines)
+
+
+def wants_seabed(results):
+    """Whether static_seabed.png is drawn: some seabed force is not zero."""
+    return any(np.any(line.seabed_normal != 0.0) or np.any(line.seabed_friction != 0.0)
+               for line in results.lines)
+
+
 def shape_figure(results):
-    """Figure of the x-z elevation of every line: nodes marked, held ends marked."""
+    """Figure of the x-z elevation of every line: nodes marked, held ends marked; the
+    sea surface, seabed and current profile when the run has water."""
     fig = Figure(figsize=(7.5, 5), layout="constrained")
     ax = fig.add_subplot()
     support_label = "support"
@@ -57,6 +100,11 @@ def shape_figure(results):
                 ax.plot(x[end], z[end], "k^", markersize=10, markerfacecolor="none",
                         markeredgewidth=1.5, label=support_label)
                 support_label = None  # one legend entry for all supports
+    env = results.environment
+    if env is not None:
+        xyz = [line.node_xyz for line in results.lines]
+        draw_sea(ax, env, elevation_range([p[:, 0] for p in xyz]), plane_y(xyz))
+        current_inset(ax, env)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
@@ -85,10 +133,62 @@ def tension_figure(results):
     return fig
 
 
+def wall_figure(results):
+    """Wall (solid) and effective (dashed) tension against arc length, per line."""
+    fig = Figure(figsize=(7.5, 4.5), layout="constrained")
+    ax = fig.add_subplot()
+    for k, line in enumerate(results.lines):
+        s, wall, effective = wall_curves(line)
+        ax.plot(s, wall, "-", color=f"C{k}", label=f"{line.name}: wall tension")
+        ax.plot(s, effective, "--", color=f"C{k}", label=f"{line.name}: effective tension")
+    ax.set_ylabel("tension [kN]")
+    ax.set_xlabel("arc length S (unstretched, from end A) [m]")
+    ax.grid(True, linewidth=0.5, alpha=0.5)
+    ax.legend(loc="best", fontsize=8)
+    fig.suptitle(run_title(results, "wall and effective tension "
+                                    "(T_eff = T_wall - p_o A_o + p_i A_i)"))
+    return fig
+
+
+def seabed_figure(results):
+    """Seabed normal (top) and friction (bottom) force per length against arc length,
+    the touchdown points as vertical dotted lines."""
+    fig = Figure(figsize=(7.5, 6), layout="constrained")
+    ax_n, ax_f = fig.subplots(2, 1, sharex=True)
+    for k, line in enumerate(results.lines):
+        s, normal, friction, touchdown = seabed_curves(line)
+        ax_n.plot(s, normal, ".-", color=f"C{k}", label=line.name)
+        ax_f.plot(s, friction, ".-", color=f"C{k}", label=line.name)
+        if touchdown is not None:
+            for ax in (ax_n, ax_f):
+                ax.axvline(touchdown, color=f"C{k}", linestyle=":", linewidth=1.0,
+                           label=f"{line.name}: touchdown S = {touchdown:.4g} m"
+                           if ax is ax_n else None)
+    ax_n.set_ylabel("seabed normal force [kN/m]")
+    ax_f.set_ylabel("seabed friction force [kN/m]")
+    ax_f.set_xlabel("arc length S (unstretched, from end A) [m]")
+    for ax in (ax_n, ax_f):
+        ax.grid(True, linewidth=0.5, alpha=0.5)
+        ax.legend(loc="best", fontsize=8)
+    fig.suptitle(run_title(results, "seabed contact force per unit length"))
+    return fig
+
+
+def figures(results):
+    """[(PNG name, figure maker)] of the plots that apply to these results."""
+    makers = [(SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)]
+    if wants_wall(results):
+        makers.append((WALL_PNG, wall_figure))
+    if wants_seabed(results):
+        makers.append((SEABED_PNG, seabed_figure))
+    return makers
+
+
 def parse_args(argv):
     """Command line arguments."""
     parser = argparse.ArgumentParser(
-        description="Plot the static shape, tension and bending moment of a rodyn run.",
+        description="Plot the static shape, tension and bending moment of a rodyn run "
+                    "(with water: the sea, current, wall tension and seabed contact).",
         epilog="exit status: 0 success, 1 bad input, 2 bad command line, "
                "3 cannot write the plots")
     parser.add_argument("results", nargs="?", default="paper_cable",
@@ -117,7 +217,7 @@ def main(argv=None):
     out_dir = Path(args.out_dir) if args.out_dir else results.folder
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
-        for name, make in ((SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)):
+        for name, make in figures(results):
             path = out_dir / name
             make(results).savefig(path, dpi=args.dpi)
             print(path)

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Range graphs of a rodyn dynamic run: minimum, mean and maximum over a time window
-against arc length, for effective tension, bending moment and bending curvature.
+against arc length, for effective tension, bending moment and bending curvature (or
+the quantities of --quantity).
 
     python3 postproc/range_graph.py [RESULTS] [-o OUT_DIR] [--window T0 T1]
-                                    [--line NAME] [--dpi 150]
+                                    [--line NAME] [--quantity Q ...] [--dpi 150]
 
 RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
 OUT_DIR (default: the results folder) and prints the paths written:
@@ -16,9 +17,16 @@ OUT_DIR (default: the results folder) and prints the paths written:
                    tension_max_N, moment_*_Nm, curvature_*_per_m; one row per
                    integration point of each line
 
+--quantity picks the panels (default: tension moment curvature) among tension,
+wall_tension, moment, curvature, torque (at the integration points) and seabed_normal,
+x, y, z (at the nodes); one panel and three CSV columns each, in the order given.
+
 The statistics are over the output frames with T0 <= t <= T1 (default: all), at the
-integration points themselves (no interpolation); the mean is the plain mean of those
-frames. Extremes between two frames are not seen: a finer OUTPUT INTERVAL sees more.
+integration points themselves (no interpolation), or at the nodes when every quantity
+asked is a node quantity; a node quantity asked together with section quantities is
+taken at the integration points, linear in S between the nodes in each frame. The mean
+is the plain mean of those frames. Extremes between two frames are not seen: a finer
+OUTPUT INTERVAL sees more.
 """
 import sys
 from pathlib import Path
@@ -34,43 +42,50 @@ PNG = "range_graph.png"
 CSV = "range_graph.csv"
 
 
-def csv_header():
+CHOICES = [key for key, q in QUANTITIES.items() if q.where != "end"]
+
+
+def csv_header(keys=RANGE_QUANTITIES):
     """Columns of range_graph.csv."""
     return ["line", "s_m"] + [f"{key}_{stat}_{QUANTITIES[key].suffix}"
-                              for key in RANGE_QUANTITIES for stat in STATS]
+                              for key in keys for stat in STATS]
 
 
-def range_table(results, lines, window=None):
-    """{line name: (S of the integration points, {quantity: {stat: array}})} in SI."""
+def range_table(results, lines, window=None, keys=RANGE_QUANTITIES):
+    """{line name: (S of the points, {quantity: {stat: array}})} in SI: at the
+    integration points, or at the nodes when every quantity is a node quantity."""
     mask = window_mask(results.time, window)
+    at_nodes = all(QUANTITIES[key].where == "node" for key in keys)
     table = {}
     for line in lines:
         stats = {}
-        for key in RANGE_QUANTITIES:
-            s, stats[key] = range_stats(line, key, mask)
+        at = None if at_nodes else line.gp_s
+        for key in keys:
+            s, stats[key] = range_stats(line, key, mask,
+                                        at if QUANTITIES[key].where == "node" else None)
         table[line.name] = (s, stats)
     return table
 
 
-def csv_rows(table):
+def csv_rows(table, keys=RANGE_QUANTITIES):
     """Rows of range_graph.csv (formatted fields)."""
     rows = []
     for name, (s, stats) in table.items():
         for i in range(len(s)):
             rows.append([name, cli.real(s[i])] + [cli.real(stats[key][stat][i])
-                                                  for key in RANGE_QUANTITIES
+                                                  for key in keys
                                                   for stat in STATS])
     return rows
 
 
-def range_figure(results, table, window=None):
-    """The three panels; curves in plotted units (kN, kN m, 1/m)."""
-    fig = cli.new_figure(8, 8.5)
-    axes = fig.subplots(len(RANGE_QUANTITIES), 1, sharex=True)
+def range_figure(results, table, window=None, keys=RANGE_QUANTITIES):
+    """One panel per quantity; curves in plotted units (kN, kN m, 1/m, ...)."""
+    fig = cli.new_figure(8, 2.2 + 2.1 * len(keys))
+    axes = fig.subplots(len(keys), 1, sharex=True, squeeze=False)[:, 0]
     static = matching_static(results)
     for k, (name, (s, stats)) in enumerate(table.items()):
         color = f"C{k}"
-        for ax, key in zip(axes, RANGE_QUANTITIES):
+        for ax, key in zip(axes, keys):
             q = QUANTITIES[key]
             lo, mean, hi = (stats[key][stat] * q.scale for stat in STATS)
             ax.fill_between(s, lo, hi, color=color, alpha=0.25, linewidth=0)
@@ -81,7 +96,7 @@ def range_figure(results, table, window=None):
                 s0, v0 = point_values(static.line(name), key)
                 ax.plot(s0, v0 * q.scale, ":", color="k", linewidth=1.2,
                         label=f"{name}: static")
-    for ax, key in zip(axes, RANGE_QUANTITIES):
+    for ax, key in zip(axes, keys):
         q = QUANTITIES[key]
         ax.set_ylabel(f"{q.label} [{q.unit}]")
         cli.finish_axes(ax, fontsize=7)
@@ -96,6 +111,9 @@ def parse_args(argv):
     parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__))
     cli.add_window(parser)
     cli.add_line(parser, every=True)
+    parser.add_argument("--quantity", nargs="+", metavar="Q", default=list(RANGE_QUANTITIES),
+                        choices=CHOICES, help="quantities, one panel each (default: "
+                        f"{' '.join(RANGE_QUANTITIES)}; choices: {', '.join(CHOICES)})")
     return cli.parse(parser, argv)
 
 
@@ -108,11 +126,12 @@ def main(argv=None):
         check_window(results, args.window)
         lines = [pick_line(results, args.line)] if args.line else list(results.lines)
         cli.warn_dynamic(PROG, results)
-        table = range_table(results, lines, args.window)
+        keys = list(dict.fromkeys(args.quantity))
+        table = range_table(results, lines, args.window, keys)
         out = cli.output_dir(args, results.folder)
-        print(cli.save_figure(range_figure(results, table, args.window), out / PNG,
+        print(cli.save_figure(range_figure(results, table, args.window, keys), out / PNG,
                               args.dpi))
-        print(cli.write_csv(out / CSV, csv_header(), csv_rows(table)))
+        print(cli.write_csv(out / CSV, csv_header(keys), csv_rows(table, keys)))
     return cli.run(PROG, body)
 
 

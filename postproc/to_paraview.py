@@ -18,6 +18,9 @@ line_index from 0) with point data at the nodes, SI units:
   bending_moment_Nm        sqrt(M1^2 + M2^2)
   bending_curvature_per_m  sqrt(K1^2 + K2^2)
   torque_Nm                M3
+  wall_tension_N           wall (true) tension (equal to the effective tension without
+                           water)
+  seabed_normal_N_per_m    seabed normal contact force per unit length (0 off the seabed)
   s_m                      unstretched arc length S from end A
 rodyn computes the section results at the integration points: the values at a node are
 linear in S between the two integration points around it, and at the nodes beyond the
@@ -41,7 +44,10 @@ PROG = "to_paraview"
 STATIC_VTP = "static.vtp"
 PVD = "dynamic.pvd"
 SECTION_ARRAYS = {"effective_tension_N": "tension", "bending_moment_Nm": "moment",
-                  "bending_curvature_per_m": "curvature", "torque_Nm": "torque"}
+                  "bending_curvature_per_m": "curvature", "torque_Nm": "torque",
+                  "wall_tension_N": "wall_tension"}
+NODE_ARRAYS = {"seabed_normal_N_per_m": "seabed_normal"}   # results at the nodes
+FRAME_ARRAYS = tuple(SECTION_ARRAYS) + tuple(NODE_ARRAYS)
 
 
 def node_arrays(line):
@@ -54,6 +60,8 @@ def node_arrays(line):
         if weights is None:
             weights = resample_matrix(points, line.node_s)
         arrays[name] = values @ weights.T
+    for name, key in NODE_ARRAYS.items():
+        arrays[name] = point_values(line, key)[1]
     arrays["s_m"] = line.node_s
     return arrays
 
@@ -69,7 +77,7 @@ def dynamic_files(results, frames):
     """(file name, time, text) of each frame's .vtp file, one after the other."""
     per_line = [node_arrays(line) for line in results.lines]
     for f in frames:
-        data = {name: [a[name][f] for a in per_line] for name in SECTION_ARRAYS}
+        data = {name: [a[name][f] for a in per_line] for name in FRAME_ARRAYS}
         data["s_m"] = [a["s_m"] for a in per_line]
         text = vtp_text([line.xyz(f) for line in results.lines], data, results.time[f])
         yield f"dynamic_{f:06d}.vtp", float(results.time[f]), text

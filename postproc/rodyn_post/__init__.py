@@ -3,7 +3,10 @@
 `load_static(path)` reads the static results of a run (results.h5, or the CSV tables
 when there is no results.h5) into plain dataclasses; see `rodyn_post.results`.
 `load_dynamic(path)` reads the dynamic results (dynamic.h5, or the dynamic CSV tables)
-the same way; see `rodyn_post.dynamic`.
+the same way; see `rodyn_post.dynamic`. `load_environment(path)` reads the sea (water
+level, depth, current, seabed) of a run with water, None for a dry run; see
+`rodyn_post.environment` (which also gives the seabed's trace and the current profile
+the plots draw).
 
 The command-line scripts of postproc/ share:
   rodyn_post.quantities  quantities at points of a line, values at an arc length,
@@ -14,7 +17,9 @@ The command-line scripts of postproc/ share:
   rodyn_post.cli         arguments, messages, exit statuses, writing files (Agg backend)
 """
 from .dynamic import DynamicResults, LineDynamic, StepLog, load_dynamic
+from .environment import Environment, load_environment
 from .results import LineStatic, RodynResultsError, StaticResults, load_static
 
-__all__ = ["DynamicResults", "LineDynamic", "LineStatic", "RodynResultsError",
-           "StaticResults", "StepLog", "load_dynamic", "load_static"]
+__all__ = ["DynamicResults", "Environment", "LineDynamic", "LineStatic",
+           "RodynResultsError", "StaticResults", "StepLog", "load_dynamic",
+           "load_environment", "load_static"]

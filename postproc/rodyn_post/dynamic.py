@@ -26,6 +26,7 @@ import numpy as np
 
 from .results import RodynResultsError, _h5_attr, _h5_dataset, _read_key_values
 from .results import _read_status as _read_static_status
+from .results import check_header, water_defaults
 
 H5_FILE = "dynamic.h5"
 STATUS_FILE = "status.txt"
@@ -33,15 +34,19 @@ NODES_CSV = "dynamic_nodes.csv"
 ELEMENTS_CSV = "dynamic_elements.csv"
 ENDS_CSV = "dynamic_ends.csv"
 LOG_CSV = "dynamic_log.csv"
+LINES_CSV = "dynamic_lines.csv"
 
-NODES_HEADER = ("time_s", "line", "node", "s_m", "x_m", "y_m", "z_m")
+NODES_HEADER = ("time_s", "line", "node", "s_m", "x_m", "y_m", "z_m",
+                "seabed_normal_N_per_m", "seabed_friction_N_per_m")
 ELEMENTS_HEADER = ("time_s", "line", "element", "point", "s_m", "effective_tension_N",
-                   "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_per_m")
+                   "wall_tension_N", "moment_1_Nm", "moment_2_Nm", "torque_Nm",
+                   "curvature_per_m")
+LINES_HEADER = ("time_s", "line", "touchdown_s_m")
 ENDS_HEADER = ("time_s", "line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
                "tension_N")
 LOG_HEADER = ("step", "time_s", "dt_s", "iterations", "cutbacks", "kinetic_J", "strain_J",
-              "gravity_J", "external_work_J", "damping_work_J", "total_J", "px", "py", "pz",
-              "Lx", "Ly", "Lz")
+              "gravity_J", "external_work_J", "damping_work_J", "hydro_work_J",
+              "seabed_work_J", "total_J", "px", "py", "pz", "Lx", "Ly", "Lz")
 
 # Datasets of a line group in dynamic.h5: shapes ('nf' frames, 'nn' nodes, 'ng' points).
 H5_LINE_DATASETS = {
@@ -51,13 +56,18 @@ H5_LINE_DATASETS = {
     "torque": ("nf", "ng"), "bending_curvature": ("nf", "ng"), "reactions": ("nf", 12),
     "end_tension": ("nf", 2),
 }
+# Datasets of the water physics (optional: absent in results of an older rodyn).
+H5_WATER_DATASETS = {"wall_tension": ("nf", "ng"), "seabed_normal": ("nf", "nn"),
+                     "seabed_friction": ("nf", "nn"), "touchdown_s": ("nf",)}
 # Datasets of /dynamic/log: (name in the file, shape) per StepLog field.
 H5_LOG_DATASETS = {
     "step": ("ns",), "time": ("ns",), "dt": ("ns",), "iterations": ("ns",),
     "cutbacks": ("ns",), "kinetic": ("ns",), "strain": ("ns",), "gravity": ("ns",),
     "external_work": ("ns",), "damping_work": ("ns",), "total": ("ns",),
     "momentum": ("ns", 3), "angular_momentum": ("ns", 3),
+    "hydro_work": ("ns",), "seabed_work": ("ns",),
 }
+_OPTIONAL_LOG = ("hydro_work", "seabed_work")
 _LOG_INTEGERS = ("step", "iterations", "cutbacks")
 # Keys of a dynamic run's status.txt and how to read them (docs/output.md).
 STATUS_KEYS = {
@@ -90,6 +100,10 @@ class LineDynamic:
     reactions: np.ndarray          # (nf, 12)   N, N m  Fx Fy Fz Mx My Mz at A, then at B
     end_tension: np.ndarray        # (nf, 2)    N    |support force| at A, B (0 if free)
     end_held: np.ndarray           # (2,)       bool end A, B has a support
+    wall_tension: np.ndarray = None     # (nf, ng)  N    wall (true) tension
+    seabed_normal: np.ndarray = None    # (nf, nn)  N/m  seabed normal force per length
+    seabed_friction: np.ndarray = None  # (nf, nn)  N/m  seabed friction force per length
+    touchdown_s: np.ndarray = None      # (nf,)     m    largest S on the seabed; -1: none
 
     def xyz(self, frame: int) -> np.ndarray:
         """Node positions (nn, 3) of one frame [m]."""
@@ -117,14 +131,21 @@ class StepLog:
     total: np.ndarray             # (ns,)    J        kinetic + strain + gravity
     momentum: np.ndarray          # (ns, 3)  kg m/s
     angular_momentum: np.ndarray  # (ns, 3)  kg m2/s
+    hydro_work: np.ndarray = None   # (ns,)  J   by the water since t = 0 (0 if not logged)
+    seabed_work: np.ndarray = None  # (ns,)  J   by the seabed since t = 0 (0 if not logged)
+
+    def __post_init__(self):
+        for key in _OPTIONAL_LOG:   # not given: 0 (a run without water)
+            if getattr(self, key) is None:
+                object.__setattr__(self, key, np.zeros(np.shape(self.time)))
 
     def __len__(self) -> int:
         return len(self.step)
 
     @property
     def net_work(self) -> np.ndarray:
-        """External work minus damping work since t = 0 [J]."""
-        return self.external_work - self.damping_work
+        """Work done on the lines since t = 0: external + hydro + seabed - damping [J]."""
+        return self.external_work + self.hydro_work + self.seabed_work - self.damping_work
 
     @property
     def initial_total(self) -> float:
@@ -145,10 +166,12 @@ class StepLog:
         return self.energy_change - self.net_work
 
     def relative_energy_error(self) -> float:
-        """max |energy_error| / max |external work| (nan without work or steps)."""
+        """max |energy_error| / the largest |work| done on the lines (external, hydro
+        or seabed; nan without work or steps)."""
         if len(self) == 0:
             return float("nan")
-        scale = float(np.max(np.abs(self.external_work)))
+        scale = float(max(np.max(np.abs(w)) for w in
+                          (self.external_work, self.hydro_work, self.seabed_work)))
         if scale == 0.0:
             return float("nan")
         return float(np.max(np.abs(self.energy_error))) / scale
@@ -176,6 +199,7 @@ class DynamicResults:
     folder: Path
     source: Path             # dynamic.h5 or dynamic_nodes.csv
     warnings: tuple = field(default=())  # what was dropped or looked odd
+    environment: object = field(default=None)  # environment.Environment; None: dry
 
     def line(self, name: str) -> LineDynamic:
         """The line called `name` (KeyError if there is none)."""
@@ -274,11 +298,20 @@ def _make_line(name, arrays, n_frames, where) -> LineDynamic:
                                 "integration points; need at least 2 and 1")
     values = {k: np.asarray(arrays[k], dtype=int if k in ("gp_element", "gp_point")
                             else float) for k in H5_LINE_DATASETS}
+    values.update(water_defaults(arrays, sizes["nn"]))
+    touchdown = arrays.get("touchdown_s")
+    values["touchdown_s"] = np.asarray(np.full(n_frames, -1.0) if touchdown is None
+                                       else touchdown, dtype=float)
+    _check_shapes(values, H5_WATER_DATASETS, sizes, where)
     return LineDynamic(name=name, end_held=np.asarray(arrays["end_held"], dtype=bool),
                        **values)
 
 
 def _make_log(arrays, where) -> StepLog:
+    arrays = dict(arrays)
+    for key in _OPTIONAL_LOG:   # not logged by an older rodyn: 0
+        if arrays.get(key) is None:
+            arrays[key] = np.zeros(np.shape(arrays["time"]))
     _check_shapes(arrays, H5_LOG_DATASETS, {}, where)
     return StepLog(**{k: np.asarray(arrays[k], dtype=int if k in _LOG_INTEGERS else float)
                       for k in H5_LOG_DATASETS})
@@ -307,7 +340,8 @@ def _read_h5(path: Path, status) -> DynamicResults:
         log_group = dyn.get("log")
         if not isinstance(log_group, h5py.Group):
             raise RodynResultsError(f"{path}: group /dynamic/log missing")
-        log = _make_log({k: _h5_dataset(log_group, k, path)[...] for k in H5_LOG_DATASETS},
+        log = _make_log({k: _h5_dataset(log_group, k, path)[...] for k in H5_LOG_DATASETS
+                         if k not in _OPTIONAL_LOG or k in log_group},
                         f"{path}: /dynamic/log")
         lines = []
         for key, group in dyn.items():
@@ -316,10 +350,15 @@ def _read_h5(path: Path, status) -> DynamicResults:
             if not isinstance(group, h5py.Group):
                 raise RodynResultsError(f"{path}: {group.name} is not a line group")
             arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
+            for k in H5_WATER_DATASETS:
+                if isinstance(group.get(k), h5py.Dataset):
+                    arrays[k] = group[k][...]
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
                                     f"{path}: {group.name}"))
+        from .environment import environment_of
+        environment = environment_of(f, path)
         deck = f["deck"].asstr()[()] if isinstance(f.get("deck"), h5py.Dataset) else ""
         finished = "steps" in dyn.attrs
         counters = {}
@@ -343,7 +382,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         wall_time_s=float(counters["wall_time_s"]), scheme=str(info["scheme"]),
         dt=float(info["dt"]), title=str(info["title"]), deck=str(deck),
         version=str(info["version"]), deck_file=str(info["deck_file"]),
-        folder=path.parent, source=path)
+        folder=path.parent, source=path, environment=environment)
 
 
 
@@ -361,17 +400,15 @@ def _read_status(path: Path) -> dict:
 
 
 
-def _read_rows(path: Path, header: tuple, warnings: list) -> list:
-    """Rows of a rodyn CSV table as lists of strings (header checked). A last row with
+def _read_rows(path: Path, header: tuple, warnings: list) -> tuple:
+    """(columns of the file, rows as lists of strings) of a rodyn CSV table: the file
+    must hold the columns of `header` (by name; results.check_header). A last row with
     the wrong number of fields (cut short by a kill) is dropped with a warning."""
     if not path.is_file():
         raise RodynResultsError(f"{path}: file missing")
     with open(path, newline="", encoding="utf-8") as f:
         reader = csv.reader(f)
-        first = next(reader, [])
-        if tuple(first) != header:
-            raise RodynResultsError(f"{path}: line 1: header is {','.join(first)!r}, "
-                                    f"expected {','.join(header)!r}")
+        header = check_header(path, next(reader, []), header)
         rows, bad = [], None
         for fields in reader:
             if not fields:
@@ -385,7 +422,7 @@ def _read_rows(path: Path, header: tuple, warnings: list) -> list:
             rows.append((reader.line_num, fields))
     if bad is not None:
         warnings.append(f"{path.name}: last row (line {bad[0]}) cut short, dropped")
-    return rows
+    return header, rows
 
 
 def _column(rows, index, column, kind, path):
@@ -418,18 +455,18 @@ def _frames(rows, header, path, integer_columns=()):
 
 def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
     """Dynamic results from the CSV tables of `folder` and its status.txt."""
+    from .environment import load_environment
     warnings = []
-    node_rows = _read_rows(folder / NODES_CSV, NODES_HEADER, warnings)
-    point_rows = _read_rows(folder / ELEMENTS_CSV, ELEMENTS_HEADER, warnings)
-    end_rows = _read_rows(folder / ENDS_CSV, ENDS_HEADER, warnings)
-    log_rows = _read_rows(folder / LOG_CSV, LOG_HEADER, warnings)
+    node_head, node_rows = _read_rows(folder / NODES_CSV, NODES_HEADER, warnings)
+    point_head, point_rows = _read_rows(folder / ELEMENTS_CSV, ELEMENTS_HEADER, warnings)
+    end_head, end_rows = _read_rows(folder / ENDS_CSV, ENDS_HEADER, warnings)
+    log_head, log_rows = _read_rows(folder / LOG_CSV, LOG_HEADER, warnings)
     for name, rows in ((NODES_CSV, node_rows), (ELEMENTS_CSV, point_rows)):
         if not rows:
             raise RodynResultsError(f"{folder / name}: no frames (header only)")
 
-    nodes = _frames(node_rows, NODES_HEADER, folder / NODES_CSV, ("node",))
-    points = _frames(point_rows, ELEMENTS_HEADER, folder / ELEMENTS_CSV,
-                     ("element", "point"))
+    nodes = _frames(node_rows, node_head, folder / NODES_CSV, ("node",))
+    points = _frames(point_rows, point_head, folder / ELEMENTS_CSV, ("element", "point"))
     # frames: those of the nodes table; the last one may be short in any table
     times = nodes[2]
     n_frames = len(times)
@@ -459,7 +496,8 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
         if name not in line_names:
             raise RodynResultsError(f"{folder / ELEMENTS_CSV}: line {name!r} is not in "
                                     f"{NODES_CSV}")
-    ends, complete_frames = _ends(end_rows, folder / ENDS_CSV, times, line_names)
+    ends, complete_frames = _ends(end_rows, end_head, folder / ENDS_CSV, times, line_names)
+    touchdown = _touchdown(folder / LINES_CSV, times, line_names, warnings)
     if complete_frames < n_frames:
         warnings.append(f"last frame (t = {times[-1]:g} s) incomplete in {ENDS_CSV}, "
                         "dropped")
@@ -492,10 +530,18 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
             "torque": block(points, psel, "torque_Nm", per_frame_points),
             "bending_curvature": block(points, psel, "curvature_per_m", per_frame_points),
         }
+        for key, table, sel, column, per_frame in (
+                ("wall_tension", points, psel, "wall_tension_N", per_frame_points),
+                ("seabed_normal", nodes, nsel, "seabed_normal_N_per_m", per_frame_nodes),
+                ("seabed_friction", nodes, nsel, "seabed_friction_N_per_m", per_frame_nodes)):
+            if column in table[0]:
+                arrays[key] = block(table, sel, column, per_frame)
+        if name in touchdown:
+            arrays["touchdown_s"] = touchdown[name][:n_frames]
         arrays.update(ends[name])
         lines.append(_make_line(name, arrays, n_frames, f"{folder}: line {name!r}"))
 
-    log = _make_log(_log_arrays(log_rows, folder / LOG_CSV), f"{folder / LOG_CSV}")
+    log = _make_log(_log_arrays(log_rows, log_head, folder / LOG_CSV), f"{folder / LOG_CSV}")
     dt = float(log.dt.max()) if len(log) else float("nan")
     return DynamicResults(
         time=times, lines=tuple(lines), log=log, complete=status["complete"],
@@ -504,10 +550,29 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
         time_reached_s=status["time_reached_s"], wall_time_s=status["wall_time_s"],
         scheme="", dt=dt, title="", deck="", version=status["rodyn_version"],
         deck_file=status["deck"], folder=folder, source=folder / NODES_CSV,
-        warnings=tuple(warnings))
+        warnings=tuple(warnings), environment=load_environment(folder))
 
 
-def _ends(rows, path, times, line_names):
+def _touchdown(path, times, line_names, warnings) -> dict:
+    """{line: touchdown S per frame (nf,)} from dynamic_lines.csv ({} when the file is
+    missing, as in the results of an older rodyn); frames without a row read -1."""
+    if not path.is_file():
+        return {}
+    header, rows = _read_rows(path, LINES_HEADER, warnings)
+    index = {t: i for i, t in enumerate(times)}
+    out = {name: np.full(len(times), -1.0) for name in line_names}
+    col_t, col_line, col_s = (header.index(c) for c in LINES_HEADER)
+    for number, fields in rows:
+        try:
+            t, s = float(fields[col_t]), float(fields[col_s])
+        except ValueError:
+            raise RodynResultsError(f"{path}: line {number}: not a number") from None
+        if t in index and fields[col_line] in out:
+            out[fields[col_line]][index[t]] = s
+    return out
+
+
+def _ends(rows, header, path, times, line_names):
     """reactions (nf, 12), end_tension (nf, 2), end_held (2,) of every line from the
     rows of dynamic_ends.csv (held ends only; free ends stay zero), and the number of
     frames that have all their rows (the last one may be cut short by a kill)."""
@@ -519,11 +584,11 @@ def _ends(rows, path, times, line_names):
     for number, fields in rows:
         where = f"{path}: line {number}"
         try:
-            t = float(fields[0])
+            t = float(fields[header.index("time_s")])
         except ValueError:
             raise RodynResultsError(f"{where}: column time_s: {fields[0]!r} is not "
                                     "a number") from None
-        name, end = fields[1], fields[2]
+        name, end = fields[header.index("line")], fields[header.index("end")]
         if name not in out:
             raise RodynResultsError(f"{where}: line {name!r} is not in {NODES_CSV}")
         if end not in ("A", "B"):
@@ -534,7 +599,8 @@ def _ends(rows, path, times, line_names):
                 continue  # rows of a dropped last frame
             raise RodynResultsError(f"{where}: time {t!r} is not a frame of {NODES_CSV}")
         values = []
-        for column, text in zip(ENDS_HEADER[3:], fields[3:]):
+        for column in ENDS_HEADER[3:]:
+            text = fields[header.index(column)]
             try:
                 values.append(float(text))
             except ValueError:
@@ -559,16 +625,18 @@ def _ends(rows, path, times, line_names):
     return out, complete_frames
 
 
-def _log_arrays(rows, path) -> dict:
-    """The step log columns under the StepLog names."""
+def _log_arrays(rows, header, path) -> dict:
+    """The step log columns under the StepLog names (hydro and seabed work None when the
+    log has no such columns)."""
     cols = {c: _column(rows, i, c, int if c in ("step", "iterations", "cutbacks") else float,
-                       path) for i, c in enumerate(LOG_HEADER)}
+                       path) for i, c in enumerate(header) if c in LOG_HEADER}
     return {
         "step": cols["step"], "time": cols["time_s"], "dt": cols["dt_s"],
         "iterations": cols["iterations"], "cutbacks": cols["cutbacks"],
         "kinetic": cols["kinetic_J"], "strain": cols["strain_J"],
         "gravity": cols["gravity_J"], "external_work": cols["external_work_J"],
         "damping_work": cols["damping_work_J"], "total": cols["total_J"],
+        "hydro_work": cols.get("hydro_work_J"), "seabed_work": cols.get("seabed_work_J"),
         "momentum": np.column_stack([cols["px"], cols["py"], cols["pz"]]).reshape(-1, 3),
         "angular_momentum": np.column_stack([cols["Lx"], cols["Ly"], cols["Lz"]]).reshape(-1, 3),
     }

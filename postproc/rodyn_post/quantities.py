@@ -45,12 +45,15 @@ class Quantity:
 
 QUANTITIES = {q.key: q for q in (
     Quantity("tension", "effective tension", units.FORCE, "gp", 1e-3, "kN", "N"),
+    Quantity("wall_tension", "wall tension", units.FORCE, "gp", 1e-3, "kN", "N"),
     Quantity("moment", "bending moment |M|", units.MOMENT, "gp", 1e-3, "kN m", "Nm"),
     Quantity("curvature", "bending curvature", units.CURVATURE, "gp", 1.0, "1/m", "per_m"),
     Quantity("torque", "torque M3", units.MOMENT, "gp", 1e-3, "kN m", "Nm"),
     Quantity("x", "x", units.LENGTH, "node", 1.0, "m", "m"),
     Quantity("y", "y", units.LENGTH, "node", 1.0, "m", "m"),
     Quantity("z", "z", units.LENGTH, "node", 1.0, "m", "m"),
+    Quantity("seabed_normal", "seabed normal force", units.FORCE_PER_LENGTH, "node", 1e-3,
+             "kN/m", "N_per_m"),
     Quantity("end_tension", "support tension |F|", units.FORCE, "end", 1e-3, "kN", "N"),
 )}
 RANGE_QUANTITIES = ("tension", "moment", "curvature")   # the riser range graph
@@ -69,12 +72,16 @@ def point_values(line, key: str):
     q = quantity(key)
     static = isinstance(line, LineStatic)
     if q.where == "node":
+        if key == "seabed_normal":
+            return line.node_s, line.seabed_normal
         axis = "xyz".index(key)
         return line.node_s, line.node_xyz[:, axis] if static else getattr(line, key)
     if q.where != "gp":
         raise InputError(f"{key} is only defined at a held end (--at A, B, top or bottom)")
     if key == "tension":
         values = line.effective_tension
+    elif key == "wall_tension":
+        values = line.wall_tension
     elif key == "torque":
         values = line.torque
     elif key == "moment":
@@ -173,13 +180,17 @@ def history(line, key: str, where: Location) -> np.ndarray:
     return at_s(points, values, where.s)
 
 
-def range_stats(line, key: str, mask: np.ndarray) -> tuple:
+def range_stats(line, key: str, mask: np.ndarray, at=None) -> tuple:
     """(S of the points, {'min', 'mean', 'max': array}) of quantity `key` over the
     frames selected by `mask`, at the integration points (or nodes) themselves: no
-    interpolation. The mean is the plain mean over those frames."""
+    interpolation; or, with `at` (arc lengths S), at those S, each frame's values
+    interpolated first (at_s's rule). The mean is the plain mean over those frames."""
     if not np.any(mask):
         raise InputError("no output frame in the time window")
     points, values = point_values(line, key)
+    if at is not None:
+        values = values @ resample_matrix(points, at).T
+        points = np.asarray(at, float)
     part = values[mask]
     return points, {"min": part.min(axis=0), "mean": part.mean(axis=0),
                     "max": part.max(axis=0)}

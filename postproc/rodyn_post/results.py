@@ -2,10 +2,15 @@
 
 The file layout is described in docs/output.md. `load_static(path)` takes a results
 folder (or the path of a results.h5) and returns a `StaticResults`: run information
-plus one `LineStatic` per line, in deck order. results.h5 is read with h5py when it is
-there; otherwise the CSV tables (static_nodes.csv, static_elements.csv,
-static_reactions.csv) and status.txt are read. Both give the same arrays: the CSV
-fields carry 17 significant digits, so every binary64 value comes back exactly.
+plus one `LineStatic` per line, in deck order, and the environment (None for a dry
+deck). results.h5 is read with h5py when it is there; otherwise the CSV tables
+(static_nodes.csv, static_elements.csv, static_reactions.csv, static_lines.csv,
+environment.csv) and status.txt are read. Both give the same arrays: the CSV fields
+carry 17 significant digits, so every binary64 value comes back exactly.
+
+CSV columns are found by name, so extra columns are ignored. Results written before
+rodyn had water (no wall_tension, seabed_*, touchdown) still read: wall tension =
+effective tension, seabed forces 0, touchdown -1 (none).
 
 Every problem with the files (missing folder, file, dataset or attribute, wrong
 shape, bad CSV header, a field that is not a number) raises `RodynResultsError`,
@@ -14,7 +19,7 @@ whose message names the file and, for CSV, the line number.
 from __future__ import annotations
 
 import csv
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -24,12 +29,19 @@ STATUS_FILE = "status.txt"
 NODES_CSV = "static_nodes.csv"
 ELEMENTS_CSV = "static_elements.csv"
 REACTIONS_CSV = "static_reactions.csv"
+LINES_CSV = "static_lines.csv"
 
-NODES_HEADER = ("line", "node", "s_m", "x_m", "y_m", "z_m")
+NODES_HEADER = ("line", "node", "s_m", "x_m", "y_m", "z_m", "seabed_normal_N_per_m",
+                "seabed_friction_N_per_m")
 ELEMENTS_HEADER = (
-    "line", "element", "point", "s_m", "effective_tension_N", "shear_1_N", "shear_2_N",
-    "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_1_per_m", "curvature_2_per_m",
-    "twist_per_m", "curvature_per_m")
+    "line", "element", "point", "s_m", "effective_tension_N", "wall_tension_N", "shear_1_N",
+    "shear_2_N", "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_1_per_m",
+    "curvature_2_per_m", "twist_per_m", "curvature_per_m")
+LINES_HEADER = ("line", "length_m", "touchdown_s_m")
+# columns an older rodyn did not write (read as: wall = effective, seabed forces and
+# hydro and seabed work 0); static and dynamic tables
+OPTIONAL_COLUMNS = ("wall_tension_N", "seabed_normal_N_per_m", "seabed_friction_N_per_m",
+                    "hydro_work_J", "seabed_work_J")
 REACTIONS_HEADER = ("line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
                     "tension_N")
 
@@ -39,6 +51,9 @@ H5_LINE_DATASETS = {
     "effective_tension": ("ng",), "shear": ("ng", 2), "moment": ("ng", 2),
     "torque": ("ng",), "curvature": ("ng", 3), "reactions": (2, 6),
 }
+# Datasets of the water physics (optional: absent in results of an older rodyn).
+H5_WATER_DATASETS = {"wall_tension": ("ng",), "seabed_normal": ("nn",),
+                     "seabed_friction": ("nn",)}
 # Keys of status.txt and how to read them.
 STATUS_KEYS = {
     "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
@@ -46,6 +61,7 @@ STATUS_KEYS = {
     "rodyn_version": "str", "deck": "str",
 }
 _INTEGER_COLUMNS = {"node", "element", "point"}
+_TEXT_COLUMNS = {"line", "end", "key", "unit"}
 
 
 class RodynResultsError(Exception):
@@ -69,6 +85,10 @@ class LineStatic:
     curvature: np.ndarray          # (ng, 3)  1/m  K1, K2 (bending), K3 (twist)
     reactions: np.ndarray          # (2, 6)   N, N m  rows end A, B; Fx Fy Fz Mx My Mz
     end_held: np.ndarray           # (2,)     bool  end A, B has a support
+    wall_tension: np.ndarray = None     # (ng,)  N    wall (true) tension
+    seabed_normal: np.ndarray = None    # (nn,)  N/m  seabed normal force per length
+    seabed_friction: np.ndarray = None  # (nn,)  N/m  seabed friction force per length
+    touchdown_s: float = -1.0           # m  largest S in contact with the seabed; -1: none
 
     @property
     def moment_magnitude(self) -> np.ndarray:
@@ -92,6 +112,7 @@ class StaticResults:
     deck_file: str          # main deck, as given to rodyn
     folder: Path            # results folder
     source: Path            # file the line data came from (results.h5 or static_nodes.csv)
+    environment: object = field(default=None)  # environment.Environment; None: dry
 
     def line(self, name: str) -> LineStatic:
         """The line called `name` (KeyError if there is none)."""
@@ -150,8 +171,27 @@ def _make_line(name, arrays, where) -> LineStatic:
     if sizes["nn"] < 2 or sizes["ng"] < 1:
         raise RodynResultsError(f"{where}: {sizes['nn']} nodes and {sizes['ng']} "
                                 "integration points; need at least 2 and 1")
+    water = water_defaults(arrays, sizes["nn"])
+    for key, shape in H5_WATER_DATASETS.items():
+        want = tuple(sizes[d] for d in shape)
+        if water[key].shape != want:
+            raise RodynResultsError(f"{where}: {key} has shape {water[key].shape}, "
+                                    f"expected {want}")
     return LineStatic(name=name, end_held=np.asarray(arrays["end_held"], dtype=bool),
+                      touchdown_s=float(arrays.get("touchdown_s", -1.0)), **water,
                       **{k: np.asarray(arrays[k], dtype=float) for k in H5_LINE_DATASETS})
+
+
+def water_defaults(arrays, nn) -> dict:
+    """wall_tension, seabed_normal, seabed_friction of `arrays` as float arrays, with the
+    dry values where missing (None): the effective tension, zeros at the nn nodes."""
+    def given(key, default):
+        value = arrays.get(key)
+        return np.asarray(default if value is None else value, dtype=float)
+    zeros = np.zeros(np.shape(arrays["effective_tension"])[:-1] + (nn,))
+    return {"wall_tension": given("wall_tension", arrays["effective_tension"]),
+            "seabed_normal": given("seabed_normal", zeros),
+            "seabed_friction": given("seabed_friction", zeros)}
 
 
 # --- HDF5 ---------------------------------------------------------------------------
@@ -177,10 +217,17 @@ def _read_h5(path: Path) -> StaticResults:
             if not isinstance(group, h5py.Group):
                 raise RodynResultsError(f"{path}: {group.name} is not a line group")
             arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
+            for k in H5_WATER_DATASETS:
+                if isinstance(group.get(k), h5py.Dataset):
+                    arrays[k] = group[k][...]
+            if "touchdown_s" in group.attrs:
+                arrays["touchdown_s"] = _h5_attr(group, "touchdown_s", path)
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays,
                                     f"{path}: {group.name}"))
+        from .environment import environment_of
+        environment = environment_of(f, path)
     if not lines:
         raise RodynResultsError(f"{path}: no lines in /static")
     return StaticResults(
@@ -189,7 +236,7 @@ def _read_h5(path: Path) -> StaticResults:
         iterations=int(counters["iterations"]), cutbacks=int(counters["cutbacks"]),
         wall_time_s=float(counters["wall_time_s"]), title=str(info["title"]),
         version=str(info["version"]), deck_file=str(info["deck_file"]),
-        folder=path.parent, source=path)
+        folder=path.parent, source=path, environment=environment)
 
 
 def _h5_attr(obj, key, path):
@@ -250,9 +297,14 @@ def _read_key_values(path: Path) -> dict:
 
 def _read_csv_folder(folder: Path, status: dict) -> StaticResults:
     """Static results from the CSV tables of `folder` and its status.txt."""
+    from .environment import load_environment
     nodes = _read_table(folder / NODES_CSV, NODES_HEADER)
     points = _read_table(folder / ELEMENTS_CSV, ELEMENTS_HEADER)
     supports = _read_table(folder / REACTIONS_CSV, REACTIONS_HEADER)
+    touchdown = {}
+    if (folder / LINES_CSV).is_file():
+        touchdown = {name: rows[0]["touchdown_s_m"]
+                     for name, rows in _read_table(folder / LINES_CSV, LINES_HEADER).items()}
     for file, table in ((ELEMENTS_CSV, points), (REACTIONS_CSV, supports)):
         for name in table:
             if name not in nodes:
@@ -264,16 +316,17 @@ def _read_csv_folder(folder: Path, status: dict) -> StaticResults:
         if name not in points:
             raise RodynResultsError(f"{folder / ELEMENTS_CSV}: no rows for line {name!r}")
         lines.append(_csv_line(name, node_rows, points[name], supports.get(name, []),
-                               f"{folder}: line {name!r}"))
+                               f"{folder}: line {name!r}", touchdown.get(name, -1.0)))
     return StaticResults(
         lines=tuple(lines), complete=status["complete"], status=status["status"],
         load_factor=status["load_factor"], increments=status["increments"],
         iterations=status["iterations"], cutbacks=status["cutbacks"],
         wall_time_s=status["wall_time_s"], title="", version=status["rodyn_version"],
-        deck_file=status["deck"], folder=folder, source=folder / NODES_CSV)
+        deck_file=status["deck"], folder=folder, source=folder / NODES_CSV,
+        environment=load_environment(folder))
 
 
-def _csv_line(name, node_rows, point_rows, support_rows, where) -> LineStatic:
+def _csv_line(name, node_rows, point_rows, support_rows, where, touchdown=-1.0) -> LineStatic:
     """LineStatic from the CSV rows of one line (rows are dicts column -> value)."""
     def columns(rows, *names):
         return np.array([[row[c] for c in names] for row in rows], dtype=float)
@@ -294,23 +347,37 @@ def _csv_line(name, node_rows, point_rows, support_rows, where) -> LineStatic:
         "torque": columns(point_rows, "torque_Nm")[:, 0],
         "curvature": columns(point_rows, "curvature_1_per_m", "curvature_2_per_m",
                              "twist_per_m"),
-        "reactions": reactions, "end_held": end_held,
+        "reactions": reactions, "end_held": end_held, "touchdown_s": touchdown,
     }
+    for key, rows, column in (("wall_tension", point_rows, "wall_tension_N"),
+                              ("seabed_normal", node_rows, "seabed_normal_N_per_m"),
+                              ("seabed_friction", node_rows, "seabed_friction_N_per_m")):
+        if column in rows[0]:
+            arrays[key] = columns(rows, column)[:, 0]
     return _make_line(name, arrays, where)
+
+
+def check_header(path: Path, first: list, header: tuple) -> tuple:
+    """The columns of a CSV file whose first row is `first`, after checking that it
+    holds every column of `header` but OPTIONAL_COLUMNS (found by name: their order
+    and extra columns do not matter)."""
+    missing = [c for c in header if c not in first and c not in OPTIONAL_COLUMNS]
+    if missing or len(set(first)) != len(first):
+        raise RodynResultsError(f"{path}: line 1: header is {','.join(first)!r}, "
+                                f"expected {','.join(header)!r}")
+    return tuple(first)
 
 
 def _read_table(path: Path, header: tuple) -> dict:
     """Rows of a rodyn CSV table grouped by line name, lines in order of first
-    appearance: {name: [row, ...]}, each row a dict column -> converted value."""
+    appearance: {name: [row, ...]}, each row a dict column -> converted value.
+    Columns are found by name (check_header)."""
     if not path.is_file():
         raise RodynResultsError(f"{path}: file missing")
     table = {}
     with open(path, newline="", encoding="utf-8") as f:
         reader = csv.reader(f)
-        first = next(reader, [])
-        if tuple(first) != header:
-            raise RodynResultsError(f"{path}: line 1: header is {','.join(first)!r}, "
-                                    f"expected {','.join(header)!r}")
+        header = check_header(path, next(reader, []), header)
         for fields in reader:
             if not fields:
                 continue  # blank line
@@ -324,7 +391,7 @@ def _read_table(path: Path, header: tuple) -> dict:
 
 def _field(text: str, column: str, where: str):
     """Value of one CSV field: str for `line`, 'A'/'B' for `end`, int or float else."""
-    if column == "line":
+    if column in _TEXT_COLUMNS and column != "end":
         return text
     if column == "end":
         if text in ("A", "B"):

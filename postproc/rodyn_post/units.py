@@ -14,7 +14,9 @@ import re
 # dimension of each quantity kind, as used by rodyn_post.quantities
 TIME, LENGTH, FORCE, MOMENT, CURVATURE, NONE = (
     "time", "length", "force", "moment", "curvature", "dimensionless")
-SI_UNIT = {TIME: "s", LENGTH: "m", FORCE: "N", MOMENT: "N m", CURVATURE: "1/m", NONE: "-"}
+FORCE_PER_LENGTH = "force per length"
+SI_UNIT = {TIME: "s", LENGTH: "m", FORCE: "N", MOMENT: "N m", CURVATURE: "1/m", NONE: "-",
+           FORCE_PER_LENGTH: "N/m"}
 
 _FT, _IN, _LBF = 0.3048, 0.0254, 4.4482216152605
 # unit (separators removed, see _normalise) -> (dimension, factor to SI)
@@ -33,6 +35,8 @@ UNITS = {
     "per_m": (CURVATURE, 1.0), "1/km": (CURVATURE, 1e-3), "1/mm": (CURVATURE, 1e3),
     "1/ft": (CURVATURE, 1.0 / _FT), "rad/ft": (CURVATURE, 1.0 / _FT),
     "deg/m": (CURVATURE, math.pi / 180.0),
+    "N/m": (FORCE_PER_LENGTH, 1.0), "kN/m": (FORCE_PER_LENGTH, 1e3),
+    "N_per_m": (FORCE_PER_LENGTH, 1.0), "kN_per_m": (FORCE_PER_LENGTH, 1e3),
     "-": (NONE, 1.0),
 }
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(\[(?P<b>[^\[\]]*)\]|\((?P<p>[^()]*)\))\s*$")
@@ -62,7 +66,8 @@ def known_units() -> str:
     """The units of UNITS grouped by dimension, for messages and --help."""
     groups = {}
     for key, (dimension, _) in UNITS.items():
-        if key not in ("KN", "kn", "KNm", "sec", "kips", "ftlbf", "ftkip", "/m", "per_m"):
+        if key not in ("KN", "kn", "KNm", "sec", "kips", "ftlbf", "ftkip", "/m", "per_m",
+                       "N_per_m", "kN_per_m"):
             groups.setdefault(dimension, []).append(key)
     return "; ".join(f"{d}: {' '.join(keys)}" for d, keys in groups.items())
 
@@ -79,8 +84,9 @@ def split_header(text: str) -> tuple:
     if match:
         unit = match.group("b") if match.group("b") is not None else match.group("p")
         return (match.group("name").strip() or text), unit.strip()
-    if text.endswith("_per_m") and len(text) > len("_per_m"):
-        return text[: -len("_per_m")], "per_m"
+    for unit in ("kN_per_m", "N_per_m", "per_m"):   # rodyn's seabed_normal_N_per_m
+        if text.endswith("_" + unit) and len(text) > len(unit) + 1:
+            return text[: -len(unit) - 1], unit
     name, sep, suffix = text.rpartition("_")
     if sep and name and _normalise(suffix) in UNITS:
         return name, suffix

@@ -26,8 +26,8 @@ sys.path.insert(0, str(POSTPROC))
 from test_plot_static import rodyn_exe  # noqa: E402
 import plot_dynamic  # noqa: E402
 from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
-from rodyn_post.dynamic import (ELEMENTS_HEADER, ENDS_HEADER, LOG_HEADER,  # noqa: E402
-                                NODES_HEADER)
+from rodyn_post.dynamic import (ELEMENTS_HEADER, ENDS_HEADER, LINES_HEADER,  # noqa: E402
+                                LOG_HEADER, NODES_HEADER)
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 PNGS = ("dynamic_snapshots.png", "dynamic_tension.png", "dynamic_energy.png",
@@ -144,17 +144,24 @@ def write_csv(folder, lines, log, times=TIMES):
 
     tables = {"dynamic_nodes.csv": [NODES_HEADER], "dynamic_elements.csv": [ELEMENTS_HEADER],
               "dynamic_ends.csv": [ENDS_HEADER], "dynamic_log.csv": [LOG_HEADER]}
+    if any("touchdown_s" in a for a in lines.values()):
+        tables["dynamic_lines.csv"] = [LINES_HEADER]
     for i, t in enumerate(times):
         for name, a in lines.items():
+            normal = a.get("seabed_normal", np.zeros_like(a["x"]))
+            friction = a.get("seabed_friction", np.zeros_like(a["x"]))
             for k in range(len(a["node_s"])):
                 tables["dynamic_nodes.csv"].append(
                     [real(t), name, k + 1] + [real(v) for v in (
-                        a["node_s"][k], a["x"][i, k], a["y"][i, k], a["z"][i, k])])
+                        a["node_s"][k], a["x"][i, k], a["y"][i, k], a["z"][i, k],
+                        normal[i, k], friction[i, k])])
         for name, a in lines.items():
+            wall = a.get("wall_tension", a["effective_tension"])
             for k in range(len(a["gp_s"])):
                 tables["dynamic_elements.csv"].append(
                     [real(t), name, a["gp_element"][k], a["gp_point"][k]] + [real(v) for v in (
-                        a["gp_s"][k], a["effective_tension"][i, k], a["moment_1"][i, k],
+                        a["gp_s"][k], a["effective_tension"][i, k], wall[i, k],
+                        a["moment_1"][i, k],
                         a["moment_2"][i, k], a["torque"][i, k], a["bending_curvature"][i, k])])
         for name, a in lines.items():
             for k, end in enumerate("AB"):
@@ -163,11 +170,17 @@ def write_csv(folder, lines, log, times=TIMES):
                     tables["dynamic_ends.csv"].append(
                         [real(t), name, end] + [real(v) for v in r]
                         + [real(a["end_tension"][i, k])])
+        if "dynamic_lines.csv" in tables:
+            for name, a in lines.items():
+                tables["dynamic_lines.csv"].append(
+                    [real(t), name, real(a.get("touchdown_s", np.full(len(times), -1.0))[i])])
     for s in range(len(log["step"])):
         tables["dynamic_log.csv"].append(
             [log["step"][s], real(log["time"][s]), real(log["dt"][s]), log["iterations"][s],
              log["cutbacks"][s]] + [real(log[k][s]) for k in (
-                 "kinetic", "strain", "gravity", "external_work", "damping_work", "total")]
+                 "kinetic", "strain", "gravity", "external_work", "damping_work")]
+            + [real(log.get(k, np.zeros(len(log["step"])))[s])
+               for k in ("hydro_work", "seabed_work")] + [real(log["total"][s])]
             + [real(v) for v in log["momentum"][s]]
             + [real(v) for v in log["angular_momentum"][s]])
     for file, rows in tables.items():

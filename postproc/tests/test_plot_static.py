@@ -25,7 +25,8 @@ sys.path.insert(0, str(POSTPROC))
 
 import plot_static  # noqa: E402
 from rodyn_post import RodynResultsError, load_static  # noqa: E402
-from rodyn_post.results import ELEMENTS_HEADER, NODES_HEADER, REACTIONS_HEADER  # noqa: E402
+from rodyn_post.results import (ELEMENTS_HEADER, LINES_HEADER, NODES_HEADER,  # noqa: E402
+                                REACTIONS_HEADER)
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 TITLE = "Synthetic: two lines"
@@ -97,12 +98,18 @@ def write_csv(folder, lines):
 
     tables = {"static_nodes.csv": [NODES_HEADER], "static_elements.csv": [ELEMENTS_HEADER],
               "static_reactions.csv": [REACTIONS_HEADER]}
+    if any("touchdown_s" in a for a in lines.values()):
+        tables["static_lines.csv"] = [LINES_HEADER]
     for name, a in lines.items():
+        normal = a.get("seabed_normal", np.zeros(len(a["node_s"])))
+        friction = a.get("seabed_friction", np.zeros(len(a["node_s"])))
+        wall = a.get("wall_tension", a["effective_tension"])
         for i, (s, xyz) in enumerate(zip(a["node_s"], a["node_xyz"])):
-            tables["static_nodes.csv"].append([name, i + 1, real(s)] + [real(v) for v in xyz])
+            tables["static_nodes.csv"].append([name, i + 1, real(s)] + [real(v) for v in xyz]
+                                              + [real(normal[i]), real(friction[i])])
         for i in range(len(a["gp_s"])):
             k = a["curvature"][i]
-            values = [a["gp_s"][i], a["effective_tension"][i], *a["shear"][i],
+            values = [a["gp_s"][i], a["effective_tension"][i], wall[i], *a["shear"][i],
                       *a["moment"][i], a["torque"][i], *k, np.hypot(k[0], k[1])]
             tables["static_elements.csv"].append([name, i + 1, 1] + [real(v) for v in values])
         for end, held in zip("AB", a["end_held"]):
@@ -110,6 +117,9 @@ def write_csv(folder, lines):
                 r = a["reactions"]["AB".index(end)]
                 tables["static_reactions.csv"].append(
                     [name, end] + [real(v) for v in r] + [real(np.linalg.norm(r[:3]))])
+        if "static_lines.csv" in tables:
+            tables["static_lines.csv"].append(
+                [name, real(a["node_s"][-1]), real(a.get("touchdown_s", -1.0))])
     for file, rows in tables.items():
         with open(folder / file, "w", newline="") as f:
             csv.writer(f, lineterminator="\n").writerows(rows)

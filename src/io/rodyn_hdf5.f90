@@ -79,9 +79,10 @@ module rodyn_hdf5
       module procedure append_real, append_real_2d, append_int
    end interface hdf5_append_steps
 
-   !> Write a dataset: real 1-D or 2-D, integer 1-D, or a string (scalar).
+   !> Write a dataset: real scalar, 1-D or 2-D, integer 1-D, or a string (scalar).
    interface hdf5_write_dataset
-      module procedure write_real_1d, write_real_2d, write_int_1d, write_string
+      module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, &
+         write_string
    end interface hdf5_write_dataset
 
    !> Write (or replace) an attribute: string, real or integer scalar, real or integer 1-D.
@@ -92,7 +93,7 @@ module rodyn_hdf5
 
    !> Read a whole dataset into an allocatable of the matching rank.
    interface hdf5_read_dataset
-      module procedure read_real_1d, read_real_2d, read_int_1d, read_string
+      module procedure read_real_0d, read_real_1d, read_real_2d, read_int_1d, read_string
    end interface hdf5_read_dataset
 
    !> Read an attribute.
@@ -308,6 +309,27 @@ contains
    end subroutine hdf5_exists
 
    ! ------------------------------------------------------------------ dataset writers
+
+   !> Write a real scalar dataset (h5py: shape ()).
+   subroutine write_real_0d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file !< open file
+      character(len=*), intent(in) :: path  !< absolute dataset path
+      real(wp), intent(in) :: x             !< value
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: where = 'hdf5_write_real_0d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(0)
+      real(wp) :: buf(1)
+      integer :: stat
+      if (has_error(err)) return
+      buf(1) = x
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      if (.not. has_error(err)) then
+         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, buf, [1_hsize_t], stat)
+         call check(stat, 'write dataset', where, file, path, err)
+      end if
+      call release(dset)
+   end subroutine write_real_0d
 
    !> Write a real 1-D dataset.
    subroutine write_real_1d(file, path, x, err)
@@ -789,6 +811,27 @@ contains
    end subroutine attr_write_int_1d
 
    ! ------------------------------------------------------------------ dataset readers
+
+   !> Read a real scalar (or single-element) dataset.
+   subroutine read_real_0d(file, path, x, err)
+      type(hdf5_file_t), intent(in) :: file      !< open file
+      character(len=*), intent(in) :: path       !< absolute dataset path
+      real(wp), intent(out) :: x                 !< value (0 on failure)
+      type(error_t), intent(inout) :: err        !< status
+      character(len=*), parameter :: where = 'hdf5_read_real_0d'
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(0)
+      real(wp) :: buf(1)
+      integer :: stat
+      x = 0.0_wp
+      if (has_error(err)) return
+      call open_dataset(file, path, 0, dset, dims, where, err)
+      if (.not. has_error(err)) then
+         call h5dread_f(dset, H5T_NATIVE_DOUBLE, buf, [1_hsize_t], stat)
+         if (.not. failed(stat, 'read dataset', where, file, path, err)) x = buf(1)
+      end if
+      call release(dset)
+   end subroutine read_real_0d
 
    !> Read a real 1-D dataset.
    subroutine read_real_1d(file, path, x, err)

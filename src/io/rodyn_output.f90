@@ -13,14 +13,18 @@ module rodyn_output
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
-                                  csv_name
+                                  csv_name, env_item_t, environment_items, &
+                                  write_environment_h5, wall_tension_of, seabed_force_of, &
+                                  water_fields_fit, touchdown_of
    implicit none
    private
-   public :: output_write_static, output_write_status
+   public :: output_write_static, output_write_status, output_write_environment
 
    character(len=*), parameter :: nodes_csv = 'static_nodes.csv'
    character(len=*), parameter :: elements_csv = 'static_elements.csv'
    character(len=*), parameter :: reactions_csv = 'static_reactions.csv'
+   character(len=*), parameter :: lines_csv = 'static_lines.csv'
+   character(len=*), parameter :: environment_csv = 'environment.csv'
    character(len=*), parameter :: results_h5 = 'results.h5'
    character(len=*), parameter :: status_txt = 'status.txt'
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
@@ -86,6 +90,8 @@ contains
          call write_nodes_csv(dir, lines, e)
          call write_elements_csv(dir, lines, e)
          call write_reactions_csv(dir, lines, e)
+         call write_lines_csv(dir, lines, e)
+         call output_write_environment(dir, model, e)
       end if
       if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
       call output_write_status(dir, summary, e_status, deck_file=text_of(model%deck_file))
@@ -138,13 +144,45 @@ contains
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine output_write_status
 
+   !> Write environment.csv into folder `dir` (key, value, unit rows of the sea, current
+   !> and seabed; docs/output.md) when the model has water; for a dry model remove an
+   !> environment.csv an earlier run left there, so that plots never draw a stale sea.
+   !> Written as the static tables are (temporary file, then rename).
+   subroutine output_write_environment(dir, model, err)
+      character(len=*), intent(in) :: dir         !< output folder (exists)
+      type(model_t), intent(in) :: model          !< model (water, seabed)
+      type(error_t), intent(inout) :: err         !< status
+      type(env_item_t), allocatable :: items(:)
+      integer :: u, ios, k
+      integer(c_int) :: r
+      character(len=512) :: msg
+      if (has_error(err)) return
+      if (.not. model%water%present) then
+         r = c_remove(path_join(dir, environment_csv)//c_null_char)
+         return
+      end if
+      items = environment_items(model)
+      call open_temp(dir, environment_csv, u, err)
+      if (has_error(err)) return
+      ios = 0
+      msg = ''
+      call put_line(u, 'key,value,unit', ios, msg)
+      do k = 1, size(items)
+         call put_line(u, items(k)%key//','//real_str(items(k)%value)//','// &
+            items(k)%unit, ios, msg)
+      end do
+      call commit_temp(dir, environment_csv, u, ios, msg, err)
+   end subroutine output_write_environment
+
    ! ------------------------------------------------------------------ CSV tables
 
-   !> static_nodes.csv: one row per node, numbered from 1 along each line.
+   !> static_nodes.csv: one row per node, numbered from 1 along each line, with the
+   !> seabed contact force per length.
    subroutine write_nodes_csv(dir, lines, err)
       character(len=*), intent(in) :: dir         !< output folder
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
+      real(wp), allocatable :: fn(:), ff(:)
       integer :: u, ios, i, k
       character(len=512) :: msg
       if (has_error(err)) return
@@ -152,11 +190,15 @@ contains
       if (has_error(err)) return
       ios = 0
       msg = ''
-      call put_line(u, 'line,node,s_m,x_m,y_m,z_m', ios, msg)
+      call put_line(u, 'line,node,s_m,x_m,y_m,z_m,seabed_normal_N_per_m,'// &
+         'seabed_friction_N_per_m', ios, msg)
       do i = 1, size(lines)
+         fn = seabed_force_of(lines(i), 1)
+         ff = seabed_force_of(lines(i), 2)
          do k = 1, size(lines(i)%node_s)
             call put_line(u, csv_name(lines(i)%name)//','//int_str(k)//','// &
-               reals_str([lines(i)%node_s(k), lines(i)%node_x(:, k)]), ios, msg)
+               reals_str([lines(i)%node_s(k), lines(i)%node_x(:, k), fn(k), ff(k)]), &
+               ios, msg)
          end do
       end do
       call commit_temp(dir, nodes_csv, u, ios, msg, err)
@@ -167,6 +209,7 @@ contains
       character(len=*), intent(in) :: dir         !< output folder
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
+      real(wp), allocatable :: tw(:)
       integer :: u, ios, i, k
       character(len=512) :: msg
       if (has_error(err)) return
@@ -174,14 +217,15 @@ contains
       if (has_error(err)) return
       ios = 0
       msg = ''
-      call put_line(u, 'line,element,point,s_m,effective_tension_N,shear_1_N,shear_2_N,'// &
-         'moment_1_Nm,moment_2_Nm,torque_Nm,curvature_1_per_m,curvature_2_per_m,'// &
-         'twist_per_m,curvature_per_m', ios, msg)
+      call put_line(u, 'line,element,point,s_m,effective_tension_N,wall_tension_N,'// &
+         'shear_1_N,shear_2_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_1_per_m,'// &
+         'curvature_2_per_m,twist_per_m,curvature_per_m', ios, msg)
       do i = 1, size(lines)
          associate (r => lines(i))
+            tw = wall_tension_of(r)
             do k = 1, size(r%gp_s)
                call put_line(u, csv_name(r%name)//','//int_str(r%gp_element(k))//','// &
-                  int_str(r%gp_point(k))//','//reals_str([r%gp_s(k), r%tension(k), &
+                  int_str(r%gp_point(k))//','//reals_str([r%gp_s(k), r%tension(k), tw(k), &
                   r%shear(:, k), r%moment(:, k), r%torque(k), r%curvature(:, k), &
                   hypot(r%curvature(1, k), r%curvature(2, k))]), ios, msg)
             end do
@@ -215,6 +259,29 @@ contains
       call commit_temp(dir, reactions_csv, u, ios, msg, err)
    end subroutine write_reactions_csv
 
+   !> static_lines.csv: one row per line: unstretched length and touchdown point
+   !> (largest arc length in contact with the seabed; -1 when none touches).
+   subroutine write_lines_csv(dir, lines, err)
+      character(len=*), intent(in) :: dir         !< output folder
+      type(line_result_t), intent(in) :: lines(:) !< results
+      type(error_t), intent(inout) :: err         !< status
+      integer :: u, ios, i
+      character(len=512) :: msg
+      if (has_error(err)) return
+      call open_temp(dir, lines_csv, u, err)
+      if (has_error(err)) return
+      ios = 0
+      msg = ''
+      call put_line(u, 'line,length_m,touchdown_s_m', ios, msg)
+      do i = 1, size(lines)
+         associate (r => lines(i))
+            call put_line(u, csv_name(r%name)//','//reals_str([r%node_s(size(r%node_s)), &
+               touchdown_of(r)]), ios, msg)
+         end associate
+      end do
+      call commit_temp(dir, lines_csv, u, ios, msg, err)
+   end subroutine write_lines_csv
+
    ! ------------------------------------------------------------------ HDF5
 
    !> results.h5: root attributes, /deck, /static and one group per line.
@@ -246,6 +313,7 @@ contains
       call hdf5_write_attribute(h5, '/static', 'iterations', summary%iterations, err)
       call hdf5_write_attribute(h5, '/static', 'cutbacks', summary%cutbacks, err)
       call hdf5_write_attribute(h5, '/static', 'wall_time_s', summary%wall_time, err)
+      call write_environment_h5(h5, model, err)
       do i = 1, size(lines)
          call write_h5_line(h5, '/static/'//group_name(lines(i)%name, i), lines(i), err)
       end do
@@ -280,9 +348,13 @@ contains
       call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
       call describe(h5, g//'/gp_s', 'm', &
          'unstretched arc length of the integration points', err)
+      call hdf5_write_attribute(h5, g, 'touchdown_s', touchdown_of(r), err)
       call hdf5_write_dataset(h5, g//'/effective_tension', r%tension, err)
       call describe(h5, g//'/effective_tension', 'N', &
          'effective tension N3 along d3, positive in tension', err)
+      call hdf5_write_dataset(h5, g//'/wall_tension', wall_tension_of(r), err)
+      call describe(h5, g//'/wall_tension', 'N', 'wall (true) tension, '// &
+         'T_eff + p_o A_o - p_i A_i, positive in tension', err)
       call hdf5_write_dataset(h5, g//'/shear', r%shear, err)
       call describe(h5, g//'/shear', 'N', 'shear forces, columns N1 along d1, N2 along d2', &
          err)
@@ -300,7 +372,14 @@ contains
          'columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', err)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
+      call hdf5_write_dataset(h5, g//'/seabed_normal', seabed_force_of(r, 1), err)
+      call describe(h5, g//'/seabed_normal', 'N/m', &
+         'seabed normal contact force per unit length at the nodes (0: no contact)', err)
+      call hdf5_write_dataset(h5, g//'/seabed_friction', seabed_force_of(r, 2), err)
+      call describe(h5, g//'/seabed_friction', 'N/m', &
+         'magnitude of the seabed friction force per unit length at the nodes', err)
    end subroutine write_h5_line
+
 
 
    ! ------------------------------------------------------------------ checks, files
@@ -323,7 +402,8 @@ contains
                ok = all(shape(r%node_x) == [3, nn]) .and. size(r%gp_element) == ng .and. &
                   size(r%gp_point) == ng .and. size(r%tension) == ng .and. &
                   all(shape(r%shear) == [2, ng]) .and. all(shape(r%moment) == [2, ng]) .and. &
-                  size(r%torque) == ng .and. all(shape(r%curvature) == [3, ng])
+                  size(r%torque) == ng .and. all(shape(r%curvature) == [3, ng]) .and. &
+                  water_fields_fit(r, nn, ng)
             end if
             if (.not. ok) then
                call set_error(err, stat_io, 'output_write_static: results of line '''// &

@@ -40,9 +40,10 @@ module rodyn_output_dynamic
       hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
       hdf5_append_steps
-   use rodyn_output, only: output_write_status
+   use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
-                                  csv_name
+                                  csv_name, write_environment_h5, wall_tension_of, &
+                                  seabed_force_of, water_fields_fit, touchdown_of
    implicit none
    private
    public :: dynamic_writer_t
@@ -53,20 +54,23 @@ module rodyn_output_dynamic
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
    character(len=*), parameter :: ends_csv = 'dynamic_ends.csv'
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
+   character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
-   character(len=*), parameter :: nodes_head = 'time_s,line,node,s_m,x_m,y_m,z_m'
+   character(len=*), parameter :: nodes_head = 'time_s,line,node,s_m,x_m,y_m,z_m,'// &
+      'seabed_normal_N_per_m,seabed_friction_N_per_m'
    character(len=*), parameter :: elements_head = 'time_s,line,element,point,s_m,'// &
-      'effective_tension_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_per_m'
+      'effective_tension_N,wall_tension_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_per_m'
+   character(len=*), parameter :: lines_head = 'time_s,line,touchdown_s_m'
    character(len=*), parameter :: ends_head = &
       'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
    character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
-      'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,total_J,'// &
-      'px,py,pz,Lx,Ly,Lz'
+      'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,hydro_work_J,'// &
+      'seabed_work_J,total_J,px,py,pz,Lx,Ly,Lz'
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
-   integer, parameter :: row_len = 1024    !< longest CSV row (at most 17 fields)
+   integer, parameter :: row_len = 1024    !< longest CSV row (at most 19 fields)
    integer, parameter :: chunk_bytes = 8192 !< target HDF5 chunk size of the frames
    integer, parameter :: log_chunk = 1024   !< steps per HDF5 chunk of the step log
    real(wp), parameter :: status_interval = 1.0_wp !< least wall time between rewrites
@@ -75,19 +79,22 @@ module rodyn_output_dynamic
    ! Time histories of a line in dynamic.h5 (index into line_out_t%series)
    integer, parameter :: ls_x = 1, ls_y = 2, ls_z = 3, ls_tension = 4, ls_moment_1 = 5, &
       ls_moment_2 = 6, ls_torque = 7, ls_curvature = 8, ls_reactions = 9, &
-      ls_end_tension = 10, n_line_series = 10
+      ls_end_tension = 10, ls_wall_tension = 11, ls_seabed_normal = 12, &
+      ls_seabed_friction = 13, ls_touchdown = 14, n_line_series = 14
    character(len=*), parameter :: line_series_name(n_line_series) = [character(len=17) :: &
       'x', 'y', 'z', 'effective_tension', 'moment_1', 'moment_2', 'torque', &
-      'bending_curvature', 'reactions', 'end_tension']
+      'bending_curvature', 'reactions', 'end_tension', 'wall_tension', 'seabed_normal', &
+      'seabed_friction', 'touchdown_s']
 
    ! Step log in dynamic.h5 (index into dynamic_writer_t%log), one dataset per quantity
    integer, parameter :: lg_step = 1, lg_time = 2, lg_dt = 3, lg_iterations = 4, &
       lg_cutbacks = 5, lg_kinetic = 6, lg_strain = 7, lg_gravity = 8, &
       lg_external_work = 9, lg_damping_work = 10, lg_total = 11, lg_momentum = 12, &
-      lg_angular_momentum = 13, n_log_series = 13
+      lg_angular_momentum = 13, lg_hydro_work = 14, lg_seabed_work = 15, n_log_series = 15
    character(len=*), parameter :: log_series_name(n_log_series) = [character(len=16) :: &
       'step', 'time', 'dt', 'iterations', 'cutbacks', 'kinetic', 'strain', 'gravity', &
-      'external_work', 'damping_work', 'total', 'momentum', 'angular_momentum']
+      'external_work', 'damping_work', 'total', 'momentum', 'angular_momentum', &
+      'hydro_work', 'seabed_work']
 
    !> C's printf format of a real: as rodyn_output's real_str (17 significant digits,
    !> an exponent of at least two digits).
@@ -118,6 +125,7 @@ module rodyn_output_dynamic
       type(text_t), allocatable :: node_head(:)      !< (nn) ',LINE,node,s_m'
       type(text_t), allocatable :: point_head(:)     !< (ng) ',LINE,element,point,s_m'
       type(text_t) :: end_head(2)                    !< ',LINE,A' and ',LINE,B'
+      type(text_t) :: line_head                      !< ',LINE'
       type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
    end type line_out_t
 
@@ -135,6 +143,7 @@ module rodyn_output_dynamic
       integer :: u_elements = -1                     !< unit of dynamic_elements.csv
       integer :: u_ends = -1                         !< unit of dynamic_ends.csv
       integer :: u_log = -1                          !< unit of dynamic_log.csv
+      integer :: u_lines = -1                        !< unit of dynamic_lines.csv
       type(hdf5_file_t) :: h5                        !< dynamic.h5
       type(hdf5_series_t) :: time                    !< /dynamic/time
       type(hdf5_series_t) :: log(n_log_series)       !< /dynamic/log/*
@@ -213,6 +222,8 @@ contains
          call open_csv(w, elements_csv, elements_head, w%u_elements, e)
          call open_csv(w, ends_csv, ends_head, w%u_ends, e)
          call open_csv(w, log_csv, log_head, w%u_log, e)
+         call open_csv(w, lines_csv, lines_head, w%u_lines, e)
+         call output_write_environment(dir, model, e)
       end if
       if (w%hdf5) call create_h5(w, model, lines, e)
       if (has_error(e)) then
@@ -288,7 +299,8 @@ contains
          call put_int(row, n, log%iterations)
          call put_int(row, n, log%cutbacks)
          call put_reals(row, n, [log%kinetic, log%strain, log%gravity, log%external_work, &
-            log%damping_work, log%total, log%momentum, log%angular_momentum])
+            log%damping_work, log%hydro_work, log%seabed_work, log%total, log%momentum, &
+            log%angular_momentum])
          write (w%u_log, '(a)', iostat=ios, iomsg=msg) row(:n)
          if (ios == 0) call flush_unit(w, w%u_log, ios, msg)
          if (ios /= 0) call set_error(e, stat_io, 'dynamic_output_step: cannot write '''// &
@@ -362,6 +374,7 @@ contains
       do k = 1, 2
          lo%end_head(k)%s = ','//csv_name(r%name)//','//end_name(k)
       end do
+      lo%line_head%s = ','//csv_name(r%name)
    end subroutine set_up_line
 
    !> Create (truncate) one CSV table and write its header.
@@ -416,6 +429,7 @@ contains
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
             model%dynamic%output_interval, err)
+         call write_environment_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
          call hdf5_open_series(h5, '/dynamic/time', w%time, err)
@@ -475,6 +489,15 @@ contains
          err)
       call history(g//'/end_tension', 2, 'N', 'magnitude of the support force, '// &
          'sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B')
+      call history(g//'/wall_tension', ng, 'N', 'wall (true) tension, '// &
+         'T_eff + p_o A_o - p_i A_i, positive in tension; row per frame')
+      call history(g//'/seabed_normal', nn, 'N/m', &
+         'seabed normal contact force per unit length at the nodes; row per frame')
+      call history(g//'/seabed_friction', nn, 'N/m', &
+         'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
+      call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
+         'seabed, -1 when none; one value per frame', err)
    contains
       !> An empty history of n values per frame, with its units and description.
       subroutine history(path, n, units, description)
@@ -504,6 +527,10 @@ contains
       call column(lg_external_work, 'J', &
          'work done on the line since t = 0 by prescribed motions and loads', .false.)
       call column(lg_damping_work, 'J', 'energy taken out by damping since t = 0', .false.)
+      call column(lg_hydro_work, 'J', 'work done on the line since t = 0 by the water: '// &
+         'buoyancy, drag, added mass', .false.)
+      call column(lg_seabed_work, 'J', 'work done on the line since t = 0 by the '// &
+         'seabed: contact, damping, friction', .false.)
       call column(lg_total, 'J', 'kinetic + strain + gravity', .false.)
       call hdf5_create_series(h5, g//'momentum', 3, err, chunk_steps=log_chunk)
       call describe(h5, g//'momentum', 'kg m/s', &
@@ -535,6 +562,7 @@ contains
       character(len=row_len) :: row
       character(len=64) :: t
       character(len=512) :: msg
+      real(wp), allocatable :: fn(:), ff(:), tw(:)
       integer :: nt, n, i, k, j, ios
       if (has_error(err)) return
       nt = 0
@@ -543,10 +571,12 @@ contains
       msg = ''
       do i = 1, size(lines)
          associate (r => lines(i), lo => w%line(i))
+            fn = seabed_force_of(r, 1)
+            ff = seabed_force_of(r, 2)
             do k = 1, lo%nn
                n = 0
                call put_text(row, n, t(:nt)//lo%node_head(k)%s)
-               call put_reals(row, n, r%node_x(:, k))
+               call put_reals(row, n, [r%node_x(:, k), fn(k), ff(k)])
                if (ios == 0) write (w%u_nodes, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
          end associate
@@ -555,10 +585,11 @@ contains
       call check_csv(ios, msg, nodes_csv)
       do i = 1, size(lines)
          associate (r => lines(i), lo => w%line(i))
+            tw = wall_tension_of(r)
             do k = 1, lo%ng
                n = 0
                call put_text(row, n, t(:nt)//lo%point_head(k)%s)
-               call put_reals(row, n, [r%tension(k), r%moment(:, k), r%torque(k), &
+               call put_reals(row, n, [r%tension(k), tw(k), r%moment(:, k), r%torque(k), &
                   bending_curvature(r%curvature(:, k:k))])
                if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
@@ -579,6 +610,14 @@ contains
       end do
       if (ios == 0) call flush_unit(w, w%u_ends, ios, msg)
       call check_csv(ios, msg, ends_csv)
+      do i = 1, size(lines)
+         n = 0
+         call put_text(row, n, t(:nt)//w%line(i)%line_head%s)
+         call put_reals(row, n, [touchdown_of(lines(i))])
+         if (ios == 0) write (w%u_lines, '(a)', iostat=ios, iomsg=msg) row(:n)
+      end do
+      if (ios == 0) call flush_unit(w, w%u_lines, ios, msg)
+      call check_csv(ios, msg, lines_csv)
    contains
       !> Record the first failed write of a table.
       subroutine check_csv(ios, msg, name)
@@ -611,6 +650,10 @@ contains
             call hdf5_append_steps(s(ls_reactions), reshape(r%reaction, [12]), err)
             call hdf5_append_steps(s(ls_end_tension), &
                [norm2(r%reaction(1:3, 1)), norm2(r%reaction(1:3, 2))], err)
+            call hdf5_append_steps(s(ls_wall_tension), wall_tension_of(r), err)
+            call hdf5_append_steps(s(ls_seabed_normal), seabed_force_of(r, 1), err)
+            call hdf5_append_steps(s(ls_seabed_friction), seabed_force_of(r, 2), err)
+            call hdf5_append_steps(s(ls_touchdown), [touchdown_of(r)], err)
          end associate
       end do
       call hdf5_append_steps(w%time, [time], err)
@@ -637,6 +680,8 @@ contains
          call hdf5_append_steps(s(lg_gravity), p%gravity, err)
          call hdf5_append_steps(s(lg_external_work), p%external_work, err)
          call hdf5_append_steps(s(lg_damping_work), p%damping_work, err)
+         call hdf5_append_steps(s(lg_hydro_work), p%hydro_work, err)
+         call hdf5_append_steps(s(lg_seabed_work), p%seabed_work, err)
          call hdf5_append_steps(s(lg_total), p%total, err)
          allocate (vec(3, n))
          do k = 1, n
@@ -681,6 +726,7 @@ contains
       call close_unit(w%u_elements, elements_csv)
       call close_unit(w%u_ends, ends_csv)
       call close_unit(w%u_log, log_csv)
+      call close_unit(w%u_lines, lines_csv)
       call hdf5_close_series(w%time, err)
       do k = 1, n_log_series
          call hdf5_close_series(w%log(k), err)
@@ -749,7 +795,7 @@ contains
       nn = size(r%node_s)
       ng = size(r%gp_s)
       line_complete = all(shape(r%node_x) == [3, nn]) .and. size(r%gp_element) == ng .and. &
-         size(r%gp_point) == ng .and. line_fits_sizes(r, nn, ng)
+         size(r%gp_point) == ng .and. line_fits_sizes(r, nn, ng) .and. size(r%node_s) == nn
    end function line_complete
 
    !> Whether a frame's line has the sizes the line had at open.
@@ -769,7 +815,7 @@ contains
       integer, intent(in) :: ng             !< integration points
       line_fits_sizes = size(r%node_x, 2) == nn .and. size(r%tension) == ng .and. &
          all(shape(r%moment) == [2, ng]) .and. size(r%torque) == ng .and. &
-         all(shape(r%curvature) == [3, ng])
+         all(shape(r%curvature) == [3, ng]) .and. water_fields_fit(r, nn, ng)
    end function line_fits_sizes
 
    ! ------------------------------------------------------------------ text helpers

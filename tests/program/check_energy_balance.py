@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Run an EMC deck that must complete, and check that no step breaks the energy
-balance: the change of (total energy - external work + damping work) over any one step
-stays below TOL times the largest |external work| of the run (dynamic_log.csv).
+balance: the change of (total energy - external work - hydro work - seabed work + damping
+work) over any one step stays below TOL times the largest |work done on the lines|
+(external, hydro or seabed) of the run (dynamic_log.csv; the hydro and seabed columns
+count as 0 in a log written before they existed).
 
 Usage: check_energy_balance.py RODYN DECK OUT_DIR [TOL]. Exit 0 on success."""
 import csv
@@ -17,9 +19,14 @@ def main():
         sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
     with open(f"{out}/dynamic_log.csv") as f:
         rows = list(csv.DictReader(f))
-    bal = [float(r["total_J"]) - float(r["external_work_J"]) + float(r["damping_work_J"])
-           for r in rows]
-    work = max(abs(float(r["external_work_J"])) for r in rows)
+    def work_in(r):
+        """Work done on the lines since t = 0 by loads, motions, water and seabed [J]."""
+        return (float(r["external_work_J"]) + float(r.get("hydro_work_J", 0.0))
+                + float(r.get("seabed_work_J", 0.0)))
+
+    bal = [float(r["total_J"]) - work_in(r) + float(r["damping_work_J"]) for r in rows]
+    work = max(max(abs(float(r[k])) for k in ("external_work_J", "hydro_work_J",
+                                              "seabed_work_J") if k in r) for r in rows)
     jump = max(abs(b - a) for a, b in zip(bal, bal[1:]))
     halvings = sum(int(r["cutbacks"]) for r in rows)
     print(f"{len(rows)} steps, {halvings} halvings; largest one-step change of the energy "
