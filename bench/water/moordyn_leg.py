@@ -179,7 +179,10 @@ def touchdown(md, line, n):
 def static(n, dt=None, ba=BA_DEFAULT):
     import moordyn as md
     dt = dt or default_dt(n)
-    path = write_deck(n, dt, ba)
+    if dt == default_dt(n) and ba == BA_DEFAULT:
+        path = write_deck(n, dt, ba)      # the stored deck bench/water/moordyn/leg_N.dat
+    else:
+        path = write_deck(n, dt, ba, os.path.join(WORK, f"leg_{n}_{dt:.6g}_{ba:g}.dat"))
     t0 = time.perf_counter()
     s = md.Create(path)
     md.Init(s, list(leg.FAIRLEAD), [0.0, 0.0, 0.0])
