@@ -261,14 +261,16 @@ def summary(res):
     t, ten = res["time_s"], res["tension"]
     sel = (t >= leg.WINDOW[0] - 1e-9) & (t <= leg.WINDOW[1] + 1e-9)
     mean_h, amp, phase = harmonic(t, ten)
-    return {"segments": res["segments"], "dt_s": res["dt"], "ba": res["ba"],
+    return {"segments": int(res["segments"]), "dt_s": float(res["dt"]), "ba": float(res["ba"]),
             "static_fairlead_tension_N": res["static"]["fairlead_tension_N"],
             "max_N": float(ten[sel].max()), "min_N": float(ten[sel].min()),
             "mean_N": float(ten[sel][:-1].mean()),
             "harmonic1_amplitude_N": amp, "harmonic1_phase_rad": phase,
             "harmonic_mean_N": mean_h,
             "wall_static_s": res["static"]["wall_static_s"],
-            "wall_dynamic_s": res["wall_dynamic_s"], "steps": res["steps"]}
+            "wall_dynamic_s": float(res["wall_dynamic_s"]), "steps": int(res["steps"]),
+            "raw_min_note": "min_N includes the touchdown impact spikes of the discrete "
+                            "line (they shrink with N)"}
 
 
 WORK = os.path.join(HERE, ".work")
