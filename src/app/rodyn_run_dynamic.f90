@@ -85,7 +85,8 @@ contains
       show_progress = progress
       if (.not. model%dynamic%start_static) call apply_initial_velocities(model, mesh, state)
       call dynamics_setup(prob, model, mesh, state)
-      call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines)
+      call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
+                         prob%water)
       call dynamic_output_open(writer, dir, model, frame_lines, err)
       if (has_error(err)) return
       call system_clock(clock0, clock_rate)
@@ -130,7 +131,7 @@ contains
       if (has_error(err)) return
       if (t > 0.0_wp) then
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, prob%sup%held, &
-                            frame_lines)
+                            frame_lines, prob%water)
          r_pend = prob%r
          h_pend = prob%dt
          t_pend = t
@@ -140,7 +141,7 @@ contains
          pending = .true.
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
-                            frame_lines)
+                            frame_lines, prob%water)
          call dynamic_output_frame(writer, t, frame_lines, err)
       end if
    end subroutine on_frame

@@ -24,6 +24,10 @@ module rodyn_hydro
    implicit none
    private
    public :: water_section_t, water_env_t, water_point_load, submerged_fraction
+   public :: part_water, part_seabed, seabed_normal_force
+
+   integer, parameter :: part_water = 1   !< water_point_load: buoyancy, drag, inertia
+   integer, parameter :: part_seabed = 2  !< water_point_load: seabed contact and friction
 
    !> Per section: the constants of the laws above.
    type :: water_section_t
@@ -79,7 +83,8 @@ contains
    !> Water and seabed force per unstretched length at a point (module header): fh from
    !> the water, fs from the seabed; with want_k their derivatives with respect to the
    !> position x, the tangent x', the velocity v and the acceleration a of the line.
-   pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k)
+   pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k, &
+                                    parts)
       type(water_env_t), intent(in) :: env      !< environment
       type(water_section_t), intent(in) :: ws   !< section constants
       real(wp), intent(in) :: x(3)              !< position [m]
@@ -93,11 +98,12 @@ contains
       real(wp), intent(out) :: kv(3, 3)         !< d(fh + fs)/dv [N s/m2]
       real(wp), intent(out) :: ka(3, 3)         !< d(fh + fs)/da [kg/m]
       logical, intent(in) :: want_k             !< form the derivatives
+      integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
       real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, eye(3, 3), gap, vn, nf, m(3, 3)
       real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
-      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), dnx(3), gl(3, 3)
-      real(wp) :: dts(3, 3)
+      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), gl(3, 3)
+      real(wp) :: dts(3, 3), dnx_s, dnv_s
       integer :: i
       fh = 0.0_wp
       fs = 0.0_wp
@@ -117,68 +123,69 @@ contains
          tt(:, i) = t*t(i)
          pm(:, i) = eye(:, i) - tt(:, i)
       end do
-      ! buoyancy; drag and inertia act on the submerged fraction too
-      call submerged_fraction(env%water%surface - x(3), ws%rb, phi, dphi)
-      if (ws%fb > 0.0_wp) then
-         fh(3) = ws%fb*phi
-         if (want_k) kx(3, 3) = -ws%fb*dphi
-      end if
-      if (phi > 0.0_wp) then
-         fd = 0.0_wp
-         if (want_k) then
-            kxd = 0.0_wp
-            kxpd = 0.0_wp
-            kvd = 0.0_wp
-            kad = 0.0_wp
+      if (iand(parts, part_water) /= 0) then
+         ! buoyancy; drag and inertia act on the submerged fraction too
+         call submerged_fraction(env%water%surface - x(3), ws%rb, phi, dphi)
+         if (ws%fb > 0.0_wp) then
+            fh(3) = ws%fb*phi
+            if (want_k) kx(3, 3) = -ws%fb*dphi
          end if
-         if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
-            call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
-            ur = u - v
-            s = dot_product(ur, t)
-            un = ur - s*t
-            unm = norm2(un)
-            fd = ws%cn*lam*unm*un + ws%ct*lam*abs(s)*s*t
+         if (phi > 0.0_wp) then
+            fd = 0.0_wp
             if (want_k) then
-               ! g = d f_d / d u_r
-               gn = unm*eye
-               if (unm > 0.0_wp) gn = gn + outer(un, un)/unm
-               g = ws%cn*lam*matmul(gn, pm) + 2.0_wp*ws%ct*lam*abs(s)*tt
-               kvd = -g
-               kxd = matmul(g, dudx)
-               kxpd = ws%cn*(unm*outer(un, t) - matmul(matmul(gn, outer(t, ur) + s*eye), pm)) &
-                      + ws%ct*(abs(s)*s*tt + matmul(2.0_wp*abs(s)*outer(t, ur) + abs(s)*s*eye, pm))
+               kxd = 0.0_wp
+               kxpd = 0.0_wp
+               kvd = 0.0_wp
+               kad = 0.0_wp
             end if
-         end if
-         if (ws%man > 0.0_wp .or. ws%maa > 0.0_wp) then
-            m = ws%man*pm + ws%maa*tt
-            fd = fd - matmul(m, acc)
+            if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
+               call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
+               ur = u - v
+               s = dot_product(ur, t)
+               un = ur - s*t
+               unm = norm2(un)
+               fd = ws%cn*lam*unm*un + ws%ct*lam*abs(s)*s*t
+               if (want_k) then
+                  ! g = d f_d / d u_r
+                  gn = unm*eye
+                  if (unm > 0.0_wp) gn = gn + outer(un, un)/unm
+                  g = ws%cn*lam*matmul(gn, pm) + 2.0_wp*ws%ct*lam*abs(s)*tt
+                  kvd = -g
+                  kxd = matmul(g, dudx)
+                  kxpd = ws%cn*(unm*outer(un, t) - matmul(matmul(gn, outer(t, ur) + s*eye), pm)) &
+                         + ws%ct*(abs(s)*s*tt &
+                                  + matmul(2.0_wp*abs(s)*outer(t, ur) + abs(s)*s*eye, pm))
+               end if
+            end if
+            if (ws%man > 0.0_wp .or. ws%maa > 0.0_wp) then
+               m = ws%man*pm + ws%maa*tt
+               fd = fd - matmul(m, acc)
+               if (want_k) then
+                  kad = -m
+                  ta = dot_product(t, acc)
+                  kxpd = kxpd - (ws%maa - ws%man)*matmul(outer(t, acc) + ta*eye, pm)/lam
+               end if
+            end if
+            fh = fh + phi*fd
             if (want_k) then
-               kad = -m
-               ta = dot_product(t, acc)
-               kxpd = kxpd - (ws%maa - ws%man)*matmul(outer(t, acc) + ta*eye, pm)/lam
+               kx = kx + phi*kxd
+               kx(:, 3) = kx(:, 3) - dphi*fd
+               kxp = kxp + phi*kxpd
+               kv = kv + phi*kvd
+               ka = ka + phi*kad
             end if
-         end if
-         fh = fh + phi*fd
-         if (want_k) then
-            kx = kx + phi*kxd
-            kx(:, 3) = kx(:, 3) - dphi*fd
-            kxp = kxp + phi*kxpd
-            kv = kv + phi*kvd
-            ka = ka + phi*kad
          end if
       end if
       ! seabed
-      if (.not. env%seabed) return
+      if (iand(parts, part_seabed) == 0 .or. .not. env%seabed) return
       gap = dot_product(env%n, x) - env%c0
-      if (gap >= 0.0_wp) return
       vn = dot_product(v, env%n)
-      nf = env%k*(-gap)*ws%dc
-      if (env%dynamic) nf = nf - env%c*vn*ws%dc
+      call seabed_normal_force(env, ws%dc, gap, vn, nf, dnx_s, dnv_s)
       if (nf <= 0.0_wp) return
       fs = nf*env%n
       if (want_k) then
-         kx = kx - env%k*ws%dc*outer(env%n, env%n)
-         if (env%dynamic) kv = kv - env%c*ws%dc*outer(env%n, env%n)
+         kx = kx + outer(env%n, dnx_s*env%n)
+         kv = kv + outer(env%n, dnv_s*env%n)
       end if
       ! regularised Coulomb friction in the seabed plane (module header), dynamics only
       if (.not. env%dynamic .or. (env%mu_ax <= 0.0_wp .and. env%mu_lat <= 0.0_wp)) return
@@ -197,10 +204,9 @@ contains
            - env%mu_lat*nf*vl/max(vlm, env%v_mob)
       fs = fs + ff
       if (.not. want_k) return
-      ! through N: dN/dx = -k D n, dN/dv = -c D n
-      dnx = -env%k*ws%dc*env%n
-      kx = kx + outer(ff/nf, dnx)
-      kv = kv + outer(ff/nf, -env%c*ws%dc*env%n)
+      ! through N: dN/dx = dnx_s n, dN/dv = dnv_s n
+      kx = kx + outer(ff/nf, dnx_s*env%n)
+      kv = kv + outer(ff/nf, dnv_s*env%n)
       if (abs(va) < env%v_mob) kv = kv - env%mu_ax*nf/env%v_mob*outer(ts, ts)
       pl = eye - outer(env%n, env%n) - outer(ts, ts)
       ! dF_lat/dv_lat (gl) and dF_ax/dt_s, dF_lat/dt_s (orientation of the axial direction)
@@ -217,6 +223,32 @@ contains
       kxp = kxp + matmul(matmul(dts, eye - outer(ts, ts)), &
                          matmul(eye - outer(env%n, env%n), pm))/(tsn*lam)
    end subroutine water_point_load
+
+   !> Seabed normal force per unstretched length N = D (k pen - c v.n), pen = -gap
+   !> (c = 0 in statics), and its derivatives in the gap and in v.n; N <= 0: no contact.
+   pure subroutine seabed_normal_force(env, dc, gap, vn, nf, dn_dgap, dn_dvn)
+      type(water_env_t), intent(in) :: env !< environment
+      real(wp), intent(in) :: dc           !< contact width D [m]
+      real(wp), intent(in) :: gap          !< distance above the seabed [m]
+      real(wp), intent(in) :: vn           !< velocity along the seabed normal [m/s]
+      real(wp), intent(out) :: nf          !< normal force per length [N/m]
+      real(wp), intent(out) :: dn_dgap     !< dN/dgap [N/m2]
+      real(wp), intent(out) :: dn_dvn      !< dN/dvn [N s/m2]
+      real(wp) :: c
+      nf = 0.0_wp
+      dn_dgap = 0.0_wp
+      dn_dvn = 0.0_wp
+      if (gap > 0.0_wp .or. dc <= 0.0_wp) return
+      c = 0.0_wp
+      if (env%dynamic) c = env%c
+      nf = dc*(-env%k*gap - c*vn)
+      if (nf <= 0.0_wp) then
+         nf = 0.0_wp
+         return
+      end if
+      dn_dgap = -dc*env%k
+      dn_dvn = -dc*c
+   end subroutine seabed_normal_force
 
    !> a b^T.
    pure function outer(a, b) result(m)

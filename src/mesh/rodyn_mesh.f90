@@ -308,6 +308,7 @@ contains
                if (xy(3) - z_lo < 1.0e-6_wp*ld%length + 1.0e-9_wp) &
                   call catenary_grounded(w, ea, ld%length, span, abs(rise), cat, grounded)
             end if
+            if (grounded) call snap_touchdown()
             if (.not. grounded) then
                b_low = .false.
                call catenary_solve(w, ea, ld%length, span, rise, cat, err)
@@ -329,6 +330,10 @@ contains
                   state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
                   t = tg(1)*eh + tg(2)*up
                end if
+               ! the grounded part sunk to the penetration that carries its weight,
+               ! w / (k D), so that it starts in contact, in equilibrium
+               if (grounded .and. sk <= cat%lb) state%x(:, node) = state%x(:, node) &
+                  - w/(model%seabed%stiffness*model%sections(ld%section)%db)*up
                state%d(:, :, node) = line_frame(t, cross(up, eh))
             end do
          else
@@ -343,6 +348,50 @@ contains
          end if
       end associate
    contains
+      !> Touchdown moved to the element boundary nearest to it, for the statics: the
+      !> grounded catenary with that grounded length (V_F = w (L - L_B)) and H fitting the
+      !> span, its upper end then off its deck position by a little, where the statics
+      !> moves it
+      !> (supports_build). With the touchdown inside an element the jump of curvature
+      !> there makes the interpolated x' miss the nodal tangents by ~1e-2, which the
+      !> shear and axial stiffness turn into start forces of 1e6 N; the homotopy of the
+      !> statics then drives the line on the seabed into compression (measured on the
+      !> mooring leg: 45, 50, 60 quadratic elements did not converge, 40 and 160, whose
+      !> nodes fall near the touchdown, did).
+      subroutine snap_touchdown()
+         real(wp) :: lbn, sn, vf, h, lo, hi, f
+         integer :: kk, it
+         if (.not. (model%static%requested .or. (model%dynamic%requested .and. &
+                                                  model%dynamic%start_static))) return
+         lbn = -1.0_wp
+         do kk = 1, mesh%line_n_nodes(l), mesh%line_order(l)
+            sn = mesh%node_s(mesh%line_first_node(l) + kk - 1)
+            if (b_low) sn = model%lines(l)%length - sn
+            if (lbn < 0.0_wp .or. abs(sn - cat%lb) < abs(lbn - cat%lb)) lbn = sn
+         end do
+         if (lbn <= 0.0_wp .or. lbn >= model%lines(l)%length .or. lbn >= span) return
+         ! X(H) = L_B + H/w asinh(V_F/H) + H L/EA grows with H: bisection for X(H) = span
+         vf = w*(model%lines(l)%length - lbn)
+         lo = 1.0e-9_wp*w*model%lines(l)%length
+         hi = max(cat%h, lo)
+         do it = 1, 200
+            if (lbn + hi/w*asinh(vf/hi) + hi*model%lines(l)%length/ea > span) exit
+            hi = 2.0_wp*hi
+         end do
+         do it = 1, 200
+            h = 0.5_wp*(lo + hi)
+            f = lbn + h/w*asinh(vf/h) + h*model%lines(l)%length/ea - span
+            if (f > 0.0_wp) then
+               hi = h
+            else
+               lo = h
+            end if
+         end do
+         cat%h = 0.5_wp*(lo + hi)
+         cat%v0 = 0.0_wp
+         cat%lb = lbn
+      end subroutine snap_touchdown
+
       !> Frame with d3 = t; d1 towards the deck's hint if given, else d2 = n2.
       function line_frame(tt, n2) result(d)
          real(wp), intent(in) :: tt(3) !< unit tangent

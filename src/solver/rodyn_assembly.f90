@@ -7,7 +7,7 @@
 module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position
+                          bc_position, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node, mesh_nearest_node
    use rodyn_water, only: water_loads_t, water_element, water_attachment
    use rodyn_state, only: state_t, state_gather
@@ -52,8 +52,8 @@ contains
       type(mesh_t), intent(in) :: mesh      !< mesh
       type(state_t), intent(in) :: state    !< initial configuration
       type(supports_t), intent(out) :: sup  !< supports
-      integer :: i, node, nn
-      real(wp) :: ax(3), b(3)
+      integer :: i, node, nn, l, k
+      real(wp) :: ax(3), b(3), ends(3)
       nn = mesh%n_nodes
       allocate (sup%held(6, nn), sup%rotated(nn), sup%basis(3, 3, nn), sup%moved(nn), &
                 sup%x_start(3, nn), sup%x_target(3, nn))
@@ -90,6 +90,18 @@ contains
             case (bc_free)
             end select
          end associate
+      end do
+      ! a held end that the starting shape put off its deck position (a grounded catenary
+      ! with its touchdown on a node, rodyn_mesh) is moved there by the statics
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            ends = merge(model%lines(l)%end_a, model%lines(l)%end_b, k == 1)
+            if (.not. sup%held(1, node) .or. sup%moved(node)) cycle
+            if (norm2(state%x(:, node) - ends) <= 1.0e-12_wp*model%lines(l)%length) cycle
+            sup%moved(node) = .true.
+            sup%x_target(:, node) = ends
+         end do
       end do
    end subroutine supports_build
 

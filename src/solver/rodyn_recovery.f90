@@ -2,7 +2,7 @@
 !> curvatures at the reduced integration points (rod_element_resultants), and the
 !> support reactions at the ends (R = f_int - f_ext at a held node).
 module rodyn_recovery
-   use rodyn_kinds, only: wp
+   use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
@@ -11,6 +11,9 @@ module rodyn_recovery
    use rodyn_rod_element, only: rod_element_resultants, max_points
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
+   use rodyn_water, only: water_loads_t
+   use rodyn_hydro, only: water_point_load, part_seabed
+   use rodyn_shape, only: shape_lagrange
    implicit none
    private
    public :: recover_static, recover_state
@@ -24,12 +27,18 @@ contains
       type(line_result_t), allocatable, intent(out) :: lines(:) !< results
       type(error_t) :: err
       call prob%evaluate(.false., err)      ! refresh f_int and the reactions
-      call recover_state(model, prob%mesh, prob%state, prob%lam, prob%r, prob%sup%held, lines)
+      call recover_state(model, prob%mesh, prob%state, prob%lam, prob%r, prob%sup%held, lines, &
+                         prob%water)
    end subroutine recover_static
 
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
-   subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines)
+   !> In water (docs/water.md): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
+   !> points, p_o = rho_w g (z_s - z) below the surface (0 above), p_i = p_ref + rho_i g
+   !> (z_ref - z); the seabed's normal and friction force per length at the nodes (the
+   !> point law at the node, tangent d3); the touchdown, the largest arc length where the
+   !> line is in contact, interpolated linearly in the gap between the nodes.
+   subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines, water)
       type(model_t), intent(in) :: model                 !< model
       type(mesh_t), intent(in) :: mesh                   !< mesh
       type(state_t), intent(in) :: state                 !< configuration
@@ -37,6 +46,7 @@ contains
       real(wp), intent(in) :: r(:, :)                    !< (6, nn) support forces at held nodes
       logical, intent(in) :: held(:, :)                  !< (6, nn) held dofs
       type(line_result_t), allocatable, intent(inout) :: lines(:) !< results (reused)
+      type(water_loads_t), intent(in), optional :: water !< loads of a scene in water
       real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
       real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points)
       integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
@@ -73,11 +83,17 @@ contains
                lines(l)%shear(:, ig) = res(1:2, g)
                lines(l)%tension(ig) = tens(g)
                lines(l)%wall_tension(ig) = tens(g)
+               if (present(water)) then
+                  if (water%active) lines(l)%wall_tension(ig) = tens(g) + pressure_term(e, xig(g))
+               end if
                lines(l)%moment(:, ig) = res(4:5, g)
                lines(l)%torque(ig) = res(6, g)
                lines(l)%curvature(:, ig) = curv(:, g)
             end do
          end do
+         if (present(water)) then
+            if (water%active .and. water%env%seabed) call seabed_results(l)
+         end if
          do k = 1, 2
             node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
             lines(l)%end_held(k) = any(held(:, node))
@@ -85,5 +101,57 @@ contains
             if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = r(:, node)
          end do
       end do
+   contains
+      !> p_o A_o - p_i A_i at parent coordinate xi of element e [N].
+      real(wp) function pressure_term(e, xi)
+         integer, intent(in) :: e
+         real(wp), intent(in) :: xi
+         real(wp) :: n(max_nen), dn(max_nen), z, g, po, pi_
+         integer :: pe
+         pe = mesh%line_order(mesh%elem_line(e))
+         call shape_lagrange(pe, xi, n(1:pe + 1), dn(1:pe + 1))
+         z = dot_product(n(1:pe + 1), state%x(3, mesh%elem_nodes(1:pe + 1, e)))
+         g = norm2(model%gravity)
+         associate (sec => model%sections(mesh%elem_sec(e)))
+            po = model%water%density*g*max(model%water%surface - z, 0.0_wp)
+            pi_ = sec%p_i + sec%rho_i*g*(sec%z_pi - z)
+            pressure_term = po*0.25_wp*pi*max(sec%db, 0.0_wp)**2 - pi_*0.25_wp*pi*sec%id**2
+         end associate
+      end function pressure_term
+      !> Seabed force per length at the nodes of line l and its touchdown.
+      subroutine seabed_results(l)
+         integer, intent(in) :: l
+         real(wp) :: fh(3), fs(3), k1(3, 3), k2(3, 3), k3(3, 3), k4(3, 3), fn, gap0, gap1, zero3(3)
+         integer :: k, node, e, isec
+         zero3 = 0.0_wp
+         e = mesh%line_first_elem(l)
+         do k = 1, mesh%line_n_nodes(l)
+            node = mesh%line_first_node(l) + k - 1
+            do while (e < mesh%line_first_elem(l) + model%lines(l)%n_elements - 1 .and. &
+                      mesh%elem_s0(e) + mesh%elem_le(e) < mesh%node_s(node))
+               e = e + 1
+            end do
+            isec = mesh%elem_sec(e)
+            call water_point_load(water%env, water%sec(isec), state%x(:, node), &
+                                  state%d(:, 3, node), state%v(:, node), zero3, fh, fs, &
+                                  k1, k2, k3, k4, .false., part_seabed)
+            fn = dot_product(fs, water%env%n)
+            lines(l)%seabed_normal(k) = fn
+            lines(l)%seabed_friction(k) = norm2(fs - fn*water%env%n)
+         end do
+         lines(l)%touchdown_s = -1.0_wp
+         do k = mesh%line_n_nodes(l), 1, -1
+            if (lines(l)%seabed_normal(k) <= 0.0_wp) cycle
+            node = mesh%line_first_node(l) + k - 1
+            lines(l)%touchdown_s = mesh%node_s(node)
+            if (k < mesh%line_n_nodes(l)) then
+               gap0 = dot_product(water%env%n, state%x(:, node)) - water%env%c0
+               gap1 = dot_product(water%env%n, state%x(:, node + 1)) - water%env%c0
+               if (gap1 > gap0) lines(l)%touchdown_s = mesh%node_s(node) &
+                  + (mesh%node_s(node + 1) - mesh%node_s(node))*(-gap0)/(gap1 - gap0)
+            end if
+            exit
+         end do
+      end subroutine seabed_results
    end subroutine recover_state
 end module rodyn_recovery
