@@ -22,6 +22,7 @@ module rodyn_statics
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water
    use rodyn_water, only: water_loads_t, water_loads_build
+   use rodyn_environment, only: current_factor
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_results, only: run_summary_t
@@ -78,6 +79,9 @@ contains
       prob%lam = lam
       where (.not. prob%mesh%line_catenary) prob%gfac = lam
       call external_force(prob%mesh, prob%loads, prob%gfac, lam, 0.0_wp, prob%fext)
+      ! the current grows with the load factor (its drag is a load like the others)
+      if (prob%water%active) prob%water%env%r_current = lam*current_factor(prob%water%env%water, &
+                                                                           0.0_wp)
       prob%x_held = prob%sup%x_start + lam*(prob%sup%x_target - prob%sup%x_start)
    end subroutine static_set_load_factor
 
@@ -91,7 +95,7 @@ contains
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
-      ! buoyancy, steady current drag and seabed contact, in full from the start
+      ! buoyancy and seabed contact in full from the start, current drag times lambda
       if (this%water%active) call assemble_water(this%water, this%mesh, this%state%x, &
                                                  this%zero3, this%zero3, 1.0_wp, 0.0_wp, &
                                                  0.0_wp, this%fint, this%bm, want_k)
