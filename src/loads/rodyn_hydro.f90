@@ -11,7 +11,7 @@
 !>                length; the axial coefficient acts on the surface, pi D_d, as in MoorDyn)
 !>   inertia      f_a = -rho_w A_b [C_an P + C_aa t t] a + rho_w A_b [(1 + C_an) P
 !>                + (1 + C_aa) t t] a_w,   P = I - t t  (added mass and Froude-Krylov)
-!>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap > 0
+!>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
 !>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
 !>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
 !>                velocity in the seabed plane (dynamics only)
@@ -225,7 +225,13 @@ contains
    end subroutine water_point_load
 
    !> Seabed normal force per unstretched length N = D (k pen - c v.n), pen = -gap
-   !> (c = 0 in statics), and its derivatives in the gap and in v.n; N <= 0: no contact.
+   !> (c = 0 in statics), wherever it is positive, and its derivatives in the gap and in
+   !> v.n; N <= 0: no contact. A line coming down at v.n < 0 meets the damper c/k |v.n|
+   !> above the plane (0.1 s times the speed with the defaults), so that N grows from 0
+   !> without a jump: with the damper engaged only below the plane, N jumped from 0 to
+   !> c |v.n| D at the plane (360 times the weight of a line landing at 1.4 m/s) and the
+   !> steps of an inclined line touching down failed (tests/verification/
+   !> test_water_dynamics.pf, found there).
    pure subroutine seabed_normal_force(env, dc, gap, vn, nf, dn_dgap, dn_dvn)
       type(water_env_t), intent(in) :: env !< environment
       real(wp), intent(in) :: dc           !< contact width D [m]
@@ -238,7 +244,7 @@ contains
       nf = 0.0_wp
       dn_dgap = 0.0_wp
       dn_dvn = 0.0_wp
-      if (gap > 0.0_wp .or. dc <= 0.0_wp) return
+      if (dc <= 0.0_wp) return
       c = 0.0_wp
       if (env%dynamic) c = env%c
       nf = dc*(-env%k*gap - c*vn)
