@@ -2,15 +2,18 @@
 # Main job: set up, build (Release), run the paper's cable and plot it.
 # Usage: bash tools/run.sh [DECK]     results in ./<deck name>/
 # Without DECK: the paper's static cable (input/paper_cable.inp) and its four dynamic
-# cases (input/paper_case1.inp .. paper_case4.inp, the paper's Figures 3 to 6), each
-# into ./<deck name>/ with every plot of postproc/plot_all.py.
+# cases (input/paper_case1.inp .. paper_case4.inp, the paper's Figures 3 to 6), and the
+# mooring leg in water (input/mooring_catenary.inp, mooring_surge.inp,
+# mooring_current.inp), each into ./<deck name>/ with every plot of
+# postproc/plot_all.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -gt 0 ]; then
   decks=("$1")
 else
   decks=(input/paper_cable.inp input/paper_case1.inp input/paper_case2.inp
-         input/paper_case3.inp input/paper_case4.inp)
+         input/paper_case3.inp input/paper_case4.inp input/mooring_catenary.inp
+         input/mooring_surge.inp input/mooring_current.inp)
 fi
 bash tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
