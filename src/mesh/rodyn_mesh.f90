@@ -79,7 +79,7 @@ contains
       type(mesh_t), intent(out) :: mesh      !< mesh
       type(state_t), intent(inout) :: state  !< initial configuration
       type(error_t), intent(inout) :: err    !< status
-      integer :: l, nl, nn, ne, p, e, a, k, node, el
+      integer :: l, nl, nn, ne, p
       do p = 1, max_order
          mesh%rules(p) = rod_rule(p)
       end do
