@@ -5,7 +5,7 @@
 module rodyn_inertia
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t
-   use rodyn_mesh, only: mesh_t, mesh_nearest_node
+   use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_rod_element, only: rod_element_lumped_mass
    use rodyn_rotation, only: cross
@@ -51,7 +51,7 @@ contains
       if (.not. allocated(model%attachments)) return
       do e = 1, size(model%attachments)
          associate (at => model%attachments(e))
-            node = mesh_nearest_node(mesh, at%line, at%s)
+            node = mesh%att_node(e)
             inert%m(node) = inert%m(node) + at%mass + at%ca*model%water%density*at%volume
          end associate
       end do

@@ -9,8 +9,9 @@
 !>   drag         f_d = 1/2 rho_w C_dn D_d lambda |u_n| u_n + 1/2 rho_w C_da pi D_d lambda
 !>                |u_t| u_t,   u_t = (u_r.t) t, u_n = u_r - u_t  (drag on the stretched
 !>                length; the axial coefficient acts on the surface, pi D_d, as in MoorDyn)
-!>   inertia      f_a = -rho_w A_b [C_an P + C_aa t t] a + rho_w A_b [(1 + C_an) P
-!>                + (1 + C_aa) t t] a_w,   P = I - t t  (added mass and Froude-Krylov)
+!>   inertia      f_a = -rho_w A_b [C_an P + C_aa t t] a,   P = I - t t  (added mass; the
+!>                Froude-Krylov and added-mass forces of the water's own acceleration a_w
+!>                come with waves, issue 13: a steady current has a_w = 0)
 !>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
 !>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
 !>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
@@ -28,6 +29,8 @@ module rodyn_hydro
 
    integer, parameter :: part_water = 1   !< water_point_load: buoyancy, drag, inertia
    integer, parameter :: part_seabed = 2  !< water_point_load: seabed contact and friction
+   real(wp), parameter :: eye(3, 3) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, &
+                                               0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [3, 3])
 
    !> Per section: the constants of the laws above.
    type :: water_section_t
@@ -37,7 +40,6 @@ module rodyn_hydro
       real(wp) :: ct = 0.0_wp   !< 1/2 rho_w C_da pi D_d [kg/m2]
       real(wp) :: man = 0.0_wp  !< rho_w A_b C_an [kg/m]
       real(wp) :: maa = 0.0_wp  !< rho_w A_b C_aa [kg/m]
-      real(wp) :: mw = 0.0_wp   !< rho_w A_b [kg/m]
       real(wp) :: dc = 0.0_wp   !< contact width D_b [m]
    end type water_section_t
 
@@ -100,7 +102,7 @@ contains
       logical, intent(in) :: want_k             !< form the derivatives
       integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
-      real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, eye(3, 3), gap, vn, nf, m(3, 3)
+      real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, gap, vn, nf, m(3, 3)
       real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
       real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), gl(3, 3)
       real(wp) :: dts(3, 3), dnx_s, dnv_s
@@ -113,10 +115,6 @@ contains
          kv = 0.0_wp
          ka = 0.0_wp
       end if
-      eye = 0.0_wp
-      do i = 1, 3
-         eye(i, i) = 1.0_wp
-      end do
       lam = norm2(xp)
       t = xp/lam
       do i = 1, 3

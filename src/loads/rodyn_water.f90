@@ -18,7 +18,7 @@
 module rodyn_water
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: model_t
-   use rodyn_mesh, only: mesh_t, mesh_nearest_node
+   use rodyn_mesh, only: mesh_t
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_order, max_nen
    use rodyn_environment, only: seabed_normal, seabed_z, fluid_kinematics, current_factor
    use rodyn_hydro, only: water_section_t, water_env_t, water_point_load, submerged_fraction, &
@@ -85,7 +85,6 @@ contains
             ws%ct = 0.5_wp*rho*s%cda*pi*dd
             ws%man = rho*ab*s%can
             ws%maa = rho*ab*s%caa
-            ws%mw = rho*ab
             ws%dc = max(s%db, 0.0_wp)
          end associate
       end do
@@ -98,8 +97,7 @@ contains
       end do
       allocate (wl%att_node(0), wl%att_volume(0), wl%att_cda(0))
       if (allocated(model%attachments)) then
-         wl%att_node = [(mesh_nearest_node(mesh, model%attachments(i)%line, &
-                                           model%attachments(i)%s), i=1, size(model%attachments))]
+         wl%att_node = mesh%att_node
          wl%att_volume = model%attachments%volume
          wl%att_cda = model%attachments%cda_area
       end if

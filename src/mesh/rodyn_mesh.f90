@@ -18,7 +18,7 @@ module rodyn_mesh
    use rodyn_shape, only: max_nen, max_order
    implicit none
    private
-   public :: mesh_t, mesh_build, mesh_node, mesh_nearest_node
+   public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
    type :: mesh_t
@@ -46,6 +46,8 @@ module rodyn_mesh
       ! per node
       integer, allocatable :: node_line(:)        !< (nn)
       real(wp), allocatable :: node_s(:)          !< (nn) unstretched arc length [m]
+      ! per attachment (*ATTACHMENT)
+      integer, allocatable :: att_node(:)         !< (na) node nearest to its arc length
    end type mesh_t
 
 contains
@@ -79,7 +81,7 @@ contains
       type(mesh_t), intent(out) :: mesh      !< mesh
       type(state_t), intent(inout) :: state  !< initial configuration
       type(error_t), intent(inout) :: err    !< status
-      integer :: l, nl, nn, ne, p
+      integer :: l, nl, nn, ne, p, k
       do p = 1, max_order
          mesh%rules(p) = rod_rule(p)
       end do
@@ -117,6 +119,9 @@ contains
          call line_initial_shape(model, mesh, l, state, err)
          if (has_error(err)) return
       end do
+      allocate (mesh%att_node(0))
+      if (allocated(model%attachments)) mesh%att_node = [(mesh_nearest_node(mesh, &
+         model%attachments(k)%line, model%attachments(k)%s), k=1, size(model%attachments))]
    end subroutine mesh_build
 
    !> Elements and nodes of line l, segment after segment from end A: each element of a

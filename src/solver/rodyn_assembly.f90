@@ -8,7 +8,7 @@ module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
                           bc_position, end_a, end_b
-   use rodyn_mesh, only: mesh_t, mesh_node, mesh_nearest_node
+   use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_water, only: water_loads_t, water_element, water_attachment
    use rodyn_state, only: state_t, state_gather
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
@@ -127,10 +127,9 @@ contains
       end do
       if (allocated(model%attachments)) then
          do i = 1, size(model%attachments)
-            associate (at => model%attachments(i))
-               node = mesh_nearest_node(mesh, at%line, at%s)
-               loads%gravity(:, node) = loads%gravity(:, node) + at%mass*model%gravity
-            end associate
+            node = mesh%att_node(i)
+            loads%gravity(:, node) = loads%gravity(:, node) + model%attachments(i)%mass* &
+                                     model%gravity
          end do
       end if
       np = 0
