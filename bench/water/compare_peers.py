@@ -13,12 +13,14 @@ Cases (input/mooring_*.inp):
            carries touchdown impact spikes that shrink with its segment count and is not
            compared.
 Prints a table, writes bench/results/water_peers.csv with --write, exits 1 if a target is
-missed. --quick runs static and current only (about 8 s in a Release build).
+missed. --quick runs static and current only (about 8 s in a Release build). --sweep also
+runs the surge deck with coarser meshes and steps (cost against error, docs/water.md).
 """
 import argparse
 import csv
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -76,22 +78,53 @@ def current_case(rodyn, tmp):
     return out, wall, np.linalg.norm(fr)
 
 
-def surge_case(rodyn, tmp):
-    wall = run(rodyn, "mooring_surge.inp", os.path.join(tmp, "surge"))
-    rows = end_rows(os.path.join(tmp, "surge", "dynamic_ends.csv"), "B")
+def surge_stats(folder):
+    """Fairlead tension over 72-120 s: max, mean, first-harmonic amplitude (12 s)."""
+    rows = end_rows(os.path.join(folder, "dynamic_ends.csv"), "B")
     t = np.array([float(r["time_s"]) for r in rows])
     T = np.array([float(r["tension_N"]) for r in rows])
     m = (t >= 72.0 - 1e-9) & (t < 120.0 - 1e-9)
     tt, TT = t[m], T[m]
     a = np.c_[np.ones_like(tt), np.cos(2 * np.pi * tt / 12), np.sin(2 * np.pi * tt / 12)]
     c, *_ = np.linalg.lstsq(a, TT, rcond=None)
+    return TT.max(), TT.mean(), np.hypot(c[1], c[2])
+
+
+def surge_sweep(rodyn, tmp, fin):
+    """The surge deck with (cubic elements, dt) changed: wall time and errors against
+    MoorDyn's finest run."""
+    with open(os.path.join(ROOT, "input", "mooring_surge.inp")) as f:
+        deck = f.read()
+    shutil.copy(os.path.join(ROOT, "input", "mooring_leg_section.inc"), tmp)
+    print(f"{'elements':>8s} {'dt_s':>6s} {'wall_s':>7s} {'max':>9s} {'mean':>9s} {'harm1':>9s}")
+    for ne, dt in [(120, 0.05), (60, 0.05), (60, 0.1), (40, 0.1), (30, 0.1)]:
+        text = deck.replace("ELEMENTS=120, ORDER=3", f"ELEMENTS={ne}, ORDER=3")
+        text = text.replace("DT=0.05,", f"DT={dt},")
+        path = os.path.join(tmp, f"surge_{ne}_{dt}.inp")
+        with open(path, "w") as f:
+            f.write(text)
+        out = os.path.join(tmp, f"surge_{ne}_{dt}")
+        t0 = time.perf_counter()
+        p = subprocess.run([rodyn, path, "-o", out, "--quiet"], capture_output=True, text=True)
+        wall = time.perf_counter() - t0
+        if p.returncode != 0:
+            print(f"{ne:8d} {dt:6.2f} failed: {p.stderr.strip()}")
+            continue
+        mx, mean, h1 = surge_stats(out)
+        print(f"{ne:8d} {dt:6.2f} {wall:7.2f} {mx / fin['max_N'] - 1:9.2e} "
+              f"{mean / fin['mean_N'] - 1:9.2e} {h1 / fin['harmonic1_amplitude_N'] - 1:9.2e}")
+
+
+def surge_case(rodyn, tmp):
+    wall = run(rodyn, "mooring_surge.inp", os.path.join(tmp, "surge"))
+    mx, mean, h1 = surge_stats(os.path.join(tmp, "surge"))
     ref = json.load(open(os.path.join(REF, "moordyn_surge_summary.json")))
     fin = max(ref["runs"] + ref.get("runs_extra", []), key=lambda r: r["segments"])
     n = fin["segments"]
-    return [(f"surge max tension [N] (MoorDyn N={n})", TT.max(), fin["max_N"], 1e-2, "rel"),
-            (f"surge mean tension [N] (MoorDyn N={n})", TT.mean(), fin["mean_N"], 1e-2, "rel"),
-            (f"surge 1st harmonic [N] (MoorDyn N={n})", np.hypot(c[1], c[2]),
-             fin["harmonic1_amplitude_N"], 5e-2, "rel")], wall, fin
+    return [(f"surge max tension [N] (MoorDyn N={n})", mx, fin["max_N"], 1e-2, "rel"),
+            (f"surge mean tension [N] (MoorDyn N={n})", mean, fin["mean_N"], 1e-2, "rel"),
+            (f"surge 1st harmonic [N] (MoorDyn N={n})", h1, fin["harmonic1_amplitude_N"],
+             5e-2, "rel")], wall, fin
 
 
 def main():
@@ -99,6 +132,8 @@ def main():
     ap.add_argument("--rodyn", default=os.path.join(ROOT, "build", "rodyn"))
     ap.add_argument("--quick", action="store_true", help="static and current cases only")
     ap.add_argument("--write", action="store_true", help="write bench/results/water_peers.csv")
+    ap.add_argument("--sweep", action="store_true",
+                    help="also the surge deck with coarser meshes and steps")
     args = ap.parse_args()
     rows, walls = [], {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -109,6 +144,8 @@ def main():
         if not args.quick:
             r, walls["surge"], fin = surge_case(args.rodyn, tmp)
             rows += [x + (None,) for x in r]
+            if args.sweep:
+                surge_sweep(args.rodyn, tmp, fin)
     ok = True
     print(f"{'quantity':58s} {'rodyn':>12s} {'reference':>12s} {'error':>10s} {'target':>8s}")
     out = []
