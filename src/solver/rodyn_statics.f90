@@ -6,10 +6,25 @@
 !> (built-in curvature), and moves prescribed positions from the start to the target.
 !> The starting shape u0 is rarely an exact equilibrium (a catenary start ignores EI),
 !> so the equations solved are the Newton homotopy
-!>   r(u) - (1 - lambda) r(u0) = 0,
+!>   r(u) - (1 - lambda) r0(u) = 0,   r0 = [r_F(u0); R r_M(u0)],  R = d d0^T per node,
 !> which u0 satisfies at lambda = 0 and which is the true problem at lambda = 1; a
-!> failed increment can then always be cut, even when no load is ramped. A failed
-!> increment is first retried with the energy line search, then halved.
+!> failed increment can then always be cut, even when no load is ramped. The start's
+!> unbalanced moments r_M(u0) turn with their node (R: from the start's directors d0
+!> to the current ones), so that the homotopy, like the rod, does not change when the
+!> whole line rolls about its centreline (a fixed moment would: under a load across
+!> the plane of a hanging line it left a torque no configuration could balance); its
+!> tangent adds (1 - lambda) skew(R r_M(u0)) to each node's rotation block.
+!> A failed increment is first retried with the energy line search, then halved.
+!>
+!> Roll gauge. A line whose sections are all transversely isotropic (GA1 = GA2,
+!> EI1 = EI2), with no rotation held at any node and no point moment, can roll about its
+!> own centreline, uniformly, without any change of energy: that roll is a null vector
+!> of the static tangent, and its round-off blew the Newton corrections up to thousands
+!> of radians. The iteration matrix of such a line (not its residual) gets the
+!> stiffness k_g d3 d3^T against rotation about d3 at one node, its middle one, with
+!> k_g = max(EI, GJ)/le of an element there. The residual is unchanged and is
+!> orthogonal to the null vector, so each Newton step is the exact one with its roll
+!> at that node set to zero, and the converged shape is the same.
 !>
 !> Self-weight is applied in full from the start on a line that starts as a catenary
 !> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda.
@@ -20,7 +35,8 @@ module rodyn_statics
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
-                             assemble_static, apply_supports, external_force, assemble_water
+                             assemble_static, apply_supports, external_force, assemble_water, &
+                             add_node_block
    use rodyn_water, only: water_loads_t, water_loads_build
    use rodyn_environment, only: current_factor
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
@@ -39,6 +55,9 @@ module rodyn_statics
       real(wp) :: lam = 0.0_wp                !< load factor of the current increment
       real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
       real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
+      real(wp), allocatable :: d0(:, :, :)    !< (3, 3, nn) directors of the start
+      integer, allocatable :: gauge_node(:)   !< (nl) node of the roll gauge, 0: none
+      real(wp), allocatable :: gauge_k(:)     !< (nl) its stiffness k_g [N m/rad]
       real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
@@ -66,10 +85,53 @@ contains
       allocate (prob%zero3(3, nn))
       prob%zero3 = 0.0_wp
       allocate (prob%gfac(mesh%n_lines), prob%r0(6, nn), prob%x_held(3, nn), &
-                prob%x_conv(3, nn), prob%d_conv(3, 3, nn))
+                prob%x_conv(3, nn), prob%d_conv(3, 3, nn), prob%d0(3, 3, nn))
       prob%gfac = 1.0_wp
       prob%r0 = 0.0_wp
+      prob%d0 = state%d
+      call roll_gauges(mesh, prob%sup, prob%loads, prob%gauge_node, prob%gauge_k)
    end subroutine statics_setup
+
+   !> The roll gauge of each line (module header): its middle node and stiffness, or
+   !> node 0 where the line cannot roll freely.
+   subroutine roll_gauges(mesh, sup, loads, gauge_node, gauge_k)
+      type(mesh_t), intent(in) :: mesh              !< mesh
+      type(supports_t), intent(in) :: sup           !< supports
+      type(loads_t), intent(in) :: loads            !< point loads
+      integer, allocatable, intent(out) :: gauge_node(:) !< (nl) node, 0: none
+      real(wp), allocatable, intent(out) :: gauge_k(:)   !< (nl) stiffness [N m/rad]
+      integer :: l, e, e1, e2, em, i
+      logical :: free
+      allocate (gauge_node(mesh%n_lines), gauge_k(mesh%n_lines))
+      gauge_node = 0
+      gauge_k = 0.0_wp
+      do l = 1, mesh%n_lines
+         e1 = mesh%line_first_elem(l)
+         e2 = e1
+         do while (e2 < mesh%n_elements)
+            if (mesh%elem_line(e2 + 1) /= l) exit
+            e2 = e2 + 1
+         end do
+         free = .true.
+         do e = e1, e2
+            associate (c => mesh%elem_c(:, e), &
+                       nodes => mesh%elem_nodes(1:mesh%line_order(l) + 1, e))
+               if (c(1) /= c(2) .or. c(4) /= c(5)) free = .false.
+               do i = 1, size(nodes)
+                  if (any(sup%held(4:6, nodes(i))) .or. sup%rotated(nodes(i))) free = .false.
+               end do
+            end associate
+         end do
+         do i = 1, size(loads%pt_node)
+            if (mesh%node_line(loads%pt_node(i)) == l .and. any(loads%pt_fm(4:6, i) /= 0.0_wp)) &
+               free = .false.
+         end do
+         if (.not. free) cycle
+         em = (e1 + e2)/2
+         gauge_node(l) = mesh%elem_nodes(1, em)
+         gauge_k(l) = maxval(mesh%elem_c(4:6, em))/mesh%elem_le(em)
+      end do
+   end subroutine roll_gauges
 
    !> Set the load factor: external forces and the prescribed positions of held nodes
    !> (reached by the next Newton step, see apply_supports).
@@ -99,7 +161,7 @@ contains
       if (this%water%active) call assemble_water(this%water, this%mesh, this%state%x, &
                                                  this%zero3, this%zero3, 1.0_wp, 0.0_wp, &
                                                  0.0_wp, this%fint, this%bm, want_k)
-      this%r = this%fint - this%fext - (1.0_wp - this%lam)*this%r0
+      call homotopy_and_gauge(this, want_k)
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
          if (this%sup%moved(node)) this%gap(:, node) = this%x_held(:, node) - this%state%x(:, node)
@@ -115,6 +177,39 @@ contains
             this%m_extra = max(this%m_extra, maxval(abs(this%r(4:6, node))))
       end do
    end subroutine static_evaluate
+
+   !> r = f_int - f_ext - (1 - lambda) r0(u), the start's moments turned with their
+   !> node, and (want_k) their tangent and the roll gauges (module header).
+   subroutine homotopy_and_gauge(this, want_k)
+      class(static_problem_t), intent(inout) :: this !< problem
+      logical, intent(in) :: want_k                  !< add to the tangent
+      real(wp) :: m0(3), kb(6, 6), d3(3), w
+      integer :: node, l, i
+      w = 1.0_wp - this%lam
+      do node = 1, this%mesh%n_nodes
+         m0 = matmul(this%state%d(:, :, node), matmul(transpose(this%d0(:, :, node)), &
+                                                      this%r0(4:6, node)))
+         this%r(1:3, node) = this%fint(1:3, node) - this%fext(1:3, node) - w*this%r0(1:3, node)
+         this%r(4:6, node) = this%fint(4:6, node) - this%fext(4:6, node) - w*m0
+         if (want_k .and. w > 0.0_wp .and. any(m0 /= 0.0_wp)) then
+            kb = 0.0_wp
+            kb(4:6, 4:6) = w*reshape([0.0_wp, m0(3), -m0(2), -m0(3), 0.0_wp, m0(1), &
+                                      m0(2), -m0(1), 0.0_wp], [3, 3])
+            call add_node_block(this%sup, node, kb, this%bm)
+         end if
+      end do
+      if (.not. want_k) return
+      do l = 1, this%mesh%n_lines
+         node = this%gauge_node(l)
+         if (node == 0) cycle
+         d3 = this%state%d(:, 3, node)
+         kb = 0.0_wp
+         do i = 1, 3
+            kb(4:6, 3 + i) = this%gauge_k(l)*d3*d3(i)
+         end do
+         call add_node_block(this%sup, node, kb, this%bm)
+      end do
+   end subroutine homotopy_and_gauge
 
    subroutine static_save_base(this)
       class(static_problem_t), intent(inout) :: this !< problem
@@ -160,6 +255,7 @@ contains
       call static_set_load_factor(prob, lam)
       call prob%evaluate(.false., nerr)
       prob%r0 = prob%fint - prob%fext
+      prob%d0 = prob%state%d
       retried = .false.
       do while (lam < 1.0_wp)
          dlam = dlam0*0.5_wp**level
