@@ -4,7 +4,8 @@
 # Without DECK: the paper's static cable (input/paper_cable.inp) and its four dynamic
 # cases (input/paper_case1.inp .. paper_case4.inp, the paper's Figures 3 to 6), and the
 # mooring leg in water (input/mooring_catenary.inp, mooring_surge.inp,
-# mooring_current.inp), each into ./<deck name>/ with every plot of
+# mooring_current.inp) and the published lazy-wave cable (input/riser_lazy_wave.inp,
+# riser_lazy_wave_heave.inp), each into ./<deck name>/ with every plot of
 # postproc/plot_all.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,8 @@ if [ $# -gt 0 ]; then
 else
   decks=(input/paper_cable.inp input/paper_case1.inp input/paper_case2.inp
          input/paper_case3.inp input/paper_case4.inp input/mooring_catenary.inp
-         input/mooring_surge.inp input/mooring_current.inp)
+         input/mooring_surge.inp input/mooring_current.inp input/riser_lazy_wave.inp
+         input/riser_lazy_wave_heave.inp)
 fi
 bash tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null

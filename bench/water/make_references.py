@@ -5,10 +5,12 @@
   MoorPy       moorpy_static.py    -> moorpy_static.json
   MoorDyn      moordyn_leg.py      -> moordyn_surge_summary.json, moordyn_surge_fairlead.csv,
                                       moordyn_current_static.json, moordyn/leg_N.dat
+  CableDyn     cabledyn_riser.py   -> cabledyn_riser.json, cabledyn_riser_heave.csv (the
+                                      lazy-wave cable of input/riser_lazy_wave*.inp)
 
 MoorDyn runs are cached in bench/water/.work/ (git-ignored); --fresh re-runs them.
-Needs numpy, and `pip install moorpy moordyn` for the peers (--skip-peers: closed form
-only).
+Needs numpy, and `pip install moorpy moordyn cabledyn==0.3.0` for the peers (--skip-peers:
+closed form only).
 
   python3 bench/water/make_references.py [--segments 20 40 80 160] [--fresh]
 """
@@ -44,6 +46,7 @@ def main():
     run(["moordyn_leg.py", "--decks-only", "--segments"] + seg)
     run(["moordyn_leg.py", "--references", "--segments"] + seg + (["--fresh"] if a.fresh else []))
     run(["moordyn_leg.py", "--current", "--segments"] + [str(n) for n in a.current_segments])
+    run(["cabledyn_riser.py"])
 
 
 if __name__ == "__main__":
