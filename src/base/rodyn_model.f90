@@ -9,6 +9,7 @@ module rodyn_model
    public :: output_options_t, model_t
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
    public :: water_t, seabed_t, attachment_t, rho_water_default
+   public :: element_rod, element_cable, element_names
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
@@ -25,6 +26,11 @@ module rodyn_model
    integer, parameter :: bc_position = 4   !< moved to a prescribed position, rotation free
    character(len=8), parameter :: bc_names(0:4) = &
       [character(len=8) :: 'FREE', 'PINNED', 'HINGED', 'CLAMPED', 'POSITION']
+
+   ! Element of a line (*LINE, ELEMENT=...)
+   integer, parameter :: element_rod = 1         !< geometrically exact rod (the paper's)
+   integer, parameter :: element_cable = 2       !< axial stiffness only, no compression
+   character(len=8), parameter :: element_names(2) = [character(len=8) :: 'ROD', 'CABLE']
 
    ! Time integration schemes (*DYNAMIC, SCHEME=...)
    integer, parameter :: scheme_emc = 1          !< energy-momentum conserving (the paper's)
@@ -77,6 +83,7 @@ module rodyn_model
       real(wp) :: length = 0.0_wp   !< unstretched length [m]
       integer :: n_elements = 0     !< number of elements
       integer :: order = 3          !< Lagrange order of the elements (1, 2 or 3)
+      integer :: element = element_rod !< element_rod or element_cable
       real(wp) :: end_a(3) = 0.0_wp !< position of end A (S = 0) [m]
       real(wp) :: end_b(3) = 0.0_wp !< position of end B (S = L) [m]
       logical :: has_d1_hint = .false.

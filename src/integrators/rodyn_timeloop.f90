@@ -20,6 +20,7 @@ module rodyn_timeloop
                              dynamics_accept_step
    use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
    use rodyn_rod_element, only: rod_element_energy, max_points
+   use rodyn_cable_element, only: cable_element_energy
    use rodyn_rotation, only: rotation_cayley_inverse
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
@@ -59,8 +60,14 @@ contains
             l = mesh%elem_line(e)
             p = mesh%line_order(l)
             call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
-            w = w + rod_element_energy(p, mesh%elem_le(e), mesh%elem_c(:, e), &
-                                       mesh%eps0(:, :, e), xe(:, 1:p + 1), de(:, :, 1:p + 1))
+            if (mesh%line_cable(l)) then
+               w = w + cable_element_energy(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                            xe(:, 1:p + 1), mesh%rules(p))
+            else
+               w = w + rod_element_energy(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                          mesh%eps0(:, :, e), xe(:, 1:p + 1), &
+                                          de(:, :, 1:p + 1))
+            end if
          end do
       end associate
    end function strain_energy

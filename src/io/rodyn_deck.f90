@@ -19,7 +19,8 @@ module rodyn_deck
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, has_error, stat_input
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
-                          bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b
+                          bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b, &
+                          element_names, element_cable
    use rodyn_deck_lexer, only: deck_t, card_t, deck_lex, card_check_params, &
                                card_find_param, card_error, card_param_error, &
                                card_data_error, card_get_real, card_get_int, card_get_name, &
@@ -314,7 +315,7 @@ contains
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
-                                'LENGTH', 'ELEMENTS', 'ORDER'], err)
+                                'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -353,6 +354,9 @@ contains
                             int_str(line%order), err)
             return
          end if
+
+         call card_get_choice(card, 'ELEMENT', element_names, line%element, err)
+         if (has_error(err)) return
 
          call card_check_data(card, 1, 2, err, what1)
          if (has_error(err)) return
@@ -630,11 +634,25 @@ contains
             if (has_error(err)) return
             model%constraints(ib)%line = iref
             call check_unique_boundary(deck, pend, model, ib, err)
+            if (has_error(err)) return
+            if (model%lines(iref)%element == element_cable .and. &
+                (model%constraints(ib)%kind == bc_hinged .or. &
+                 model%constraints(ib)%kind == bc_clamped)) &
+               call param_fail(deck%cards(ic), 'TYPE', 'line '// &
+                               trim(model%lines(iref)%name)//' is made of cable '// &
+                               'elements, which have no rotations to hold: TYPE '// &
+                               'must be FREE, PINNED or POSITION', err)
          case ('LOAD')
             iload = iload + 1
             call resolve_line(deck%cards(ic), pend%load_line(iload)%name, model, &
                               iref, model%loads(iload)%node, err)
+            if (has_error(err)) return
             model%loads(iload)%line = iref
+            if (model%lines(iref)%element == element_cable .and. &
+                any(model%loads(iload)%moment /= 0.0_wp)) &
+               call card_data_error(deck%cards(ic), 1, 'line '//trim(model%lines(iref)%name)// &
+                                    ' is made of cable elements, which take no moment: '// &
+                                    'give Fx, Fy, Fz only', err)
          end select
          if (has_error(err)) return
       end do

@@ -9,7 +9,7 @@ module rodyn_mesh
    use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_section, only: section_stiffness
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position, end_a, end_b
+                          bc_position, end_a, end_b, element_cable
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
@@ -33,6 +33,7 @@ module rodyn_mesh
       integer, allocatable :: line_first_elem(:)  !< (nl)
       integer, allocatable :: line_order(:)       !< (nl) element order p
       logical, allocatable :: line_catenary(:)    !< (nl) started as a catenary (held at both ends)
+      logical, allocatable :: line_cable(:)       !< (nl) cable elements (*LINE, ELEMENT=CABLE)
       ! per element
       integer, allocatable :: elem_line(:)        !< (ne)
       integer, allocatable :: elem_sec(:)         !< (ne) section (model%sections index)
@@ -88,13 +89,14 @@ contains
       nl = size(model%lines)
       mesh%n_lines = nl
       allocate (mesh%line_first_node(nl), mesh%line_n_nodes(nl), mesh%line_first_elem(nl), &
-                mesh%line_order(nl), mesh%line_catenary(nl))
+                mesh%line_order(nl), mesh%line_catenary(nl), mesh%line_cable(nl))
       nn = 0
       ne = 0
       mesh%max_nen = 2
       do l = 1, nl
          p = model%lines(l)%order
          mesh%line_order(l) = p
+         mesh%line_cable(l) = model%lines(l)%element == element_cable
          mesh%line_first_node(l) = nn + 1
          mesh%line_first_elem(l) = ne + 1
          mesh%line_n_nodes(l) = model%lines(l)%n_elements*p + 1
@@ -245,7 +247,7 @@ contains
       do el = 1, model%lines(l)%n_elements
          e = mesh%line_first_elem(l) + el - 1
          kap = model%sections(mesh%elem_sec(e))%kappa0
-         if (all(kap == 0.0_wp)) cycle
+         if (all(kap == 0.0_wp) .or. mesh%line_cable(l)) cycle
          kk = skew(kap)
          k = norm2(kap)
          do a = 1, p + 1

@@ -15,6 +15,7 @@ module rodyn_assembly
                            banded_kept_axpy
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
    use rodyn_rod_dynamic, only: rod_element_dynamic
+   use rodyn_cable_element, only: cable_element_static, cable_element_dynamic
    use rodyn_rotation, only: cross, rotation_cayley_inverse
    use rodyn_motion, only: amplitude_value
    use rodyn_shape, only: max_nen
@@ -63,6 +64,10 @@ contains
       sup%basis = 0.0_wp
       sup%x_start = state%x
       sup%x_target = state%x
+      ! the nodes of a cable have no rotations: their rotation unknowns are held
+      do node = 1, nn
+         if (mesh%line_cable(mesh%node_line(node))) sup%held(4:6, node) = .true.
+      end do
       if (.not. allocated(model%constraints)) return
       do i = 1, size(model%constraints)
          associate (c => model%constraints(i))
@@ -239,7 +244,8 @@ contains
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
-      real(wp) :: de(3, 3, max_nen), e0(6, max_points)
+      real(wp) :: de(3, 3, max_nen), e0(6, max_points), fc(3, max_nen)
+      real(wp) :: kc(3*max_nen, 3*max_nen)
       integer :: e, l, p, nen
       fint = 0.0_wp
       if (want_k) then
@@ -252,10 +258,17 @@ contains
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(state, nodes, xe, de)
-            e0 = eps0_scale*mesh%eps0(:, :, e)
-            call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
-                                    xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
-                                    ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
+            if (mesh%line_cable(l)) then
+               call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), xe(:, 1:nen), &
+                                         fc(:, 1:nen), kc(1:3*nen, 1:3*nen), want_k, &
+                                         mesh%rules(p), slack_axial=.true.)
+               call cable_to_rod(nen, fc, kc, want_k, fe, ke)
+            else
+               e0 = eps0_scale*mesh%eps0(:, :, e)
+               call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
+                                       xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
+                                       ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
+            end if
             call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
                                  want_k)
          end associate
@@ -312,6 +325,7 @@ contains
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
+      real(wp) :: fc(3, max_nen), kc(3*max_nen, 3*max_nen)
       integer :: e, l, p, nen, a, j, nd
       fint = 0.0_wp
       fdamp = 0.0_wp
@@ -326,10 +340,19 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
-            call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), mesh%eps0(:, :, e), &
-                                     x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
-                                     d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
-                                     ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
+            if (mesh%line_cable(l)) then
+               call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                          x0(:, 1:nen), x1(:, 1:nen), scheme, wf, &
+                                          fc(:, 1:nen), kc(1:3*nen, 1:3*nen), want_k, &
+                                          mesh%rules(p))
+               call cable_to_rod(nen, fc, kc, want_k, fe, ke)
+            else
+               call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                        mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
+                                        x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
+                                        fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
+                                        mesh%rules(p))
+            end if
             nd = 6*nen
             if (beta > 0.0_wp) then
                do a = 1, nen
@@ -339,9 +362,16 @@ contains
                   du(6*a - 2:6*a) = rotation_cayley_inverse(matmul(d1(:, :, a), &
                                                                    transpose(d0(:, :, a))))
                end do
-               call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), &
-                                       mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
-                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true., mesh%rules(p))
+               if (mesh%line_cable(l)) then
+                  call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                            xm(:, 1:nen), fc(:, 1:nen), kc(1:3*nen, 1:3*nen), &
+                                            .true., mesh%rules(p))
+                  call cable_to_rod(nen, fc, kc, .true., fs, ks)
+               else
+                  call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                          mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
+                                          fs(:, 1:nen), ks(1:nd, 1:nd), .true., mesh%rules(p))
+               end if
                do j = 1, nd
                   fd(j) = beta/dt*dot_product(ks(j, 1:nd), du(1:nd))
                end do
@@ -355,6 +385,28 @@ contains
          end associate
       end do
    end subroutine assemble_dynamic
+
+   !> A cable element's forces (3, nen) and matrix (3 nen, 3 nen) in the rod's layout of
+   !> 6 unknowns a node, with zero moments and zero rotation rows and columns (the
+   !> supports hold a cable's rotations).
+   pure subroutine cable_to_rod(nen, fc, kc, want_k, fe, ke)
+      integer, intent(in) :: nen           !< nodes of the element
+      real(wp), intent(in) :: fc(:, :)     !< (3, nen) forces [N]
+      real(wp), intent(in) :: kc(:, :)     !< (3 nen, 3 nen) matrix
+      logical, intent(in) :: want_k        !< the matrix too
+      real(wp), intent(inout) :: fe(:, :)  !< (6, nen)
+      real(wp), intent(inout) :: ke(:, :)  !< (6 nen, 6 nen)
+      integer :: a, b
+      fe(1:3, 1:nen) = fc(:, 1:nen)
+      fe(4:6, 1:nen) = 0.0_wp
+      if (.not. want_k) return
+      ke(1:6*nen, 1:6*nen) = 0.0_wp
+      do b = 1, nen
+         do a = 1, nen
+            ke(6*a - 5:6*a - 3, 6*b - 5:6*b - 3) = kc(3*a - 2:3*a, 3*b - 2:3*b)
+         end do
+      end do
+   end subroutine cable_to_rod
 
    !> Add a 6x6 block (force/moment of one node against its own unknowns) to the
    !> tangent, in the node's basis if it has one.

@@ -9,6 +9,7 @@ module rodyn_recovery
    use rodyn_statics, only: static_problem_t
    use rodyn_state, only: state_t, state_gather
    use rodyn_rod_element, only: rod_element_resultants, max_points
+   use rodyn_cable_element, only: cable_element_tension
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
    use rodyn_water, only: water_loads_t
@@ -48,7 +49,7 @@ contains
       type(line_result_t), allocatable, intent(inout) :: lines(:) !< results (reused)
       type(water_loads_t), intent(in), optional :: water !< loads of a scene in water
       real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
-      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points)
+      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points), tg(3, max_order)
       integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
       if (.not. allocated(lines)) allocate (lines(mesh%n_lines))
       do l = 1, mesh%n_lines
@@ -71,10 +72,19 @@ contains
          do el = 1, ne
             e = mesh%line_first_elem(l) + el - 1
             call state_gather(state, mesh%elem_nodes(1:p + 1, e), xe, de)
-            e0 = eps0_scale*mesh%eps0(:, :, e)
-            call rod_element_resultants(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
-                                        xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
-                                        tens(1:p), curv(:, 1:p), xig(1:p))
+            if (mesh%line_cable(l)) then
+               ! a cable: tension only (no shear, moment or curvature of its own)
+               call cable_element_tension(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                          xe(:, 1:p + 1), mesh%rules(p), tens(1:p), tg(:, 1:p))
+               res(:, 1:p) = 0.0_wp
+               curv(:, 1:p) = 0.0_wp
+               xig(1:p) = mesh%rules(p)%xi(1:p)
+            else
+               e0 = eps0_scale*mesh%eps0(:, :, e)
+               call rod_element_resultants(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
+                                           xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
+                                           tens(1:p), curv(:, 1:p), xig(1:p))
+            end if
             do g = 1, p
                ig = (el - 1)*p + g
                lines(l)%gp_element(ig) = el
@@ -96,7 +106,9 @@ contains
          end if
          do k = 1, 2
             node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-            lines(l)%end_held(k) = any(held(:, node))
+            ! (a cable's rotation unknowns are all held: only its positions count)
+            lines(l)%end_held(k) = any(held(1:3, node)) .or. &
+                                   (any(held(4:6, node)) .and. .not. mesh%line_cable(l))
             lines(l)%reaction(:, k) = 0.0_wp
             if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = r(:, node)
          end do
