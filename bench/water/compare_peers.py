@@ -6,15 +6,16 @@ Cases (input/mooring_*.inp):
   static   fairlead tension and horizontal tension against Jonkman's closed-form catenary
            with a grounded length (MoorPy agrees with it to 5e-15), touchdown arc length;
            targets 0.1 % and 0.5 m
-  current  fairlead force in a 1 m/s cross current against MoorDyn's finest run (both by
-           dynamic relaxation on a frictionless seabed); target 1 %
+  current  fairlead force in a 1 m/s cross current against MoorDyn's finest run (rodyn's
+           statics; MoorDyn's by dynamic relaxation; frictionless seabed); target 1 %
   surge    fairlead tension over 72-120 s: maximum, mean and first harmonic (12 s) against
            MoorDyn's finest run (N = 320); targets 1 %, 1 %, 5 %. MoorDyn's raw minimum
            carries touchdown impact spikes that shrink with its segment count and is not
            compared.
 Prints a table, writes bench/results/water_peers.csv with --write, exits 1 if a target is
-missed. --quick runs static and current only (about 8 s in a Release build). --sweep also
-runs the surge deck with coarser meshes and steps (cost against error, docs/water.md).
+missed. --quick runs static and current only (about 1 s in a Release build). --sweep also
+runs the surge deck with other elements, meshes and steps (cost against error,
+docs/water.md).
 """
 import argparse
 import csv
@@ -65,8 +66,7 @@ def static_case(rodyn, tmp):
 
 def current_case(rodyn, tmp):
     wall = run(rodyn, "mooring_current.inp", os.path.join(tmp, "current"))
-    rows = end_rows(os.path.join(tmp, "current", "dynamic_ends.csv"), "B")
-    last = rows[-1]
+    last = end_rows(os.path.join(tmp, "current", "static_reactions.csv"), "B")[0]
     # force of the line on the fairlead = - support force on the line
     f = -np.array([float(last[k]) for k in ("Fx_N", "Fy_N", "Fz_N")])
     ref = json.load(open(os.path.join(REF, "moordyn_current_static.json")))
@@ -90,28 +90,37 @@ def surge_stats(folder):
     return TT.max(), TT.mean(), np.hypot(c[1], c[2])
 
 
+SWEEP = [("CABLE", 3, 120, 0.05), ("CABLE", 3, 60, 0.1), ("CABLE", 3, 30, 0.1),
+         ("CABLE", 3, 24, 0.1), ("CABLE", 3, 20, 0.1), ("CABLE", 2, 40, 0.1),
+         ("ROD", 3, 120, 0.05), ("ROD", 3, 30, 0.1)]
+
+
 def surge_sweep(rodyn, tmp, fin):
-    """The surge deck with (cubic elements, dt) changed: wall time and errors against
-    MoorDyn's finest run."""
+    """The surge deck with (element, order, elements, dt) changed: wall time and errors
+    against MoorDyn's finest run."""
     with open(os.path.join(ROOT, "input", "mooring_surge.inp")) as f:
         deck = f.read()
     shutil.copy(os.path.join(ROOT, "input", "mooring_leg_section.inc"), tmp)
-    print(f"{'elements':>8s} {'dt_s':>6s} {'wall_s':>7s} {'max':>9s} {'mean':>9s} {'harm1':>9s}")
-    for ne, dt in [(120, 0.05), (60, 0.05), (60, 0.1), (40, 0.1), (30, 0.1)]:
-        text = deck.replace("ELEMENTS=120, ORDER=3", f"ELEMENTS={ne}, ORDER=3")
+    print(f"{'element':>8s} {'order':>5s} {'elements':>8s} {'dt_s':>6s} {'wall_s':>7s} "
+          f"{'max':>9s} {'mean':>9s} {'harm1':>9s}")
+    for kind, order, ne, dt in SWEEP:
+        text = deck.replace("ELEMENTS=120, ORDER=3, ELEMENT=CABLE",
+                            f"ELEMENTS={ne}, ORDER={order}, ELEMENT={kind}")
         text = text.replace("DT=0.05,", f"DT={dt},")
-        path = os.path.join(tmp, f"surge_{ne}_{dt}.inp")
+        name = f"surge_{kind}_{order}_{ne}_{dt}"
+        path = os.path.join(tmp, name + ".inp")
         with open(path, "w") as f:
             f.write(text)
-        out = os.path.join(tmp, f"surge_{ne}_{dt}")
+        out = os.path.join(tmp, name)
         t0 = time.perf_counter()
         p = subprocess.run([rodyn, path, "-o", out, "--quiet"], capture_output=True, text=True)
         wall = time.perf_counter() - t0
+        head = f"{kind:>8s} {order:5d} {ne:8d} {dt:6.2f}"
         if p.returncode != 0:
-            print(f"{ne:8d} {dt:6.2f} failed: {p.stderr.strip()}")
+            print(f"{head} failed: {p.stderr.strip()}")
             continue
         mx, mean, h1 = surge_stats(out)
-        print(f"{ne:8d} {dt:6.2f} {wall:7.2f} {mx / fin['max_N'] - 1:9.2e} "
+        print(f"{head} {wall:7.2f} {mx / fin['max_N'] - 1:9.2e} "
               f"{mean / fin['mean_N'] - 1:9.2e} {h1 / fin['harmonic1_amplitude_N'] - 1:9.2e}")
 
 

@@ -3,7 +3,8 @@
 balance: the change of (total energy - external work - hydro work - seabed work + damping
 work) over any one step stays below TOL times the largest |work done on the lines|
 (external, hydro or seabed) of the run (dynamic_log.csv; the hydro and seabed columns
-count as 0 in a log written before they existed).
+count as 0 in a log written before they existed). In a free motion, where nothing works
+on the lines, the scale is the largest kinetic energy instead.
 
 Usage: check_energy_balance.py RODYN DECK OUT_DIR [TOL]. Exit 0 on success."""
 import csv
@@ -27,6 +28,8 @@ def main():
     bal = [float(r["total_J"]) - work_in(r) + float(r["damping_work_J"]) for r in rows]
     work = max(max(abs(float(r[k])) for k in ("external_work_J", "hydro_work_J",
                                               "seabed_work_J") if k in r) for r in rows)
+    if work == 0.0:
+        work = max(float(r["kinetic_J"]) for r in rows)
     jump = max(abs(b - a) for a, b in zip(bal, bal[1:]))
     halvings = sum(int(r["cutbacks"]) for r in rows)
     print(f"{len(rows)} steps, {halvings} halvings; largest one-step change of the energy "
