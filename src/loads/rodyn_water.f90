@@ -216,9 +216,20 @@ contains
       integer, intent(out) :: nparts        !< intervals found
       real(wp), intent(out) :: lo(:)        !< (>= p+1) their starts
       real(wp), intent(out) :: hi(:)        !< (>= p+1) their ends
-      real(wp) :: x0, x1, g1, xm, root
-      integer :: i, it
+      real(wp) :: x0, x1, g1, xm, root, xa(max_nen), dd(max_nen)
+      integer :: i, it, j
       logical :: inside
+      ! the polynomial in Newton's form through the nodes (divided differences): each
+      ! value then costs p multiplications, not a set of shape functions
+      do i = 1, p + 1
+         xa(i) = -1.0_wp + 2.0_wp*real(i - 1, wp)/real(p, wp)
+      end do
+      dd(1:p + 1) = gn(1:p + 1)
+      do j = 1, p
+         do i = p + 1, j + 1, -1
+            dd(i) = (dd(i) - dd(i - 1))/(xa(i) - xa(i - j))
+         end do
+      end do
       nparts = 0
       x0 = -1.0_wp
       inside = value_at(x0) < 0.0_wp
@@ -254,9 +265,11 @@ contains
    contains
       pure real(wp) function value_at(xi)
          real(wp), intent(in) :: xi
-         real(wp) :: n(max_nen), dn(max_nen)
-         call shape_lagrange(p, xi, n(1:p + 1), dn(1:p + 1))
-         value_at = dot_product(n(1:p + 1), gn(1:p + 1))
+         integer :: k
+         value_at = dd(p + 1)
+         do k = p, 1, -1
+            value_at = value_at*(xi - xa(k)) + dd(k)
+         end do
       end function value_at
    end subroutine contact_parts
 
