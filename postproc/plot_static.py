@@ -11,6 +11,9 @@ into OUT_DIR (default: the results folder) and prints the paths written:
                       water, the sea surface, the seabed's trace in the plane of the
                       lines (y = mean y of the nodes) and an inset of the current
                       profile (speed against z) when a current is given
+  static_plan.png     when the lines leave the x-z plane (their y spans more than 1e-6
+                      of their x-z extent: a cross current, a load across the plane):
+                      x-y plan view of every line (equal axes), nodes and supports
   static_tension.png  effective tension and bending moment magnitude against arc length
   static_wall_tension.png   with water (or a wall tension other than the effective one):
                       wall and effective tension against arc length
@@ -39,6 +42,7 @@ from rodyn_post.cli import static_title as run_title  # noqa: E402
 from rodyn_post.environment import current_inset, draw_sea, elevation_range  # noqa: E402
 
 SHAPE_PNG = "static_shape.png"
+PLAN_PNG = "static_plan.png"
 TENSION_PNG = "static_tension.png"
 WALL_PNG = "static_wall_tension.png"
 SEABED_PNG = "static_seabed.png"
@@ -71,6 +75,36 @@ def seabed_curves(line):
 def plane_y(lines_xyz):
     """y of the plotted x-z plane: the mean y of all nodes [m]."""
     return float(np.mean(np.concatenate([xyz[:, 1] for xyz in lines_xyz])))
+
+
+def wants_plan(results):
+    """Whether static_plan.png is drawn: the nodes' y spans more than 1e-6 of the
+    lines' extent in x and z."""
+    xyz = np.concatenate([line.node_xyz for line in results.lines])
+    span = np.ptp(xyz, axis=0)
+    return span[1] > 1e-6 * max(span[0], span[2], 1e-30)
+
+
+def plan_figure(results):
+    """Figure of the x-y plan view of every line: nodes marked, held ends marked."""
+    fig = Figure(figsize=(7.5, 5), layout="constrained")
+    ax = fig.add_subplot()
+    support_label = "support"
+    for line in results.lines:
+        x, y = line.node_xyz[:, 0], line.node_xyz[:, 1]
+        ax.plot(x, y, "-o", markersize=3, linewidth=1.5, label=line.name)
+        for end, held in zip((0, -1), line.end_held):
+            if held:
+                ax.plot(x[end], y[end], "k^", markersize=10, markerfacecolor="none",
+                        markeredgewidth=1.5, label=support_label)
+                support_label = None
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, linewidth=0.5, alpha=0.5)
+    ax.legend(loc="best")
+    fig.suptitle(run_title(results, "static shape, x-y plan"))
+    return fig
 
 
 def wants_wall(results):
@@ -177,6 +211,8 @@ def seabed_figure(results):
 def figures(results):
     """[(PNG name, figure maker)] of the plots that apply to these results."""
     makers = [(SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)]
+    if wants_plan(results):
+        makers.insert(1, (PLAN_PNG, plan_figure))
     if wants_wall(results):
         makers.append((WALL_PNG, wall_figure))
     if wants_seabed(results):

@@ -186,6 +186,7 @@ def test_plot_all_commands(designed_run, tmp_path, capsys):
     write_results(folder)
     assert plot_all.main([str(folder), "--dpi", "30"]) == 0
     assert capsys.readouterr().out.split() == [str(folder / "static_shape.png"),
+                                               str(folder / "static_plan.png"),
                                                str(folder / "static_tension.png")]
     designed, _, _ = designed_run
     args = plot_all.parse_args([str(designed), "-o", "out", "--window", "0.5", "1",

@@ -187,7 +187,7 @@ def test_script_writes_both_pngs(tmp_path, kind):
     proc = run_script(folder, "-o", out, "--dpi", 60, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     assert proc.stderr == ""
-    written = [out / "static_shape.png", out / "static_tension.png"]
+    written = [out / "static_shape.png", out / "static_plan.png", out / "static_tension.png"]
     assert proc.stdout.split() == [str(p) for p in written]
     for path in written:
         assert_png(path)

@@ -202,8 +202,28 @@ def test_static_dry_run_draws_no_sea(tmp_path):
     assert not np.any(res.lines[0].seabed_normal)
     ax = plot_static.shape_figure(res).axes[0]
     assert not gid_lines(ax, SURFACE_GID) and not gid_lines(ax, SEABED_GID)
-    assert [n for n, _ in plot_static.figures(res)] == [plot_static.SHAPE_PNG,
-                                                        plot_static.TENSION_PNG]
+    assert [n for n, _ in plot_static.figures(res)
+            if n != plot_static.PLAN_PNG] == [plot_static.SHAPE_PNG, plot_static.TENSION_PNG]
+
+
+def test_static_plan_only_when_the_lines_leave_their_plane(tmp_path):
+    folder = tmp_path / "dry"
+    folder.mkdir()
+    write_csv(folder, synthetic_lines())
+    write_status(folder)
+    res = load_static(folder)
+    flat = np.ptp(np.concatenate([line.node_xyz for line in res.lines])[:, 1])
+    assert plot_static.wants_plan(res) == (flat > 0.0)
+    for line in res.lines:
+        line.node_xyz[:, 1] = 0.0
+    assert not plot_static.wants_plan(res)
+    line = res.lines[0]
+    line.node_xyz[:, 1] = np.linspace(0.0, 2.0, len(line.node_xyz))
+    assert plot_static.wants_plan(res)
+    assert [n for n, _ in plot_static.figures(res)][:2] == [plot_static.SHAPE_PNG,
+                                                            plot_static.PLAN_PNG]
+    ax = plot_static.plan_figure(res).axes[0]
+    np.testing.assert_array_equal(ax.lines[0].get_ydata(), line.node_xyz[:, 1])
 
 
 def test_static_csv_of_an_older_rodyn_still_reads(tmp_path):
