@@ -75,6 +75,9 @@ def current_case(rodyn, tmp):
     out = [(f"current fairlead F{c} [N] (MoorDyn N={fin['segments']})", f[i], fr[i], 1e-2, "relmag")
            for i, c in enumerate("xyz")]
     out.append(("current fairlead tension [N]", np.linalg.norm(f), np.linalg.norm(fr), 1e-2, "rel"))
+    with open(os.path.join(tmp, "current", "static_nodes.csv")) as fh:
+        ymax = max(float(r["y_m"]) for r in csv.DictReader(fh))
+    out.append(("current largest sideways offset [m]", ymax, fin["max_y_m"], 1e-2, "rel"))
     return out, wall, np.linalg.norm(fr)
 
 
