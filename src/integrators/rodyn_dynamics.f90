@@ -31,7 +31,7 @@ module rodyn_dynamics
    use rodyn_state, only: state_t, state_allocate, state_copy
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
-                             external_force, assemble_water
+                             external_force, assemble_water, assemble_dynamic_cables
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_rotation, only: cross
@@ -240,6 +240,10 @@ contains
       call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                             this%beta_d, this%dt, this%fint, this%fdamp, &
                             this%bm, want_k)
+      if (any(this%mesh%line_cable)) &
+         call assemble_dynamic_cables(this%mesh, this%sup, this%s0, this%s1, this%scheme, &
+                                      this%wf, this%beta_d, this%dt, this%fint, this%fdamp, &
+                                      this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
       fx = 0.0_wp
       mx = 0.0_wp
