@@ -63,6 +63,7 @@ module rodyn_model
       real(wp) :: rhoi1 = -1.0_wp   !< rotary inertia per length about d1 [kg m]; < 0: default
       real(wp) :: rhoi2 = -1.0_wp   !< rotary inertia per length about d2 [kg m]; < 0: default
       real(wp) :: kappa0(3) = 0.0_wp !< stress-free curvature (K1, K2, K3) [1/m]
+      integer :: element = element_rod !< element_rod or element_cable (EI = GJ = 0)
       ! hydrodynamics and contents (used only when the deck has *WATER); docs/water.md
       real(wp) :: db = -1.0_wp      !< buoyancy (displacement) diameter [m]; < 0: OD
       real(wp) :: dd = -1.0_wp      !< drag diameter [m]; < 0: the buoyancy diameter
@@ -83,7 +84,7 @@ module rodyn_model
       real(wp) :: length = 0.0_wp   !< unstretched length [m]
       integer :: n_elements = 0     !< number of elements
       integer :: order = 3          !< Lagrange order of the elements (1, 2 or 3)
-      integer :: element = element_rod !< element_rod or element_cable
+      integer :: element = 0        !< element_rod or element_cable; 0: the sections'
       real(wp) :: end_a(3) = 0.0_wp !< position of end A (S = 0) [m]
       real(wp) :: end_b(3) = 0.0_wp !< position of end B (S = L) [m]
       logical :: has_d1_hint = .false.

@@ -60,7 +60,7 @@ contains
             l = mesh%elem_line(e)
             p = mesh%line_order(l)
             call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
-            if (mesh%line_cable(l)) then
+            if (mesh%elem_cable(e)) then
                w = w + cable_element_energy(p, mesh%elem_le(e), mesh%elem_c(3, e), &
                                             xe(:, 1:p + 1), mesh%rules(p))
             else

@@ -20,7 +20,7 @@ module rodyn_deck
    use rodyn_error, only: error_t, set_error, has_error, stat_input
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
                           bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b, &
-                          element_names, element_cable
+                          element_names, element_cable, element_rod
    use rodyn_deck_lexer, only: deck_t, card_t, deck_lex, card_check_params, &
                                card_find_param, card_error, card_param_error, &
                                card_data_error, card_get_real, card_get_int, card_get_name, &
@@ -242,14 +242,14 @@ contains
       type(section_t) :: sec
       character(len=:), allocatable :: name
       real(wp) :: v(5), k(3)
-      integer :: is
+      integer :: is, elem
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'OD', 'GA', &
                                 'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2', &
                                 'BUOYANCY DIAMETER', 'DRAG DIAMETER', 'CDN', 'CDA', 'CAN', &
                                 'CAA', 'ID', 'CONTENTS DENSITY', 'CONTENTS PRESSURE', &
-                                'PRESSURE Z'], err)
+                                'PRESSURE Z', 'ELEMENT'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -272,10 +272,18 @@ contains
          if (has_error(err)) return
          call card_data_reals(card, 1, 5, v, err, what1)
          if (has_error(err)) return
+         ! EI1, EI2, GJ > 0 for a rod; all three 0 make a cable section (ELEMENT=CABLE
+         ! by default), and a cable section may give any values >= 0 (it reads EA only)
+         elem = 0
+         call card_get_choice(card, 'ELEMENT', element_names, elem, err)
+         if (has_error(err)) return
+         if (elem == 0 .and. all(v(2:4) == 0.0_wp)) elem = element_cable
+         if (elem == 0) elem = element_rod
+         sec%element = elem
          call data_check(card, 1, 'EA', v(1), .true., err)
-         call data_check(card, 1, 'EI1', v(2), .true., err)
-         call data_check(card, 1, 'EI2', v(3), .true., err)
-         call data_check(card, 1, 'GJ', v(4), .true., err)
+         call data_check(card, 1, 'EI1', v(2), elem == element_rod, err)
+         call data_check(card, 1, 'EI2', v(3), elem == element_rod, err)
+         call data_check(card, 1, 'GJ', v(4), elem == element_rod, err)
          call data_check(card, 1, 'MASS', v(5), .false., err)
          if (has_error(err)) return
          sec%ea = v(1)
@@ -621,6 +629,8 @@ contains
          call check_line_geometry(deck%cards(pend%line_section(il)%card), model%lines(il), &
                                   err)
          if (has_error(err)) return
+         call check_line_element(deck%cards(pend%line_section(il)%card), model, il, err)
+         if (has_error(err)) return
       end do
 
       ib = 0
@@ -635,7 +645,7 @@ contains
             model%constraints(ib)%line = iref
             call check_unique_boundary(deck, pend, model, ib, err)
             if (has_error(err)) return
-            if (model%lines(iref)%element == element_cable .and. &
+            if (all_cable(model, iref) .and. &
                 (model%constraints(ib)%kind == bc_hinged .or. &
                  model%constraints(ib)%kind == bc_clamped)) &
                call param_fail(deck%cards(ic), 'TYPE', 'line '// &
@@ -648,8 +658,7 @@ contains
                               iref, model%loads(iload)%node, err)
             if (has_error(err)) return
             model%loads(iload)%line = iref
-            if (model%lines(iref)%element == element_cable .and. &
-                any(model%loads(iload)%moment /= 0.0_wp)) &
+            if (all_cable(model, iref) .and. any(model%loads(iload)%moment /= 0.0_wp)) &
                call card_data_error(deck%cards(ic), 1, 'line '//trim(model%lines(iref)%name)// &
                                     ' is made of cable elements, which take no moment: '// &
                                     'give Fx, Fy, Fz only', err)
@@ -671,6 +680,43 @@ contains
          if (has_error(err)) return
       end do
    end subroutine validate_model
+
+   !> Whether line il is made of cable elements only: its ELEMENT=, else its sections'.
+   pure logical function all_cable(model, il)
+      type(model_t), intent(in) :: model !< model, segments resolved
+      integer, intent(in) :: il          !< line
+      associate (line => model%lines(il))
+         if (line%element /= 0) then
+            all_cable = line%element == element_cable
+         else if (allocated(line%seg_section)) then
+            all_cable = all(model%sections(line%seg_section)%element == element_cable)
+         else
+            all_cable = model%sections(line%section)%element == element_cable
+         end if
+      end associate
+   end function all_cable
+
+   !> ELEMENT=ROD on a line needs rod sections: a section of EI1 = EI2 = GJ = 0 (or
+   !> ELEMENT=CABLE) cannot be a rod.
+   subroutine check_line_element(card, model, il, err)
+      type(card_t), intent(in) :: card       !< the *LINE card
+      type(model_t), intent(in) :: model     !< model, segments resolved
+      integer, intent(in) :: il              !< line
+      type(error_t), intent(inout) :: err    !< status
+      integer :: k, is
+      if (model%lines(il)%element /= element_rod) return
+      do k = 1, max(1, merge(size(model%lines(il)%seg_section), 0, &
+                             allocated(model%lines(il)%seg_section)))
+         is = model%lines(il)%section
+         if (allocated(model%lines(il)%seg_section)) is = model%lines(il)%seg_section(k)
+         if (model%sections(is)%element == element_cable) then
+            call param_fail(card, 'ELEMENT', 'ELEMENT=ROD, but section '// &
+                            trim(model%sections(is)%name)//' is a cable section '// &
+                            '(ELEMENT=CABLE, or EI1 = EI2 = GJ = 0)', err)
+            return
+         end if
+      end do
+   end subroutine check_line_element
 
    !> The geometry of a line with its total length (segments resolved): the ends do not
    !> coincide, are not farther apart than the length, and the d1 hint is not parallel

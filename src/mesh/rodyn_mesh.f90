@@ -33,10 +33,11 @@ module rodyn_mesh
       integer, allocatable :: line_first_elem(:)  !< (nl)
       integer, allocatable :: line_order(:)       !< (nl) element order p
       logical, allocatable :: line_catenary(:)    !< (nl) started as a catenary (held at both ends)
-      logical, allocatable :: line_cable(:)       !< (nl) cable elements (*LINE, ELEMENT=CABLE)
+      logical, allocatable :: line_cable(:)       !< (nl) only cable elements
       ! per element
       integer, allocatable :: elem_line(:)        !< (ne)
       integer, allocatable :: elem_sec(:)         !< (ne) section (model%sections index)
+      logical, allocatable :: elem_cable(:)       !< (ne) a cable element (else a rod)
       real(wp), allocatable :: elem_c(:, :)       !< (6, ne) diag(GA1,GA2,EA,EI1,EI2,GJ)
       real(wp), allocatable :: elem_mass(:)       !< (ne) mass per length, structure and
                                                   !< contents rho_i pi ID^2/4 [kg/m]
@@ -96,7 +97,6 @@ contains
       do l = 1, nl
          p = model%lines(l)%order
          mesh%line_order(l) = p
-         mesh%line_cable(l) = model%lines(l)%element == element_cable
          mesh%line_first_node(l) = nn + 1
          mesh%line_first_elem(l) = ne + 1
          mesh%line_n_nodes(l) = model%lines(l)%n_elements*p + 1
@@ -110,13 +110,17 @@ contains
       mesh%n_elements = ne
       allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
                 mesh%elem_s0(ne), mesh%eps0(6, max_points, ne), mesh%node_line(nn), &
-                mesh%node_s(nn), mesh%elem_sec(ne), mesh%elem_c(6, ne), mesh%elem_mass(ne))
+                mesh%node_s(nn), mesh%elem_sec(ne), mesh%elem_c(6, ne), mesh%elem_mass(ne), &
+                mesh%elem_cable(ne))
       mesh%elem_nodes = 0
       mesh%eps0 = 0.0_wp
       call state_allocate(state, nn)
       do l = 1, nl
          p = mesh%line_order(l)
          call line_elements(model, mesh, l)
+         associate (e1 => mesh%line_first_elem(l))
+            mesh%line_cable(l) = all(mesh%elem_cable(e1:e1 + model%lines(l)%n_elements - 1))
+         end associate
          call line_stress_free_strains(model, mesh, l)
          call line_initial_shape(model, mesh, l, state, err)
          if (has_error(err)) return
@@ -157,6 +161,12 @@ contains
                   e = mesh%line_first_elem(l) + el - 1
                   mesh%elem_line(e) = l
                   mesh%elem_sec(e) = isec
+                  ! the line's ELEMENT= if given, else the section's
+                  if (ld%element /= 0) then
+                     mesh%elem_cable(e) = ld%element == element_cable
+                  else
+                     mesh%elem_cable(e) = sec%element == element_cable
+                  end if
                   mesh%elem_c(:, e) = section_stiffness(sec)
                   mesh%elem_mass(e) = sec%mass + sec%rho_i*0.25_wp*pi*sec%id**2
                   mesh%elem_le(e) = seg_len/real(nel, wp)
@@ -247,7 +257,7 @@ contains
       do el = 1, model%lines(l)%n_elements
          e = mesh%line_first_elem(l) + el - 1
          kap = model%sections(mesh%elem_sec(e))%kappa0
-         if (all(kap == 0.0_wp) .or. mesh%line_cable(l)) cycle
+         if (all(kap == 0.0_wp) .or. mesh%elem_cable(e)) cycle
          kk = skew(kap)
          k = norm2(kap)
          do a = 1, p + 1

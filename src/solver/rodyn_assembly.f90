@@ -54,7 +54,7 @@ contains
       type(mesh_t), intent(in) :: mesh      !< mesh
       type(state_t), intent(in) :: state    !< initial configuration
       type(supports_t), intent(out) :: sup  !< supports
-      integer :: i, node, nn, l, k
+      integer :: i, node, nn, l, k, nen
       real(wp) :: ax(3), b(3), ends(3)
       nn = mesh%n_nodes
       allocate (sup%held(6, nn), sup%rotated(nn), sup%basis(3, 3, nn), sup%moved(nn), &
@@ -65,9 +65,12 @@ contains
       sup%basis = 0.0_wp
       sup%x_start = state%x
       sup%x_target = state%x
-      ! the nodes of a cable have no rotations: their rotation unknowns are held
-      do node = 1, nn
-         if (mesh%line_cable(mesh%node_line(node))) sup%held(4:6, node) = .true.
+      ! a node with cable elements only has no rotations: its rotation unknowns are held
+      sup%held(4:6, :) = .true.
+      do i = 1, mesh%n_elements
+         if (mesh%elem_cable(i)) cycle
+         nen = mesh%line_order(mesh%elem_line(i)) + 1
+         sup%held(4:6, mesh%elem_nodes(1:nen, i)) = .false.
       end do
       if (.not. allocated(model%constraints)) return
       do i = 1, size(model%constraints)
@@ -259,7 +262,7 @@ contains
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(state, nodes, xe, de)
-            if (mesh%line_cable(l)) then
+            if (mesh%elem_cable(e)) then
                call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), xe(:, 1:nen), &
                                          fc(:, 1:nen), kc(1:3*nen, 1:3*nen), want_k, &
                                          mesh%rules(p), slack_axial=.true.)
@@ -335,7 +338,7 @@ contains
       end if
       do e = 1, mesh%n_elements
          l = mesh%elem_line(e)
-         if (mesh%line_cable(l)) cycle     ! assemble_dynamic_cables
+         if (mesh%elem_cable(e)) cycle     ! assemble_dynamic_cables
          p = mesh%line_order(l)
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
@@ -388,7 +391,7 @@ contains
       logical, intent(in) :: want_k           !< form the tangent
       integer :: e
       do e = 1, mesh%n_elements
-         if (.not. mesh%line_cable(mesh%elem_line(e))) cycle
+         if (.not. mesh%elem_cable(e)) cycle
          call cable_dynamic(mesh, sup, e, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, want_k)
       end do
    end subroutine assemble_dynamic_cables

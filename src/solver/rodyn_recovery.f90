@@ -72,7 +72,7 @@ contains
          do el = 1, ne
             e = mesh%line_first_elem(l) + el - 1
             call state_gather(state, mesh%elem_nodes(1:p + 1, e), xe, de)
-            if (mesh%line_cable(l)) then
+            if (mesh%elem_cable(e)) then
                ! a cable: tension only (no shear, moment or curvature of its own)
                call cable_element_tension(p, mesh%elem_le(e), mesh%elem_c(3, e), &
                                           xe(:, 1:p + 1), mesh%rules(p), tens(1:p), tg(:, 1:p))
@@ -106,9 +106,11 @@ contains
          end if
          do k = 1, 2
             node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-            ! (a cable's rotation unknowns are all held: only its positions count)
+            e = mesh%line_first_elem(l) + merge(0, ne - 1, k == 1)
+            ! (the rotation unknowns of a cable's end are always held: only its position
+            ! counts)
             lines(l)%end_held(k) = any(held(1:3, node)) .or. &
-                                   (any(held(4:6, node)) .and. .not. mesh%line_cable(l))
+                                   (any(held(4:6, node)) .and. .not. mesh%elem_cable(e))
             lines(l)%reaction(:, k) = 0.0_wp
             if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = r(:, node)
          end do
