@@ -16,13 +16,13 @@
 !> tangent adds (1 - lambda) skew(R r_M(u0)) to each node's rotation block.
 !> A failed increment is first retried with the energy line search, then halved.
 !>
-!> Roll gauge. A line whose sections are all transversely isotropic (GA1 = GA2,
-!> EI1 = EI2), with no rotation held at any node and no point moment, can roll about its
-!> own centreline, uniformly, without any change of energy: that roll is a null vector
-!> of the static tangent, and its round-off blew the Newton corrections up to thousands
-!> of radians. The iteration matrix of such a line (not its residual) gets the
-!> stiffness k_g d3 d3^T against rotation about d3 at one node, its middle one, with
-!> k_g = max(EI, GJ)/le of an element there. The residual is unchanged and is
+!> Roll gauge. A line, or a run of rod elements between cable ones, whose sections are
+!> all transversely isotropic (GA1 = GA2, EI1 = EI2), with no rotation held at any node
+!> and no point moment, can roll about its own centreline, uniformly, without any change
+!> of energy: that roll is a null vector of the static tangent, and its round-off blew
+!> the Newton corrections up to thousands of radians. The iteration matrix of such a run
+!> (not its residual) gets the stiffness k_g d3 d3^T against rotation about d3 at one
+!> node, its middle one, with k_g = max(EI, GJ)/le of an element there. The residual is unchanged and is
 !> orthogonal to the null vector, so each Newton step is the exact one with its roll
 !> at that node set to zero, and the converged shape is the same.
 !>
@@ -56,8 +56,8 @@ module rodyn_statics
       real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
       real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
       real(wp), allocatable :: d0(:, :, :)    !< (3, 3, nn) directors of the start
-      integer, allocatable :: gauge_node(:)   !< (nl) node of the roll gauge, 0: none
-      real(wp), allocatable :: gauge_k(:)     !< (nl) its stiffness k_g [N m/rad]
+      integer, allocatable :: gauge_node(:)   !< (ne) node of each roll gauge, 0: none
+      real(wp), allocatable :: gauge_k(:)     !< (ne) its stiffness k_g [N m/rad]
       real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
@@ -92,44 +92,51 @@ contains
       call roll_gauges(mesh, prob%sup, prob%loads, prob%gauge_node, prob%gauge_k)
    end subroutine statics_setup
 
-   !> The roll gauge of each line (module header): its middle node and stiffness, or
-   !> node 0 where the line cannot roll freely.
+   !> The roll gauges (module header): for each run of consecutive rod elements of a line
+   !> that can roll freely, its middle node and stiffness; node 0 after the last.
    subroutine roll_gauges(mesh, sup, loads, gauge_node, gauge_k)
       type(mesh_t), intent(in) :: mesh              !< mesh
       type(supports_t), intent(in) :: sup           !< supports
       type(loads_t), intent(in) :: loads            !< point loads
-      integer, allocatable, intent(out) :: gauge_node(:) !< (nl) node, 0: none
-      real(wp), allocatable, intent(out) :: gauge_k(:)   !< (nl) stiffness [N m/rad]
-      integer :: l, e, e1, e2, em, i
+      integer, allocatable, intent(out) :: gauge_node(:) !< (ne) node per run, 0: none
+      real(wp), allocatable, intent(out) :: gauge_k(:)   !< (ne) stiffness [N m/rad]
+      integer :: e, e1, e2, em, i, nr
       logical :: free
-      allocate (gauge_node(mesh%n_lines), gauge_k(mesh%n_lines))
+      allocate (gauge_node(mesh%n_elements), gauge_k(mesh%n_elements))
       gauge_node = 0
       gauge_k = 0.0_wp
-      do l = 1, mesh%n_lines
-         e1 = mesh%line_first_elem(l)
+      nr = 0
+      ! each run of consecutive rod elements of one line (cable elements have no roll)
+      e1 = 1
+      do while (e1 <= mesh%n_elements)
+         if (mesh%elem_cable(e1)) then
+            e1 = e1 + 1
+            cycle
+         end if
          e2 = e1
          do while (e2 < mesh%n_elements)
-            if (mesh%elem_line(e2 + 1) /= l) exit
+            if (mesh%elem_line(e2 + 1) /= mesh%elem_line(e1) .or. mesh%elem_cable(e2 + 1)) exit
             e2 = e2 + 1
          end do
          free = .true.
          do e = e1, e2
             associate (c => mesh%elem_c(:, e), &
-                       nodes => mesh%elem_nodes(1:mesh%line_order(l) + 1, e))
+                       nodes => mesh%elem_nodes(1:mesh%line_order(mesh%elem_line(e)) + 1, e))
                if (c(1) /= c(2) .or. c(4) /= c(5)) free = .false.
                do i = 1, size(nodes)
                   if (any(sup%held(4:6, nodes(i))) .or. sup%rotated(nodes(i))) free = .false.
+                  if (any(loads%pt_node == nodes(i) .and. &
+                          any(loads%pt_fm(4:6, :) /= 0.0_wp, dim=1))) free = .false.
                end do
             end associate
          end do
-         do i = 1, size(loads%pt_node)
-            if (mesh%node_line(loads%pt_node(i)) == l .and. any(loads%pt_fm(4:6, i) /= 0.0_wp)) &
-               free = .false.
-         end do
-         if (.not. free) cycle
-         em = (e1 + e2)/2
-         gauge_node(l) = mesh%elem_nodes(1, em)
-         gauge_k(l) = maxval(mesh%elem_c(4:6, em))/mesh%elem_le(em)
+         if (free) then
+            nr = nr + 1
+            em = (e1 + e2)/2
+            gauge_node(nr) = mesh%elem_nodes(1, em)
+            gauge_k(nr) = maxval(mesh%elem_c(4:6, em))/mesh%elem_le(em)
+         end if
+         e1 = e2 + 1
       end do
    end subroutine roll_gauges
 
@@ -199,9 +206,9 @@ contains
          end if
       end do
       if (.not. want_k) return
-      do l = 1, this%mesh%n_lines
+      do l = 1, size(this%gauge_node)
          node = this%gauge_node(l)
-         if (node == 0) cycle
+         if (node == 0) exit
          d3 = this%state%d(:, 3, node)
          kb = 0.0_wp
          do i = 1, 3
