@@ -18,11 +18,12 @@
 !>
 !> Roll gauge. A line, or a run of rod elements between cable ones, whose sections are
 !> all transversely isotropic (GA1 = GA2, EI1 = EI2), with no rotation held at any node
-!> and no point moment, can roll about its own centreline, uniformly, without any change
-!> of energy: that roll is a null vector of the static tangent, and its round-off blew
-!> the Newton corrections up to thousands of radians. The iteration matrix of such a run
-!> (not its residual) gets the stiffness k_g d3 d3^T against rotation about d3 at one
-!> node, its middle one, with k_g = max(EI, GJ)/le of an element there. The residual is unchanged and is
+!> and no point moment, can roll about its own centreline, uniformly, without any
+!> change of energy: that roll is a null vector of the static tangent, and its
+!> round-off blew the Newton corrections up to thousands of radians. The iteration
+!> matrix of such a run (not its residual) gets the stiffness k_g d3 d3^T against
+!> rotation about d3 at one node, its middle one, k_g = max(EI, GJ)/le of an element
+!> there. The residual is unchanged and is
 !> orthogonal to the null vector, so each Newton step is the exact one with its roll
 !> at that node set to zero, and the converged shape is the same.
 !>
