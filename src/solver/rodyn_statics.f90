@@ -23,9 +23,9 @@
 !> round-off blew the Newton corrections up to thousands of radians. The iteration
 !> matrix of such a run (not its residual) gets the stiffness k_g d3 d3^T against
 !> rotation about d3 at one node, its middle one, k_g = max(EI, GJ)/le of an element
-!> there. The residual is unchanged and is
-!> orthogonal to the null vector, so each Newton step is the exact one with its roll
-!> at that node set to zero, and the converged shape is the same.
+!> there. The residual is unchanged and is orthogonal to the null vector, so each
+!> Newton step is the exact one with its roll at that node set to zero, and the
+!> converged shape is the same.
 !>
 !> Self-weight is applied in full from the start on a line that starts as a catenary
 !> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda.
