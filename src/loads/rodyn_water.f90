@@ -41,6 +41,10 @@ module rodyn_water
       real(wp) :: xi(max_wp, max_order) = 0.0_wp   !< Gauss points
       real(wp) :: n(max_nen, max_wp, max_order) = 0.0_wp  !< N_a at the points
       real(wp) :: dn(max_nen, max_wp, max_order) = 0.0_wp !< dN_a/dxi at the points
+      real(wp) :: ws4(4) = 0.0_wp                  !< the seabed's 4-point Gauss rule
+      real(wp) :: xs4(4) = 0.0_wp
+      real(wp) :: ns4(max_nen, 4, max_order) = 0.0_wp  !< N_a there (a whole element)
+      real(wp) :: dns4(max_nen, 4, max_order) = 0.0_wp !< dN_a/dxi there
       integer, allocatable :: att_node(:)          !< (na) node of each attachment
       real(wp), allocatable :: att_volume(:)       !< (na) displaced volume [m3]
       real(wp), allocatable :: att_cda(:)          !< (na) drag coefficient x area [m2]
@@ -88,11 +92,15 @@ contains
             ws%dc = max(s%db, 0.0_wp)
          end associate
       end do
+      call gauss_rule(4, wl%xs4, wl%ws4)
       do p = 1, max_order
          wl%ng(p) = p + 1
          call gauss_rule(p + 1, wl%xi(1:p + 1, p), wl%w(1:p + 1, p))
          do g = 1, p + 1
             call shape_lagrange(p, wl%xi(g, p), wl%n(1:p + 1, g, p), wl%dn(1:p + 1, g, p))
+         end do
+         do g = 1, 4
+            call shape_lagrange(p, wl%xs4(g), wl%ns4(1:p + 1, g, p), wl%dns4(1:p + 1, g, p))
          end do
       end do
       allocate (wl%att_node(0), wl%att_volume(0), wl%att_cda(0))
@@ -134,7 +142,7 @@ contains
       real(wp), intent(out) :: ke(:, :)        !< (3(p+1), 3(p+1)) d(fh + fs)/dx^{n+1} [N/m]
       logical, intent(in) :: want_k            !< form ke
       real(wp) :: wj, nn(max_nen), ds(max_nen), gapn(max_nen), gcon(max_nen)
-      real(wp) :: lo(max_order + 1), hi(max_order + 1), xg(4), wg(4), xi
+      real(wp) :: lo(max_order + 1), hi(max_order + 1), xi
       integer :: g, a, nen, nparts, k
       nen = p + 1
       fh = 0.0_wp
@@ -155,13 +163,18 @@ contains
                                         [(dot_product(wl%env%n, vf(:, a)), a=1, nen)]
       if (minval(gcon(1:nen)) > 0.1_wp*le) return
       call contact_parts(p, gcon(1:nen), nparts, lo, hi)
-      call gauss_rule(4, xg, wg)
       do k = 1, nparts
          do g = 1, 4
-            xi = 0.5_wp*(lo(k) + hi(k)) + 0.5_wp*(hi(k) - lo(k))*xg(g)
-            call shape_lagrange(p, xi, nn(1:nen), ds(1:nen))
-            ds(1:nen) = ds(1:nen)*2.0_wp/le
-            wj = wg(g)*0.5_wp*(hi(k) - lo(k))*0.5_wp*le
+            if (lo(k) == -1.0_wp .and. hi(k) == 1.0_wp) then
+               ! the whole element in contact (a grounded stretch): the stored functions
+               nn(1:nen) = wl%ns4(1:nen, g, p)
+               ds(1:nen) = wl%dns4(1:nen, g, p)*2.0_wp/le
+            else
+               xi = 0.5_wp*(lo(k) + hi(k)) + 0.5_wp*(hi(k) - lo(k))*wl%xs4(g)
+               call shape_lagrange(p, xi, nn(1:nen), ds(1:nen))
+               ds(1:nen) = ds(1:nen)*2.0_wp/le
+            end if
+            wj = wl%ws4(g)*0.5_wp*(hi(k) - lo(k))*0.5_wp*le
             call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, &
                                  part_seabed, fh, fs, ke, want_k)
          end do
