@@ -44,6 +44,8 @@ module rodyn_results
       integer :: cutbacks = 0                   !< halvings needed by the step
       real(wp) :: kinetic = 0.0_wp              !< kinetic energy [J]
       real(wp) :: strain = 0.0_wp               !< stored (strain) energy [J]
+      real(wp) :: strain_scale = 0.0_wp         !< its round-off scale (energy identity
+                                                !< check only; not written) [J]
       real(wp) :: gravity = 0.0_wp              !< potential of the weight, -sum f_g . x [J]
       real(wp) :: external_work = 0.0_wp        !< work done on the line since t = 0 by
                                                 !< prescribed motions and loads [J]

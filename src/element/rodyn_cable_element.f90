@@ -29,7 +29,7 @@ module rodyn_cable_element
    implicit none
    private
    public :: cable_element_static, cable_element_dynamic, cable_element_energy
-   public :: cable_element_tension
+   public :: cable_element_tension, cable_element_energy_scale
 
    real(wp), parameter :: slack_floor = 1.0e-6_wp !< least phi / EA in the static matrix
 
@@ -149,6 +149,23 @@ contains
                      norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le)))
       end do
    end function cable_element_energy
+
+   !> Round-off scale of the stored energy, sum over the points of wj N [J] (as
+   !> rod_element_energy_scale).
+   pure function cable_element_energy_scale(p, le, ea, xe, rule) result(scale)
+      integer, intent(in) :: p                !< element order
+      real(wp), intent(in) :: le              !< unstretched element length [m]
+      real(wp), intent(in) :: ea              !< axial stiffness [N]
+      real(wp), intent(in) :: xe(3, p + 1)    !< nodal positions [m]
+      type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): its first p points are used
+      real(wp) :: scale
+      integer :: g
+      scale = 0.0_wp
+      do g = 1, p
+         scale = scale + rule%w(g)*0.5_wp*le*ea* &
+                 max(norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le)) - 1.0_wp, 0.0_wp)
+      end do
+   end function cable_element_energy_scale
 
    !> Tension N = EA max(lambda - 1, 0) [N] and the unit tangent at the p points.
    pure subroutine cable_element_tension(p, le, ea, xe, rule, tension, tangent)

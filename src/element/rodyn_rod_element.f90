@@ -29,6 +29,7 @@ module rodyn_rod_element
    public :: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, rod_gp_jacobian
    public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
    public :: rod_element_static, rod_element_strains, rod_element_energy
+   public :: rod_element_energy_scale
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule
 
@@ -458,6 +459,35 @@ contains
          energy = energy + 0.25_wp*le*w(g)*sum(mask(:, g)*c*(eps(:, g) - eps0(:, g))**2)
       end do
    end function rod_element_energy
+
+   !> The stored energy (as rod_element_energy) and its round-off scale [J]: sum over
+   !> points of wj sum_k |S_k|, the
+   !> resultants S = C (eps - eps0) times a unit strain. A strain is a difference of
+   !> numbers of order 1 (x'.d3 - 1), so each carries an absolute round-off of order
+   !> epsilon, and the energy one of order epsilon times this scale: under a large
+   !> prestress far above epsilon times the energy itself.
+   pure subroutine rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale)
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, max_points) !< stress-free strains
+      real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
+      real(wp), intent(out) :: energy             !< stored energy (rod_element_energy) [J]
+      real(wp), intent(out) :: scale              !< its round-off scale [J]
+      real(wp) :: eps(6, max_points), xig(max_points), xi(max_points), w(max_points)
+      real(wp) :: mask(6, max_points), s(6)
+      integer :: g, np
+      call rod_element_strains(p, le, xe, de, eps, xig)
+      call rod_quadrature(p, np, xi, w, mask)
+      energy = 0.0_wp
+      scale = 0.0_wp
+      do g = 1, np
+         s = mask(:, g)*c*(eps(:, g) - eps0(:, g))
+         energy = energy + 0.25_wp*le*w(g)*sum(s*(eps(:, g) - eps0(:, g)))
+         scale = scale + 0.5_wp*le*w(g)*sum(abs(s))
+      end do
+   end subroutine rod_element_energy_scale
 
    !> Consistent nodal forces of a uniform line load q [N/m]: f_a = q int N_a dS,
    !> integrated exactly with p+1 Gauss points.

@@ -19,8 +19,8 @@ module rodyn_timeloop
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_begin_step, dynamics_end_step, &
                              dynamics_accept_step
    use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
-   use rodyn_rod_element, only: rod_element_energy, max_points
-   use rodyn_cable_element, only: cable_element_energy
+   use rodyn_rod_element, only: rod_element_energy_scale, max_points
+   use rodyn_cable_element, only: cable_element_energy, cable_element_energy_scale
    use rodyn_rotation, only: rotation_cayley_inverse
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
@@ -48,13 +48,16 @@ module rodyn_timeloop
 
 contains
 
-   !> Stored energy of the whole mesh in the iterate state [J].
-   function strain_energy(prob) result(w)
+   !> Stored energy of the whole mesh in the iterate state [J], and its round-off scale
+   !> (rod_element_energy_scale) [J].
+   subroutine strain_energy(prob, w, scale)
       type(dynamic_problem_t), intent(in) :: prob !< problem
-      real(wp) :: w
-      real(wp) :: xe(3, max_nen), de(3, 3, max_nen)
+      real(wp), intent(out) :: w                  !< stored energy [J]
+      real(wp), intent(out) :: scale              !< its round-off scale [J]
+      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), we, se
       integer :: e, l, p
       w = 0.0_wp
+      scale = 0.0_wp
       associate (mesh => prob%mesh)
          do e = 1, mesh%n_elements
             l = mesh%elem_line(e)
@@ -63,21 +66,26 @@ contains
             if (mesh%elem_cable(e)) then
                w = w + cable_element_energy(p, mesh%elem_le(e), mesh%elem_c(3, e), &
                                             xe(:, 1:p + 1), mesh%rules(p))
+               scale = scale + cable_element_energy_scale(p, mesh%elem_le(e), &
+                                                          mesh%elem_c(3, e), xe(:, 1:p + 1), &
+                                                          mesh%rules(p))
             else
-               w = w + rod_element_energy(p, mesh%elem_le(e), mesh%elem_c(:, e), &
-                                          mesh%eps0(:, :, e), xe(:, 1:p + 1), &
-                                          de(:, :, 1:p + 1))
+               call rod_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                             mesh%eps0(:, :, e), xe(:, 1:p + 1), &
+                                             de(:, :, 1:p + 1), we, se)
+               w = w + we
+               scale = scale + se
             end if
          end do
       end associate
-   end function strain_energy
+   end subroutine strain_energy
 
    !> Energies and momenta of the iterate state into log (work terms untouched).
    subroutine step_energies(prob, log)
       type(dynamic_problem_t), intent(in) :: prob !< problem
       type(step_log_t), intent(inout) :: log      !< filled
       log%kinetic = kinetic_energy(prob%inert, prob%s1)
-      log%strain = strain_energy(prob)
+      call strain_energy(prob, log%strain, log%strain_scale)
       log%gravity = -sum(prob%loads%gravity*prob%s1%x)
       log%total = log%kinetic + log%strain + log%gravity
       log%momentum = linear_momentum(prob%inert, prob%s1)
@@ -284,7 +292,12 @@ contains
          trial = log
          call step_energies(prob, trial)
          if (prob%scheme /= scheme_emc) return
-         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, w_damp, e_tol)
+         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, w_damp, e_tol, &
+                                          0.0_wp)
+         ! (the residual's work, needed only by steps near the bound, computed for them)
+         if (.not. accepted) accepted = energy_identity_holds(log, trial, w_ext + w_hydro + &
+                                                              w_seabed, w_damp, e_tol, &
+                                                              residual_work(prob))
          if (.not. accepted) call set_error(nerr, stat_numerical, 'the converged '// &
             'step breaks the energy identity of EMC (a spurious root)')
          if (.not. accepted .and. log_unit >= 0) write (log_unit, '(a)') &
@@ -309,26 +322,59 @@ contains
       end subroutine look_ahead
    end subroutine timeloop_run
 
+   !> Bound of the work the residual left by Newton (within its tolerance) does over the
+   !> step: 2 sum over nodes of |r_x| |x^n+1 - x^n| + |r_theta| phi, free unknowns
+   !> only (phi the angle the node turned in the step). EMC's energy identity holds up to this work:
+   !> in a small vibration under a large prestress it is not small against the energy
+   !> exchanged, and a sound step was taken for a spurious root (a taut wire vibrating at
+   !> 1e-4 of its length stopped after 6 halvings with 250 steps a period).
+   function residual_work(prob) result(b)
+      type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
+      real(wp) :: b
+      real(wp) :: rx, rt
+      integer :: node, k, j
+      b = 0.0_wp
+      do node = 1, prob%mesh%n_nodes
+         k = 6*(node - 1)
+         rx = 0.0_wp
+         rt = 0.0_wp
+         do j = 1, 3
+            if (.not. prob%sup%held(j, node)) rx = rx + prob%rhs(k + j)**2
+            if (.not. prob%sup%held(3 + j, node)) rt = rt + prob%rhs(k + 3 + j)**2
+         end do
+         b = b + sqrt(rx)*norm2(prob%dx(:, node))
+         ! the step's rotation angle from the directors: |d^n+1 - d^n|_F = 2 sqrt(2)
+         ! |sin(phi/2)|, about sqrt(2) phi (the factor 2 below covers the difference)
+         if (rt > 0.0_wp) b = b + sqrt(rt)*norm2(prob%s1%d(:, :, node) - &
+                                                 prob%s0%d(:, :, node))/sqrt(2.0_wp)
+      end do
+      b = 2.0_wp*b
+   end function residual_work
+
    !> EMC's discrete energy identity over one converged step: the change of total energy
    !> equals the work of supports and loads less the damping work, up to the Newton
-   !> tolerance. Measured on the paper's case 1 (9000 steps) the mismatch is below 1e-7
+   !> tolerance (the work the residual left does, residual_work, and tol of the energy
+   !> exchanged). Measured on the paper's case 1 (9000 steps) the mismatch is below 1e-7
    !> of the largest energy exchanged in the step (change of kinetic, strain or gravity
    !> energy, or the work); a root of the step equations far from the motion, which a
    !> line search can reach after wandering, breaks it by the order of the exchange
    !> itself (1.9 in a step of the paper's cable heaved 2 m at 2 Hz, after which the
    !> run accepted steps adding up to 9e9 J). Such a step is treated as not converged.
-   logical function energy_identity_holds(before, after, w_ext, w_damp, tol)
+   logical function energy_identity_holds(before, after, w_ext, w_damp, tol, slack)
       type(step_log_t), intent(in) :: before  !< energies at t_n
       type(step_log_t), intent(in) :: after   !< energies at t_n+1
       real(wp), intent(in) :: w_ext           !< work of supports and loads in the step [J]
       real(wp), intent(in) :: w_damp          !< energy taken by damping in the step [J]
       real(wp), intent(in) :: tol             !< allowed mismatch / exchange [-]
+      real(wp), intent(in) :: slack           !< work of the residual left (bound) [J]
       real(wp) :: mismatch, exchange, level
       mismatch = abs((after%total - before%total) - (w_ext - w_damp))
       exchange = max(abs(after%kinetic - before%kinetic), abs(after%strain - before%strain), &
                      abs(after%gravity - before%gravity), abs(w_ext), abs(w_damp))
       level = abs(after%kinetic) + abs(after%strain) + abs(after%gravity)
-      energy_identity_holds = mismatch <= tol*exchange + 1.0e3_wp*epsilon(1.0_wp)*level
+      energy_identity_holds = mismatch <= tol*exchange + slack + epsilon(1.0_wp)* &
+                              (1.0e3_wp*level + 1.0e2_wp*max(before%strain_scale, &
+                                                             after%strain_scale))
    end function energy_identity_holds
 
    !> Where a failed iterate is not finite, for the message: the first node (line name,
