@@ -15,6 +15,7 @@ program rodyn
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_banded, only: banded_free
+   use rodyn_assembly, only: dof_map
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_output, only: output_write_static, output_write_status
@@ -41,7 +42,8 @@ program rodyn
    real(wp), allocatable :: r0(:, :)
    character(len=:), allocatable :: missing
    logical :: static_runs, show_progress
-   integer :: log_unit
+   integer :: log_unit, n_dof, half_bw
+   integer, allocatable :: dof_first(:), dof_count(:)
 
    call cli_parse(opts, err)
    if (has_error(err)) then
@@ -64,10 +66,11 @@ program rodyn
       write (error_unit, '(a)') err%message
       call finish(err%code)
    end if
+   call dof_map(mesh, dof_first, dof_count, n_dof, half_bw)
    if (opts%check) then
       if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a,i0,a,i0,a)') &
          opts%deck//': ok: ', mesh%n_lines, ' line(s), ', mesh%n_elements, ' elements, ', &
-         mesh%n_nodes, ' nodes, ', 6*mesh%n_nodes, ' unknowns'
+         mesh%n_nodes, ' nodes, ', n_dof, ' unknowns'
       call finish(stat_ok)
    end if
 
@@ -96,7 +99,7 @@ program rodyn
    if (static_runs) then
       if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a)') 'rodyn '//rodyn_version// &
          ': '//opts%deck//': static analysis, ', mesh%n_elements, ' elements, ', &
-         6*mesh%n_nodes, ' unknowns'
+         n_dof, ' unknowns'
       call statics_run(prob, model, mesh, state, summary, err, log_unit)
       if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
       ! results of the last converged state, complete or not

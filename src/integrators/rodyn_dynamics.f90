@@ -87,11 +87,11 @@ contains
       type(mesh_t), intent(in), target :: mesh       !< mesh
       type(state_t), intent(in), target :: state     !< start state, then the iterate
       integer :: nn, i
+      call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
       prob%model => model
       prob%s1 => state
       nn = mesh%n_nodes
-      call supports_build(model, mesh, state, prob%sup)
       prob%sup%moved = .false.     ! POSITION targets were reached in statics
       call loads_build(model, mesh, prob%loads)
       call water_loads_build(model, mesh, prob%water)
@@ -368,8 +368,8 @@ contains
          ca = 2.0_wp/dt**2
       end if
       this%xf = this%s0%x + this%wf*this%dx
-      call assemble_water(this%water, this%mesh, this%xf, this%vf, this%af_acc, this%wf, cv, &
-                          ca, this%fint, this%bm, want_k)
+      call assemble_water(this%water, this%mesh, this%sup, this%xf, this%vf, this%af_acc, &
+                          this%wf, cv, ca, this%fint, this%bm, want_k)
    end subroutine water_loads_step
 
    !> Remember the iterate (positions, directors, step displacement) as the base of the
@@ -386,11 +386,19 @@ contains
       class(dynamic_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                   !< step length [-]
       integer :: node, k
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         this%dx(:, node) = this%dx_base(:, node) + alpha*this%du(k + 1:k + 3)
-         this%s1%x(:, node) = this%s0%x(:, node) + this%dx(:, node)
-      end do
+      if (this%sup%uniform) then      ! (two loops: the rod's layout costs what it did)
+         do node = 1, this%mesh%n_nodes
+            k = 6*(node - 1)
+            this%dx(:, node) = this%dx_base(:, node) + alpha*this%du(k + 1:k + 3)
+            this%s1%x(:, node) = this%s0%x(:, node) + this%dx(:, node)
+         end do
+      else
+         do node = 1, this%mesh%n_nodes
+            k = this%sup%first(node) - 1
+            this%dx(:, node) = this%dx_base(:, node) + alpha*this%du(k + 1:k + 3)
+            this%s1%x(:, node) = this%s0%x(:, node) + this%dx(:, node)
+         end do
+      end if
       call this%rotate_from_base(alpha, this%s1%d)
    end subroutine dyn_apply_correction
 end module rodyn_dynamics

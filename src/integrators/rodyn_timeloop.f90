@@ -335,13 +335,17 @@ contains
       integer :: node, k, j
       b = 0.0_wp
       do node = 1, prob%mesh%n_nodes
-         k = 6*(node - 1)
+         k = prob%sup%first(node) - 1
          rx = 0.0_wp
          rt = 0.0_wp
          do j = 1, 3
             if (.not. prob%sup%held(j, node)) rx = rx + prob%rhs(k + j)**2
-            if (.not. prob%sup%held(3 + j, node)) rt = rt + prob%rhs(k + 3 + j)**2
          end do
+         if (prob%sup%ndof(node) == 6) then
+            do j = 1, 3
+               if (.not. prob%sup%held(3 + j, node)) rt = rt + prob%rhs(k + 3 + j)**2
+            end do
+         end if
          b = b + sqrt(rx)*norm2(prob%dx(:, node))
          ! the step's rotation angle from the directors: |d^n+1 - d^n|_F = 2 sqrt(2)
          ! |sin(phi/2)|, about sqrt(2) phi (the factor 2 below covers the difference)

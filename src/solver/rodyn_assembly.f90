@@ -1,7 +1,8 @@
 !> Global assembly of internal forces and tangents over all elements, the external load
 !> vectors, and the node constraints (held, hinged about an axis, prescribed position).
 !>
-!> Unknowns: 6 per node, dof 6(a-1)+j: j = 1..3 translation, 4..6 spatial rotation.
+!> Unknowns: 6 per node, dof first(a)+j-1: j = 1..3 translation, 4..6 spatial rotation;
+!> a node with cable elements only has the 3 translations (supports_t's dof map).
 !> A hinged node has its rotation unknowns expressed in the basis (axis, b, c) by an
 !> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T.
 module rodyn_assembly
@@ -24,7 +25,7 @@ module rodyn_assembly
    public :: supports_t, loads_t, supports_build, loads_build
    public :: assemble_static, assemble_dynamic, assemble_dynamic_cables, apply_supports
    public :: external_force
-   public :: add_node_block, assemble_water
+   public :: add_node_block, assemble_water, dof_map
 
    !> Node constraints, fixed for the run.
    type :: supports_t
@@ -34,6 +35,15 @@ module rodyn_assembly
       logical, allocatable :: moved(:)         !< (nn) node has a prescribed position
       real(wp), allocatable :: x_start(:, :)   !< (3, nn) position at load factor 0 [m]
       real(wp), allocatable :: x_target(:, :)  !< (3, nn) position at load factor 1 [m]
+      integer, allocatable :: first(:)         !< (nn) first dof of each node
+      integer, allocatable :: ndof(:)          !< (nn) its unknowns: 6, or 3 (cable only)
+      integer :: n_dof = 0                     !< unknowns of the linear system
+      integer :: half_bw = 0                   !< its half bandwidth
+      logical :: uniform = .true.              !< 6 unknowns at every node: first = 6(a-1)+1
+      integer :: n_held = 0                    !< held unknowns of the linear system
+      integer, allocatable :: held_dof(:)      !< (n_held) each one's dof
+      integer, allocatable :: held_node(:)     !< (n_held) its node
+      integer, allocatable :: held_j(:)        !< (n_held) and the node's dof j (1..6)
    end type supports_t
 
    !> External loads given by the deck, global axes: the weight, and the point loads with
@@ -55,7 +65,7 @@ contains
       type(state_t), intent(in) :: state    !< initial configuration
       type(supports_t), intent(out) :: sup  !< supports
       integer :: i, node, nn, l, k, nen
-      real(wp) :: ax(3), b(3), ends(3)
+      real(wp) :: ends(3)
       nn = mesh%n_nodes
       allocate (sup%held(6, nn), sup%rotated(nn), sup%basis(3, 3, nn), sup%moved(nn), &
                 sup%x_start(3, nn), sup%x_target(3, nn))
@@ -72,7 +82,47 @@ contains
          nen = mesh%line_order(mesh%elem_line(i)) + 1
          sup%held(4:6, mesh%elem_nodes(1:nen, i)) = .false.
       end do
-      if (.not. allocated(model%constraints)) return
+      ! ... and no rotation unknowns in the linear system: 3 dofs, not 6
+      call dof_map(mesh, sup%first, sup%ndof, sup%n_dof, sup%half_bw)
+      sup%uniform = all(sup%ndof == 6)
+      if (allocated(model%constraints)) call constraints_apply(model, mesh, sup)
+      ! a held end that the starting shape put off its deck position (a grounded catenary
+      ! with its touchdown on a node, rodyn_mesh) is moved there by the statics
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            ends = merge(model%lines(l)%end_a, model%lines(l)%end_b, k == 1)
+            if (.not. sup%held(1, node) .or. sup%moved(node)) cycle
+            if (norm2(state%x(:, node) - ends) <= 1.0e-12_wp*model%lines(l)%length) cycle
+            sup%moved(node) = .true.
+            sup%x_target(:, node) = ends
+         end do
+      end do
+      ! the held unknowns of the linear system, listed (apply_supports)
+      sup%n_held = 0
+      do node = 1, nn
+         sup%n_held = sup%n_held + count(sup%held(1:sup%ndof(node), node))
+      end do
+      allocate (sup%held_dof(sup%n_held), sup%held_node(sup%n_held), sup%held_j(sup%n_held))
+      i = 0
+      do node = 1, nn
+         do k = 1, sup%ndof(node)
+            if (.not. sup%held(k, node)) cycle
+            i = i + 1
+            sup%held_dof(i) = sup%first(node) + k - 1
+            sup%held_node(i) = node
+            sup%held_j(i) = k
+         end do
+      end do
+   end subroutine supports_build
+
+   !> The *BOUNDARY cards' constraints into sup (supports_build).
+   subroutine constraints_apply(model, mesh, sup)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(supports_t), intent(inout) :: sup !< supports
+      integer :: i, node
+      real(wp) :: ax(3), b(3)
       do i = 1, size(model%constraints)
          associate (c => model%constraints(i))
             node = mesh_node(mesh, c%line, c%node)
@@ -100,19 +150,38 @@ contains
             end select
          end associate
       end do
-      ! a held end that the starting shape put off its deck position (a grounded catenary
-      ! with its touchdown on a node, rodyn_mesh) is moved there by the statics
-      do l = 1, mesh%n_lines
-         do k = 1, 2
-            node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-            ends = merge(model%lines(l)%end_a, model%lines(l)%end_b, k == 1)
-            if (.not. sup%held(1, node) .or. sup%moved(node)) cycle
-            if (norm2(state%x(:, node) - ends) <= 1.0e-12_wp*model%lines(l)%length) cycle
-            sup%moved(node) = .true.
-            sup%x_target(:, node) = ends
-         end do
+   end subroutine constraints_apply
+
+   !> The unknowns of the linear system: 6 at a node with a rod element, 3 (the
+   !> translations) at a node with cable elements only; node after node, so that the
+   !> half bandwidth is the largest span of one element's unknowns.
+   subroutine dof_map(mesh, first, ndof, n_dof, half_bw)
+      type(mesh_t), intent(in) :: mesh                !< mesh
+      integer, allocatable, intent(out) :: first(:)   !< (nn) first dof of each node
+      integer, allocatable, intent(out) :: ndof(:)    !< (nn) its unknowns
+      integer, intent(out) :: n_dof                   !< unknowns
+      integer, intent(out) :: half_bw                 !< half bandwidth
+      integer :: e, nen, node
+      allocate (first(mesh%n_nodes), ndof(mesh%n_nodes))
+      ndof = 3
+      do e = 1, mesh%n_elements
+         if (mesh%elem_cable(e)) cycle
+         nen = mesh%line_order(mesh%elem_line(e)) + 1
+         ndof(mesh%elem_nodes(1:nen, e)) = 6
       end do
-   end subroutine supports_build
+      n_dof = 0
+      do node = 1, mesh%n_nodes
+         first(node) = n_dof + 1
+         n_dof = n_dof + ndof(node)
+      end do
+      half_bw = 0
+      do e = 1, mesh%n_elements
+         nen = mesh%line_order(mesh%elem_line(e)) + 1
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            half_bw = max(half_bw, maxval(first(nodes) + ndof(nodes)) - 1 - minval(first(nodes)))
+         end associate
+      end do
+   end subroutine dof_map
 
    !> Load vectors: consistent self-weight m g int N_a dS (m with the contents) plus the
    !> weight of the attachments at their nodes, and the point loads with their amplitudes.
@@ -185,9 +254,10 @@ contains
    !> from the matrix; xf, vf, af the nodes' positions, velocities and accelerations at
    !> the force point, moving with the unknowns by cx, cv, ca. The nodal forces are kept
    !> in wl%fh (water) and wl%fs (seabed).
-   subroutine assemble_water(wl, mesh, xf, vf, af, cx, cv, ca, fint, bm, want_k)
+   subroutine assemble_water(wl, mesh, sup, xf, vf, af, cx, cv, ca, fint, bm, want_k)
       type(water_loads_t), intent(inout) :: wl !< loads (nodal forces updated)
       type(mesh_t), intent(in) :: mesh         !< mesh
+      type(supports_t), intent(in) :: sup      !< supports (dof map)
       real(wp), intent(in) :: xf(:, :)         !< (3, nn) positions [m]
       real(wp), intent(in) :: vf(:, :)         !< (3, nn) velocities [m/s]
       real(wp), intent(in) :: af(:, :)         !< (3, nn) accelerations [m/s2]
@@ -219,7 +289,7 @@ contains
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
                wl%fs(:, nodes(a)) = wl%fs(:, nodes(a)) + fs(:, a)
                do j = 1, 3
-                  dofs(3*(a - 1) + j) = 6*(nodes(a) - 1) + j
+                  dofs(3*(a - 1) + j) = sup%first(nodes(a)) + j - 1
                end do
             end do
             if (want_k) call banded_add(bm, dofs(1:3*nen), -ke(1:3*nen, 1:3*nen))
@@ -231,7 +301,7 @@ contains
                                cx, cv, f, k, want_k)
          fint(1:3, node) = fint(1:3, node) - f
          wl%fh(:, node) = wl%fh(:, node) + f
-         if (want_k) call banded_add(bm, [(6*(node - 1) + j, j=1, 3)], -k)
+         if (want_k) call banded_add(bm, [(sup%first(node) + j - 1, j=1, 3)], -k)
       end do
    end subroutine assemble_water
 
@@ -266,21 +336,22 @@ contains
                call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), xe(:, 1:nen), &
                                          fc(:, 1:nen), kc(1:3*nen, 1:3*nen), want_k, &
                                          mesh%rules(p), slack_axial=.true.)
-               call cable_to_rod(nen, fc, kc, want_k, fe, ke)
+               call scatter_cable(sup, nodes, fc(:, 1:nen), kc(1:3*nen, 1:3*nen), fint, bm, &
+                                  want_k)
             else
                e0 = eps0_scale*mesh%eps0(:, :, e)
                call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
                                        xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
                                        ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
+               call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, &
+                                    bm, want_k)
             end if
-            call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, &
-                                 want_k)
          end associate
       end do
    end subroutine assemble_static
 
-   !> Add an element's forces to fint and, if want_k, its matrix (in the node bases of
-   !> rotated nodes) to the banded tangent.
+   !> Add a rod element's forces to fint and, if want_k, its matrix (in the node bases of
+   !> rotated nodes) to the banded tangent (its nodes all have 6 unknowns).
    subroutine scatter_element(sup, nodes, fe, ke, fint, bm, want_k)
       type(supports_t), intent(in) :: sup   !< supports (node bases)
       integer, intent(in) :: nodes(:)       !< (nen) global nodes of the element
@@ -297,7 +368,7 @@ contains
       if (.not. want_k) return
       do a = 1, nen
          do j = 1, 6
-            dofs(6*(a - 1) + j) = 6*(nodes(a) - 1) + j
+            dofs(6*(a - 1) + j) = sup%first(nodes(a)) + j - 1
          end do
          if (sup%rotated(nodes(a))) call rotate_rows_cols(ke, a, sup%basis(:, :, nodes(a)))
       end do
@@ -397,7 +468,7 @@ contains
    end subroutine assemble_dynamic_cables
 
    !> assemble_dynamic for one cable element: its step force and tangent, the Rayleigh
-   !> damping f_d = beta/dt K_e(x^{n+1/2}) (x^{n+1} - x^n), scattered in the rod's layout.
+   !> damping f_d = beta/dt K_e(x^{n+1/2}) (x^{n+1} - x^n), scattered (scatter_cable).
    subroutine cable_dynamic(mesh, sup, e, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
                             want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
@@ -410,7 +481,7 @@ contains
       real(wp), intent(inout) :: fdamp(:, :)  !< (6, nn) damping forces [N]
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
-      real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
+      real(wp) :: x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d(3, 3, max_nen), fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
       real(wp) :: ks(3*max_nen, 3*max_nen), du(3*max_nen), fd(3*max_nen)
       integer :: p, nen, a, j, nc
@@ -437,45 +508,53 @@ contains
             end do
             if (want_k) kc(1:nc, 1:nc) = kc(1:nc, 1:nc) + beta/dt*ks(1:nc, 1:nc)
          end if
-         call cable_to_rod(nen, fc, kc, want_k, fe, ke)
-         call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, bm, want_k)
+         call scatter_cable(sup, nodes, fc(:, 1:nen), kc(1:nc, 1:nc), fint, bm, want_k)
       end associate
    end subroutine cable_dynamic
 
-   !> A cable element's forces (3, nen) and matrix (3 nen, 3 nen) in the rod's layout of
-   !> 6 unknowns a node, with zero moments and zero rotation rows and columns (the
-   !> supports hold a cable's rotations).
-   pure subroutine cable_to_rod(nen, fc, kc, want_k, fe, ke)
-      integer, intent(in) :: nen           !< nodes of the element
-      real(wp), intent(in) :: fc(:, :)     !< (3, nen) forces [N]
-      real(wp), intent(in) :: kc(:, :)     !< (3 nen, 3 nen) matrix
-      logical, intent(in) :: want_k        !< the matrix too
-      real(wp), intent(inout) :: fe(:, :)  !< (6, nen)
-      real(wp), intent(inout) :: ke(:, :)  !< (6 nen, 6 nen)
-      integer :: a, b
-      fe(1:3, 1:nen) = fc(:, 1:nen)
-      fe(4:6, 1:nen) = 0.0_wp
+   !> Add a cable element's forces (3, nen) to fint and, if want_k, its matrix
+   !> (3 nen, 3 nen) to the tangent on its nodes' translation unknowns (a node shared
+   !> with a rod keeps its rotations, which the cable does not touch).
+   subroutine scatter_cable(sup, nodes, fc, kc, fint, bm, want_k)
+      type(supports_t), intent(in) :: sup   !< supports (dof map)
+      integer, intent(in) :: nodes(:)       !< (nen) global nodes of the element
+      real(wp), intent(in) :: fc(:, :)      !< (3, nen) element forces [N]
+      real(wp), intent(in) :: kc(:, :)      !< (3 nen, 3 nen) element matrix
+      real(wp), intent(inout) :: fint(:, :) !< (6, nn) global forces
+      type(banded_t), intent(inout) :: bm   !< tangent
+      logical, intent(in) :: want_k         !< add the matrix
+      integer :: dofs(3*max_nen), a, j, nen
+      nen = size(nodes)
+      do a = 1, nen
+         fint(1:3, nodes(a)) = fint(1:3, nodes(a)) + fc(:, a)
+      end do
       if (.not. want_k) return
-      ke(1:6*nen, 1:6*nen) = 0.0_wp
-      do b = 1, nen
-         do a = 1, nen
-            ke(6*a - 5:6*a - 3, 6*b - 5:6*b - 3) = kc(3*a - 2:3*a, 3*b - 2:3*b)
+      do a = 1, nen
+         do j = 1, 3
+            dofs(3*(a - 1) + j) = sup%first(nodes(a)) + j - 1
          end do
       end do
-   end subroutine cable_to_rod
+      call banded_add(bm, dofs(1:3*nen), kc)
+   end subroutine scatter_cable
 
    !> Add a 6x6 block (force/moment of one node against its own unknowns) to the
-   !> tangent, in the node's basis if it has one.
+   !> tangent, in the node's basis if it has one (the 3x3 translation block only at a
+   !> node without rotation unknowns).
    subroutine add_node_block(sup, node, kb, bm)
       type(supports_t), intent(in) :: sup   !< supports (node bases)
       integer, intent(in) :: node           !< global node
       real(wp), intent(in) :: kb(6, 6)      !< block, global axes
       type(banded_t), intent(inout) :: bm   !< tangent
       real(wp) :: k(6, 6)
-      integer :: j, dofs(6)
+      integer :: j, dofs(6), nd
+      nd = sup%ndof(node)
+      dofs = [(sup%first(node) + j - 1, j=1, 6)]
+      if (nd == 3) then            ! no rotation unknowns: the translation block only
+         call banded_add(bm, dofs(1:3), kb(1:3, 1:3))
+         return
+      end if
       k = kb
       if (sup%rotated(node)) call rotate_rows_cols(k, 1, sup%basis(:, :, node))
-      dofs = [(6*(node - 1) + j, j=1, 6)]
       call banded_add(bm, dofs, k)
    end subroutine add_node_block
 
@@ -512,32 +591,40 @@ contains
       type(supports_t), intent(in) :: sup   !< supports
       real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
       real(wp), intent(in) :: gap(:, :)     !< (3, nn) prescribed position - position [m]
-      real(wp), intent(out) :: rhs(:)       !< (6 nn) right-hand side
+      real(wp), intent(out) :: rhs(:)       !< (n_dof) right-hand side
       type(banded_t), intent(inout) :: bm   !< tangent
       logical, intent(in) :: want_k         !< the tangent was formed: fix its held dofs
-      integer :: node, j, k
+      integer :: node, j, k, i
+      logical :: uni
+      uni = sup%uniform
+      ! 6 unknowns a node unless the map says otherwise (uni a local: tested once per node)
       do node = 1, size(r, 2)
          k = 6*(node - 1)
+         if (.not. uni) then
+            k = sup%first(node) - 1
+            if (sup%ndof(node) == 3) then
+               rhs(k + 1:k + 3) = r(1:3, node)
+               cycle
+            end if
+         end if
          rhs(k + 1:k + 6) = r(:, node)
          if (sup%rotated(node)) rhs(k + 4:k + 6) = matmul(transpose(sup%basis(:, :, node)), &
                                                           r(4:6, node))
       end do
       do node = 1, size(r, 2)
          if (.not. sup%moved(node)) cycle
+         k = sup%first(node) - 1
          do j = 1, 3
-            if (want_k) call banded_keep_column(bm, 6*(node - 1) + j)
-            if (gap(j, node) /= 0.0_wp) call banded_kept_axpy(bm, 6*(node - 1) + j, &
-                                                              gap(j, node), rhs)
+            if (want_k) call banded_keep_column(bm, k + j)
+            if (gap(j, node) /= 0.0_wp) call banded_kept_axpy(bm, k + j, gap(j, node), rhs)
          end do
       end do
-      do node = 1, size(r, 2)
-         k = 6*(node - 1)
-         do j = 1, 6
-            if (.not. sup%held(j, node)) cycle
-            rhs(k + j) = 0.0_wp
-            if (j <= 3) rhs(k + j) = -gap(j, node)
-            if (want_k) call banded_fix_dof(bm, k + j)
-         end do
+      do i = 1, sup%n_held
+         k = sup%held_dof(i)
+         j = sup%held_j(i)
+         rhs(k) = 0.0_wp
+         if (j <= 3) rhs(k) = -gap(j, sup%held_node(i))
+         if (want_k) call banded_fix_dof(bm, k)
       end do
    end subroutine apply_supports
 end module rodyn_assembly

@@ -181,17 +181,25 @@ contains
       end do
    end subroutine banded_matvec
 
-   !> LU-factorise in place (dgbtrf). A zero pivot is a numerical error naming the dof.
-   subroutine banded_factor(bm, err)
-      type(banded_t), intent(inout) :: bm !< matrix, replaced by its LU factors
-      type(error_t), intent(inout) :: err !< status
-      integer :: info
-      character(len=120) :: msg
+   !> LU-factorise in place (dgbtrf). A zero pivot is a numerical error naming the dof,
+   !> and its node and the node's own dof if the first dof of each node is given.
+   subroutine banded_factor(bm, err, first)
+      type(banded_t), intent(inout) :: bm       !< matrix, replaced by its LU factors
+      type(error_t), intent(inout) :: err       !< status
+      integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
+      integer :: info, node
+      character(len=160) :: msg
       call dgbtrf(bm%n, bm%n, bm%kl, bm%ku, bm%ab, bm%ldab, bm%ipiv, info)
       if (info /= 0) then
-         write (msg, '(a,i0,a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
-            ': singular stiffness at node ', (abs(info) - 1)/6 + 1, ', dof ', &
-            mod(abs(info) - 1, 6) + 1, ' (a mechanism: check the supports)'
+         if (present(first)) then
+            node = count(first <= abs(info))
+            write (msg, '(a,i0,a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
+               ': singular stiffness at node ', node, ', dof ', abs(info) - first(node) + 1, &
+               ' (a mechanism: check the supports)'
+         else
+            write (msg, '(a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
+               ': singular stiffness at dof ', abs(info), ' (a mechanism: check the supports)'
+         end if
          call set_error(err, stat_numerical, trim(msg))
          return
       end if

@@ -23,8 +23,8 @@ module rodyn_rod_problem
       real(wp), allocatable :: fext(:, :)      !< (6, nn) external forces
       real(wp), allocatable :: r(:, :)         !< (6, nn) residual, global axes
       real(wp), allocatable :: gap(:, :)       !< (3, nn) prescribed - current position [m]
-      real(wp), allocatable :: rhs(:)          !< (6 nn) residual in node bases, held = -gap
-      real(wp), allocatable :: du(:)           !< (6 nn) Newton correction
+      real(wp), allocatable :: rhs(:)          !< (n_dof) residual in node bases, held = -gap
+      real(wp), allocatable :: du(:)           !< (n_dof) Newton correction
       real(wp), allocatable :: x_base(:, :)    !< (3, nn) base of the line search
       real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
       type(banded_t) :: bm                     !< tangent, then its LU factors
@@ -44,7 +44,8 @@ module rodyn_rod_problem
 
 contains
 
-   !> Allocate the shared workspace of a mesh and set the convergence scales.
+   !> Allocate the shared workspace of a mesh and set the convergence scales; the
+   !> supports (prob%sup, with their dof map) are built before.
    subroutine rod_problem_init(prob, model, mesh)
       class(rod_problem_t), intent(inout) :: prob !< problem
       type(model_t), intent(in) :: model          !< model
@@ -53,10 +54,11 @@ contains
       prob%mesh => mesh
       nn = mesh%n_nodes
       allocate (prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), prob%gap(3, nn), &
-                prob%rhs(6*nn), prob%du(6*nn), prob%x_base(3, nn), prob%d_base(3, 3, nn))
+                prob%rhs(prob%sup%n_dof), prob%du(prob%sup%n_dof), prob%x_base(3, nn), &
+                prob%d_base(3, 3, nn))
       prob%fext = 0.0_wp
       prob%gap = 0.0_wp
-      call banded_init(prob%bm, 6*nn, 6*mesh%max_nen - 1)
+      call banded_init(prob%bm, prob%sup%n_dof, prob%sup%half_bw)
       prob%lref = maxval(model%lines%length)
       prob%href = minval(mesh%elem_le)
       ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
@@ -76,11 +78,21 @@ contains
       integer :: node, k
       rf = 0.0_wp
       rm = 0.0_wp
-      do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
-         rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
-      end do
+      ! two loops, so that the rod's layout costs what it did before the dof map
+      if (this%sup%uniform) then
+         do node = 1, this%mesh%n_nodes
+            k = 6*(node - 1)
+            rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
+            rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
+         end do
+      else
+         do node = 1, this%mesh%n_nodes
+            k = this%sup%first(node) - 1
+            rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
+            if (this%sup%ndof(node) == 3) cycle
+            rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
+         end do
+      end if
       mref = max(maxval(abs(this%fext(4:6, :))), this%m_extra, this%m_floor)
       fref = max(maxval(abs(this%fext(1:3, :))), this%f_extra, mref/this%lref, this%f_floor)
       mref = max(mref, fref*this%href)
@@ -94,7 +106,7 @@ contains
       type(error_t), intent(inout) :: err         !< status
       if (this%tangent_new) then
          this%tangent_new = .false.
-         call banded_factor(this%bm, err)
+         call banded_factor(this%bm, err, this%sup%first)
          if (has_error(err)) return
          this%factors_ok = .true.
       else if (.not. this%factors_ok) then
@@ -111,9 +123,18 @@ contains
       real(wp) :: v
       integer :: node, k
       v = 0.0_wp
+      if (this%sup%uniform) then
+         do node = 1, this%mesh%n_nodes
+            k = 6*(node - 1)
+            v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, &
+                    maxval(abs(this%du(k + 4:k + 6))))
+         end do
+         return
+      end if
       do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
-         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, maxval(abs(this%du(k + 4:k + 6))))
+         k = this%sup%first(node) - 1
+         v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref)
+         if (this%sup%ndof(node) == 6) v = max(v, maxval(abs(this%du(k + 4:k + 6))))
       end do
    end function rod_correction_norm
 
@@ -132,8 +153,23 @@ contains
       real(wp), intent(inout) :: d(:, :, :)    !< (3, 3, nn) directors updated
       real(wp) :: th(3), rot(3, 3), db(3, 3)
       integer :: node, k
+      if (this%sup%uniform) then      ! (two loops: the rod's layout costs what it did)
+         do node = 1, this%mesh%n_nodes
+            k = 6*(node - 1)
+            th = alpha*this%du(k + 4:k + 6)
+            if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
+            rot = rotation_cayley(th)
+            db = this%d_base(:, :, node)
+            d(:, :, node) = matmul(rot, db)
+         end do
+         return
+      end if
       do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
+         if (this%sup%ndof(node) == 3) then      ! no rotation unknowns
+            d(:, :, node) = this%d_base(:, :, node)
+            cycle
+         end if
+         k = this%sup%first(node) - 1
          th = alpha*this%du(k + 4:k + 6)
          if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
          rot = rotation_cayley(th)

@@ -77,10 +77,10 @@ contains
       type(mesh_t), intent(in), target :: mesh      !< mesh
       type(state_t), intent(in), target :: state    !< configuration, updated by solves
       integer :: nn
+      call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
       prob%state => state
       nn = mesh%n_nodes
-      call supports_build(model, mesh, state, prob%sup)
       call loads_build(model, mesh, prob%loads)
       call water_loads_build(model, mesh, prob%water)
       allocate (prob%zero3(3, nn))
@@ -166,9 +166,10 @@ contains
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
       ! buoyancy and seabed contact in full from the start, current drag times lambda
-      if (this%water%active) call assemble_water(this%water, this%mesh, this%state%x, &
-                                                 this%zero3, this%zero3, 1.0_wp, 0.0_wp, &
-                                                 0.0_wp, this%fint, this%bm, want_k)
+      if (this%water%active) call assemble_water(this%water, this%mesh, this%sup, &
+                                                 this%state%x, this%zero3, this%zero3, &
+                                                 1.0_wp, 0.0_wp, 0.0_wp, this%fint, &
+                                                 this%bm, want_k)
       call homotopy_and_gauge(this, want_k)
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
@@ -231,7 +232,7 @@ contains
       real(wp), intent(in) :: alpha                  !< step length [-]
       integer :: node, k
       do node = 1, this%mesh%n_nodes
-         k = 6*(node - 1)
+         k = this%sup%first(node) - 1
          this%state%x(:, node) = this%x_base(:, node) + alpha*this%du(k + 1:k + 3)
       end do
       call this%rotate_from_base(alpha, this%state%d)
