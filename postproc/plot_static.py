@@ -48,11 +48,6 @@ WALL_PNG = "static_wall_tension.png"
 SEABED_PNG = "static_seabed.png"
 
 
-def shape_curve(line):
-    """Plotted data of static_shape.png for one line: node x [m], node z [m]."""
-    return line.node_xyz[:, 0], line.node_xyz[:, 2]
-
-
 def tension_curves(line):
     """Plotted data of static_tension.png for one line: S [m] of the integration
     points, effective tension [kN], bending moment magnitude sqrt(M1^2+M2^2) [kN m]."""
@@ -85,19 +80,24 @@ def wants_plan(results):
     return span[1] > 1e-6 * max(span[0], span[2], 1e-30)
 
 
-def plan_figure(results):
-    """Figure of the x-y plan view of every line: nodes marked, held ends marked."""
-    fig = Figure(figsize=(7.5, 5), layout="constrained")
-    ax = fig.add_subplot()
+def draw_lines(ax, results, k):
+    """Every line's nodes in the x-(axis k) plane, its held ends marked."""
     support_label = "support"
     for line in results.lines:
-        x, y = line.node_xyz[:, 0], line.node_xyz[:, 1]
+        x, y = line.node_xyz[:, 0], line.node_xyz[:, k]
         ax.plot(x, y, "-o", markersize=3, linewidth=1.5, label=line.name)
         for end, held in zip((0, -1), line.end_held):
             if held:
                 ax.plot(x[end], y[end], "k^", markersize=10, markerfacecolor="none",
                         markeredgewidth=1.5, label=support_label)
-                support_label = None
+                support_label = None  # one legend entry for all supports
+
+
+def plan_figure(results):
+    """Figure of the x-y plan view of every line: nodes marked, held ends marked."""
+    fig = Figure(figsize=(7.5, 5), layout="constrained")
+    ax = fig.add_subplot()
+    draw_lines(ax, results, 1)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
@@ -125,15 +125,7 @@ def shape_figure(results):
     sea surface, seabed and current profile when the run has water."""
     fig = Figure(figsize=(7.5, 5), layout="constrained")
     ax = fig.add_subplot()
-    support_label = "support"
-    for line in results.lines:
-        x, z = shape_curve(line)
-        ax.plot(x, z, "-o", markersize=3, linewidth=1.5, label=line.name)
-        for end, held in zip((0, -1), line.end_held):
-            if held:
-                ax.plot(x[end], z[end], "k^", markersize=10, markerfacecolor="none",
-                        markeredgewidth=1.5, label=support_label)
-                support_label = None  # one legend entry for all supports
+    draw_lines(ax, results, 2)
     env = results.environment
     if env is not None:
         xyz = [line.node_xyz for line in results.lines]

@@ -142,30 +142,31 @@ contains
       real(wp), intent(in) :: xe(3, p + 1)    !< nodal positions [m]
       type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): its first p points are used
       real(wp) :: energy
-      integer :: g
-      energy = 0.0_wp
-      do g = 1, p
-         energy = energy + rule%w(g)*0.5_wp*le*strain_energy(ea, &
-                     norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le)))
-      end do
+      real(wp) :: scale
+      call cable_element_energy_scale(p, le, ea, xe, rule, energy, scale)
    end function cable_element_energy
 
-   !> Round-off scale of the stored energy, sum over the points of wj N [J] (as
-   !> rod_element_energy_scale).
-   pure function cable_element_energy_scale(p, le, ea, xe, rule) result(scale)
+   !> The stored energy (cable_element_energy) and its round-off scale, the sum over the
+   !> points of wj N [J] (as rod_element_energy_scale).
+   pure subroutine cable_element_energy_scale(p, le, ea, xe, rule, energy, scale)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
       real(wp), intent(in) :: ea              !< axial stiffness [N]
       real(wp), intent(in) :: xe(3, p + 1)    !< nodal positions [m]
       type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): its first p points are used
-      real(wp) :: scale
+      real(wp), intent(out) :: energy         !< stored energy [J]
+      real(wp), intent(out) :: scale          !< its round-off scale [J]
+      real(wp) :: lam, wj
       integer :: g
+      energy = 0.0_wp
       scale = 0.0_wp
       do g = 1, p
-         scale = scale + rule%w(g)*0.5_wp*le*ea* &
-                 max(norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le)) - 1.0_wp, 0.0_wp)
+         wj = rule%w(g)*0.5_wp*le
+         lam = norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le))
+         energy = energy + wj*strain_energy(ea, lam)
+         scale = scale + wj*ea*max(lam - 1.0_wp, 0.0_wp)
       end do
-   end function cable_element_energy_scale
+   end subroutine cable_element_energy_scale
 
    !> Tension N = EA max(lambda - 1, 0) [N] and the unit tangent at the p points.
    pure subroutine cable_element_tension(p, le, ea, xe, rule, tension, tangent)

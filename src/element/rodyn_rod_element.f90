@@ -449,15 +449,8 @@ contains
       real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp) :: energy
-      real(wp) :: eps(6, max_points), xig(max_points), xi(max_points), w(max_points)
-      real(wp) :: mask(6, max_points)
-      integer :: g, np
-      call rod_element_strains(p, le, xe, de, eps, xig)
-      call rod_quadrature(p, np, xi, w, mask)
-      energy = 0.0_wp
-      do g = 1, np
-         energy = energy + 0.25_wp*le*w(g)*sum(mask(:, g)*c*(eps(:, g) - eps0(:, g))**2)
-      end do
+      real(wp) :: scale
+      call rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale)
    end function rod_element_energy
 
    !> The stored energy (as rod_element_energy) and its round-off scale [J]: sum over

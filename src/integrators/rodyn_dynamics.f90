@@ -240,7 +240,7 @@ contains
       call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                             this%beta_d, this%dt, this%fint, this%fdamp, &
                             this%bm, want_k)
-      if (any(this%mesh%elem_cable)) &
+      if (this%mesh%n_cable > 0) &
          call assemble_dynamic_cables(this%mesh, this%sup, this%s0, this%s1, this%scheme, &
                                       this%wf, this%beta_d, this%dt, this%fint, this%fdamp, &
                                       this%bm, want_k)

@@ -20,7 +20,7 @@ module rodyn_timeloop
                              dynamics_accept_step
    use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
    use rodyn_rod_element, only: rod_element_energy_scale, max_points
-   use rodyn_cable_element, only: cable_element_energy, cable_element_energy_scale
+   use rodyn_cable_element, only: cable_element_energy_scale
    use rodyn_rotation, only: rotation_cayley_inverse
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
@@ -64,18 +64,15 @@ contains
             p = mesh%line_order(l)
             call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
             if (mesh%elem_cable(e)) then
-               w = w + cable_element_energy(p, mesh%elem_le(e), mesh%elem_c(3, e), &
-                                            xe(:, 1:p + 1), mesh%rules(p))
-               scale = scale + cable_element_energy_scale(p, mesh%elem_le(e), &
-                                                          mesh%elem_c(3, e), xe(:, 1:p + 1), &
-                                                          mesh%rules(p))
+               call cable_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                               xe(:, 1:p + 1), mesh%rules(p), we, se)
             else
                call rod_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                              mesh%eps0(:, :, e), xe(:, 1:p + 1), &
                                              de(:, :, 1:p + 1), we, se)
-               w = w + we
-               scale = scale + se
             end if
+            w = w + we
+            scale = scale + se
          end do
       end associate
    end subroutine strain_energy

@@ -38,6 +38,7 @@ module rodyn_mesh
       integer, allocatable :: elem_line(:)        !< (ne)
       integer, allocatable :: elem_sec(:)         !< (ne) section (model%sections index)
       logical, allocatable :: elem_cable(:)       !< (ne) a cable element (else a rod)
+      integer :: n_cable = 0                      !< how many elements are cables
       real(wp), allocatable :: elem_c(:, :)       !< (6, ne) diag(GA1,GA2,EA,EI1,EI2,GJ)
       real(wp), allocatable :: elem_mass(:)       !< (ne) mass per length, structure and
                                                   !< contents rho_i pi ID^2/4 [kg/m]
@@ -125,6 +126,7 @@ contains
          call line_initial_shape(model, mesh, l, state, err)
          if (has_error(err)) return
       end do
+      mesh%n_cable = count(mesh%elem_cable)
       allocate (mesh%att_node(0))
       if (allocated(model%attachments)) mesh%att_node = [(mesh_nearest_node(mesh, &
          model%attachments(k)%line, model%attachments(k)%s), k=1, size(model%attachments))]

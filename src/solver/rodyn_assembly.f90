@@ -460,57 +460,40 @@ contains
       real(wp), intent(inout) :: fdamp(:, :)  !< (6, nn) damping forces [N]
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
-      integer :: e
-      do e = 1, mesh%n_elements
-         if (.not. mesh%elem_cable(e)) cycle
-         call cable_dynamic(mesh, sup, e, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, want_k)
-      end do
-   end subroutine assemble_dynamic_cables
-
-   !> assemble_dynamic for one cable element: its step force and tangent, the Rayleigh
-   !> damping f_d = beta/dt K_e(x^{n+1/2}) (x^{n+1} - x^n), scattered (scatter_cable).
-   subroutine cable_dynamic(mesh, sup, e, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
-                            want_k)
-      type(mesh_t), intent(in) :: mesh        !< mesh
-      type(supports_t), intent(in) :: sup     !< supports
-      integer, intent(in) :: e                !< element
-      type(state_t), intent(in) :: s0, s1     !< states at t_n and t_n+1
-      integer, intent(in) :: scheme           !< scheme_* constant
-      real(wp), intent(in) :: wf, beta, dt    !< as assemble_dynamic
-      real(wp), intent(inout) :: fint(:, :)   !< (6, nn) internal forces [N]
-      real(wp), intent(inout) :: fdamp(:, :)  !< (6, nn) damping forces [N]
-      type(banded_t), intent(inout) :: bm     !< tangent
-      logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d(3, 3, max_nen), fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
       real(wp) :: ks(3*max_nen, 3*max_nen), du(3*max_nen), fd(3*max_nen)
-      integer :: p, nen, a, j, nc
-      p = mesh%line_order(mesh%elem_line(e))
-      nen = p + 1
-      nc = 3*nen
-      associate (nodes => mesh%elem_nodes(1:nen, e))
-         call state_gather(s0, nodes, x0, d)
-         call state_gather(s1, nodes, x1, d)
-         call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), x0(:, 1:nen), &
-                                    x1(:, 1:nen), scheme, wf, fc(:, 1:nen), kc(1:nc, 1:nc), &
-                                    want_k, mesh%rules(p))
-         if (beta > 0.0_wp) then
-            call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), &
-                                      0.5_wp*(x0(:, 1:nen) + x1(:, 1:nen)), fs(:, 1:nen), &
-                                      ks(1:nc, 1:nc), .true., mesh%rules(p))
-            du(1:nc) = reshape(x1(:, 1:nen) - x0(:, 1:nen), [nc])
-            do j = 1, nc
-               fd(j) = beta/dt*dot_product(ks(j, 1:nc), du(1:nc))
-            end do
-            fc(:, 1:nen) = fc(:, 1:nen) + reshape(fd(1:nc), [3, nen])
-            do a = 1, nen
-               fdamp(1:3, nodes(a)) = fdamp(1:3, nodes(a)) + fd(3*a - 2:3*a)
-            end do
-            if (want_k) kc(1:nc, 1:nc) = kc(1:nc, 1:nc) + beta/dt*ks(1:nc, 1:nc)
-         end if
-         call scatter_cable(sup, nodes, fc(:, 1:nen), kc(1:nc, 1:nc), fint, bm, want_k)
-      end associate
-   end subroutine cable_dynamic
+      integer :: e, p, nen, a, j, nc
+      do e = 1, mesh%n_elements
+         if (.not. mesh%elem_cable(e)) cycle
+         p = mesh%line_order(mesh%elem_line(e))
+         nen = p + 1
+         nc = 3*nen
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            call state_gather(s0, nodes, x0, d)
+            call state_gather(s1, nodes, x1, d)
+            call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), x0(:, 1:nen), &
+                                       x1(:, 1:nen), scheme, wf, fc(:, 1:nen), &
+                                       kc(1:nc, 1:nc), want_k, mesh%rules(p))
+            ! Rayleigh damping f_d = beta/dt K_e(x^{n+1/2}) (x^{n+1} - x^n)
+            if (beta > 0.0_wp) then
+               call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                         0.5_wp*(x0(:, 1:nen) + x1(:, 1:nen)), fs(:, 1:nen), &
+                                         ks(1:nc, 1:nc), .true., mesh%rules(p))
+               du(1:nc) = reshape(x1(:, 1:nen) - x0(:, 1:nen), [nc])
+               do j = 1, nc
+                  fd(j) = beta/dt*dot_product(ks(j, 1:nc), du(1:nc))
+               end do
+               fc(:, 1:nen) = fc(:, 1:nen) + reshape(fd(1:nc), [3, nen])
+               do a = 1, nen
+                  fdamp(1:3, nodes(a)) = fdamp(1:3, nodes(a)) + fd(3*a - 2:3*a)
+               end do
+               if (want_k) kc(1:nc, 1:nc) = kc(1:nc, 1:nc) + beta/dt*ks(1:nc, 1:nc)
+            end if
+            call scatter_cable(sup, nodes, fc(:, 1:nen), kc(1:nc, 1:nc), fint, bm, want_k)
+         end associate
+      end do
+   end subroutine assemble_dynamic_cables
 
    !> Add a cable element's forces (3, nen) to fint and, if want_k, its matrix
    !> (3 nen, 3 nen) to the tangent on its nodes' translation unknowns (a node shared

@@ -12,10 +12,11 @@ Usage: check_cable_vs_rod.py RODYN OUT_DIR. Exit 0 on success."""
 import csv
 import os
 import shutil
-import subprocess
 import sys
 
 import numpy as np
+
+from deck_run import run_deck
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "..", "..", "input")
@@ -24,13 +25,8 @@ TOL_RMS = 1.0e-3
 
 
 def tension(rodyn, deck, out, name):
-    path = os.path.join(out, name + ".inp")
-    with open(path, "w") as f:
-        f.write(deck)
-    res = os.path.join(out, name)
-    proc = subprocess.run([rodyn, path, "-o", res, "--quiet"], capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"FAIL: {name}: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+    """Fairlead (end B) tension history of a run of the deck text."""
+    res = run_deck(rodyn, deck, out, name)
     with open(os.path.join(res, "dynamic_ends.csv")) as f:
         return np.array([float(r["tension_N"]) for r in csv.DictReader(f) if r["end"] == "B"])
 

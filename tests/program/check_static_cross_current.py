@@ -13,8 +13,9 @@ Usage: check_static_cross_current.py RODYN OUT_DIR. Exit 0 when the fairlead for
 the touchdown of the two runs agree to TOL."""
 import csv
 import os
-import subprocess
 import sys
+
+from deck_run import run_deck
 
 DECK = """*HEADING
 Mooring leg (a rod of EI = GJ = 1e5 N m2) in a 1 m/s current across its plane
@@ -37,25 +38,14 @@ Mooring leg (a rod of EI = GJ = 1e5 N m2) in a 1 m/s current across its plane
 TOL = 1.0e-6
 
 
-def run(rodyn, deck_text, out, name):
-    path = os.path.join(out, name + ".inp")
-    with open(path, "w") as f:
-        f.write(deck_text)
-    res = os.path.join(out, name)
-    proc = subprocess.run([rodyn, path, "-o", res, "--quiet"], capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"FAIL: {name}: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
-    return res
-
-
 def main():
     rodyn, out = sys.argv[1:3]
     os.makedirs(out, exist_ok=True)
     static = DECK.format(ramp="", increments=20, dynamic="")
     relax = DECK.format(ramp=", RAMP=30.0", increments=10,
                         dynamic="*DYNAMIC, DT=0.2, TIME=600.0, OUTPUT INTERVAL=50.0\n")
-    rs = run(rodyn, static, out, "static")
-    rd = run(rodyn, relax, out, "relaxed")
+    rs = run_deck(rodyn, static, out, "static")
+    rd = run_deck(rodyn, relax, out, "relaxed")
     with open(os.path.join(rs, "static_reactions.csv")) as f:
         fs = [float(r[k]) for r in csv.DictReader(f) if r["end"] == "B"
               for k in ("Fx_N", "Fy_N", "Fz_N")]

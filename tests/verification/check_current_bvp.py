@@ -29,11 +29,13 @@ TOL_X of the bow and the end tensions to TOL_T, relative."""
 import csv
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
 from scipy.integrate import solve_bvp, solve_ivp
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "program"))
+from deck_run import run_deck  # noqa: E402
 
 G = 9.80665
 RHO = 1025.0
@@ -129,14 +131,7 @@ def shoot(p, dense=False):
 
 def main():
     rodyn, out = sys.argv[1:3]
-    os.makedirs(out, exist_ok=True)
-    deck = os.path.join(out, "current_bvp.inp")
-    with open(deck, "w") as f:
-        f.write(DECK)
-    res = os.path.join(out, "current_bvp")
-    proc = subprocess.run([rodyn, deck, "-o", res, "--quiet"], capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+    res = run_deck(rodyn, DECK, out, "current_bvp")
     with open(os.path.join(res, "static_nodes.csv")) as f:
         nodes = list(csv.DictReader(f))
     with open(os.path.join(res, "static_reactions.csv")) as f:
