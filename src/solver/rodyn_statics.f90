@@ -31,6 +31,7 @@
 !> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda.
 module rodyn_statics
    use rodyn_kinds, only: wp
+   use rodyn_rotation, only: skew
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
@@ -195,18 +196,22 @@ contains
       real(wp) :: m0(3), kb(6, 6), d3(3), w
       integer :: node, l, i
       w = 1.0_wp - this%lam
-      do node = 1, this%mesh%n_nodes
-         m0 = matmul(this%state%d(:, :, node), matmul(transpose(this%d0(:, :, node)), &
-                                                      this%r0(4:6, node)))
-         this%r(1:3, node) = this%fint(1:3, node) - this%fext(1:3, node) - w*this%r0(1:3, node)
-         this%r(4:6, node) = this%fint(4:6, node) - this%fext(4:6, node) - w*m0
-         if (want_k .and. w > 0.0_wp .and. any(m0 /= 0.0_wp)) then
-            kb = 0.0_wp
-            kb(4:6, 4:6) = w*reshape([0.0_wp, m0(3), -m0(2), -m0(3), 0.0_wp, m0(1), &
-                                      m0(2), -m0(1), 0.0_wp], [3, 3])
-            call add_node_block(this%sup, node, kb, this%bm)
-         end if
-      end do
+      if (w == 0.0_wp) then                  ! the last increment: the problem itself
+         this%r = this%fint - this%fext
+      else
+         do node = 1, this%mesh%n_nodes
+            m0 = matmul(this%state%d(:, :, node), matmul(transpose(this%d0(:, :, node)), &
+                                                         this%r0(4:6, node)))
+            this%r(1:3, node) = this%fint(1:3, node) - this%fext(1:3, node) &
+                                - w*this%r0(1:3, node)
+            this%r(4:6, node) = this%fint(4:6, node) - this%fext(4:6, node) - w*m0
+            if (want_k .and. any(m0 /= 0.0_wp)) then
+               kb = 0.0_wp
+               kb(4:6, 4:6) = w*skew(m0)
+               call add_node_block(this%sup, node, kb, this%bm)
+            end if
+         end do
+      end if
       if (.not. want_k) return
       do l = 1, size(this%gauge_node)
          node = this%gauge_node(l)
