@@ -1,7 +1,18 @@
 !> General banded matrix in LAPACK band storage, element assembly, constraint rows, and
-!> the LU factorisation/solve (LAPACK dgbtrf/dgbtrs). LAPACK's INFO is mapped into
-!> error_t here and nowhere else. Storage is allocated once; nothing inside the Newton
-!> loop allocates.
+!> the LU factorisation/solve. LAPACK's INFO is mapped into error_t here and nowhere else.
+!> Storage is allocated once; nothing inside the Newton loop allocates.
+!>
+!> Two factorisations (bm%pivoting):
+!> - with partial pivoting, LAPACK's dgbtrf/dgbtrs (the default);
+!> - without pivoting (Doolittle, A = L U with unit lower L, in the same band storage:
+!>   no fill above the ku superdiagonals), for the dynamic tangent: n kl ku multiply-adds
+!>   instead of dgbtrf's n kl (kl + ku), with contiguous column updates, and a solve of
+!>   2 n kl. Rod tangents are symmetric positive definite up to the non-symmetric terms
+!>   of the rotations and the scheme (plus the mass in dynamics), for which elimination
+!>   without pivoting is stable; should a pivot lose all but 1e-12 of its original
+!>   diagonal (cancellation: the matrix needs pivoting), banded_factor reports a
+!>   numerical failure and switches the matrix to partial pivoting for good (the caller's
+!>   next tangent is factorised by dgbtrf).
 module rodyn_banded
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, stat_numerical
@@ -21,6 +32,8 @@ module rodyn_banded
       real(wp), allocatable :: ab(:, :)       !< (ldab, n) band storage
       integer, allocatable :: ipiv(:)         !< (n) pivots of the LU factors
       logical :: factored = .false.           !< ab holds LU factors
+      logical :: pivoting = .true.            !< dgbtrf (true) or LU without pivoting
+      real(wp), allocatable :: diag(:)        !< (n) diagonal before an unpivoted LU
       integer :: n_kept = 0                   !< columns kept (banded_keep_column)
       integer, allocatable :: kept_dof(:)     !< (n_kept) their dofs
       real(wp), allocatable :: kept(:, :)     !< (kl + ku + 1, n_kept) their band entries
@@ -56,8 +69,8 @@ contains
       bm%kl = min(half_bandwidth, max(n - 1, 0))
       bm%ku = bm%kl
       bm%ldab = 2*bm%kl + bm%ku + 1
-      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv)
-      allocate (bm%ab(bm%ldab, n), bm%ipiv(n))
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
+      allocate (bm%ab(bm%ldab, n), bm%ipiv(n), bm%diag(n))
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
       bm%n_kept = 0
       bm%ab = 0.0_wp
@@ -67,7 +80,7 @@ contains
    !> Release the storage (the matrix is no longer needed).
    subroutine banded_free(bm)
       type(banded_t), intent(inout) :: bm !< matrix
-      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv)
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
       bm%n = 0
       bm%n_kept = 0
@@ -189,6 +202,18 @@ contains
       integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
       integer :: info, node
       character(len=160) :: msg
+      if (.not. bm%pivoting) then
+         call factor_unpivoted(bm, info)
+         if (info /= 0) then
+            bm%pivoting = .true.
+            write (msg, '(a,i0,a)') 'banded_factor: pivot ', info, ' cancelled without '// &
+               'pivoting: factorised with partial pivoting from now on'
+            call set_error(err, stat_numerical, trim(msg))
+            return
+         end if
+         bm%factored = .true.
+         return
+      end if
       call dgbtrf(bm%n, bm%n, bm%kl, bm%ku, bm%ab, bm%ldab, bm%ipiv, info)
       if (info /= 0) then
          if (present(first)) then
@@ -206,12 +231,89 @@ contains
       bm%factored = .true.
    end subroutine banded_factor
 
-   !> Solve A x = b in place with the LU factors (dgbtrs).
+   !> A = L U without pivoting, in place (the band of A in rows kl+1 .. of ab as for
+   !> dgbtrf; the fill rows 1 .. kl stay unused): for k = 1 .. n,
+   !>   l_ik = a_ik / a_kk (i = k+1 .. k+kl),  a_ij -= l_ik a_kj (j = k+1 .. k+ku).
+   !> info = k > 0 when pivot k is zero, not finite or below 1e-12 of its original
+   !> diagonal (1e-12 of the column's largest entry if that diagonal was zero).
+   pure subroutine factor_unpivoted(bm, info)
+      type(banded_t), intent(inout) :: bm !< matrix, replaced by L and U
+      integer, intent(out) :: info        !< 0, or the first failed pivot
+      integer :: k, j, m, kv, i1, last, i
+      real(wp) :: piv, akj, ref, rp
+      kv = bm%kl + bm%ku + 1           ! row of the diagonal in ab
+      associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
+         do k = 1, n
+            bm%diag(k) = ab(kv, k)
+         end do
+         info = 0
+         do k = 1, n
+            piv = ab(kv, k)
+            ref = abs(bm%diag(k))
+            m = min(kl, n - k)
+            if (ref == 0.0_wp) ref = maxval(abs(ab(kv - min(ku, k - 1):kv + m, k)))
+            if (.not. (abs(piv) > 1.0e-12_wp*ref)) then
+               info = k
+               return
+            end if
+            bm%ipiv(k) = k
+            if (m == 0) cycle
+            rp = 1.0_wp/piv
+            do i = 1, m
+               ab(kv + i, k) = ab(kv + i, k)*rp
+            end do
+            last = min(n, k + ku)
+            do j = k + 1, last
+               i1 = kv + k - j               ! row of a_kj in column j
+               akj = ab(i1, j)
+               if (akj == 0.0_wp) cycle
+               do i = 1, m
+                  ab(i1 + i, j) = ab(i1 + i, j) - akj*ab(kv + i, k)
+               end do
+            end do
+         end do
+      end associate
+   end subroutine factor_unpivoted
+
+   !> Solve L U x = b in place with unpivoted factors: forward with unit L by columns,
+   !> then back with U by columns (contiguous band columns in both).
+   pure subroutine solve_unpivoted(bm, b)
+      type(banded_t), intent(in) :: bm  !< factored matrix (factor_unpivoted)
+      real(wp), intent(inout) :: b(:)   !< right-hand side, replaced by the solution
+      integer :: k, m, kv, i
+      real(wp) :: bk
+      kv = bm%kl + bm%ku + 1
+      associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
+         do k = 1, n - 1
+            m = min(kl, n - k)
+            bk = b(k)
+            if (bk == 0.0_wp) cycle
+            do i = 1, m
+               b(k + i) = b(k + i) - bk*ab(kv + i, k)
+            end do
+         end do
+         do k = n, 1, -1
+            b(k) = b(k)/ab(kv, k)
+            m = min(ku, k - 1)
+            bk = b(k)
+            if (bk == 0.0_wp) cycle
+            do i = 1, m
+               b(k - i) = b(k - i) - bk*ab(kv - i, k)
+            end do
+         end do
+      end associate
+   end subroutine solve_unpivoted
+
+   !> Solve A x = b in place with the LU factors (dgbtrs, or the unpivoted solve).
    subroutine banded_solve(bm, b, err)
       type(banded_t), intent(in) :: bm    !< factored matrix
       real(wp), intent(inout) :: b(:)     !< right-hand side, replaced by the solution
       type(error_t), intent(inout) :: err !< status
       integer :: info
+      if (.not. bm%pivoting) then
+         call solve_unpivoted(bm, b)
+         return
+      end if
       call dgbtrs('N', bm%n, bm%kl, bm%ku, 1, bm%ab, bm%ldab, bm%ipiv, b, bm%n, info)
       if (info /= 0) call set_error(err, stat_numerical, 'banded_solve: dgbtrs failed')
    end subroutine banded_solve
