@@ -14,7 +14,9 @@ module rodyn_rod_dynamic
    use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
-                                rod_rotation_geometric, rod_rule_t, max_points
+                                rod_rotation_geometric, rod_rule_t, max_points, &
+                                rod_gp_kinematics_shear, rod_strains_shear, &
+                                rod_gp_qforce_shear, rod_gp_jacobian_shear
    implicit none
    private
    public :: rod_element_dynamic
@@ -42,7 +44,7 @@ contains
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
       type(rod_gp_t) :: k0, k1, km
-      real(wp) :: wq
+      real(wp) :: wq, sh(2), sh1(2)
       integer :: g, nen, nd, np
       nen = p + 1
       nd = 6*nen
@@ -59,6 +61,59 @@ contains
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
          wj = rule%w(g)*0.5_wp*le
          cg = c*rule%mask(:, g)
+         ! a shear-only point (Gamma1 and Gamma2 alone: the extra points of order 3), with
+         ! the fields and B rows the shear strains need
+         if (rule%shear_only(g)) then
+            call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x1, d1, k1)
+            s = 0.0_wp
+            select case (scheme)
+            case (scheme_midpoint, scheme_alpha)
+               call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), &
+                                            dm(:, :, 1:nen), km)
+               sh = cg(1:2)*(rod_strains_shear(km) - eps0(1:2, g))
+               call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
+               if (.not. want_k) cycle
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
+                                          bl(:, 1:nd))
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
+               call add_material(nd, cg, bl, br, wq*wj, ke)
+               s(1:2) = sh
+               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
+                                     wq*wj, ke(1:nd, 1:nd))
+            case (scheme_trapezoidal)
+               call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               sh = cg(1:2)*(rod_strains_shear(k0) - eps0(1:2, g))
+               sh1 = cg(1:2)*(rod_strains_shear(k1) - eps0(1:2, g))
+               call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), k0, sh, 0.5_wp*wj, &
+                                        fq(:, :, 1:nen))
+               call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), k1, sh1, 0.5_wp*wj, &
+                                        fq(:, :, 1:nen))
+               if (.not. want_k) cycle
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), &
+                                          bl(:, 1:nd))
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
+               call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+               s(1:2) = sh1
+               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
+                                     0.5_wp*wj, ke(1:nd, 1:nd))
+            case default ! scheme_emc
+               call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               km%xp = 0.5_wp*(k0%xp + k1%xp)
+               km%d(:, 1:2) = 0.5_wp*(k0%d(:, 1:2) + k1%d(:, 1:2))
+               sh = cg(1:2)*(0.5_wp*(rod_strains_shear(k0) + rod_strains_shear(k1)) &
+                             - eps0(1:2, g))
+               call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
+               if (.not. want_k) cycle
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
+                                          bl(:, 1:nd))
+               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
+               call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+               s(1:2) = sh
+               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
+                                     0.5_wp*wj, ke(1:nd, 1:nd))
+            end select
+            cycle
+         end if
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
          select case (scheme)
          case (scheme_midpoint, scheme_alpha)

@@ -32,6 +32,7 @@ module rodyn_rod_element
    public :: rod_element_energy_scale
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule
+   public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_shear
 
    integer, parameter :: max_points = 7  !< most quadrature points of one element
 
@@ -50,6 +51,7 @@ module rodyn_rod_element
       real(wp) :: xi(max_points) = 0.0_wp         !< parent coordinates
       real(wp) :: w(max_points) = 0.0_wp          !< weights
       real(wp) :: mask(6, max_points) = 0.0_wp    !< strains integrated at each point
+      logical :: shear_only(max_points) = .false. !< only Gamma1, Gamma2 integrated there
       real(wp) :: n(max_nen, max_points) = 0.0_wp !< N_a at the points
       real(wp) :: dn(max_nen, max_points) = 0.0_wp !< dN_a/dxi at the points
    end type rod_rule_t
@@ -64,6 +66,7 @@ contains
       rule%p = p
       call rod_quadrature(p, rule%np, rule%xi, rule%w, rule%mask)
       do g = 1, rule%np
+         rule%shear_only(g) = all(rule%mask(3:6, g) == 0.0_wp)
          call shape_lagrange(p, rule%xi(g), rule%n(1:p + 1, g), rule%dn(1:p + 1, g))
       end do
    end function rod_rule
@@ -109,6 +112,72 @@ contains
          kin%dp = kin%dp + dn(a)*de(:, :, a)
       end do
    end subroutine rod_gp_kinematics
+
+   !> The fields of a shear-only point (rule%shear_only): x', d_1 and d_2 (kin%d(:, 3)
+   !> and kin%dp are left as they were). The shear strains Gamma_k = x'.d_k (k = 1, 2)
+   !> need no more.
+   pure subroutine rod_gp_kinematics_shear(nen, n, dn, xe, de, kin)
+      integer, intent(in) :: nen              !< nodes of the element
+      real(wp), intent(in) :: n(nen)          !< shape functions
+      real(wp), intent(in) :: dn(nen)         !< shape function derivatives dN/dS [1/m]
+      real(wp), intent(in) :: xe(3, nen)      !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, nen)   !< nodal directors de(:, i, a)
+      type(rod_gp_t), intent(inout) :: kin    !< xp, d(:, 1:2) set
+      integer :: a
+      kin%xp = 0.0_wp
+      kin%d(:, 1:2) = 0.0_wp
+      do a = 1, nen
+         kin%xp = kin%xp + dn(a)*xe(:, a)
+         kin%d(:, 1:2) = kin%d(:, 1:2) + n(a)*de(:, 1:2, a)
+      end do
+   end subroutine rod_gp_kinematics_shear
+
+   !> Shear strains (Gamma1, Gamma2) of a shear-only point.
+   pure function rod_strains_shear(kin) result(eps)
+      type(rod_gp_t), intent(in) :: kin !< fields at the point (rod_gp_kinematics_shear)
+      real(wp) :: eps(2)
+      eps(1) = dot_product(kin%xp, kin%d(:, 1))
+      eps(2) = dot_product(kin%xp, kin%d(:, 2))
+   end function rod_strains_shear
+
+   !> rod_gp_qforce for stresses (N1, N2, 0, 0, 0, 0): on x_a wj dN_a (N1 d_1 + N2 d_2),
+   !> on d_ka wj N_a N_k x' (k = 1, 2), nothing on d_3a.
+   pure subroutine rod_gp_qforce_shear(nen, n, dn, kin, s, wj, fq)
+      integer, intent(in) :: nen              !< nodes of the element
+      real(wp), intent(in) :: n(nen)          !< shape functions
+      real(wp), intent(in) :: dn(nen)         !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kin       !< fields where B is evaluated
+      real(wp), intent(in) :: s(2)            !< shear forces (N1, N2) [N]
+      real(wp), intent(in) :: wj              !< Gauss weight times Jacobian [m]
+      real(wp), intent(inout) :: fq(3, 4, nen) !< q-forces
+      real(wp) :: nsp(3), c1(3), c2(3)
+      integer :: a
+      nsp = wj*(s(1)*kin%d(:, 1) + s(2)*kin%d(:, 2))
+      c1 = (wj*s(1))*kin%xp
+      c2 = (wj*s(2))*kin%xp
+      do a = 1, nen
+         fq(:, 1, a) = fq(:, 1, a) + dn(a)*nsp
+         fq(:, 2, a) = fq(:, 2, a) + n(a)*c1
+         fq(:, 3, a) = fq(:, 3, a) + n(a)*c2
+      end do
+   end subroutine rod_gp_qforce_shear
+
+   !> Rows 1 and 2 (Gamma1, Gamma2) of rod_gp_jacobian; the other rows are not set.
+   pure subroutine rod_gp_jacobian_shear(nen, n, dn, kin, dnode, bt)
+      integer, intent(in) :: nen               !< nodes of the element
+      real(wp), intent(in) :: n(nen)           !< shape functions
+      real(wp), intent(in) :: dn(nen)          !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kin        !< fields where B is evaluated
+      real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors defining the rotation
+      real(wp), intent(inout) :: bt(6, 6, nen) !< rows 1:2 set
+      integer :: a, k
+      do a = 1, nen
+         do k = 1, 2
+            bt(k, 1:3, a) = dn(a)*kin%d(:, k)
+            bt(k, 4:6, a) = n(a)*cross(dnode(:, k, a), kin%xp)
+         end do
+      end do
+   end subroutine rod_gp_jacobian_shear
 
    !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3) (note section 1).
    pure function rod_strains(kin) result(eps)
