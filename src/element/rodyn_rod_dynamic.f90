@@ -12,8 +12,9 @@ module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
+   use rodyn_rotation, only: skew
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
-                                rod_gp_jacobian, rod_gp_geometric, rod_project_qforce, &
+                                rod_gp_jacobian, rod_project_qforce, &
                                 rod_rotation_geometric, rod_rule_t, max_points, &
                                 rod_gp_kinematics_shear, rod_strains_shear, &
                                 rod_gp_qforce_shear, rod_gp_jacobian_shear
@@ -43,6 +44,13 @@ contains
       real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6)
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
+      ! the material part's rows of all points: force strains (Gamma) in blt/cr(1:nf),
+      ! curvatures (K, no x columns) in blc/crc(1:nc)
+      real(wp) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
+      real(wp) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      integer :: nf, nc
+      ! the stress (geometric) part of all points, per node pair (add_geometric)
+      real(wp) :: pg(3, max_nen, max_nen), mg(3, max_nen, max_nen)
       type(rod_gp_t) :: k0, k1, km
       real(wp) :: wq, sh(2), sh1(2)
       integer :: g, nen, nd, np
@@ -56,6 +64,12 @@ contains
       np = rule%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
+      nf = 0
+      nc = 0
+      if (want_k) then
+         pg(:, 1:nen, 1:nen) = 0.0_wp
+         mg(:, 1:nen, 1:nen) = 0.0_wp
+      end if
       do g = 1, np
          n(1:nen) = rule%n(1:nen, g)
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
@@ -76,10 +90,9 @@ contains
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
                                           bl(:, 1:nd))
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, wq*wj, ke)
+               call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
-               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                     wq*wj, ke(1:nd, 1:nd))
+               call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
             case (scheme_trapezoidal)
                call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
                sh = cg(1:2)*(rod_strains_shear(k0) - eps0(1:2, g))
@@ -92,10 +105,9 @@ contains
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), &
                                           bl(:, 1:nd))
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+               call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh1
-               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                     0.5_wp*wj, ke(1:nd, 1:nd))
+               call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
             case default ! scheme_emc
                call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
                km%xp = 0.5_wp*(k0%xp + k1%xp)
@@ -107,10 +119,9 @@ contains
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
                                           bl(:, 1:nd))
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
+               call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
-               call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                     0.5_wp*wj, ke(1:nd, 1:nd))
+               call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
             end select
             cycle
          end if
@@ -123,9 +134,8 @@ contains
             if (.not. want_k) cycle
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, wq*wj, ke)
-            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                  wq*wj, ke(1:nd, 1:nd))
+            call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
+            call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
          case (scheme_trapezoidal)
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
             s = cg*(rod_strains(k0) - eps0(:, g))
@@ -135,9 +145,8 @@ contains
             if (.not. want_k) cycle
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), bl(:, 1:nd))
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
-            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s1, dm(:, :, 1:nen), d1, &
-                                  0.5_wp*wj, ke(1:nd, 1:nd))
+            call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+            call add_geometric(nen, n(1:nen), dn(1:nen), s1, 0.5_wp*wj, pg, mg)
          case default ! scheme_emc
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
             ! the fields are linear in the nodal values: midpoint = mean of the ends
@@ -149,36 +158,140 @@ contains
             if (.not. want_k) cycle
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, 0.5_wp*wj, ke)
-            call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, dm(:, :, 1:nen), d1, &
-                                  0.5_wp*wj, ke(1:nd, 1:nd))
+            call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+            call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
          end select
       end do
       call rod_project_qforce(nen, fq(:, :, 1:nen), dm(:, :, 1:nen), fe)
+      if (want_k) call material_update(nen, blt, cr, nf, blc, crc, nc, ke(1:nd, 1:nd))
+      if (want_k) call geometric_update(nen, pg, mg, dm(:, :, 1:nen), d1, ke(1:nd, 1:nd))
       if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, wq, ke(1:nd, 1:nd))
    end subroutine rod_element_dynamic
-   !> ke += f bl^T diag(cg) br over the strains integrated at the point (cg /= 0).
-   pure subroutine add_material(nd, cg, bl, br, f, ke)
+   !> The stress (geometric) stiffness of one point, rod_rod_element's rod_gp_geometric,
+   !> summed over the points before it is formed: with the nodal directors the same at
+   !> every point, its blocks are linear in
+   !>   pg(k, a, b) = sum_g f dN_a N_b s_k          (k = 1..3, contact forces)
+   !>   mg(:, a, b) = sum_g f (dN_a N_b - N_a dN_b)/2 (s_4, s_5, s_6)   (moments)
+   !> (geometric_update forms them once per element, not once per point).
+   pure subroutine add_geometric(nen, n, dn, s, f, pg, mg)
+      integer, intent(in) :: nen                     !< nodes of the element
+      real(wp), intent(in) :: n(nen)                 !< shape functions
+      real(wp), intent(in) :: dn(nen)                !< dN/dS [1/m]
+      real(wp), intent(in) :: s(6)                   !< stress resultants [N, N m]
+      real(wp), intent(in) :: f                      !< weight (Gauss weight, Jacobian)
+      real(wp), intent(inout) :: pg(:, :, :)         !< (3, >= nen, >= nen) force sums
+      real(wp), intent(inout) :: mg(:, :, :)         !< (3, >= nen, >= nen) moment sums
+      real(wp) :: h
+      integer :: a, b
+      do b = 1, nen
+         do a = 1, nen
+            pg(:, a, b) = pg(:, a, b) + (f*dn(a)*n(b))*s(1:3)
+            if (a == b) cycle
+            h = 0.5_wp*f*(dn(a)*n(b) - n(a)*dn(b))
+            mg(:, a, b) = mg(:, a, b) + h*s(4:6)
+         end do
+      end do
+   end subroutine add_geometric
+
+   !> Add the stress stiffness of the sums of add_geometric to ke (P(d) = -skew(d), as
+   !> in rod_gp_geometric):
+   !>   x_a - theta_b:      -skew(sum_k pg(k, a, b) dr_kb)
+   !>   theta_a - x_b:       skew(sum_k pg(k, b, a) dl_ka)
+   !>   theta_a - theta_b:   tr(M) I - M,  M = Dr_b skew(mg(:, a, b)) Dl_a^T
+   !> (Dl_a, Dr_b: the nodal directors as columns, test side and increment side).
+   pure subroutine geometric_update(nen, pg, mg, dl, dr, ke)
+      integer, intent(in) :: nen                  !< nodes of the element
+      real(wp), intent(in) :: pg(:, :, :)         !< force sums (add_geometric)
+      real(wp), intent(in) :: mg(:, :, :)         !< moment sums (add_geometric)
+      real(wp), intent(in) :: dl(3, 3, nen)       !< nodal directors, test side
+      real(wp), intent(in) :: dr(3, 3, nen)       !< nodal directors, increment side
+      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp) :: v(3), st(3, 3), w(3, 3), m(3, 3), tr
+      integer :: a, b, ra, rb, i, j
+      do b = 1, nen
+         rb = 6*(b - 1)
+         do a = 1, nen
+            ra = 6*(a - 1)
+            v = pg(1, a, b)*dr(:, 1, b) + pg(2, a, b)*dr(:, 2, b) + pg(3, a, b)*dr(:, 3, b)
+            ke(ra + 1:ra + 3, rb + 4:rb + 6) = ke(ra + 1:ra + 3, rb + 4:rb + 6) - skew(v)
+            v = pg(1, b, a)*dl(:, 1, a) + pg(2, b, a)*dl(:, 2, a) + pg(3, b, a)*dl(:, 3, a)
+            ke(ra + 4:ra + 6, rb + 1:rb + 3) = ke(ra + 4:ra + 6, rb + 1:rb + 3) + skew(v)
+            if (a == b) cycle
+            st = skew(mg(:, a, b))
+            ! w = st Dl_a^T, m = Dr_b w
+            do j = 1, 3
+               w(:, j) = st(:, 1)*dl(j, 1, a) + st(:, 2)*dl(j, 2, a) + st(:, 3)*dl(j, 3, a)
+            end do
+            do j = 1, 3
+               m(:, j) = dr(:, 1, b)*w(1, j) + dr(:, 2, b)*w(2, j) + dr(:, 3, b)*w(3, j)
+            end do
+            tr = m(1, 1) + m(2, 2) + m(3, 3)
+            do j = 1, 3
+               do i = 1, 3
+                  ke(ra + 3 + i, rb + 3 + j) = ke(ra + 3 + i, rb + 3 + j) - m(i, j)
+               end do
+               ke(ra + 3 + j, rb + 3 + j) = ke(ra + 3 + j, rb + 3 + j) + tr
+            end do
+         end do
+      end do
+   end subroutine geometric_update
+
+   !> Append the point's material part f bl^T diag(cg) br, over the strains integrated
+   !> here (cg /= 0), to the rows of the element: bl transposed into blt (force strains)
+   !> or blc (curvatures), f cg br into cr or crc (material_update adds them to ke).
+   pure subroutine add_material(nd, cg, bl, br, f, blt, cr, nf, blc, crc, nc)
       integer, intent(in) :: nd            !< element unknowns
       real(wp), intent(in) :: cg(6)        !< stiffness of the strains integrated here
       real(wp), intent(in) :: bl(:, :)     !< (6, >= nd) test-side strain Jacobian
       real(wp), intent(in) :: br(:, :)     !< (6, >= nd) increment-side strain Jacobian
       real(wp), intent(in) :: f            !< weight
-      real(wp), intent(inout) :: ke(:, :)  !< element matrix
-      real(wp) :: blt(6*max_nen, 6), cr(6, 6*max_nen)
-      integer :: j, k, nk
-      ! active rows only, bl transposed so that the update runs down contiguous columns
-      nk = 0
-      do k = 1, 6
+      real(wp), intent(inout) :: blt(:, :), cr(:, :) !< force-strain rows
+      integer, intent(inout) :: nf         !< force-strain rows used
+      real(wp), intent(inout) :: blc(:, :), crc(:, :) !< curvature rows
+      integer, intent(inout) :: nc         !< curvature rows used
+      integer :: k
+      do k = 1, 3
          if (cg(k) == 0.0_wp) cycle
-         nk = nk + 1
-         blt(1:nd, nk) = bl(k, 1:nd)
-         cr(nk, 1:nd) = (f*cg(k))*br(k, 1:nd)
+         nf = nf + 1
+         blt(1:nd, nf) = bl(k, 1:nd)
+         cr(nf, 1:nd) = (f*cg(k))*br(k, 1:nd)
       end do
-      do j = 1, nd
-         do k = 1, nk
-            ke(1:nd, j) = ke(1:nd, j) + blt(1:nd, k)*cr(k, j)
-         end do
+      do k = 4, 6
+         if (cg(k) == 0.0_wp) cycle
+         nc = nc + 1
+         blc(1:nd, nc) = bl(k, 1:nd)
+         crc(nc, 1:nd) = (f*cg(k))*br(k, 1:nd)
       end do
    end subroutine add_material
+
+   !> ke += blt(:, 1:nf) cr(1:nf, :) + blc(:, 1:nc) crc(1:nc, :), node block by node
+   !> block with the sums held in registers. The curvatures do not depend on the
+   !> positions: their rows (and columns) of the x unknowns are zero and skipped.
+   pure subroutine material_update(nen, blt, cr, nf, blc, crc, nc, ke)
+      integer, intent(in) :: nen                      !< nodes of the element
+      real(wp), intent(in) :: blt(:, :), cr(:, :)     !< force-strain rows
+      integer, intent(in) :: nf                       !< their number
+      real(wp), intent(in) :: blc(:, :), crc(:, :)    !< curvature rows
+      integer, intent(in) :: nc                       !< their number
+      real(wp), intent(inout) :: ke(6*nen, 6*nen)     !< element matrix
+      real(wp) :: acc(6), c
+      integer :: j, i0, k, jn
+      do j = 1, 6*nen
+         jn = mod(j - 1, 6)                 ! 0..2: an x column, 3..5: a rotation column
+         do i0 = 0, 6*(nen - 1), 6
+            acc = 0.0_wp
+            do k = 1, nf
+               c = cr(k, j)
+               acc = acc + c*blt(i0 + 1:i0 + 6, k)
+            end do
+            if (jn >= 3) then
+               do k = 1, nc
+                  c = crc(k, j)
+                  acc(4:6) = acc(4:6) + c*blc(i0 + 4:i0 + 6, k)
+               end do
+            end if
+            ke(i0 + 1:i0 + 6, j) = ke(i0 + 1:i0 + 6, j) + acc
+         end do
+      end do
+   end subroutine material_update
 end module rodyn_rod_dynamic
