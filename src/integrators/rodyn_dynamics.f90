@@ -34,6 +34,7 @@ module rodyn_dynamics
                              external_force, assemble_water, assemble_dynamic_cables
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
+   use rodyn_banded, only: banded_set_pivoting
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_motion, only: motion_displacement
@@ -91,7 +92,7 @@ contains
       call rod_problem_init(prob, model, mesh)
       ! the step tangent is factorised without pivoting (rodyn_banded; paper's case 1,
       ! 20 s: 15 % fewer instructions, the same iterations)
-      prob%bm%pivoting = .false.
+      call banded_set_pivoting(prob%bm, .false.)
       prob%model => model
       prob%s1 => state
       nn = mesh%n_nodes

@@ -20,15 +20,17 @@ module rodyn_banded
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
    public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
-   public :: banded_kept_axpy, banded_free
+   public :: banded_kept_axpy, banded_free, banded_set_pivoting
 
-   !> A square banded matrix with kl sub- and ku super-diagonals, stored for dgbtrf
-   !> (rows kl+1 .. 2kl+ku+1 of ab hold the band; the first kl rows are LU fill).
+   !> A square banded matrix with kl sub- and ku super-diagonals: A(i, j) is ab(kv + i - j,
+   !> j). Stored for dgbtrf with pivoting (ldab = 2 kl + ku + 1, kv = kl + ku + 1: the
+   !> first kl rows are LU fill), compact without (ldab = kl + ku + 1, kv = ku + 1).
    type :: banded_t
       integer :: n = 0                        !< order
       integer :: kl = 0                       !< subdiagonals
       integer :: ku = 0                       !< superdiagonals
-      integer :: ldab = 0                     !< leading dimension 2 kl + ku + 1
+      integer :: ldab = 0                     !< leading dimension of ab
+      integer :: kv = 0                       !< row of the diagonal in ab
       real(wp), allocatable :: ab(:, :)       !< (ldab, n) band storage
       integer, allocatable :: ipiv(:)         !< (n) pivots of the LU factors
       logical :: factored = .false.           !< ab holds LU factors
@@ -68,7 +70,9 @@ contains
       bm%n = n
       bm%kl = min(half_bandwidth, max(n - 1, 0))
       bm%ku = bm%kl
-      bm%ldab = 2*bm%kl + bm%ku + 1
+      bm%ldab = bm%kl + bm%ku + 1
+      if (bm%pivoting) bm%ldab = bm%ldab + bm%kl
+      bm%kv = bm%ldab - bm%kl
       if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
       allocate (bm%ab(bm%ldab, n), bm%ipiv(n), bm%diag(n))
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
@@ -76,6 +80,25 @@ contains
       bm%ab = 0.0_wp
       bm%factored = .false.
    end subroutine banded_init
+
+   !> Choose the factorisation (see the module header): the storage is allocated again
+   !> for it, zero, when it changes (outside the Newton loop, or once after a failed
+   !> pivot); kept columns stay.
+   subroutine banded_set_pivoting(bm, pivoting)
+      type(banded_t), intent(inout) :: bm !< matrix
+      logical, intent(in) :: pivoting     !< partial pivoting (dgbtrf) or none
+      integer :: ldab
+      ldab = bm%kl + bm%ku + 1
+      if (pivoting) ldab = ldab + bm%kl
+      bm%pivoting = pivoting
+      bm%factored = .false.
+      if (ldab == bm%ldab) return
+      bm%ldab = ldab
+      bm%kv = ldab - bm%kl
+      deallocate (bm%ab)
+      allocate (bm%ab(bm%ldab, bm%n))
+      bm%ab = 0.0_wp
+   end subroutine banded_set_pivoting
 
    !> Release the storage (the matrix is no longer needed).
    subroutine banded_free(bm)
@@ -100,7 +123,7 @@ contains
       integer, intent(in) :: dofs(:)        !< global dof numbers of the element
       real(wp), intent(in) :: ke(:, :)      !< element matrix (size(dofs) square)
       integer :: i, j, off
-      off = bm%kl + bm%ku + 1
+      off = bm%kv
       do j = 1, size(dofs)
          do i = 1, size(dofs)
             bm%ab(off + dofs(i) - dofs(j), dofs(j)) = &
@@ -114,7 +137,7 @@ contains
       type(banded_t), intent(inout) :: bm !< matrix
       integer, intent(in) :: k            !< dof to hold
       integer :: i, j, off
-      off = bm%kl + bm%ku + 1
+      off = bm%kv
       do j = max(1, k - bm%ku), min(bm%n, k + bm%kl)
          bm%ab(off + k - j, j) = 0.0_wp       ! row k
       end do
@@ -146,7 +169,7 @@ contains
          slot = bm%n_kept
          bm%kept_dof(slot) = k
       end if
-      bm%kept(:, slot) = bm%ab(bm%kl + 1:bm%ldab, k)
+      bm%kept(:, slot) = bm%ab(bm%kv - bm%ku:bm%ldab, k)
    end subroutine banded_keep_column
 
    !> y(i) = y(i) + value * A(i, k) for the rows i /= k in the band of column k, A(:, k)
@@ -185,7 +208,7 @@ contains
       real(wp), intent(in) :: x(:)     !< vector (n)
       real(wp), intent(out) :: y(:)    !< product (n)
       integer :: i, j, off
-      off = bm%kl + bm%ku + 1
+      off = bm%kv
       y = 0.0_wp
       do j = 1, bm%n
          do i = max(1, j - bm%ku), min(bm%n, j + bm%kl)
@@ -205,7 +228,7 @@ contains
       if (.not. bm%pivoting) then
          call factor_unpivoted(bm, info)
          if (info /= 0) then
-            bm%pivoting = .true.
+            call banded_set_pivoting(bm, .true.)
             write (msg, '(a,i0,a)') 'banded_factor: pivot ', info, ' cancelled without '// &
                'pivoting: factorised with partial pivoting from now on'
             call set_error(err, stat_numerical, trim(msg))
@@ -231,8 +254,7 @@ contains
       bm%factored = .true.
    end subroutine banded_factor
 
-   !> A = L U without pivoting, in place (the band of A in rows kl+1 .. of ab as for
-   !> dgbtrf; the fill rows 1 .. kl stay unused): for k = 1 .. n,
+   !> A = L U without pivoting, in place (no fill outside the band): for k = 1 .. n,
    !>   l_ik = a_ik / a_kk (i = k+1 .. k+kl),  a_ij -= l_ik a_kj (j = k+1 .. k+ku).
    !> info = k > 0 when pivot k is zero, not finite or below 1e-12 of its original
    !> diagonal (1e-12 of the column's largest entry if that diagonal was zero).
@@ -241,7 +263,7 @@ contains
       integer, intent(out) :: info        !< 0, or the first failed pivot
       integer :: k, j, m, kv, i1, last, i
       real(wp) :: piv, akj, ref, rp
-      kv = bm%kl + bm%ku + 1           ! row of the diagonal in ab
+      kv = bm%kv
       associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
          do k = 1, n
             bm%diag(k) = ab(kv, k)
@@ -282,7 +304,7 @@ contains
       real(wp), intent(inout) :: b(:)   !< right-hand side, replaced by the solution
       integer :: k, m, kv, i
       real(wp) :: bk
-      kv = bm%kl + bm%ku + 1
+      kv = bm%kv
       associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
          do k = 1, n - 1
             m = min(kl, n - k)
