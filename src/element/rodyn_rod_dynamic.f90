@@ -20,13 +20,13 @@ module rodyn_rod_dynamic
                                 rod_gp_qforce_shear, rod_gp_jacobian_shear
    implicit none
    private
-   public :: rod_element_dynamic
+   public :: rod_element_dynamic, rod_element_fields
 
 contains
 
    !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
    pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, wf, fe, ke, &
-                                       want_k, rule)
+                                       want_k, rule, gp0, epsn)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -41,7 +41,12 @@ contains
       real(wp), intent(out) :: ke(:, :)           !< (6(p+1), 6(p+1)) tangent, if want_k
       logical, intent(in) :: want_k               !< form the tangent
       type(rod_rule_t), intent(in) :: rule        !< rod_rule(p): points, shape functions
-      real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6)
+      !> EMC, TRAPEZOIDAL: the fields and strains of q^n at the points (rod_element_fields),
+      !> constant over a step; computed here if absent
+      type(rod_gp_t), intent(in), optional :: gp0(max_points)
+      real(wp), intent(in), optional :: epsn(6, max_points)
+      real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6), e0(6)
+      logical :: have0
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
       ! the material part's rows of all points: force strains (Gamma) in blt/cr(1:nf),
@@ -56,6 +61,7 @@ contains
       integer :: g, nen, nd, np
       nen = p + 1
       nd = 6*nen
+      have0 = present(gp0) .and. present(epsn)
       ! evaluation point: the midpoint, or q_f for the generalized-alpha scheme
       wq = 0.5_wp
       if (scheme == scheme_alpha) wq = wf
@@ -94,8 +100,14 @@ contains
                s(1:2) = sh
                call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
             case (scheme_trapezoidal)
-               call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-               sh = cg(1:2)*(rod_strains_shear(k0) - eps0(1:2, g))
+               if (have0) then   ! q^n's fields and strains, given or computed
+                  k0 = gp0(g)
+                  e0(1:2) = epsn(1:2, g)
+               else
+                  call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+                  e0(1:2) = rod_strains_shear(k0)
+               end if
+               sh = cg(1:2)*(e0(1:2) - eps0(1:2, g))
                sh1 = cg(1:2)*(rod_strains_shear(k1) - eps0(1:2, g))
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), k0, sh, 0.5_wp*wj, &
                                         fq(:, :, 1:nen))
@@ -109,11 +121,16 @@ contains
                s(1:2) = sh1
                call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
             case default ! scheme_emc
-               call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               if (have0) then   ! q^n's fields and strains, given or computed
+                  k0 = gp0(g)
+                  e0(1:2) = epsn(1:2, g)
+               else
+                  call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+                  e0(1:2) = rod_strains_shear(k0)
+               end if
                km%xp = 0.5_wp*(k0%xp + k1%xp)
                km%d(:, 1:2) = 0.5_wp*(k0%d(:, 1:2) + k1%d(:, 1:2))
-               sh = cg(1:2)*(0.5_wp*(rod_strains_shear(k0) + rod_strains_shear(k1)) &
-                             - eps0(1:2, g))
+               sh = cg(1:2)*(0.5_wp*(e0(1:2) + rod_strains_shear(k1)) - eps0(1:2, g))
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
                if (.not. want_k) cycle
                call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
@@ -137,8 +154,14 @@ contains
             call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
          case (scheme_trapezoidal)
-            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-            s = cg*(rod_strains(k0) - eps0(:, g))
+            if (have0) then   ! q^n's fields and strains, given or computed
+               k0 = gp0(g)
+               e0 = epsn(:, g)
+            else
+               call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               e0 = rod_strains(k0)
+            end if
+            s = cg*(e0 - eps0(:, g))
             s1 = cg*(rod_strains(k1) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k0, s, 0.5_wp*wj, fq(:, :, 1:nen))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k1, s1, 0.5_wp*wj, fq(:, :, 1:nen))
@@ -148,12 +171,18 @@ contains
             call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s1, 0.5_wp*wj, pg, mg)
          case default ! scheme_emc
-            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+            if (have0) then   ! q^n's fields and strains, given or computed
+               k0 = gp0(g)
+               e0 = epsn(:, g)
+            else
+               call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               e0 = rod_strains(k0)
+            end if
             ! the fields are linear in the nodal values: midpoint = mean of the ends
             km%xp = 0.5_wp*(k0%xp + k1%xp)
             km%d = 0.5_wp*(k0%d + k1%d)
             km%dp = 0.5_wp*(k0%dp + k1%dp)
-            s = cg*(0.5_wp*(rod_strains(k0) + rod_strains(k1)) - eps0(:, g))
+            s = cg*(0.5_wp*(e0 + rod_strains(k1)) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
@@ -167,6 +196,35 @@ contains
       if (want_k) call geometric_update(nen, pg, mg, dm(:, :, 1:nen), d1, ke(1:nd, 1:nd))
       if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, wq, ke(1:nd, 1:nd))
    end subroutine rod_element_dynamic
+
+   !> The fields and strains of one element's configuration (x0, d0) at its points, as
+   !> rod_element_dynamic uses them for q^n (full fields at the full points, x', d1, d2
+   !> at the shear-only points): formed once per step instead of once per Newton
+   !> iteration.
+   pure subroutine rod_element_fields(p, le, x0, d0, rule, gp0, epsn)
+      integer, intent(in) :: p                       !< element order
+      real(wp), intent(in) :: le                     !< unstretched element length [m]
+      real(wp), intent(in) :: x0(3, p + 1)           !< nodal positions [m]
+      real(wp), intent(in) :: d0(3, 3, p + 1)        !< nodal directors
+      type(rod_rule_t), intent(in) :: rule           !< rod_rule(p)
+      type(rod_gp_t), intent(out) :: gp0(max_points) !< fields at the points
+      real(wp), intent(out) :: epsn(6, max_points)   !< strains at the points
+      real(wp) :: n(max_nen), dn(max_nen)
+      integer :: g, nen
+      nen = p + 1
+      epsn = 0.0_wp
+      do g = 1, rule%np
+         n(1:nen) = rule%n(1:nen, g)
+         dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
+         if (rule%shear_only(g)) then
+            call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
+            epsn(1:2, g) = rod_strains_shear(gp0(g))
+         else
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
+            epsn(:, g) = rod_strains(gp0(g))
+         end if
+      end do
+   end subroutine rod_element_fields
    !> The stress (geometric) stiffness of one point, rod_rod_element's rod_gp_geometric,
    !> summed over the points before it is formed: with the nodal directors the same at
    !> every point, its blocks are linear in

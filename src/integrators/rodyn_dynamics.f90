@@ -26,9 +26,12 @@
 module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, scheme_alpha
+   use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t, state_allocate, state_copy
+   use rodyn_state, only: state_t, state_allocate, state_copy, state_gather
+   use rodyn_rod_element, only: rod_gp_t, max_points
+   use rodyn_rod_dynamic, only: rod_element_fields
+   use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
                              external_force, assemble_water, assemble_dynamic_cables
@@ -73,6 +76,11 @@ module rodyn_dynamics
       real(wp) :: f_last = 0.0_wp, m_last = 0.0_wp !< force/moment scale of the last iterate
       real(wp) :: f_conv = 0.0_wp, m_conv = 0.0_wp !< the same at the last converged step
       logical :: have_conv = .false.           !< a step has converged
+      !> EMC and TRAPEZOIDAL: each rod element's fields and strains of the state at t_n at
+      !> its points (rod_element_fields), formed once per step
+      type(rod_gp_t), allocatable :: gp0(:, :)    !< (max_points, ne)
+      real(wp), allocatable :: epsn(:, :, :)      !< (6, max_points, ne)
+      logical :: fields0 = .false.              !< gp0 and epsn are used
    contains
       procedure :: evaluate => dyn_evaluate
       procedure :: save_base => dyn_save_base
@@ -110,6 +118,10 @@ contains
       call inertia_build(model, mesh, prob%inert)
       call state_allocate(prob%s0, nn)
       prob%scheme = model%dynamic%scheme
+      prob%fields0 = (prob%scheme == scheme_emc .or. prob%scheme == scheme_trapezoidal) &
+                     .and. .not. all(mesh%elem_cable)
+      if (prob%fields0) allocate (prob%gp0(max_points, mesh%n_elements), &
+                                  prob%epsn(6, max_points, mesh%n_elements))
       prob%alpha = model%dynamic%rayleigh_alpha
       prob%beta_d = model%dynamic%rayleigh_beta
       if (prob%scheme == scheme_alpha) then
@@ -181,6 +193,7 @@ contains
       prob%t0 = t0
       prob%dt = dt
       call state_copy(prob%s1, prob%s0)
+      if (prob%fields0) call step_fields(prob)
       ! external forces at the force point: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
@@ -201,6 +214,22 @@ contains
       prob%s1%x = prob%s0%x
       prob%s1%d = prob%s0%d
    end subroutine dynamics_begin_step
+
+   !> The rods' fields and strains of the state at t_n (prob%s0) at their points.
+   subroutine step_fields(prob)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      real(wp) :: x0(3, max_nen), d0(3, 3, max_nen)
+      integer :: e, p
+      associate (mesh => prob%mesh)
+         do e = 1, mesh%n_elements
+            if (mesh%elem_cable(e)) cycle
+            p = mesh%line_order(mesh%elem_line(e))
+            call state_gather(prob%s0, mesh%elem_nodes(1:p + 1, e), x0, d0)
+            call rod_element_fields(p, mesh%elem_le(e), x0(:, 1:p + 1), d0(:, :, 1:p + 1), &
+                                    mesh%rules(p), prob%gp0(:, e), prob%epsn(:, :, e))
+         end do
+      end associate
+   end subroutine step_fields
 
    !> A step is accepted: its forces become the residual's reference of the next step.
    subroutine dynamics_accept_step(prob)
@@ -241,9 +270,14 @@ contains
       real(wp) :: fx, mx
       integer :: node, i, j, k
       if (has_error(err)) return
-      call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
-                            this%beta_d, this%dt, this%fint, this%fdamp, &
-                            this%bm, want_k)
+      if (this%fields0) then
+         call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
+                               this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
+                               this%gp0, this%epsn)
+      else
+         call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
+                               this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k)
+      end if
       if (this%mesh%n_cable > 0) &
          call assemble_dynamic_cables(this%mesh, this%sup, this%s0, this%s1, this%scheme, &
                                       this%wf, this%beta_d, this%dt, this%fint, this%fdamp, &

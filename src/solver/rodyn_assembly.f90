@@ -14,7 +14,7 @@ module rodyn_assembly
    use rodyn_state, only: state_t, state_gather
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
-   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points
+   use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, rod_gp_t
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_cable_element, only: cable_element_static, cable_element_dynamic
    use rodyn_rotation, only: cross, rotation_cayley_inverse
@@ -384,7 +384,7 @@ contains
    !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
    !> The damping forces are also returned in fdamp (for the energy log).
    subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
-                               want_k)
+                               want_k, gp0, epsn)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: s0         !< state at t_n
@@ -397,6 +397,10 @@ contains
       real(wp), intent(out) :: fdamp(:, :)    !< (6, nn) damping forces (in fint) [N, N m]
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
+      !> (max_points, ne), (6, max_points, ne): the rods' fields and strains of s0 at
+      !> their points for EMC and TRAPEZOIDAL (rod_element_fields), if formed for the step
+      type(rod_gp_t), intent(in), optional :: gp0(:, :)
+      real(wp), intent(in), optional :: epsn(:, :, :)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
@@ -415,10 +419,19 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
-            call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), mesh%eps0(:, :, e), &
-                                     x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
-                                     d1(:, :, 1:nen), scheme, wf, fe(:, 1:nen), &
-                                     ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
+            if (present(gp0) .and. present(epsn)) then
+               call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                        mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
+                                        x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
+                                        fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
+                                        mesh%rules(p), gp0(:, e), epsn(:, :, e))
+            else
+               call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                        mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
+                                        x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
+                                        fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
+                                        mesh%rules(p))
+            end if
             nd = 6*nen
             if (beta > 0.0_wp) then
                do a = 1, nen
