@@ -528,7 +528,7 @@ contains
    !> numbers of order 1 (x'.d3 - 1), so each carries an absolute round-off of order
    !> epsilon, and the energy one of order epsilon times this scale: under a large
    !> prestress far above epsilon times the energy itself.
-   pure subroutine rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale)
+   pure subroutine rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale, rule)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -537,11 +537,31 @@ contains
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp), intent(out) :: energy             !< stored energy (rod_element_energy) [J]
       real(wp), intent(out) :: scale              !< its round-off scale [J]
+      !> rod_rule(p) (its shape functions used instead of evaluated again)
+      type(rod_rule_t), intent(in), optional :: rule
       real(wp) :: eps(6, max_points), xig(max_points), xi(max_points), w(max_points)
-      real(wp) :: mask(6, max_points), s(6)
+      real(wp) :: mask(6, max_points), s(6), dn(max_nen)
+      type(rod_gp_t) :: kin
       integer :: g, np
-      call rod_element_strains(p, le, xe, de, eps, xig)
-      call rod_quadrature(p, np, xi, w, mask)
+      if (present(rule)) then
+         np = rule%np
+         w = rule%w
+         mask = rule%mask
+         eps = 0.0_wp
+         do g = 1, np
+            dn(1:p + 1) = rule%dn(1:p + 1, g)*2.0_wp/le
+            if (rule%shear_only(g)) then
+               call rod_gp_kinematics_shear(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin)
+               eps(1:2, g) = rod_strains_shear(kin)
+            else
+               call rod_gp_kinematics(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin)
+               eps(:, g) = rod_strains(kin)
+            end if
+         end do
+      else
+         call rod_element_strains(p, le, xe, de, eps, xig)
+         call rod_quadrature(p, np, xi, w, mask)
+      end if
       energy = 0.0_wp
       scale = 0.0_wp
       do g = 1, np

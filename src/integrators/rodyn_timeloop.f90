@@ -69,7 +69,8 @@ contains
             else
                call rod_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                              mesh%eps0(:, :, e), xe(:, 1:p + 1), &
-                                             de(:, :, 1:p + 1), we, se)
+                                             de(:, :, 1:p + 1), we, se, &
+                                             mesh%rules(p))
             end if
             w = w + we
             scale = scale + se
