@@ -53,7 +53,7 @@ module rodyn_hdf5
    public :: hdf5_read_dataset, hdf5_read_attribute
    public :: hdf5_create_series, hdf5_append_column
    public :: hdf5_series_t, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series
-   public :: hdf5_append_steps
+   public :: hdf5_append_steps, hdf5_series_hold, hdf5_series_write_held
 
    !> An open HDF5 file.
    type :: hdf5_file_t
@@ -71,6 +71,8 @@ module rodyn_hdf5
       logical :: integers = .false.              !< integer dataset (else real)
       type(hdf5_file_t) :: file                  !< the file (its id and name)
       character(len=:), allocatable :: path      !< dataset path, for messages
+      real(wp), allocatable :: held(:)           !< steps appended, not yet written
+      integer(hsize_t) :: n_held = 0             !< values in held
    end type hdf5_series_t
 
    !> Append steps to an open series: real or integer values(:) in memory order, n_cols
@@ -512,13 +514,40 @@ contains
       call release(dset)
    end subroutine hdf5_open_series
 
-   !> Close a series opened by hdf5_open_series. Acts even when err already holds an
-   !> error; does nothing for a series that is not open.
+   !> Hold the steps appended to a real series in memory, up to `steps` steps, instead of
+   !> writing each append: hdf5_series_write_held writes them as one block (and so do an
+   !> append that would overflow the hold, and hdf5_close_series). One block of m steps
+   !> costs one extent change and one write instead of m.
+   subroutine hdf5_series_hold(series, steps)
+      type(hdf5_series_t), intent(inout) :: series !< open real series, nothing held
+      integer, intent(in) :: steps                 !< steps held at most (>= 1)
+      if (allocated(series%held)) deallocate (series%held)
+      allocate (series%held(max(steps, 1)*series%n_cols))
+      series%n_held = 0
+   end subroutine hdf5_series_hold
+
+   !> Write the steps held (hdf5_series_hold) as one block. Nothing when none are held.
+   subroutine hdf5_series_write_held(series, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      type(error_t), intent(inout) :: err          !< status
+      integer(hsize_t) :: n
+      if (has_error(err) .or. series%n_held == 0) return
+      n = series%n_held
+      series%n_held = 0
+      call write_real(series, series%held(1:n), err)
+   end subroutine hdf5_series_write_held
+
+   !> Close a series opened by hdf5_open_series, writing the steps it holds first. Acts
+   !> even when err already holds an error (then the steps held are dropped); does
+   !> nothing for a series that is not open.
    subroutine hdf5_close_series(series, err)
       type(hdf5_series_t), intent(inout) :: series !< series to close
       type(error_t), intent(inout) :: err          !< status
       integer :: stat
       if (series%id < 0) return
+      call hdf5_series_write_held(series, err)
+      series%n_held = 0
+      if (allocated(series%held)) deallocate (series%held)
       call h5dclose_f(series%id, stat)
       series%id = -1
       if (stat < 0) call set_error(err, stat_io, 'hdf5_close_series: cannot close '''// &
@@ -550,6 +579,28 @@ contains
       type(hdf5_series_t), intent(inout) :: series !< open series
       real(wp), intent(in) :: values(:)            !< the new steps' values
       type(error_t), intent(inout) :: err          !< status
+      integer(hsize_t) :: n
+      if (has_error(err)) return
+      n = size(values, kind=hsize_t)
+      if (allocated(series%held) .and. mod(n, series%n_cols) == 0 .and. &
+          .not. series%integers) then
+         ! held: written with the block (hdf5_series_write_held), or at once if too big
+         if (series%n_held + n > size(series%held, kind=hsize_t)) &
+            call hdf5_series_write_held(series, err)
+         if (n <= size(series%held, kind=hsize_t)) then
+            series%held(series%n_held + 1:series%n_held + n) = values
+            series%n_held = series%n_held + n
+            return
+         end if
+      end if
+      call write_real(series, values, err)
+   end subroutine append_real
+
+   !> Write real steps to the end of a series (the write of append_real).
+   subroutine write_real(series, values, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series
+      real(wp), intent(in) :: values(:)            !< the new steps' values
+      type(error_t), intent(inout) :: err          !< status
       integer(hid_t) :: fspace, mspace
       integer(hsize_t) :: mdims(1)
       integer :: stat
@@ -560,7 +611,7 @@ contains
       call h5dwrite_f(series%id, H5T_NATIVE_DOUBLE, values, mdims, stat, &
          mem_space_id=mspace, file_space_id=fspace)
       call finish_append(series, stat, fspace, mspace, err)
-   end subroutine append_real
+   end subroutine write_real
 
    !> Append steps given as a block x(n_cols, m), m steps, to an open 2-D series.
    subroutine append_real_2d(series, values, err)

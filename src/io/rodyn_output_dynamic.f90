@@ -11,24 +11,27 @@
 !> What is on disk when (the flush policy; cost measured in test_output_dynamic.pf):
 !> - CSV tables: the rows of a frame, and the row of a step, are flushed (Fortran FLUSH:
 !>   handed to the operating system) before the call that wrote them returns.
-!> - dynamic.h5: each frame is written and the file flushed (H5Fflush) before
-!>   dynamic_output_frame returns. Step rows are kept in memory and written with the
-!>   next frame (or after log_block steps without a frame, or at close): one HDF5 flush
-!>   per step would cost more than the step rows themselves.
+!> - dynamic.h5: frames are held in memory (hdf5_series_hold, at most frame_block
+!>   frames or hold_bytes) and written as one block per dataset, with the step rows held
+!>   and a flush (H5Fflush), at the first frame, before each rewrite of status.txt, when
+!>   the hold is full (or log_block step rows are), and at close: one extent change and
+!>   one write per dataset for m frames instead of m of each.
 !> - status.txt: rewritten (temporary file + rename) at open, after a frame when at
-!>   least status_interval (1 s) of wall time has passed since the last rewrite, with
-!>   complete = false, status = running and how far the run got, and at close with the
-!>   final summary. A killed run leaves a status.txt that says it did not finish and
-!>   roughly where it was (a rewrite costs ~0.3 ms; one per frame would cost more than
-!>   the frame).
+!>   least status_interval (1 s) of wall time has passed since the last rewrite, right
+!>   after dynamic.h5 was written up to that frame, with complete = false, status =
+!>   running and how far the run (and the file) got, and at close with the final
+!>   summary. A killed run leaves a status.txt that says it did not finish and where
+!>   dynamic.h5 ends (a rewrite costs ~0.3 ms; one per frame would cost more than the
+!>   frame).
 !> There is no fsync: the files survive the process being killed, not a machine crash.
 !> HDF5 file format: the default (oldest) one, so that a killed run's file opens
 !> without h5clear (see docs/output.md for what HDF5 allows while the run is live).
 !>
 !> Numbers in the CSV tables are written exactly as by rodyn_output (17 significant
-!> digits, 1.2345678901234567E+05), through C's strfromd (ISO C23, glibc >= 2.25), which
-!> is about 6 times faster than a Fortran internal write; non-finite values go through
-!> the Fortran write so that they read as in the static tables (NaN, Infinity).
+!> digits, 1.2345678901234567E+05): by rodyn_format (128-bit integers) for 1e-15 <= |x|
+!> <= 1e37 and zero, otherwise through C's strfromd (ISO C23, glibc >= 2.25), about 6
+!> times faster than a Fortran internal write; non-finite values go through the Fortran
+!> write so that they read as in the static tables (NaN, Infinity).
 module rodyn_output_dynamic
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_double, c_null_char
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -40,6 +43,7 @@ module rodyn_output_dynamic
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
       hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
+      hdf5_series_hold, hdf5_series_write_held, &
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
@@ -71,6 +75,8 @@ module rodyn_output_dynamic
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
+   integer, parameter :: frame_block = 256  !< frames held for dynamic.h5 at most
+   integer, parameter :: hold_bytes = 8*1024*1024 !< and at most this much memory
    integer, parameter :: row_len = 1024    !< longest CSV row (at most 19 fields)
    integer, parameter :: chunk_bytes = 8192 !< target HDF5 chunk size of the frames
    integer, parameter :: log_chunk = 1024   !< steps per HDF5 chunk of the step log
@@ -151,6 +157,8 @@ module rodyn_output_dynamic
       type(line_out_t), allocatable :: line(:)       !< per line
       type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
       integer :: n_pending = 0                       !< rows held in pending
+      integer :: hold_frames = 1                     !< frames held for dynamic.h5 at most
+      integer :: frames_held = 0                     !< frames held, not yet in the file
       type(run_summary_t) :: progress                !< what status.txt says while running
       real(wp) :: static_wall_time = 0.0_wp          !< wall time before open [s]
       integer(i8) :: clock_start = 0_i8              !< system_clock count at open
@@ -246,6 +254,7 @@ contains
       character(len=*), parameter :: where = 'dynamic_output_frame'
       type(error_t) :: e
       integer :: i
+      logical :: due
       if (has_error(err)) return
       if (.not. w%is_open) then
          call set_error(err, stat_io, where//': the writer is not open')
@@ -268,7 +277,12 @@ contains
          w%frames = w%frames + 1
          w%progress%time_reached = time
          w%progress%steps = w%steps
-         if (seconds_since(w%clock_status) >= status_interval) then
+         due = seconds_since(w%clock_status) >= status_interval
+         ! dynamic.h5: the frames held are written (and the file flushed) with the first
+         ! frame, when the hold is full, and before status.txt is rewritten
+         if (w%hdf5 .and. (due .or. w%frames == 1 .or. w%frames_held >= w%hold_frames)) &
+            call write_held_h5(w, e)
+         if (due .and. .not. has_error(e)) then
             w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
             call output_write_status(w%dir, w%progress, e, w%deck_file)
             call system_clock(w%clock_status)
@@ -310,10 +324,7 @@ contains
       if (w%hdf5) then
          w%n_pending = w%n_pending + 1
          w%pending(w%n_pending) = log
-         if (w%n_pending == log_block) then
-            call write_pending_log(w, e)
-            call flush_h5(w, e)
-         end if
+         if (w%n_pending == log_block) call write_held_h5(w, e)
       end if
       w%steps = w%steps + 1
       w%progress%step_iterations = w%progress%step_iterations + log%iterations
@@ -336,7 +347,7 @@ contains
       s = summary
       s%dynamic = .true.
       if (w%is_open .and. w%hdf5) then
-         call write_pending_log(w, e)
+         call write_held_h5(w, e)
          call write_final_attributes(w, s, e)
       end if
       call release_all(w, e)
@@ -409,7 +420,7 @@ contains
       type(line_result_t), intent(in) :: lines(:)  !< initial state
       type(error_t), intent(inout) :: err          !< status
       character(len=:), allocatable :: g
-      integer :: i, k
+      integer :: i, k, nv
       if (has_error(err)) return
       call hdf5_create_file(w%h5, path_join(w%dir, dynamic_h5), err)
       if (has_error(err)) return
@@ -448,6 +459,22 @@ contains
                err)
          end do
       end associate
+      ! frames held in memory and written in blocks (see the flush policy above)
+      if (.not. has_error(err)) then
+         nv = 1
+         do i = 1, size(lines)
+            do k = 1, n_line_series
+               nv = nv + int(w%line(i)%series(k)%n_cols)
+            end do
+         end do
+         w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
+         call hdf5_series_hold(w%time, w%hold_frames)
+         do i = 1, size(lines)
+            do k = 1, n_line_series
+               call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
+            end do
+         end do
+      end if
       call flush_h5(w, err)
    end subroutine create_h5
 
@@ -630,7 +657,8 @@ contains
       end subroutine check_csv
    end subroutine write_frame_csv
 
-   !> The frame in dynamic.h5 (and the step rows held), then flush the file.
+   !> The frame's values appended to dynamic.h5's series (held in memory until
+   !> write_held_h5).
    subroutine write_frame_h5(w, time, lines, err)
       type(dynamic_writer_t), intent(inout) :: w   !< open writer
       real(wp), intent(in) :: time                 !< time of the frame [s]
@@ -658,9 +686,26 @@ contains
          end associate
       end do
       call hdf5_append_steps(w%time, [time], err)
+      w%frames_held = w%frames_held + 1
+   end subroutine write_frame_h5
+
+   !> Write the frames held (one block per series), then the step rows held, and flush
+   !> dynamic.h5: everything appended so far is in the file.
+   subroutine write_held_h5(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< open writer
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i, k
+      if (has_error(err)) return
+      call hdf5_series_write_held(w%time, err)
+      do i = 1, size(w%line)
+         do k = 1, n_line_series
+            call hdf5_series_write_held(w%line(i)%series(k), err)
+         end do
+      end do
+      w%frames_held = 0
       call write_pending_log(w, err)
       call flush_h5(w, err)
-   end subroutine write_frame_h5
+   end subroutine write_held_h5
 
    !> Append the step rows held in memory to /dynamic/log and forget them.
    subroutine write_pending_log(w, err)
