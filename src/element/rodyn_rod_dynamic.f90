@@ -86,6 +86,15 @@ contains
          if (rule%shear_only(g)) then
             call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x1, d1, k1)
             s = 0.0_wp
+            if (scheme == scheme_emc .or. scheme == scheme_trapezoidal) then
+               if (have0) then   ! q^n's fields and strains, given or computed
+                  k0 = gp0(g)
+                  e0(1:2) = epsn(1:2, g)
+               else
+                  call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+                  e0(1:2) = rod_strains_shear(k0)
+               end if
+            end if
             select case (scheme)
             case (scheme_midpoint, scheme_alpha)
                call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), &
@@ -100,13 +109,6 @@ contains
                s(1:2) = sh
                call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
             case (scheme_trapezoidal)
-               if (have0) then   ! q^n's fields and strains, given or computed
-                  k0 = gp0(g)
-                  e0(1:2) = epsn(1:2, g)
-               else
-                  call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-                  e0(1:2) = rod_strains_shear(k0)
-               end if
                sh = cg(1:2)*(e0(1:2) - eps0(1:2, g))
                sh1 = cg(1:2)*(rod_strains_shear(k1) - eps0(1:2, g))
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), k0, sh, 0.5_wp*wj, &
@@ -121,13 +123,6 @@ contains
                s(1:2) = sh1
                call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
             case default ! scheme_emc
-               if (have0) then   ! q^n's fields and strains, given or computed
-                  k0 = gp0(g)
-                  e0(1:2) = epsn(1:2, g)
-               else
-                  call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-                  e0(1:2) = rod_strains_shear(k0)
-               end if
                km%xp = 0.5_wp*(k0%xp + k1%xp)
                km%d(:, 1:2) = 0.5_wp*(k0%d(:, 1:2) + k1%d(:, 1:2))
                sh = cg(1:2)*(0.5_wp*(e0(1:2) + rod_strains_shear(k1)) - eps0(1:2, g))
@@ -143,6 +138,15 @@ contains
             cycle
          end if
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x1, d1, k1)
+         if (scheme == scheme_emc .or. scheme == scheme_trapezoidal) then
+            if (have0) then   ! q^n's fields and strains, given or computed
+               k0 = gp0(g)
+               e0 = epsn(:, g)
+            else
+               call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
+               e0 = rod_strains(k0)
+            end if
+         end if
          select case (scheme)
          case (scheme_midpoint, scheme_alpha)
             call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xm(:, 1:nen), dm(:, :, 1:nen), km)
@@ -154,13 +158,6 @@ contains
             call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
          case (scheme_trapezoidal)
-            if (have0) then   ! q^n's fields and strains, given or computed
-               k0 = gp0(g)
-               e0 = epsn(:, g)
-            else
-               call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-               e0 = rod_strains(k0)
-            end if
             s = cg*(e0 - eps0(:, g))
             s1 = cg*(rod_strains(k1) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k0, s, 0.5_wp*wj, fq(:, :, 1:nen))
@@ -171,13 +168,6 @@ contains
             call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s1, 0.5_wp*wj, pg, mg)
          case default ! scheme_emc
-            if (have0) then   ! q^n's fields and strains, given or computed
-               k0 = gp0(g)
-               e0 = epsn(:, g)
-            else
-               call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, k0)
-               e0 = rod_strains(k0)
-            end if
             ! the fields are linear in the nodal values: midpoint = mean of the ends
             km%xp = 0.5_wp*(k0%xp + k1%xp)
             km%d = 0.5_wp*(k0%d + k1%d)
