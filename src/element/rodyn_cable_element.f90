@@ -162,7 +162,7 @@ contains
       scale = 0.0_wp
       do g = 1, p
          wj = rule%w(g)*0.5_wp*le
-         lam = norm2(matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le))
+         lam = norm2(cable_xp(p, le, xe, rule%dn(1:p + 1, g)))
          energy = energy + wj*strain_energy(ea, lam)
          scale = scale + wj*ea*max(lam - 1.0_wp, 0.0_wp)
       end do
@@ -180,12 +180,27 @@ contains
       real(wp) :: xp(3), lam
       integer :: g
       do g = 1, p
-         xp = matmul(xe, rule%dn(1:p + 1, g)*2.0_wp/le)
+         xp = cable_xp(p, le, xe, rule%dn(1:p + 1, g))
          lam = norm2(xp)
          tension(g) = ea*max(lam - 1.0_wp, 0.0_wp)
          tangent(:, g) = xp/lam
       end do
    end subroutine cable_element_tension
+
+   !> x' = sum_a x_a dN_a/dS at a point (dN_a/dxi given; no array temporary).
+   pure function cable_xp(p, le, xe, dnxi) result(xp)
+      integer, intent(in) :: p                !< element order
+      real(wp), intent(in) :: le              !< unstretched element length [m]
+      real(wp), intent(in) :: xe(3, p + 1)    !< nodal positions [m]
+      real(wp), intent(in) :: dnxi(p + 1)     !< dN_a/dxi at the point
+      real(wp) :: xp(3)
+      integer :: a
+      xp = 0.0_wp
+      do a = 1, p + 1
+         xp = xp + dnxi(a)*xe(:, a)
+      end do
+      xp = xp*(2.0_wp/le)
+   end function cable_xp
 
    !> W(lambda) = 1/2 EA max(lambda - 1, 0)^2 [J/m].
    pure real(wp) function strain_energy(ea, lam)

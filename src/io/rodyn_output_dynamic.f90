@@ -591,6 +591,7 @@ contains
       character(len=64) :: t
       character(len=512) :: msg
       real(wp), allocatable :: fn(:), ff(:), tw(:)
+      real(wp) :: vals(8)
       integer :: nt, n, i, k, j, ios
       if (has_error(err)) return
       nt = 0
@@ -604,7 +605,10 @@ contains
             do k = 1, lo%nn
                n = 0
                call put_text(row, n, t(:nt)//lo%node_head(k)%s)
-               call put_reals(row, n, [r%node_x(:, k), fn(k), ff(k)])
+               vals(1:3) = r%node_x(:, k)    ! (a fixed array: no allocation per row)
+               vals(4) = fn(k)
+               vals(5) = ff(k)
+               call put_reals(row, n, vals(1:5))
                if (ios == 0) write (w%u_nodes, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
          end associate
@@ -617,8 +621,12 @@ contains
             do k = 1, lo%ng
                n = 0
                call put_text(row, n, t(:nt)//lo%point_head(k)%s)
-               call put_reals(row, n, [r%tension(k), tw(k), r%moment(:, k), r%torque(k), &
-                  bending_curvature(r%curvature(:, k:k))])
+               vals(1) = r%tension(k)
+               vals(2) = tw(k)
+               vals(3:4) = r%moment(:, k)
+               vals(5) = r%torque(k)
+               vals(6) = hypot(r%curvature(1, k), r%curvature(2, k))   ! bending_curvature
+               call put_reals(row, n, vals(1:6))
                if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
          end associate

@@ -161,7 +161,8 @@ contains
                if (want_k) then
                   kad = -m
                   ta = dot_product(t, acc)
-                  kxpd = kxpd - (ws%maa - ws%man)*matmul(outer(t, acc) + ta*eye, pm)/lam
+                  m = outer(t, acc) + ta*eye     ! (a local: no heap temporary)
+                  kxpd = kxpd - (ws%maa - ws%man)*matmul(m, pm)/lam
                end if
             end if
             fh = fh + phi*fd

@@ -157,10 +157,11 @@ contains
       end do
       if (.not. wl%env%seabed) return
       ! the seabed: exactly over the parts of the element where N > 0 (module header)
-      gapn(1:nen) = [(dot_product(wl%env%n, xf(:, a)) - wl%env%c0, a=1, nen)]
-      gcon(1:nen) = gapn(1:nen)
-      if (wl%env%dynamic) gcon(1:nen) = gcon(1:nen) + wl%env%c/wl%env%k* &
-                                        [(dot_product(wl%env%n, vf(:, a)), a=1, nen)]
+      do a = 1, nen     ! (loops, not array constructors: those allocate)
+         gapn(a) = dot_product(wl%env%n, xf(:, a)) - wl%env%c0
+         gcon(a) = gapn(a)
+         if (wl%env%dynamic) gcon(a) = gcon(a) + wl%env%c/wl%env%k*dot_product(wl%env%n, vf(:, a))
+      end do
       if (minval(gcon(1:nen)) > 0.1_wp*le) return
       call contact_parts(p, gcon(1:nen), nparts, lo, hi)
       do k = 1, nparts
