@@ -20,7 +20,7 @@ module rodyn_rod_dynamic
                                 rod_gp_qforce_shear, rod_gp_jacobian_shear
    implicit none
    private
-   public :: rod_element_dynamic, rod_element_fields
+   public :: rod_element_dynamic
 
 contains
 
@@ -187,34 +187,6 @@ contains
       if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, wq, ke(1:nd, 1:nd))
    end subroutine rod_element_dynamic
 
-   !> The fields and strains of one element's configuration (x0, d0) at its points, as
-   !> rod_element_dynamic uses them for q^n (full fields at the full points, x', d1, d2
-   !> at the shear-only points): formed once per step instead of once per Newton
-   !> iteration.
-   pure subroutine rod_element_fields(p, le, x0, d0, rule, gp0, epsn)
-      integer, intent(in) :: p                       !< element order
-      real(wp), intent(in) :: le                     !< unstretched element length [m]
-      real(wp), intent(in) :: x0(3, p + 1)           !< nodal positions [m]
-      real(wp), intent(in) :: d0(3, 3, p + 1)        !< nodal directors
-      type(rod_rule_t), intent(in) :: rule           !< rod_rule(p)
-      type(rod_gp_t), intent(out) :: gp0(max_points) !< fields at the points
-      real(wp), intent(out) :: epsn(6, max_points)   !< strains at the points
-      real(wp) :: n(max_nen), dn(max_nen)
-      integer :: g, nen
-      nen = p + 1
-      epsn = 0.0_wp
-      do g = 1, rule%np
-         n(1:nen) = rule%n(1:nen, g)
-         dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
-         if (rule%shear_only(g)) then
-            call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
-            epsn(1:2, g) = rod_strains_shear(gp0(g))
-         else
-            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
-            epsn(:, g) = rod_strains(gp0(g))
-         end if
-      end do
-   end subroutine rod_element_fields
    !> The stress (geometric) stiffness of one point, rod_rod_element's rod_gp_geometric,
    !> summed over the points before it is formed: with the nodal directors the same at
    !> every point, its blocks are linear in

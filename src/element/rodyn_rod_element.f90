@@ -29,7 +29,7 @@ module rodyn_rod_element
    public :: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, rod_gp_jacobian
    public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
    public :: rod_element_static, rod_element_strains, rod_element_energy
-   public :: rod_element_energy_scale
+   public :: rod_element_energy_scale, rod_element_fields
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule
    public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_shear
@@ -519,7 +519,7 @@ contains
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp) :: energy
       real(wp) :: scale
-      call rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale)
+      call rod_element_energy_scale(p, le, c, eps0, xe, de, energy, scale, rod_rule(p))
    end function rod_element_energy
 
    !> The stored energy (as rod_element_energy) and its round-off scale [J]: sum over
@@ -537,39 +537,48 @@ contains
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp), intent(out) :: energy             !< stored energy (rod_element_energy) [J]
       real(wp), intent(out) :: scale              !< its round-off scale [J]
-      !> rod_rule(p) (its shape functions used instead of evaluated again)
-      type(rod_rule_t), intent(in), optional :: rule
-      real(wp) :: eps(6, max_points), xig(max_points), xi(max_points), w(max_points)
-      real(wp) :: mask(6, max_points), s(6), dn(max_nen)
-      type(rod_gp_t) :: kin
-      integer :: g, np
-      if (present(rule)) then
-         np = rule%np
-         w = rule%w
-         mask = rule%mask
-         eps = 0.0_wp
-         do g = 1, np
-            dn(1:p + 1) = rule%dn(1:p + 1, g)*2.0_wp/le
-            if (rule%shear_only(g)) then
-               call rod_gp_kinematics_shear(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin)
-               eps(1:2, g) = rod_strains_shear(kin)
-            else
-               call rod_gp_kinematics(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin)
-               eps(:, g) = rod_strains(kin)
-            end if
-         end do
-      else
-         call rod_element_strains(p, le, xe, de, eps, xig)
-         call rod_quadrature(p, np, xi, w, mask)
-      end if
+      type(rod_rule_t), intent(in) :: rule        !< rod_rule(p)
+      real(wp) :: eps(6, max_points), s(6)
+      type(rod_gp_t) :: kin(max_points)
+      integer :: g
+      call rod_element_fields(p, le, xe, de, rule, kin, eps)
       energy = 0.0_wp
       scale = 0.0_wp
-      do g = 1, np
-         s = mask(:, g)*c*(eps(:, g) - eps0(:, g))
-         energy = energy + 0.25_wp*le*w(g)*sum(s*(eps(:, g) - eps0(:, g)))
-         scale = scale + 0.5_wp*le*w(g)*sum(abs(s))
+      do g = 1, rule%np
+         s = rule%mask(:, g)*c*(eps(:, g) - eps0(:, g))
+         energy = energy + 0.25_wp*le*rule%w(g)*sum(s*(eps(:, g) - eps0(:, g)))
+         scale = scale + 0.5_wp*le*rule%w(g)*sum(abs(s))
       end do
    end subroutine rod_element_energy_scale
+
+   !> The fields and strains of one element's configuration (x0, d0) at its points: full
+   !> fields at the full points, x', d1, d2 at the shear-only points. rod_element_dynamic
+   !> takes those of q^n from here once per step (not once per Newton iteration); the
+   !> stored energy uses them too.
+   pure subroutine rod_element_fields(p, le, x0, d0, rule, gp0, epsn)
+      integer, intent(in) :: p                       !< element order
+      real(wp), intent(in) :: le                     !< unstretched element length [m]
+      real(wp), intent(in) :: x0(3, p + 1)           !< nodal positions [m]
+      real(wp), intent(in) :: d0(3, 3, p + 1)        !< nodal directors
+      type(rod_rule_t), intent(in) :: rule           !< rod_rule(p)
+      type(rod_gp_t), intent(out) :: gp0(max_points) !< fields at the points
+      real(wp), intent(out) :: epsn(6, max_points)   !< strains at the points
+      real(wp) :: n(max_nen), dn(max_nen)
+      integer :: g, nen
+      nen = p + 1
+      epsn = 0.0_wp
+      do g = 1, rule%np
+         n(1:nen) = rule%n(1:nen, g)
+         dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
+         if (rule%shear_only(g)) then
+            call rod_gp_kinematics_shear(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
+            epsn(1:2, g) = rod_strains_shear(gp0(g))
+         else
+            call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), x0, d0, gp0(g))
+            epsn(:, g) = rod_strains(gp0(g))
+         end if
+      end do
+   end subroutine rod_element_fields
 
    !> Consistent nodal forces of a uniform line load q [N/m]: f_a = q int N_a dS,
    !> integrated exactly with p+1 Gauss points.

@@ -29,8 +29,7 @@ module rodyn_dynamics
    use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather
-   use rodyn_rod_element, only: rod_gp_t, max_points
-   use rodyn_rod_dynamic, only: rod_element_fields
+   use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields
    use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &

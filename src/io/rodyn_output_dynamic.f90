@@ -625,7 +625,7 @@ contains
                vals(2) = tw(k)
                vals(3:4) = r%moment(:, k)
                vals(5) = r%torque(k)
-               vals(6) = hypot(r%curvature(1, k), r%curvature(2, k))   ! bending_curvature
+               vals(6) = bending_curvature_at(r%curvature(:, k))
                call put_reals(row, n, vals(1:6))
                if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
             end do
@@ -1004,7 +1004,13 @@ contains
       real(wp) :: kb(size(curv, 2))
       integer :: k
       do k = 1, size(curv, 2)
-         kb(k) = hypot(curv(1, k), curv(2, k))
+         kb(k) = bending_curvature_at(curv(:, k))
       end do
    end function bending_curvature
+
+   !> Bending curvature sqrt(K1^2 + K2^2) of one point [1/m] (bending_curvature's).
+   pure real(wp) function bending_curvature_at(curv)
+      real(wp), intent(in) :: curv(3)     !< curvatures K1, K2, K3 [1/m]
+      bending_curvature_at = hypot(curv(1), curv(2))
+   end function bending_curvature_at
 end module rodyn_output_dynamic

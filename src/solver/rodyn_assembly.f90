@@ -474,7 +474,7 @@ contains
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
       real(wp) :: x0(3, max_nen), x1(3, max_nen)
-      real(wp) :: d(3, 3, max_nen), fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
+      real(wp) :: fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
       real(wp) :: ks(3*max_nen, 3*max_nen), du(3*max_nen), fd(3*max_nen)
       integer :: e, p, nen, a, j, nc
       do e = 1, mesh%n_elements
@@ -483,8 +483,10 @@ contains
          nen = p + 1
          nc = 3*nen
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            call state_gather(s0, nodes, x0, d)
-            call state_gather(s1, nodes, x1, d)
+            do a = 1, nen                 ! positions only: a cable has no directors
+               x0(:, a) = s0%x(:, nodes(a))
+               x1(:, a) = s1%x(:, nodes(a))
+            end do
             call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), x0(:, 1:nen), &
                                        x1(:, 1:nen), scheme, wf, fc(:, 1:nen), &
                                        kc(1:nc, 1:nc), want_k, mesh%rules(p))
