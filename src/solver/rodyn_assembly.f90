@@ -25,7 +25,7 @@ module rodyn_assembly
    public :: supports_t, loads_t, supports_build, loads_build
    public :: assemble_static, assemble_dynamic, assemble_dynamic_cables, apply_supports
    public :: external_force
-   public :: add_node_block, assemble_water, dof_map
+   public :: add_node_block, assemble_water, dof_map, dof_reach
 
    !> Node constraints, fixed for the run.
    type :: supports_t
@@ -182,6 +182,33 @@ contains
          end associate
       end do
    end subroutine dof_map
+
+   !> The envelope of the linear system (rodyn_banded): reach(k), the last unknown that
+   !> unknown k shares an element with (every matrix entry is an element's or a node's).
+   pure subroutine dof_reach(mesh, sup, reach)
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(supports_t), intent(in) :: sup    !< supports with their dof map
+      integer, intent(out) :: reach(:)       !< (n_dof) last unknown coupled to each one
+      integer :: e, nen, a, k, last
+      do k = 1, sup%n_dof
+         reach(k) = k
+      end do
+      do e = 1, mesh%n_elements
+         nen = mesh%line_order(mesh%elem_line(e)) + 1
+         associate (nodes => mesh%elem_nodes(1:nen, e))
+            last = maxval(sup%first(nodes) + sup%ndof(nodes)) - 1
+            do a = 1, nen
+               do k = sup%first(nodes(a)), sup%first(nodes(a)) + sup%ndof(nodes(a)) - 1
+                  reach(k) = max(reach(k), last)
+               end do
+            end do
+         end associate
+      end do
+      do a = 1, mesh%n_nodes   ! a node's own block (inertia, supports, attachments)
+         last = sup%first(a) + sup%ndof(a) - 1
+         reach(sup%first(a):last) = max(reach(sup%first(a):last), last)
+      end do
+   end subroutine dof_reach
 
    !> Load vectors: consistent self-weight m g int N_a dS (m with the contents) plus the
    !> weight of the attachments at their nodes, and the point loads with their amplitudes.

@@ -13,6 +13,16 @@
 !>   diagonal (cancellation: the matrix needs pivoting), banded_factor reports a
 !>   numerical failure and switches the matrix to partial pivoting for good (the caller's
 !>   next tangent is factorised by dgbtrf).
+!>
+!> The envelope (banded_set_reach): within the band a line's matrix is a chain of dense
+!> element blocks; the interior unknowns of an element couple only to that element's
+!> unknowns. reach(k) is the last unknown that unknown k couples to (k + kl at most),
+!> top(k) the first whose reach includes k. Without pivoting there is no fill outside
+!> an envelope whose reach does not decrease (Jennings' profile LU, as in skyline
+!> solvers), so the column updates and the solves run over reach(k) - k rows and
+!> k - top(k) columns instead of kl and ku: on the paper's case 1 (cubic elements,
+!> kl = 23) the factorisation does 4269 instead of 6003 multiply-adds an element and
+!> a solve 522 instead of 828.
 module rodyn_banded
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, stat_numerical
@@ -20,7 +30,7 @@ module rodyn_banded
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
    public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
-   public :: banded_kept_axpy, banded_free, banded_set_pivoting
+   public :: banded_kept_axpy, banded_free, banded_set_pivoting, banded_set_reach
 
    !> A square banded matrix with kl sub- and ku super-diagonals: A(i, j) is ab(kv + i - j,
    !> j). Stored for dgbtrf with pivoting (ldab = 2 kl + ku + 1, kv = kl + ku + 1: the
@@ -39,6 +49,8 @@ module rodyn_banded
       integer :: n_kept = 0                   !< columns kept (banded_keep_column)
       integer, allocatable :: kept_dof(:)     !< (n_kept) their dofs
       real(wp), allocatable :: kept(:, :)     !< (kl + ku + 1, n_kept) their band entries
+      integer, allocatable :: reach(:)        !< (n) last unknown coupled to unknown k
+      integer, allocatable :: top(:)          !< (n) first unknown whose reach includes k
    end type banded_t
 
    interface
@@ -67,6 +79,7 @@ contains
       type(banded_t), intent(inout) :: bm   !< matrix
       integer, intent(in) :: n              !< order
       integer, intent(in) :: half_bandwidth !< kl = ku
+      integer :: k
       bm%n = n
       bm%kl = min(half_bandwidth, max(n - 1, 0))
       bm%ku = bm%kl
@@ -79,7 +92,31 @@ contains
       bm%n_kept = 0
       bm%ab = 0.0_wp
       bm%factored = .false.
+      call banded_set_reach(bm, [(min(n, k + bm%kl), k=1, n)])
    end subroutine banded_init
+
+   !> The envelope of the matrix (module header): reach(k) >= k, the last unknown that
+   !> unknown k couples to. It is clipped to the band and made non-decreasing, so that
+   !> the LU without pivoting has no fill outside it; every entry assembled later must
+   !> lie inside it.
+   pure subroutine banded_set_reach(bm, reach)
+      type(banded_t), intent(inout) :: bm !< matrix
+      integer, intent(in) :: reach(:)     !< (n) last unknown coupled to each unknown
+      integer :: k, i
+      if (allocated(bm%reach)) deallocate (bm%reach, bm%top)
+      allocate (bm%reach(bm%n), bm%top(bm%n))
+      do k = 1, bm%n
+         bm%reach(k) = min(bm%n, k + bm%kl, max(k, reach(k)))
+         if (k > 1) bm%reach(k) = max(bm%reach(k), bm%reach(k - 1))
+      end do
+      i = 1
+      do k = 1, bm%n
+         do while (bm%reach(i) < k)
+            i = i + 1
+         end do
+         bm%top(k) = max(i, k - bm%ku)
+      end do
+   end subroutine banded_set_reach
 
    !> Choose the factorisation (see the module header): the storage is allocated again
    !> for it, zero, when it changes (outside the Newton loop, or once after a failed
@@ -105,6 +142,7 @@ contains
       type(banded_t), intent(inout) :: bm !< matrix
       if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
+      if (allocated(bm%reach)) deallocate (bm%reach, bm%top)
       bm%n = 0
       bm%n_kept = 0
       bm%factored = .false.
@@ -254,8 +292,8 @@ contains
       bm%factored = .true.
    end subroutine banded_factor
 
-   !> A = L U without pivoting, in place (no fill outside the band): for k = 1 .. n,
-   !>   l_ik = a_ik / a_kk (i = k+1 .. k+kl),  a_ij -= l_ik a_kj (j = k+1 .. k+ku).
+   !> A = L U without pivoting, in place (no fill outside the envelope): for k = 1 .. n,
+   !>   l_ik = a_ik / a_kk (i = k+1 .. reach(k)),  a_ij -= l_ik a_kj (j = k+1 .. reach(k)).
    !> info = k > 0 when pivot k is zero, not finite or below 1e-12 of its original
    !> diagonal (1e-12 of the column's largest entry if that diagonal was zero).
    pure subroutine factor_unpivoted(bm, info)
@@ -272,7 +310,7 @@ contains
          do k = 1, n
             piv = ab(kv, k)
             ref = abs(bm%diag(k))
-            m = min(kl, n - k)
+            m = bm%reach(k) - k           ! rows of column k inside the envelope
             if (ref == 0.0_wp) ref = maxval(abs(ab(kv - min(ku, k - 1):kv + m, k)))
             if (.not. (abs(piv) > 1.0e-12_wp*ref)) then
                info = k
@@ -284,7 +322,7 @@ contains
             do i = 1, m
                ab(kv + i, k) = ab(kv + i, k)*rp
             end do
-            last = min(n, k + ku)
+            last = bm%reach(k)            ! and columns of row k
             do j = k + 1, last
                i1 = kv + k - j               ! row of a_kj in column j
                akj = ab(i1, j)
@@ -307,7 +345,7 @@ contains
       kv = bm%kv
       associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
          do k = 1, n - 1
-            m = min(kl, n - k)
+            m = bm%reach(k) - k
             bk = b(k)
             if (bk == 0.0_wp) cycle
             do i = 1, m
@@ -316,7 +354,7 @@ contains
          end do
          do k = n, 1, -1
             b(k) = b(k)/ab(kv, k)
-            m = min(ku, k - 1)
+            m = k - bm%top(k)
             bk = b(k)
             if (bk == 0.0_wp) cycle
             do i = 1, m

@@ -7,8 +7,9 @@ module rodyn_rod_problem
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
-   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve
-   use rodyn_assembly, only: supports_t
+   use rodyn_banded, only: banded_t, banded_init, banded_factor, banded_solve, &
+                           banded_set_reach
+   use rodyn_assembly, only: supports_t, dof_reach
    use rodyn_newton, only: newton_problem_t
    use rodyn_rotation, only: rotation_cayley
    implicit none
@@ -51,6 +52,7 @@ contains
       type(model_t), intent(in) :: model          !< model
       type(mesh_t), intent(in), target :: mesh    !< mesh
       integer :: nn
+      integer, allocatable :: reach(:)
       prob%mesh => mesh
       nn = mesh%n_nodes
       allocate (prob%fint(6, nn), prob%fext(6, nn), prob%r(6, nn), prob%gap(3, nn), &
@@ -59,6 +61,9 @@ contains
       prob%fext = 0.0_wp
       prob%gap = 0.0_wp
       call banded_init(prob%bm, prob%sup%n_dof, prob%sup%half_bw)
+      allocate (reach(prob%sup%n_dof))
+      call dof_reach(mesh, prob%sup, reach)
+      call banded_set_reach(prob%bm, reach)
       prob%lref = maxval(model%lines%length)
       prob%href = minval(mesh%elem_le)
       ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
