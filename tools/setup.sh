@@ -52,5 +52,10 @@ then
   echo "setup: installing the post-processing package from postproc/ (pip install -e)"
   python3 -m pip install -q -e postproc 2>/dev/null ||
     python3 -m pip install -q --break-system-packages -e postproc
+  if command -v pyenv >/dev/null 2>&1; then pyenv rehash; fi  # shims of the new commands
 fi
+command -v rodyn-plot-all >/dev/null 2>&1 ||
+  echo "setup: warning: the console commands (rodyn-plot-all, ...) are not on the PATH;" \
+       "pip put them in $(python3 -c 'import sysconfig; print(sysconfig.get_path("scripts"))')" \
+       "(or ~/.local/bin for a user install)" >&2
 echo "setup: $(gfortran --version | head -1); $(cmake --version | head -1)"
