@@ -64,7 +64,7 @@ def help_text(doc: str) -> str:
 def make_parser(prog: str, description: str, results_default=DYNAMIC_DEFAULT,
                 results_help="results folder or dynamic.h5 file", dpi=150.0,
                 epilog=EPILOG, results=True) -> argparse.ArgumentParser:
-    """ArgumentParser of script `prog` with the arguments every script has: RESULTS
+    """ArgumentParser of command `prog` with the arguments every command has: RESULTS
     (optional, with its default folder), -o/--out-dir and --dpi (not with dpi=None)."""
     parser = argparse.ArgumentParser(prog=prog, description=description, epilog=epilog,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -94,7 +94,7 @@ def add_line(parser, every=False):
 
 
 def parse(parser, argv):
-    """parse_args plus the checks shared by all scripts (--window order)."""
+    """parse_args plus the checks shared by all commands (--window order)."""
     args = parser.parse_args(argv)
     window = getattr(args, "window", None)
     if window and not window[1] > window[0]:

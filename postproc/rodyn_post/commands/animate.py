@@ -26,8 +26,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
 from rodyn_post import cli, errors, load_dynamic
-from rodyn_post.quantities import (check_window, matching_static,
-                                   window_mask)
+from rodyn_post.quantities import check_window, matching_static, window_mask
 
 PROG = "animate"  # prefix of its messages
 COMMAND = "rodyn-animate"  # its console command (postproc/pyproject.toml)

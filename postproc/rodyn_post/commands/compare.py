@@ -47,9 +47,9 @@ import numpy as np
 
 from rodyn_post import cli, errors, load_dynamic, load_static, units
 from rodyn_post.errors import InputError
-from rodyn_post.quantities import (QUANTITIES, STATS,
-                                   check_window, history, parse_location, pick_line,
-                                   point_values, quantity, range_stats, window_mask)
+from rodyn_post.quantities import (QUANTITIES, STATS, check_window, history,
+                                   parse_location, pick_line, point_values, quantity,
+                                   range_stats, window_mask)
 from rodyn_post.reference import ReferenceTable, compare
 
 PROG = "compare"  # prefix of its messages

@@ -1,4 +1,4 @@
-"""Every plot of a rodyn run, by the scripts of postproc/, in one command.
+"""Every plot of a rodyn run, by the other rodyn_post commands, in one command.
 
     rodyn-plot-all [RESULTS] [-o OUT_DIR] [--dpi DPI] [--window T0 T1]
                    [--animate] [--paraview]
@@ -18,9 +18,9 @@ results found there:
                    with --animate rodyn-animate (GIF, MP4 when ffmpeg is there), with
                    --paraview rodyn-paraview (OUT_DIR/paraview/ or RESULTS/paraview/)
 
-Each script prints the paths it writes and its own messages; --dpi and --window go to
-the scripts that take them (default: each script's own). The exit status is the
-highest of the scripts' (0 success, 1 bad input, 3 cannot write), 1 when RESULTS holds
+Each command prints the paths it writes and its own messages; --dpi and --window go to
+the commands that take them (default: each command's own). The exit status is the
+highest of the commands' (0 success, 1 bad input, 3 cannot write), 1 when RESULTS holds
 no results; 2 bad command line.
 """
 import sys
@@ -35,7 +35,7 @@ COMMAND = "rodyn-plot-all"  # its console command (postproc/pyproject.toml)
 
 
 def commands(args, kinds, line_names):
-    """[(script module, argv)] to run, in order."""
+    """[(command module, argv)] to run, in order."""
     common = [str(args.results)] + (["-o", args.out_dir] if args.out_dir else [])
     dpi = ["--dpi", f"{args.dpi:g}"] if args.dpi else []
     window = ["--window", *(f"{t!r}" for t in args.window)] if args.window else []
@@ -64,7 +64,7 @@ def parse_args(argv):
                              results_help="results folder, results.h5 or dynamic.h5",
                              dpi=None)
     parser.add_argument("--dpi", type=cli.positive_float,
-                        help="resolution of the PNGs (default: each script's own)")
+                        help="resolution of the PNGs (default: each command's own)")
     cli.add_window(parser)
     parser.add_argument("--animate", action="store_true",
                         help="also the animation (rodyn-animate)")

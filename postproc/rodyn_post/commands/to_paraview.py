@@ -35,8 +35,7 @@ import numpy as np
 
 from rodyn_post import cli, load_dynamic, load_static
 from rodyn_post.errors import InputError
-from rodyn_post.quantities import (check_window, point_values,
-                                   resample_matrix, window_mask)
+from rodyn_post.quantities import check_window, point_values, resample_matrix, window_mask
 from rodyn_post.vtk import pvd_text, vtp_text
 
 PROG = "to_paraview"  # prefix of its messages
