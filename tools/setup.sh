@@ -44,7 +44,7 @@ assert spec and Path(spec.origin).resolve() == postproc / "rodyn_post" / "__init
 text = (postproc / "pyproject.toml").read_text(encoding="utf-8")
 scripts = re.search(r"^\[project\.scripts\]\n(.*?)(?=^\[|\Z)", text, re.M | re.S).group(1)
 scripts = dict(re.findall(r'^([\w-]+)\s*=\s*"([\w.]+:\w+)"', scripts, re.M))
-dist = importlib.metadata.distribution("rodyn-post")
+dist = importlib.metadata.distribution("rodyn_post")  # the dist-info name (3.9 too)
 assert {e.name: e.value for e in dist.entry_points if e.group == "console_scripts"} == scripts
 assert dist.version == re.search(r'^version\s*=\s*"([^"]+)"', text, re.M).group(1)
 EOF

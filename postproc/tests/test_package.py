@@ -45,7 +45,7 @@ def test_installed_entry_points_are_those_of_pyproject():
     """The installed metadata holds the commands of pyproject.toml (else the install is
     stale: tools/setup.sh reinstalls)."""
     installed = {ep.name: ep.value for ep in
-                 importlib.metadata.distribution("rodyn-post").entry_points
+                 importlib.metadata.distribution("rodyn_post").entry_points
                  if ep.group == "console_scripts"}
     assert installed == SCRIPTS
 
