@@ -1,6 +1,7 @@
 """rodyn_post as an installed package: every console command of postproc/pyproject.toml
 is installed, resolves to its function and answers --help with exit status 0; every
-command module names its console command; no file of postproc/ edits the module path.
+command module names its console command and reads results only through the readers; no
+file of postproc/ edits the module path.
 """
 import importlib
 import importlib.metadata
@@ -88,4 +89,14 @@ def test_no_path_edits_in_postproc():
         offenders += [f"{path.relative_to(POSTPROC)}:{number}"
                       for number, line in enumerate(text.splitlines(), 1)
                       if PATH_EDIT in line]
+    assert not offenders, offenders
+
+
+def test_commands_read_through_the_readers():
+    """The commands read results only through rodyn_post's readers (load_static,
+    load_dynamic, ReferenceTable), never with h5py or the csv module of their own."""
+    folder = Path(rodyn_post.commands.__file__).parent
+    own_readers = re.compile(r"^\s*(import|from)\s+(h5py|csv)\b", re.M)
+    offenders = [path.name for path in sorted(folder.glob("*.py"))
+                 if own_readers.search(path.read_text(encoding="utf-8"))]
     assert not offenders, offenders
