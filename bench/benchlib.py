@@ -238,11 +238,8 @@ def timed_run(rodyn, deck, out=None, repeats=3, repeat_below_s=2.0, timeout=None
 
 
 def load_results(out):
-    """rodyn_post.load_dynamic of a results folder (postproc/ on the path)."""
-    import sys
-    post = os.path.join(ROOT, "postproc")
-    if post not in sys.path:
-        sys.path.insert(0, post)
+    """rodyn_post.load_dynamic of a results folder (the installed package of postproc/:
+    bash tools/setup.sh)."""
     from rodyn_post import load_dynamic
     return load_dynamic(out)
 

@@ -44,9 +44,8 @@ import time
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "postproc"))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
-from rodyn_post import load_dynamic  # noqa: E402
+from rodyn_post import load_dynamic  # noqa: E402  (installed: bash tools/setup.sh)
 from benchlib import machine_facts  # noqa: E402
 
 SECTION_INC = "paper_cable_section.inc"

@@ -6,7 +6,7 @@
 # mooring leg in water (input/mooring_catenary.inp, mooring_surge.inp,
 # mooring_current.inp) and the published lazy-wave cable (input/riser_lazy_wave.inp,
 # riser_lazy_wave_heave.inp), each into ./<deck name>/ with every plot of
-# postproc/plot_all.py.
+# rodyn-plot-all (the post-processing package of postproc/, installed by tools/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -gt 0 ]; then
@@ -22,5 +22,5 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
 cmake --build build -j "$(nproc)" >/dev/null
 for deck in "${decks[@]}"; do
   ./build/rodyn "$deck"
-  python3 postproc/plot_all.py "$(basename "${deck%.*}")"
+  rodyn-plot-all "$(basename "${deck%.*}")"
 done

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Install what rodyn needs on a Debian machine, only what is missing:
 # gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface (Debian packages),
-# and numpy, matplotlib, h5py, pytest for the post-processing (PyPI).
+# numpy, matplotlib, scipy, h5py, pytest for the post-processing (PyPI), and the
+# post-processing package itself (postproc/, editable: its console commands go on the
+# PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,4 +29,33 @@ if ! python3 -c 'import numpy, matplotlib, scipy, h5py, pytest' >/dev/null 2>&1;
   python3 -m pip install -q -r postproc/requirements.txt 2>/dev/null ||
     python3 -m pip install -q --break-system-packages -r postproc/requirements.txt
 fi
+
+# The post-processing package (postproc/pyproject.toml: rodyn_post and its console
+# commands rodyn-plot-all, rodyn-compare, ...), installed in editable mode from this
+# checkout. Several checkouts may share one Python: install again when the installed
+# rodyn_post is another checkout's, or its commands or version are not those of
+# pyproject.toml; otherwise nothing is done (a fraction of a second).
+if ! python3 - "$PWD/postproc" >/dev/null 2>&1 <<'EOF'
+import importlib.metadata, importlib.util, re, sys
+from pathlib import Path
+postproc = Path(sys.argv[1]).resolve()
+spec = importlib.util.find_spec("rodyn_post")
+assert spec and Path(spec.origin).resolve() == postproc / "rodyn_post" / "__init__.py"
+text = (postproc / "pyproject.toml").read_text(encoding="utf-8")
+scripts = re.search(r"^\[project\.scripts\]\n(.*?)(?=^\[|\Z)", text, re.M | re.S).group(1)
+scripts = dict(re.findall(r'^([\w-]+)\s*=\s*"([\w.]+:\w+)"', scripts, re.M))
+dist = importlib.metadata.distribution("rodyn_post")  # the dist-info name (3.9 too)
+assert {e.name: e.value for e in dist.entry_points if e.group == "console_scripts"} == scripts
+assert dist.version == re.search(r'^version\s*=\s*"([^"]+)"', text, re.M).group(1)
+EOF
+then
+  echo "setup: installing the post-processing package from postproc/ (pip install -e)"
+  python3 -m pip install -q -e postproc 2>/dev/null ||
+    python3 -m pip install -q --break-system-packages -e postproc
+  if command -v pyenv >/dev/null 2>&1; then pyenv rehash; fi  # shims of the new commands
+fi
+command -v rodyn-plot-all >/dev/null 2>&1 ||
+  echo "setup: warning: the console commands (rodyn-plot-all, ...) are not on the PATH;" \
+       "pip put them in $(python3 -c 'import sysconfig; print(sysconfig.get_path("scripts"))')" \
+       "(or ~/.local/bin for a user install)" >&2
 echo "setup: $(gfortran --version | head -1); $(cmake --version | head -1)"

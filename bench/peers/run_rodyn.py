@@ -25,8 +25,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
 
-sys.path.insert(0, os.path.join(common.ROOT, "postproc"))
-from rodyn_post import load_dynamic  # noqa: E402
+from rodyn_post import load_dynamic  # noqa: E402  (installed: bash tools/setup.sh)
 
 DECK = """** peers benchmark (bench/peers): the paper's cable, end A heaves 0.4 m at {f} Hz
 ** with the default 3 s ramp; {elements} elements of order {order}, DT={dt}

@@ -8,18 +8,24 @@ level, depth, current, seabed) of a run with water, None for a dry run; see
 `rodyn_post.environment` (which also gives the seabed's trace and the current profile
 the plots draw).
 
-The command-line scripts of postproc/ share:
+The commands (rodyn_post.commands, installed as the console commands rodyn-plot-static,
+rodyn-plot-dynamic, rodyn-plot-history, rodyn-range-graph, rodyn-animate,
+rodyn-paraview, rodyn-compare, rodyn-plot-all by `pip install -e postproc`; see
+postproc/pyproject.toml) share:
+  rodyn_post.cli         the command-line scaffold: arguments, messages, exit statuses,
+                         writing files (Agg backend)
+  rodyn_post.errors      the exception types and the exit statuses they map to
   rodyn_post.quantities  quantities at points of a line, values at an arc length,
                          range statistics (what is interpolated, and how)
   rodyn_post.units       units in CSV headers and their SI factors
   rodyn_post.reference   reading another tool's CSV, resampling, error metrics
   rodyn_post.vtk         ParaView .vtp / .pvd text
-  rodyn_post.cli         arguments, messages, exit statuses, writing files (Agg backend)
 """
 from .dynamic import DynamicResults, LineDynamic, StepLog, load_dynamic
 from .environment import Environment, load_environment
-from .results import LineStatic, RodynResultsError, StaticResults, load_static
+from .errors import InputError, RodynResultsError, WriteError
+from .results import LineStatic, StaticResults, load_static
 
-__all__ = ["DynamicResults", "Environment", "LineDynamic", "LineStatic",
-           "RodynResultsError", "StaticResults", "StepLog", "load_dynamic",
+__all__ = ["DynamicResults", "Environment", "InputError", "LineDynamic", "LineStatic",
+           "RodynResultsError", "StaticResults", "StepLog", "WriteError", "load_dynamic",
            "load_environment", "load_static"]

@@ -1,11 +1,15 @@
-"""Shared pieces of the command-line scripts of postproc/: arguments, messages, exit
+"""The command-line scaffold of every rodyn_post command (rodyn_post.commands, the
+console commands rodyn-plot-static, rodyn-compare, ...): arguments, messages, exit
 statuses, titles and writing files. Importing it selects matplotlib's Agg backend (no
 display is ever needed).
 
-Exit statuses of every script: 0 success, 1 bad input (missing or malformed results or
-reference file, a request the results cannot answer; one-line message naming the
-file), 2 bad command line (argparse), 3 an output cannot be written; `compare.py` adds
-4: a metric above its --tol.
+Every command's main(argv=None) builds its parser with make_parser, reads its
+arguments with parse and runs its body through run, which turns the errors of
+rodyn_post.errors into a one-line message on stderr and the exit status:
+0 success, 1 bad input (missing or malformed results or reference file, a request the
+results cannot answer; one-line message naming the file), 2 bad command line
+(argparse), 3 an output cannot be written; `rodyn-compare` adds 4: a metric above its
+--tol.
 """
 from __future__ import annotations
 
@@ -20,18 +24,11 @@ import matplotlib
 matplotlib.use("Agg")  # never needs a display
 from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
 
-from .quantities import InputError  # noqa: E402
-from .results import RodynResultsError  # noqa: E402
-
-EXIT_OK, EXIT_BAD_INPUT, EXIT_USAGE, EXIT_WRITE, EXIT_TOLERANCE = 0, 1, 2, 3, 4
+from .errors import EXIT_OK, InputError, RodynResultsError, WriteError, exit_status  # noqa: E402
 STATIC_DEFAULT = "paper_cable"    # output folder of input/paper_cable.inp (the main deck)
 DYNAMIC_DEFAULT = "paper_case1"   # output folder of input/paper_case1.inp
 EPILOG = ("exit status: 0 success, 1 bad input (missing or malformed results), 2 bad "
           "command line, 3 cannot write the outputs")
-
-
-class WriteError(Exception):
-    """An output folder or file cannot be written: exit status 3."""
 
 
 def positive_float(text: str) -> float:
@@ -57,16 +54,17 @@ def positive_int(text: str) -> int:
 
 
 def help_text(doc: str) -> str:
-    """A script's docstring for --help, without its usage paragraph (argparse prints
-    its own)."""
+    """A command's docstring for --help, without its usage paragraph (the one that
+    starts with the command's name; argparse prints its own)."""
     paragraphs = doc.strip("\n").split("\n\n")
-    return "\n\n".join(p for p in paragraphs if not p.lstrip().startswith("python3 "))
+    return "\n\n".join(p for p in paragraphs
+                       if not p.lstrip().startswith(("rodyn-", "python3 ")))
 
 
 def make_parser(prog: str, description: str, results_default=DYNAMIC_DEFAULT,
                 results_help="results folder or dynamic.h5 file", dpi=150.0,
                 epilog=EPILOG, results=True) -> argparse.ArgumentParser:
-    """ArgumentParser of script `prog` with the arguments every script has: RESULTS
+    """ArgumentParser of command `prog` with the arguments every command has: RESULTS
     (optional, with its default folder), -o/--out-dir and --dpi (not with dpi=None)."""
     parser = argparse.ArgumentParser(prog=prog, description=description, epilog=epilog,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -96,7 +94,7 @@ def add_line(parser, every=False):
 
 
 def parse(parser, argv):
-    """parse_args plus the checks shared by all scripts (--window order)."""
+    """parse_args plus the checks shared by all commands (--window order)."""
     args = parser.parse_args(argv)
     window = getattr(args, "window", None)
     if window and not window[1] > window[0]:
@@ -111,12 +109,9 @@ def run(prog: str, body) -> int:
     a one-line message on stderr and their exit status."""
     try:
         status = body()
-    except (RodynResultsError, InputError) as exc:
+    except (RodynResultsError, InputError, WriteError) as exc:
         print(f"{prog}: error: {one_line(exc)}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except WriteError as exc:
-        print(f"{prog}: error: {one_line(exc)}", file=sys.stderr)
-        return EXIT_WRITE
+        return exit_status(exc)
     return EXIT_OK if status is None else status
 
 

@@ -12,7 +12,7 @@ A run that was killed or failed is read up to what is on disk: in the CSV tables
 last frame with missing rows, or a last row cut short, is dropped (docs/output.md,
 "After a killed or failed run").
 
-Every problem with the files raises `RodynResultsError` (from rodyn_post.results),
+Every problem with the files raises `RodynResultsError` (from rodyn_post.errors),
 whose message names the file and, for CSV, the line number.
 """
 from __future__ import annotations
@@ -24,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .results import RodynResultsError, _h5_attr, _h5_dataset, _read_key_values
+from .errors import RodynResultsError
+from .results import _h5_attr, _h5_dataset, _read_key_values
 from .results import _read_status as _read_static_status
 from .results import check_header, water_defaults
 

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .results import RodynResultsError
+from .errors import RodynResultsError
 
 ENVIRONMENT_CSV = "environment.csv"
 ENVIRONMENT_HEADER = ("key", "value", "unit")

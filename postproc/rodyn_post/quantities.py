@@ -20,12 +20,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import units
-from .results import LineStatic, RodynResultsError
-
-
-class InputError(Exception):
-    """A request that these results cannot answer (a time outside the run, an arc
-    length off the line, an unknown line, ...): bad input, exit status 1."""
+from .errors import InputError, RodynResultsError  # noqa: F401  (InputError: also here)
+from .results import LineStatic
 
 
 @dataclass(frozen=True)

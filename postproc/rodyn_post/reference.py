@@ -28,13 +28,9 @@ from pathlib import Path
 import numpy as np
 
 from . import units
-from .quantities import InputError
+from .errors import InputError, ReferenceError  # noqa: F401  (also importable from here)
 
 DELIMITERS = (",", ";", "\t")
-
-
-class ReferenceError(InputError):
-    """A malformed reference CSV; the message names the file (and the line)."""
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .errors import RodynResultsError  # noqa: F401  (also importable from here)
+
 H5_FILE = "results.h5"
 STATUS_FILE = "status.txt"
 NODES_CSV = "static_nodes.csv"
@@ -62,10 +64,6 @@ STATUS_KEYS = {
 }
 _INTEGER_COLUMNS = {"node", "element", "point"}
 _TEXT_COLUMNS = {"line", "end", "key", "unit"}
-
-
-class RodynResultsError(Exception):
-    """A results file is missing or malformed; the message names the file."""
 
 
 @dataclass(frozen=True, eq=False)

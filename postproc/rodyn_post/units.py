@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 import re
 
+from .errors import UnitError  # noqa: F401  (also importable from here)
+
 # dimension of each quantity kind, as used by rodyn_post.quantities
 TIME, LENGTH, FORCE, MOMENT, CURVATURE, NONE = (
     "time", "length", "force", "moment", "curvature", "dimensionless")
@@ -40,10 +42,6 @@ UNITS = {
     "-": (NONE, 1.0),
 }
 _BRACKETED = re.compile(r"^(?P<name>.*?)\s*(\[(?P<b>[^\[\]]*)\]|\((?P<p>[^()]*)\))\s*$")
-
-
-class UnitError(ValueError):
-    """A unit that is not in UNITS."""
 
 
 def _normalise(unit: str) -> str:

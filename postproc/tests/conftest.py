@@ -1,13 +1,23 @@
-"""Fixtures shared by the post-processing tests."""
-import sys
+"""Fixtures shared by the post-processing tests.
+
+The tests use the installed package rodyn_post (`python3 -m pip install -e postproc`,
+which tools/setup.sh does); pytest puts this folder on the path for designed.py and the
+helpers the test modules share. A rodyn_post installed from another checkout would be
+tested instead of this one: that stops the session.
+"""
 from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))         # designed.py
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))     # postproc/
+import rodyn_post
+from designed import short_case2, write_designed
 
-from designed import short_case2, write_designed  # noqa: E402
+POSTPROC = Path(__file__).resolve().parents[1]
+INSTALLED = Path(rodyn_post.__file__).resolve().parent
+if INSTALLED != POSTPROC / "rodyn_post":
+    pytest.exit(f"rodyn_post is installed from {INSTALLED}, not from this checkout's "
+                f"{POSTPROC / 'rodyn_post'}: run `bash tools/setup.sh` (or `python3 -m pip "
+                f"install -e {POSTPROC}`)", returncode=4)
 
 
 @pytest.fixture(scope="session")

@@ -1,4 +1,4 @@
-"""Tests of postproc/animate.py, postproc/to_paraview.py and postproc/plot_all.py: the
+"""Tests of rodyn-animate, rodyn-paraview and rodyn-plot-all (rodyn_post.commands): the
 files are written, the GIF has the frames chosen, the ParaView files hold the node
 positions and the section results interpolated to the nodes, plot_all runs every
 script that applies; on the synthetic run of designed.py and, with RODYN_EXE, on 0.6 s
@@ -12,9 +12,7 @@ import pytest
 from matplotlib.animation import FFMpegWriter
 from PIL import Image
 
-import animate
-import plot_all
-import to_paraview
+from rodyn_post.commands import animate, plot_all, to_paraview
 from designed import TIMES
 from rodyn_post import load_dynamic, load_static
 
@@ -193,7 +191,7 @@ def test_plot_all_commands(designed_run, tmp_path, capsys):
                                 "--paraview"])
     todo = plot_all.commands(args, {"dynamic"}, ["RISER", "TAIL, 1/2"])
     window = ["--window", "0.5", "1.0"]
-    assert [(m.__name__, argv) for m, argv in todo] == [
+    assert [(m.__name__.split(".")[-1], argv) for m, argv in todo] == [
         ("plot_dynamic", [str(designed), "-o", "out"] + window),
         ("range_graph", [str(designed), "-o", "out"] + window),
         ("plot_history", [str(designed), "-o", "out"] + window + ["--line", "RISER"]),

@@ -1,4 +1,5 @@
-"""Tests of postproc/compare.py and its pieces (rodyn_post.units, rodyn_post.reference):
+"""Tests of rodyn-compare (rodyn_post.commands.compare) and its pieces (rodyn_post.units,
+rodyn_post.reference):
 zero error against rodyn's own numbers, the known error against a shifted copy, the
 exit statuses (0, 1, 2, 4), units converted from the header, and a clear one-line
 message for every malformed reference CSV. The example reference of tests/compare/ is
@@ -11,9 +12,7 @@ import shutil
 import numpy as np
 import pytest
 
-import compare
-import plot_history
-import range_graph
+from rodyn_post.commands import compare, plot_history, range_graph
 from designed import OMEGA, REPO, TIMES, write_designed
 from rodyn_post import units
 from rodyn_post.reference import ReferenceTable
@@ -144,11 +143,11 @@ def test_command_line_errors(designed_run, capsys):
         with pytest.raises(SystemExit) as exc:
             compare.main(argv)
         assert exc.value.code == 2
-        assert "usage: compare.py" in capsys.readouterr().err
+        assert "usage: rodyn-compare" in capsys.readouterr().err
 
 
 def test_help_of_every_script(capsys):
-    import animate, plot_all, plot_dynamic, plot_static, to_paraview  # noqa: E401
+    from rodyn_post.commands import animate, plot_all, plot_dynamic, plot_static, to_paraview
     for module in (compare, plot_history, range_graph, animate, to_paraview, plot_all,
                    plot_static, plot_dynamic):
         with pytest.raises(SystemExit) as exc:

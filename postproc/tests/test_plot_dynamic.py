@@ -1,4 +1,5 @@
-"""Tests of postproc/rodyn_post/dynamic.py (reader) and postproc/plot_dynamic.py.
+"""Tests of rodyn_post.dynamic (reader) and rodyn-plot-dynamic
+(rodyn_post.commands.plot_dynamic).
 
 Synthetic dynamic results are written by the tests themselves (dynamic.h5 with h5py and
 the CSV tables, following docs/output.md). If the environment variable RODYN_EXE names
@@ -18,16 +19,13 @@ import h5py
 import numpy as np
 import pytest
 
-POSTPROC = Path(__file__).resolve().parents[1]
-REPO = POSTPROC.parent
-SCRIPT = POSTPROC / "plot_dynamic.py"
-sys.path.insert(0, str(POSTPROC))
+from rodyn_post import RodynResultsError, load_dynamic
+from rodyn_post.commands import plot_dynamic
+from rodyn_post.dynamic import ELEMENTS_HEADER, ENDS_HEADER, LINES_HEADER, LOG_HEADER, NODES_HEADER
+from test_plot_static import rodyn_exe
 
-from test_plot_static import rodyn_exe  # noqa: E402
-import plot_dynamic  # noqa: E402
-from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
-from rodyn_post.dynamic import (ELEMENTS_HEADER, ENDS_HEADER, LINES_HEADER,  # noqa: E402
-                                LOG_HEADER, NODES_HEADER)
+REPO = Path(__file__).resolve().parents[2]
+COMMAND = [sys.executable, "-m", "rodyn_post.commands.plot_dynamic"]  # = rodyn-plot-dynamic
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 PNGS = ("dynamic_snapshots.png", "dynamic_tension.png", "dynamic_energy.png",
@@ -201,8 +199,8 @@ def write_results(folder, h5=True, csv_tables=True, complete=True):
 
 
 def run_script(*args, cwd):
-    """Run plot_dynamic.py in a fresh interpreter; returns the CompletedProcess."""
-    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args)], cwd=cwd,
+    """Run rodyn-plot-dynamic (python3 -m) in a fresh interpreter; returns the CompletedProcess."""
+    return subprocess.run([*COMMAND, *map(str, args)], cwd=cwd,
                           capture_output=True, text=True, timeout=120)
 
 

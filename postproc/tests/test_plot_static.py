@@ -1,4 +1,4 @@
-"""Tests of postproc/rodyn_post (reader) and postproc/plot_static.py.
+"""Tests of rodyn_post (reader) and rodyn-plot-static (rodyn_post.commands.plot_static).
 
 Synthetic results are written by the tests themselves (results.h5 with h5py and the
 CSV tables, following docs/output.md). If the environment variable RODYN_EXE names
@@ -18,15 +18,12 @@ import h5py
 import numpy as np
 import pytest
 
-POSTPROC = Path(__file__).resolve().parents[1]
-REPO = POSTPROC.parent
-SCRIPT = POSTPROC / "plot_static.py"
-sys.path.insert(0, str(POSTPROC))
+from rodyn_post import RodynResultsError, load_static
+from rodyn_post.commands import plot_static
+from rodyn_post.results import ELEMENTS_HEADER, LINES_HEADER, NODES_HEADER, REACTIONS_HEADER
 
-import plot_static  # noqa: E402
-from rodyn_post import RodynResultsError, load_static  # noqa: E402
-from rodyn_post.results import (ELEMENTS_HEADER, LINES_HEADER, NODES_HEADER,  # noqa: E402
-                                REACTIONS_HEADER)
+REPO = Path(__file__).resolve().parents[2]
+COMMAND = [sys.executable, "-m", "rodyn_post.commands.plot_static"]  # = rodyn-plot-static
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 TITLE = "Synthetic: two lines"
@@ -138,8 +135,8 @@ def write_results(folder, h5=True, csv_tables=True, complete=True):
 
 
 def run_script(*args, cwd):
-    """Run plot_static.py in a fresh interpreter; returns the CompletedProcess."""
-    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args)], cwd=cwd,
+    """Run rodyn-plot-static (python3 -m) in a fresh interpreter; returns the CompletedProcess."""
+    return subprocess.run([*COMMAND, *map(str, args)], cwd=cwd,
                           capture_output=True, text=True, timeout=120)
 
 

@@ -1,4 +1,4 @@
-"""Tests of postproc/range_graph.py and postproc/plot_history.py: the files are written,
+"""Tests of rodyn-range-graph and rodyn-plot-history (rodyn_post.commands): the files are written,
 and the numbers behind them are those of the raw data (numpy on dynamic.h5 / the CSV
 tables), on the synthetic run of designed.py and, with RODYN_EXE, on 0.6 s of the
 paper's case 2.
@@ -9,8 +9,7 @@ import h5py
 import numpy as np
 import pytest
 
-import plot_history
-import range_graph
+from rodyn_post.commands import plot_history, range_graph
 from designed import RISER_LENGTH, TIMES
 from rodyn_post import load_dynamic
 from rodyn_post.quantities import at_s, parse_location

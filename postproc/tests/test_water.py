@@ -1,7 +1,8 @@
 """The outputs of a run in water: the environment (environment.csv, /environment), wall
 tension, seabed forces, touchdown, hydro and seabed work; the sea, seabed and current
-drawn by plot_static.py and plot_dynamic.py; the new quantities of range_graph.py,
-plot_history.py and to_paraview.py; results of a dry run and of an older rodyn."""
+drawn by rodyn-plot-static and rodyn-plot-dynamic; the new quantities of
+rodyn-range-graph, rodyn-plot-history and rodyn-paraview; results of a dry run and of an
+older rodyn."""
 import csv
 import math
 import shutil
@@ -10,11 +11,7 @@ import h5py
 import numpy as np
 import pytest
 
-import plot_dynamic
-import plot_history
-import plot_static
-import range_graph
-import to_paraview
+from rodyn_post.commands import plot_dynamic, plot_history, plot_static, range_graph, to_paraview
 from designed import write_designed
 from rodyn_post import load_dynamic, load_environment, load_static
 from rodyn_post.environment import (CURRENT_GID, SEABED_GID, SURFACE_GID, current_profile,

@@ -1,24 +1,23 @@
-#!/usr/bin/env python3
 """Compare a rodyn result with a reference exported by another tool (CSV).
 
-    python3 postproc/compare.py [RESULTS] REFERENCE.csv
-                                (--at WHERE | --range STAT | --static) [--quantity Q]
-                                [--x COL] [--y COL] [--s-from A|B] [--line NAME]
-                                [--window T0 T1] [--on reference|rodyn]
-                                [--tol TOL [--metric M]] [--no-plot] [-o OUT_DIR]
-                                [--dpi 150]
+    rodyn-compare [RESULTS] REFERENCE.csv
+                  (--at WHERE | --range STAT | --static) [--quantity Q]
+                  [--x COL] [--y COL] [--s-from A|B] [--line NAME]
+                  [--window T0 T1] [--on reference|rodyn]
+                  [--tol TOL [--metric M]] [--no-plot] [-o OUT_DIR]
+                  [--dpi 150]
 
 What is compared (one of):
   --at WHERE    a time history of Q at a place of the line (A, B, top, bottom, mid or an
-                arc length S [m]; as plot_history.py), against a reference of time and
+                arc length S [m]; as rodyn-plot-history), against a reference of time and
                 value
   --range STAT  the range graph of Q over the --window (STAT: min, mean or max against
-                arc length, as range_graph.py), against a reference of arc length and
+                arc length, as rodyn-range-graph), against a reference of arc length and
                 value
   --static      Q of the static equilibrium against arc length (RESULTS default
                 paper_cable), against a reference of arc length and value
 Q (default tension): tension, moment, curvature, torque, x, y, z, end_tension (see
-plot_history.py --help).
+rodyn-plot-history --help).
 
 The reference CSV: a header line (lines starting with '#' are skipped), delimiter ',',
 ';' or tab; --x and --y choose the columns (default 1 and 2) by header, by name without
@@ -46,14 +45,15 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import cli, load_dynamic, load_static, units  # noqa: E402
-from rodyn_post.quantities import (QUANTITIES, STATS, InputError,  # noqa: E402
-                                   check_window, history, parse_location, pick_line,
-                                   point_values, quantity, range_stats, window_mask)
-from rodyn_post.reference import ReferenceTable, compare  # noqa: E402
+from rodyn_post import cli, errors, load_dynamic, load_static, units
+from rodyn_post.errors import InputError
+from rodyn_post.quantities import (QUANTITIES, STATS, check_window, history,
+                                   parse_location, pick_line, point_values, quantity,
+                                   range_stats, window_mask)
+from rodyn_post.reference import ReferenceTable, compare
 
-PROG = "compare"
+PROG = "compare"  # prefix of its messages
+COMMAND = "rodyn-compare"  # its console command (postproc/pyproject.toml)
 METRICS = ("max_abs", "rms", "rel_max", "rel_rms")
 EPILOG = ("exit status: 0 success (and within --tol), 1 bad input (missing or malformed "
           "results or reference), 2 bad command line, 3 cannot write the outputs, "
@@ -164,7 +164,7 @@ def comparison_figure(title, q, x_label, rodyn_xy, ref_xy, result, labels):
 
 
 def parse_args(argv):
-    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__), epilog=EPILOG,
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__), epilog=EPILOG,
                              results=False)
     parser.add_argument("results", nargs="?", default=None,
                         help="results folder, dynamic.h5 or results.h5 (default: "
@@ -243,7 +243,7 @@ def main(argv=None):
                 zip(result.x, result.rodyn, result.reference, result.error)]
         print(cli.write_csv(out / f"{stem}.csv", header, rows))
         if tol is None:
-            return cli.EXIT_OK
+            return errors.EXIT_OK
         value = metrics[f"{args.metric}_error"]
         if np.isnan(value):
             raise InputError(f"--metric {args.metric}: the reference is constant over the "
@@ -252,9 +252,9 @@ def main(argv=None):
         if value > tol:
             print(f"{PROG}: above tolerance: {args.metric}_error = {value:.6g}{unit} > "
                   f"{tol:.6g}{unit}", file=sys.stderr)
-            return cli.EXIT_TOLERANCE
+            return errors.EXIT_TOLERANCE
         print(f"within tolerance: {args.metric}_error = {value:.6g}{unit} <= {tol:.6g}{unit}")
-        return cli.EXIT_OK
+        return errors.EXIT_OK
     return cli.run(PROG, body)
 
 

@@ -1,7 +1,6 @@
-#!/usr/bin/env python3
 """Convert rodyn results to ParaView files (ASCII VTK XML; no vtk package needed).
 
-    python3 postproc/to_paraview.py [RESULTS] [-o OUT_DIR] [--window T0 T1] [--every N]
+    rodyn-paraview [RESULTS] [-o OUT_DIR] [--window T0 T1] [--every N]
 
 RESULTS is a results folder (default: paper_case1), a dynamic.h5 or a results.h5 file.
 Writes into OUT_DIR (default: RESULTS/paraview) and prints the paths of static.vtp and
@@ -34,13 +33,13 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import cli, load_dynamic, load_static  # noqa: E402
-from rodyn_post.quantities import (InputError, check_window, point_values,  # noqa: E402
-                                   resample_matrix, window_mask)
-from rodyn_post.vtk import pvd_text, vtp_text  # noqa: E402
+from rodyn_post import cli, load_dynamic, load_static
+from rodyn_post.errors import InputError
+from rodyn_post.quantities import check_window, point_values, resample_matrix, window_mask
+from rodyn_post.vtk import pvd_text, vtp_text
 
-PROG = "to_paraview"
+PROG = "to_paraview"  # prefix of its messages
+COMMAND = "rodyn-paraview"  # its console command (postproc/pyproject.toml)
 STATIC_VTP = "static.vtp"
 PVD = "dynamic.pvd"
 SECTION_ARRAYS = {"effective_tension_N": "tension", "bending_moment_Nm": "moment",
@@ -84,7 +83,7 @@ def dynamic_files(results, frames):
 
 
 def parse_args(argv):
-    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__), dpi=None,
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__), dpi=None,
                              results_help="results folder, dynamic.h5 or results.h5")
     cli.add_window(parser)
     parser.add_argument("--every", type=cli.positive_int, default=1, metavar="N",

@@ -1,9 +1,8 @@
-#!/usr/bin/env python3
 """Time histories of a rodyn dynamic run at chosen arc lengths or ends of a line.
 
-    python3 postproc/plot_history.py [RESULTS] [--at WHERE ...] [--quantity Q ...]
-                                     [--line NAME] [--window T0 T1] [-o OUT_DIR]
-                                     [--dpi 150]
+    rodyn-plot-history [RESULTS] [--at WHERE ...] [--quantity Q ...]
+                       [--line NAME] [--window T0 T1] [-o OUT_DIR]
+                       [--dpi 150]
 
 RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
 OUT_DIR (default: the results folder) and prints the paths written:
@@ -32,16 +31,15 @@ support force). Magnitudes (moment, curvature) are interpolated as magnitudes. T
 values are those of the output frames; nothing is interpolated in time.
 """
 import sys
-from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import cli, load_dynamic  # noqa: E402
-from rodyn_post.quantities import (QUANTITIES, check_window, history,  # noqa: E402
+from rodyn_post import cli, load_dynamic
+from rodyn_post.quantities import (QUANTITIES, check_window, history,
                                    parse_location, pick_line, quantity, window_mask)
 
-PROG = "plot_history"
+PROG = "plot_history"  # prefix of its messages
+COMMAND = "rodyn-plot-history"  # its console command (postproc/pyproject.toml)
 DEFAULT_AT = ("top", "mid", "bottom")
 DEFAULT_QUANTITIES = ("tension", "moment", "curvature", "z")
 
@@ -88,7 +86,7 @@ def history_figure(results, line, time, columns):
 
 
 def parse_args(argv):
-    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__))
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__))
     parser.add_argument("--at", nargs="+", metavar="WHERE", default=list(DEFAULT_AT),
                         help="places on the line (default: top mid bottom)")
     parser.add_argument("--quantity", nargs="+", metavar="Q",

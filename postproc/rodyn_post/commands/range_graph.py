@@ -1,10 +1,9 @@
-#!/usr/bin/env python3
 """Range graphs of a rodyn dynamic run: minimum, mean and maximum over a time window
 against arc length, for effective tension, bending moment and bending curvature (or
 the quantities of --quantity).
 
-    python3 postproc/range_graph.py [RESULTS] [-o OUT_DIR] [--window T0 T1]
-                                    [--line NAME] [--quantity Q ...] [--dpi 150]
+    rodyn-range-graph [RESULTS] [-o OUT_DIR] [--window T0 T1]
+                      [--line NAME] [--quantity Q ...] [--dpi 150]
 
 RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
 OUT_DIR (default: the results folder) and prints the paths written:
@@ -29,15 +28,14 @@ is the plain mean of those frames. Extremes between two frames are not seen: a f
 OUTPUT INTERVAL sees more.
 """
 import sys
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import cli, load_dynamic  # noqa: E402
-from rodyn_post.quantities import (QUANTITIES, RANGE_QUANTITIES, STATS,  # noqa: E402
+from rodyn_post import cli, load_dynamic
+from rodyn_post.quantities import (QUANTITIES, RANGE_QUANTITIES, STATS,
                                    check_window, matching_static, pick_line, point_values,
                                    range_stats, window_mask)
 
-PROG = "range_graph"
+PROG = "range_graph"  # prefix of its messages
+COMMAND = "rodyn-range-graph"  # its console command (postproc/pyproject.toml)
 PNG = "range_graph.png"
 CSV = "range_graph.csv"
 
@@ -108,7 +106,7 @@ def range_figure(results, table, window=None, keys=RANGE_QUANTITIES):
 
 
 def parse_args(argv):
-    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__))
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__))
     cli.add_window(parser)
     cli.add_line(parser, every=True)
     parser.add_argument("--quantity", nargs="+", metavar="Q", default=list(RANGE_QUANTITIES),

@@ -1,7 +1,6 @@
-#!/usr/bin/env python3
 """Plot the static results of a rodyn run.
 
-    python3 postproc/plot_static.py [RESULTS] [-o OUT_DIR] [--dpi 200]
+    rodyn-plot-static [RESULTS] [-o OUT_DIR] [--dpi 200]
 
 RESULTS is a results folder (default: paper_cable, the output folder of
 input/paper_cable.inp run from the current directory) or a results.h5 file. Writes
@@ -26,20 +25,17 @@ warning on stderr and in the plot titles.
 Exit status: 0 success, 1 bad input (missing or malformed results), 2 bad command
 line, 3 cannot write the plots.
 """
-import argparse
 import sys
-from pathlib import Path
 
-import matplotlib
 import numpy as np
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")  # never needs a display
-from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
+from rodyn_post import cli, load_static  # cli: the Agg backend (never needs a display)
+from rodyn_post.cli import static_title as run_title
+from rodyn_post.environment import current_inset, draw_sea, elevation_range
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import RodynResultsError, load_static  # noqa: E402
-from rodyn_post.cli import static_title as run_title  # noqa: E402
-from rodyn_post.environment import current_inset, draw_sea, elevation_range  # noqa: E402
+PROG = "plot_static"  # prefix of its messages
+COMMAND = "rodyn-plot-static"  # its console command (postproc/pyproject.toml)
 
 SHAPE_PNG = "static_shape.png"
 PLAN_PNG = "static_plan.png"
@@ -214,46 +210,26 @@ def figures(results):
 
 def parse_args(argv):
     """Command line arguments."""
-    parser = argparse.ArgumentParser(
-        description="Plot the static shape, tension and bending moment of a rodyn run "
-                    "(with water: the sea, current, wall tension and seabed contact).",
-        epilog="exit status: 0 success, 1 bad input, 2 bad command line, "
-               "3 cannot write the plots")
-    parser.add_argument("results", nargs="?", default="paper_cable",
-                        help="results folder or results.h5 file (default: paper_cable)")
-    parser.add_argument("-o", "--out-dir", help="folder for the PNGs "
-                        "(default: the results folder)")
-    parser.add_argument("--dpi", type=float, default=200, help="resolution (default: 200)")
-    args = parser.parse_args(argv)
-    if args.dpi <= 0:
-        parser.error("--dpi must be positive")
-    return args
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__),
+                             results_default=cli.STATIC_DEFAULT,
+                             results_help="results folder or results.h5 file", dpi=200.0)
+    return cli.parse(parser, argv)
 
 
 def main(argv=None):
     """Run the command line; returns the exit status."""
     args = parse_args(argv)
-    try:
+
+    def body():
         results = load_static(args.results)
-    except RodynResultsError as exc:
-        print(f"plot_static: error: {exc}", file=sys.stderr)
-        return 1
-    if not results.complete:
-        print(f"plot_static: warning: the run did not complete ({results.status}; load "
-              f"factor {results.load_factor:.4g}): plotting its last converged state",
-              file=sys.stderr)
-    out_dir = Path(args.out_dir) if args.out_dir else results.folder
-    try:
-        out_dir.mkdir(parents=True, exist_ok=True)
+        if not results.complete:
+            print(f"{PROG}: warning: the run did not complete ({results.status}; load "
+                  f"factor {results.load_factor:.4g}): plotting its last converged state",
+                  file=sys.stderr)
+        out_dir = cli.output_dir(args, results.folder)
         for name, make in figures(results):
-            path = out_dir / name
-            make(results).savefig(path, dpi=args.dpi)
-            print(path)
-    except OSError as exc:
-        print(f"plot_static: error: cannot write {exc.filename or out_dir}: "
-              f"{exc.strerror or exc}", file=sys.stderr)
-        return 3
-    return 0
+            print(cli.save_figure(make(results), out_dir / name, args.dpi))
+    return cli.run(PROG, body)
 
 
 if __name__ == "__main__":

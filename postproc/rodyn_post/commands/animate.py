@@ -1,8 +1,7 @@
-#!/usr/bin/env python3
 """Animation of the lines of a rodyn dynamic run (x-z elevation, equal axes).
 
-    python3 postproc/animate.py [RESULTS] [-o OUT_DIR] [--window T0 T1] [--every N]
-                                [--max-frames 150] [--fps 10] [--no-mp4] [--dpi 100]
+    rodyn-animate [RESULTS] [-o OUT_DIR] [--window T0 T1] [--every N]
+                  [--max-frames 150] [--fps 10] [--no-mp4] [--dpi 100]
 
 RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
 OUT_DIR (default: the results folder) and prints the paths written:
@@ -20,19 +19,17 @@ hold every line at every frame shown.
 """
 import subprocess
 import sys
-from pathlib import Path
 
 import numpy as np
 from matplotlib.animation import FFMpegWriter
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import cli, load_dynamic  # noqa: E402
-from rodyn_post.quantities import (check_window, matching_static,  # noqa: E402
-                                   window_mask)
+from rodyn_post import cli, errors, load_dynamic
+from rodyn_post.quantities import check_window, matching_static, window_mask
 
-PROG = "animate"
+PROG = "animate"  # prefix of its messages
+COMMAND = "rodyn-animate"  # its console command (postproc/pyproject.toml)
 GIF = "dynamic_animation.gif"
 MP4 = "dynamic_animation.mp4"
 
@@ -131,7 +128,7 @@ def write_gif(fig, moving, update, frames, path, fps):
         images[0].save(path, save_all=True, append_images=images[1:],
                        duration=max(10, int(round(1000.0 / fps))), loop=0)
     except OSError as exc:
-        raise cli.WriteError(f"cannot write {path}: {exc.strerror or exc}") from None
+        raise errors.WriteError(f"cannot write {path}: {exc.strerror or exc}") from None
     return path
 
 
@@ -144,13 +141,13 @@ def write_mp4(fig, update, frames, path, fps, dpi):
                 update(frame)
                 writer.grab_frame()
     except (OSError, subprocess.CalledProcessError) as exc:
-        raise cli.WriteError(f"cannot write {path}: {getattr(exc, 'strerror', None) or exc}") \
+        raise errors.WriteError(f"cannot write {path}: {getattr(exc, 'strerror', None) or exc}") \
             from None
     return path
 
 
 def parse_args(argv):
-    parser = cli.make_parser(f"{PROG}.py", cli.help_text(__doc__), dpi=100)
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__), dpi=100)
     cli.add_window(parser)
     parser.add_argument("--every", type=cli.positive_int, default=1, metavar="N",
                         help="use every N-th output frame (default: 1)")

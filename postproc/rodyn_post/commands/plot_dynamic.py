@@ -1,9 +1,8 @@
-#!/usr/bin/env python3
 """Plot the dynamic results of a rodyn run.
 
-    python3 postproc/plot_dynamic.py [RESULTS] [-o OUT_DIR] [--times T ...]
-                                     [--window T0 T1] [--snapshots N] [--no-envelope]
-                                     [--dpi 150]
+    rodyn-plot-dynamic [RESULTS] [-o OUT_DIR] [--times T ...]
+                       [--window T0 T1] [--snapshots N] [--no-envelope]
+                       [--dpi 150]
 
 RESULTS is a results folder (default: paper_case1, the output folder of
 input/paper_case1.inp run from the current directory) or a dynamic.h5 file. Writes
@@ -38,25 +37,21 @@ stderr and in the plot titles.
 Exit status: 0 success, 1 bad input (missing or malformed results, times outside the
 run), 2 bad command line, 3 cannot write the plots.
 """
-import argparse
 import sys
-from pathlib import Path
 
 import numpy as np
-import matplotlib
+from matplotlib import colormaps
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")  # never needs a display
-from matplotlib import colormaps  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402  (after the backend choice)
+from rodyn_post import cli, load_dynamic  # cli: the Agg backend (never needs a display)
+from rodyn_post.cli import dynamic_title as run_title
+from rodyn_post.environment import current_inset, draw_sea, elevation_range
+from rodyn_post.errors import InputError as PlotInputError
+from rodyn_post.quantities import matching_static, window_mask
 
-from matplotlib.collections import LineCollection  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rodyn_post import RodynResultsError, load_dynamic  # noqa: E402
-from rodyn_post.cli import dynamic_title as run_title  # noqa: E402,F401
-from rodyn_post.environment import current_inset, draw_sea, elevation_range  # noqa: E402
-from rodyn_post.quantities import InputError as PlotInputError  # noqa: E402
-from rodyn_post.quantities import matching_static, window_mask  # noqa: E402
+PROG = "plot_dynamic"  # prefix of its messages
+COMMAND = "rodyn-plot-dynamic"  # its console command (postproc/pyproject.toml)
 
 SNAPSHOTS_PNG = "dynamic_snapshots.png"
 TENSION_PNG = "dynamic_tension.png"
@@ -290,39 +285,23 @@ def momentum_figure(results, window=None):
 
 def parse_args(argv):
     """Command line arguments."""
-    parser = argparse.ArgumentParser(
-        description="Plot the dynamic configurations, support tensions, energy "
-                    "balance and momentum drift of a rodyn run.",
-        epilog="exit status: 0 success, 1 bad input, 2 bad command line, "
-               "3 cannot write the plots")
-    parser.add_argument("results", nargs="?", default="paper_case1",
-                        help="results folder or dynamic.h5 file (default: paper_case1)")
-    parser.add_argument("-o", "--out-dir", help="folder for the PNGs "
-                        "(default: the results folder)")
+    parser = cli.make_parser(COMMAND, cli.help_text(__doc__), dpi=150.0)
     parser.add_argument("--times", type=float, nargs="+", metavar="T",
                         help="snapshot times [s] (nearest frames; default: the last "
                              "period of the motion)")
-    parser.add_argument("--window", type=float, nargs=2, metavar=("T0", "T1"),
-                        help="time range of the histories [s] (default: the whole run)")
-    parser.add_argument("--snapshots", type=int, default=8,
+    cli.add_window(parser)
+    parser.add_argument("--snapshots", type=cli.positive_int, default=8,
                         help="number of default snapshots (default: 8)")
     parser.add_argument("--no-envelope", action="store_true",
                         help="leave the envelope (every frame, grey) out of the snapshots")
-    parser.add_argument("--dpi", type=float, default=150, help="resolution (default: 150)")
-    args = parser.parse_args(argv)
-    if args.dpi <= 0:
-        parser.error("--dpi must be positive")
-    if args.snapshots < 1:
-        parser.error("--snapshots must be at least 1")
-    if args.window and args.window[1] <= args.window[0]:
-        parser.error("--window: T1 must be greater than T0")
-    return args
+    return cli.parse(parser, argv)
 
 
 def main(argv=None):
     """Run the command line; returns the exit status."""
     args = parse_args(argv)
-    try:
+
+    def body():
         results = load_dynamic(args.results)
         if len(results.time) == 0:
             raise PlotInputError(f"{results.source}: no output frames")
@@ -333,33 +312,17 @@ def main(argv=None):
                                  f"{results.time[-1]:g} s)")
         t_end = min(args.window[1], results.time[-1]) if args.window else None
         frames = snapshot_frames(results, args.times, args.snapshots, t_end)
-    except (RodynResultsError, PlotInputError) as exc:
-        print(f"plot_dynamic: error: {exc}", file=sys.stderr)
-        return 1
-    for warning in results.warnings:
-        print(f"plot_dynamic: warning: {warning}", file=sys.stderr)
-    if not results.complete:
-        print(f"plot_dynamic: warning: the run did not complete ({results.status}; t "
-              f"reached {results.time_reached_s:.4g} s): plotting what is on disk",
-              file=sys.stderr)
-    out_dir = Path(args.out_dir) if args.out_dir else results.folder
-    window = tuple(args.window) if args.window else None
-    envelope = None if args.no_envelope else envelope_frames(results, window)
-    makers = ((SNAPSHOTS_PNG, lambda: snapshots_figure(results, frames, envelope)),
-              (TENSION_PNG, lambda: tension_figure(results, window)),
-              (ENERGY_PNG, lambda: energy_figure(results, window)),
-              (MOMENTUM_PNG, lambda: momentum_figure(results, window)))
-    try:
-        out_dir.mkdir(parents=True, exist_ok=True)
+        cli.warn_dynamic(PROG, results)
+        out_dir = cli.output_dir(args, results.folder)
+        window = args.window
+        envelope = None if args.no_envelope else envelope_frames(results, window)
+        makers = ((SNAPSHOTS_PNG, lambda: snapshots_figure(results, frames, envelope)),
+                  (TENSION_PNG, lambda: tension_figure(results, window)),
+                  (ENERGY_PNG, lambda: energy_figure(results, window)),
+                  (MOMENTUM_PNG, lambda: momentum_figure(results, window)))
         for name, make in makers:
-            path = out_dir / name
-            make().savefig(path, dpi=args.dpi)
-            print(path)
-    except OSError as exc:
-        print(f"plot_dynamic: error: cannot write {exc.filename or out_dir}: "
-              f"{exc.strerror or exc}", file=sys.stderr)
-        return 3
-    return 0
+            print(cli.save_figure(make(), out_dir / name, args.dpi))
+    return cli.run(PROG, body)
 
 
 if __name__ == "__main__":
