@@ -237,11 +237,11 @@ contains
       integer, intent(in) :: cur          !< card of the data lines (as in lex_text)
       type(deck_t), intent(in) :: deck    !< cards read so far
       character(len=:), allocatable :: kw !< '*KEYWORD: ' or ''
-      integer :: stop
+      integer :: last
       kw = ''
       if (s(1:1) == '*') then
-         stop = scan(s(2:)//',', ',<')
-         kw = '*'//normalise_name(s(2:stop))//': '
+         last = scan(s(2:)//',', ',<')
+         kw = '*'//normalise_name(s(2:last))//': '
       else if (cur > 0) then
          kw = '*'//deck%cards(cur)%keyword//': '
       else if (cur == -1) then
