@@ -196,7 +196,8 @@ contains
                               line_keyword(s, cur, deck)//perr%message)
                return
             end if
-            s = t
+            s = trim(adjustl(t))
+            if (len(s) == 0) cycle
          end if
          if (s(1:1) == '*') then
             call parse_keyword_line(path, line_no, s, card, err)
