@@ -1,7 +1,9 @@
 !> Command line of the rodyn program:
-!>   rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--version] [--help]
+!>   rodyn DECK [-o DIR] [--set NAME=VALUE ...] [--check] [--verbose] [--quiet]
+!>         [--progress] [--version] [--help]
 module rodyn_cli
    use rodyn_error, only: error_t, set_error, stat_input
+   use rodyn_deck_params, only: param_override_t, param_valid_name
    implicit none
    private
    public :: cli_options_t, cli_parse, cli_usage, cli_default_outdir
@@ -16,15 +18,18 @@ module rodyn_cli
       logical :: progress = .false.            !< progress line even when stderr is no terminal
       logical :: version = .false.             !< print the version and exit
       logical :: help = .false.                !< print the usage and exit
+      type(param_override_t), allocatable :: sets(:) !< --set NAME=VALUE, in order
    end type cli_options_t
 
    character(len=*), parameter :: cli_usage = &
-      'usage: rodyn DECK [-o DIR] [--check] [--verbose] [--quiet] [--progress] [--version]'// &
-      ' [--help]'// &
+      'usage: rodyn DECK [-o DIR] [--set NAME=VALUE ...] [--check] [--verbose] [--quiet]'// &
+      ' [--progress] [--version] [--help]'// &
       new_line('a')//new_line('a')// &
       '  DECK           keyword input deck (see docs/deck.md)'//new_line('a')// &
       '  -o, --output DIR  folder for the results (default: the deck name without'// &
       ' extension)'//new_line('a')// &
+      '  --set NAME=VALUE  value of the deck''s *PARAMETER NAME (repeatable)'// &
+      new_line('a')// &
       '  --check        read and validate the deck, build the mesh, compute nothing'// &
       new_line('a')// &
       '  --verbose      log every Newton iteration'//new_line('a')// &
@@ -44,6 +49,7 @@ contains
       integer :: i, n, length
       character(len=:), allocatable :: arg
       opts%outdir = ''
+      allocate (opts%sets(0))
       n = command_argument_count()
       i = 0
       do while (i < n)
@@ -62,6 +68,18 @@ contains
             deallocate (opts%outdir)
             allocate (character(len=length) :: opts%outdir)
             call get_command_argument(i, opts%outdir)
+         case ('--set')
+            if (i == n) then
+               call set_error(err, stat_input, 'rodyn: error: --set needs NAME=VALUE')
+               return
+            end if
+            i = i + 1
+            call get_command_argument(i, length=length)
+            deallocate (arg)
+            allocate (character(len=length) :: arg)
+            call get_command_argument(i, arg)
+            call add_set(opts, arg, err)
+            if (err%code /= 0) return
          case ('--check')
             opts%check = .true.
          case ('-v', '--verbose')
@@ -95,6 +113,52 @@ contains
       end if
       if (len(opts%outdir) == 0) opts%outdir = cli_default_outdir(opts%deck)
    end subroutine cli_parse
+
+   !> Check one --set argument `NAME=VALUE` and append it to opts%sets (NAME upper case).
+   subroutine add_set(opts, arg, err)
+      type(cli_options_t), intent(inout) :: opts !< options being read
+      character(len=*), intent(in) :: arg        !< the argument after --set
+      type(error_t), intent(inout) :: err        !< stat_input on bad syntax
+      type(param_override_t) :: o
+      integer :: eq, k
+      eq = index(arg, '=')
+      if (eq == 0) then
+         call set_error(err, stat_input, "rodyn: error: --set '"//arg// &
+                        "': expected NAME=VALUE")
+         return
+      end if
+      o%name = trim(adjustl(arg(:eq - 1)))
+      o%text = trim(adjustl(arg(eq + 1:)))
+      if (.not. param_valid_name(o%name)) then
+         call set_error(err, stat_input, "rodyn: error: --set '"//arg//"': '"//o%name// &
+                        "' is not a parameter name (a letter, then letters, digits and '_')")
+         return
+      end if
+      o%name = upper(o%name)
+      if (len(o%text) == 0) then
+         call set_error(err, stat_input, "rodyn: error: --set '"//arg//"': no value")
+         return
+      end if
+      do k = 1, size(opts%sets)
+         if (opts%sets(k)%name == o%name) then
+            call set_error(err, stat_input, 'rodyn: error: --set '//o%name//' given twice')
+            return
+         end if
+      end do
+      opts%sets = [opts%sets, o]
+   end subroutine add_set
+
+   !> Upper-case copy (ASCII letters).
+   pure function upper(s) result(u)
+      character(len=*), intent(in) :: s  !< text
+      character(len=len(s)) :: u         !< the text in upper case
+      integer :: k, c
+      u = s
+      do k = 1, len(s)
+         c = iachar(s(k:k))
+         if (c >= iachar('a') .and. c <= iachar('z')) u(k:k) = achar(c - 32)
+      end do
+   end function upper
 
    !> Default output folder: the deck's file name without folder and extension.
    pure function cli_default_outdir(deck) result(dir)

@@ -40,7 +40,7 @@ program rodyn
    type(line_result_t), allocatable :: lines(:)
    type(state_t), target :: dstate
    real(wp), allocatable :: r0(:, :)
-   character(len=:), allocatable :: missing
+   character(len=:), allocatable :: missing, warnings
    logical :: static_runs, show_progress
    integer :: log_unit, n_dof, half_bw
    integer, allocatable :: dof_first(:), dof_count(:)
@@ -60,7 +60,8 @@ program rodyn
       call finish(stat_ok)
    end if
 
-   call deck_read(opts%deck, model, err)
+   call deck_read(opts%deck, model, err, opts%sets, warnings)
+   if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
    if (.not. has_error(err)) call mesh_build(model, mesh, state, err)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
@@ -86,7 +87,7 @@ program rodyn
    ! the output folder is made and marked 'running' before any computing: an unwritable
    ! folder fails now, and a run killed midway leaves a status that says so
    summary%status = 'running'
-   call output_write_status(opts%outdir, summary, err, opts%deck)
+   call output_write_status(opts%outdir, summary, err, opts%deck, model%parameters)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
       call finish(err%code)

@@ -6,7 +6,7 @@ module rodyn_model
    implicit none
    private
    public :: section_t, line_def_t, constraint_t, point_load_t, static_options_t
-   public :: output_options_t, model_t
+   public :: output_options_t, model_t, parameter_value_t
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
    public :: water_t, seabed_t, attachment_t, rho_water_default
    public :: element_rod, element_cable, element_names
@@ -223,6 +223,14 @@ module rodyn_model
       real(wp) :: rayleigh_beta = 0.0_wp  !< stiffness-proportional damping [s]
    end type dynamic_options_t
 
+   !> A deck parameter as used (*PARAMETER, after any --set), echoed into the output.
+   type :: parameter_value_t
+      character(len=:), allocatable :: name  !< upper case
+      character(len=:), allocatable :: text  !< text substituted for <NAME>
+      logical :: is_number = .false.         !< a number (else a string)
+      real(wp) :: value = 0.0_wp             !< the number (0 for a string)
+   end type parameter_value_t
+
    !> What to write (*OUTPUT).
    type :: output_options_t
       logical :: csv = .true.        !< CSV tables
@@ -248,5 +256,6 @@ module rodyn_model
       type(static_options_t) :: static
       type(dynamic_options_t) :: dynamic
       type(output_options_t) :: output
+      type(parameter_value_t), allocatable :: parameters(:) !< *PARAMETER values, in order
    end type model_t
 end module rodyn_model

@@ -26,6 +26,7 @@ module rodyn_deck
                                card_data_error, card_get_real, card_get_int, card_get_name, &
                                card_get_choice, card_get_yesno, card_check_data, &
                                card_data_count, card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_params, only: param_override_t
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -50,10 +51,15 @@ contains
    !> Read the deck `path` into `model`, fully validated (docs/deck.md). err must be
    !> clear on entry. On error, err holds a message 'FILE:LINE: error: ...' (stat_input),
    !> model%deck_text what was read, and the model arrays the items read before the error.
-   subroutine deck_read(path, model, err)
+   !> `overrides` are the --set values of parameters (rodyn_deck_params); model%parameters
+   !> gets the values used; `warnings` the lines 'FILE:LINE: warning: ...' to show
+   !> (parameters never used), each ended by a newline ('' if none).
+   subroutine deck_read(path, model, err, overrides, warnings)
       character(len=*), intent(in) :: path    !< path of the main deck file
       type(model_t), intent(out) :: model     !< the model read
       type(error_t), intent(inout) :: err     !< status (stat_input on a bad deck)
+      type(param_override_t), intent(in), optional :: overrides(:) !< --set values
+      character(len=:), allocatable, intent(out), optional :: warnings !< warning lines
       type(deck_t) :: deck
       type(pending_t) :: pend
       integer :: ic
@@ -61,9 +67,24 @@ contains
       model%deck_file = path
       model%deck_text = ''
       model%title = ''
-      call deck_lex(path, deck, err)
+      call deck_lex(path, deck, err, overrides)
       if (allocated(deck%text)) model%deck_text = deck%text
       if (has_error(err)) deck%n_cards = 0
+      allocate (model%parameters(deck%params%n))
+      do ic = 1, deck%params%n
+         model%parameters(ic)%name = deck%params%p(ic)%name
+         model%parameters(ic)%text = deck%params%p(ic)%text
+         model%parameters(ic)%is_number = deck%params%p(ic)%is_number
+         model%parameters(ic)%value = deck%params%p(ic)%value
+      end do
+      if (present(warnings)) then
+         warnings = ''
+         if (allocated(deck%warnings)) then
+            do ic = 1, size(deck%warnings)
+               warnings = warnings//deck%warnings(ic)%s//new_line('a')
+            end do
+         end if
+      end if
 
       ! the arrays are sized from the keyword counts, then filled card by card
       allocate (model%sections(keyword_count(deck, 'SECTION')))

@@ -11,6 +11,13 @@
 !> to the including file's folder, nested up to max_include_depth levels, cycles
 !> refused). It also keeps the full text read for the record (model%deck_text).
 !>
+!> Deck parameters (rodyn_deck_params): the data lines of a `*PARAMETER` card define
+!> `NAME = value` (the card itself is not kept), and every `<NAME>` in a later line (a
+!> keyword line, a data line, an *INCLUDE path, a line of an included file) is replaced
+!> by the parameter's text before the line is read, so that the readers see plain text.
+!> A value given with --set (deck_lex's `overrides`) replaces the definition's value.
+!> Parameters never referred to give a warning (deck%warnings).
+!>
 !> The card_* helpers below are the readers' toolkit: get a parameter as a real, an
 !> integer, a name, a choice from a list, YES/NO, a file path; check the number of data
 !> lines; parse the reals on a data line; read a table of numbers from the data lines or
@@ -21,6 +28,9 @@ module rodyn_deck_lexer
    use rodyn_kinds, only: wp, i8
    use rodyn_error, only: error_t, set_error, has_error, stat_input
    use rodyn_model, only: name_len
+   use rodyn_deck_params, only: param_table_t, param_override_t, deck_param_t, param_find, &
+                                param_add, param_split_definition, param_value, &
+                                param_substitute
    implicit none
    private
    public :: field_t, param_t, data_line_t, card_t, deck_t, table_t
@@ -86,6 +96,9 @@ module rodyn_deck_lexer
       character(len=:), allocatable :: text      !< full text read, each file headed
       integer :: n_cards = 0                     !< number of cards
       type(card_t), allocatable :: cards(:)      !< cards 1..n_cards (capacity may exceed)
+      type(param_table_t) :: params              !< *PARAMETER definitions, in order
+      type(param_override_t), allocatable :: overrides(:) !< values given with --set
+      type(field_t), allocatable :: warnings(:)  !< 'FILE:LINE: warning: ...' messages
    end type deck_t
 
 contains
@@ -93,19 +106,29 @@ contains
    ! ======================================================================= lexing
 
    !> Read the deck file `path` and its includes into a list of cards.
-   !> A file that cannot be read gives 'PATH: error: cannot open deck'.
-   subroutine deck_lex(path, deck, err)
+   !> A file that cannot be read gives 'PATH: error: cannot open deck'; a value of
+   !> `overrides` whose name no *PARAMETER defines, 'rodyn: error: --set NAME: no
+   !> *PARAMETER NAME in PATH'. Parameters never used are listed in deck%warnings.
+   subroutine deck_lex(path, deck, err, overrides)
       character(len=*), intent(in) :: path   !< path of the main deck file
       type(deck_t), intent(out) :: deck      !< the cards read
       type(error_t), intent(inout) :: err    !< status (stat_input on error)
+      type(param_override_t), intent(in), optional :: overrides(:) !< --set values
       character(len=:), allocatable :: text
       type(field_t) :: stack(0:max_include_depth)
       logical :: ok
+      integer :: k
 
       deck%main_file = path
       deck%text = ''
       deck%n_cards = 0
       allocate (deck%cards(16))
+      allocate (deck%warnings(0))
+      if (present(overrides)) then
+         deck%overrides = overrides
+      else
+         allocate (deck%overrides(0))
+      end if
       call read_file_text(path, text, ok)
       if (.not. ok) then
          call set_error(err, stat_input, path//': error: cannot open deck')
@@ -113,6 +136,20 @@ contains
       end if
       stack(0)%s = path_normalise(path)
       call lex_text(path, text, 0, stack, deck, err)
+      if (has_error(err)) return
+      do k = 1, size(deck%overrides)
+         if (.not. deck%overrides(k)%matched) then
+            call set_error(err, stat_input, 'rodyn: error: --set '//deck%overrides(k)%name// &
+                           ': no *PARAMETER '//deck%overrides(k)%name//' in '//path)
+            return
+         end if
+      end do
+      do k = 1, deck%params%n
+         associate (p => deck%params%p(k))
+            if (.not. p%used) deck%warnings = [deck%warnings, field_t(p%file//':'// &
+               int_str(p%line)//': warning: *PARAMETER '//p%name//' is never used')]
+         end associate
+      end do
    end subroutine deck_lex
 
    !> Split the text of one file into lines and turn them into cards; recurse into
@@ -125,15 +162,16 @@ contains
       type(deck_t), intent(inout) :: deck        !< cards read so far
       type(error_t), intent(inout) :: err        !< status
       integer :: first, last, line_no, cur
-      character(len=:), allocatable :: s
+      character(len=:), allocatable :: s, t
       type(card_t) :: card
+      type(error_t) :: perr
 
       deck%text = deck%text//'** ---- file: '//path//lf//without_cr(text)
       if (len(text) > 0) then
          if (text(len(text):len(text)) /= lf) deck%text = deck%text//lf
       end if
 
-      cur = 0        ! card that data lines belong to: 0 none yet, -1 an *INCLUDE
+      cur = 0        ! card of the data lines: 0 none yet, -1 *INCLUDE, -2 *PARAMETER
       line_no = 0
       first = 1
       do while (first <= len(text))
@@ -151,6 +189,16 @@ contains
          if (len(s) >= 2) then
             if (s(1:2) == '**') cycle
          end if
+         if (index(s, '<') > 0) then             ! <NAME> references: plain text from here
+            call param_substitute(s, deck%params, t, perr)
+            if (has_error(perr)) then
+               call set_error(err, stat_input, path//':'//int_str(line_no)//': error: '// &
+                              line_keyword(s, cur, deck)//perr%message)
+               return
+            end if
+            s = trim(adjustl(t))
+            if (len(s) == 0) cycle
+         end if
          if (s(1:1) == '*') then
             call parse_keyword_line(path, line_no, s, card, err)
             if (has_error(err)) return
@@ -158,6 +206,10 @@ contains
                call lex_include(card, depth, stack, deck, err)
                if (has_error(err)) return
                cur = -1
+            else if (card%keyword == 'PARAMETER') then
+               call card_check_params(card, [character(len=param_len) ::], err)
+               if (has_error(err)) return
+               cur = -2
             else
                call append_card(deck, card)
                cur = deck%n_cards
@@ -166,15 +218,85 @@ contains
             call set_error(err, stat_input, path//':'//int_str(line_no)// &
                            ': error: data line before the first keyword line')
             return
-         else if (cur < 0) then
+         else if (cur == -1) then
             call set_error(err, stat_input, path//':'//int_str(line_no)// &
                            ': error: *INCLUDE: data lines are not allowed')
             return
+         else if (cur == -2) then
+            call define_parameter(path, line_no, s, deck, err)
+            if (has_error(err)) return
          else
             call append_data_line(deck%cards(cur), line_no, s)
          end if
       end do
    end subroutine lex_text
+
+   !> Keyword of a line for a message, as '*KEYWORD: ': the line's own for a keyword
+   !> line, else that of the card the line belongs to ('' before the first card).
+   pure function line_keyword(s, cur, deck) result(kw)
+      character(len=*), intent(in) :: s   !< the line, starting with '*' if a keyword line
+      integer, intent(in) :: cur          !< card of the data lines (as in lex_text)
+      type(deck_t), intent(in) :: deck    !< cards read so far
+      character(len=:), allocatable :: kw !< '*KEYWORD: ' or ''
+      integer :: last
+      kw = ''
+      if (s(1:1) == '*') then
+         last = scan(s(2:)//',', ',<')
+         kw = '*'//normalise_name(s(2:last))//': '
+      else if (cur > 0) then
+         kw = '*'//deck%cards(cur)%keyword//': '
+      else if (cur == -1) then
+         kw = '*INCLUDE: '
+      else if (cur == -2) then
+         kw = '*PARAMETER: '
+      end if
+   end function line_keyword
+
+   !> A data line of *PARAMETER: `NAME = value` (rodyn_deck_params). The value of a
+   !> --set NAME=VALUE replaces the one written. Errors: a malformed line, a name
+   !> defined twice, a bad value (located at this line; naming --set for its value).
+   subroutine define_parameter(path, line_no, s, deck, err)
+      character(len=*), intent(in) :: path    !< file the line is in
+      integer, intent(in) :: line_no          !< line number
+      character(len=*), intent(in) :: s       !< the line, cleaned and substituted
+      type(deck_t), intent(inout) :: deck     !< gets the parameter
+      type(error_t), intent(inout) :: err     !< status
+      character(len=:), allocatable :: name, text, where
+      type(deck_param_t) :: p
+      type(error_t) :: perr
+      integer :: k, io
+
+      where = path//':'//int_str(line_no)//': error: *PARAMETER: '
+      call param_split_definition(s, name, text, perr)
+      if (has_error(perr)) then
+         call set_error(err, stat_input, where//perr%message)
+         return
+      end if
+      k = param_find(deck%params, name)
+      if (k > 0) then
+         call set_error(err, stat_input, where//name//' is already defined (at '// &
+                        deck%params%p(k)%file//':'//int_str(deck%params%p(k)%line)//')')
+         return
+      end if
+      p%name = name
+      p%file = path
+      p%line = line_no
+      do io = 1, size(deck%overrides)
+         if (deck%overrides(io)%name == name) then
+            deck%overrides(io)%matched = .true.
+            p%overridden = .true.
+            text = deck%overrides(io)%text
+            where = where//name//': --set '//name//'='//text//': '
+         end if
+      end do
+      if (.not. p%overridden) where = where//name//': '
+      call param_value(text, deck%params, p, perr)
+      if (has_error(perr)) then
+         call set_error(err, stat_input, where//perr%message)
+         return
+      end if
+      call param_add(deck%params, p)
+   end subroutine define_parameter
 
    !> Process one *INCLUDE card: check it, open the file relative to the including
    !> file's folder, refuse cycles and nesting deeper than max_include_depth, recurse.

@@ -8,14 +8,14 @@ module rodyn_output
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
    use rodyn_kinds, only: wp, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, env_item_t, environment_items, &
                                   write_environment_h5, wall_tension_of, seabed_force_of, &
-                                  water_fields_fit, touchdown_of
+                                  water_fields_fit, touchdown_of, write_parameters_h5
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
@@ -94,7 +94,8 @@ contains
          call output_write_environment(dir, model, e)
       end if
       if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
-      call output_write_status(dir, summary, e_status, deck_file=text_of(model%deck_file))
+      call output_write_status(dir, summary, e_status, deck_file=text_of(model%deck_file), &
+                               params=model%parameters)
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (has_error(e_status)) call set_error(err, e_status%code, e_status%message)
    end subroutine output_write_static
@@ -102,14 +103,16 @@ contains
    !> Write only status.txt into folder `dir` (created if missing): for a run that
    !> stops before it has results to write, and for the dynamic writer (which adds the
    !> keys dynamic ... step_cutbacks when summary%dynamic is true). Acts even when err
-   !> already holds an error.
-   subroutine output_write_status(dir, summary, err, deck_file)
+   !> already holds an error. The deck parameters `params` (if any) follow the key deck,
+   !> one line 'parameter.NAME = text' each.
+   subroutine output_write_status(dir, summary, err, deck_file, params)
       character(len=*), intent(in) :: dir                 !< output folder
       type(run_summary_t), intent(in) :: summary          !< how the run went
       type(error_t), intent(inout) :: err                 !< status
       character(len=*), intent(in), optional :: deck_file !< path of the deck
+      type(parameter_value_t), intent(in), optional :: params(:) !< deck parameters used
       type(error_t) :: e
-      integer :: u, ios
+      integer :: u, ios, k
       character(len=512) :: msg
       call make_directory(dir, e)
       call open_temp(dir, status_txt, u, e)
@@ -138,6 +141,12 @@ contains
             call put_line(u, 'deck = '//one_line(deck_file), ios, msg)
          else
             call put_line(u, 'deck = ', ios, msg)
+         end if
+         if (present(params)) then
+            do k = 1, size(params)
+               call put_line(u, 'parameter.'//params(k)%name//' = '// &
+                  one_line(params(k)%text), ios, msg)
+            end do
          end if
          call commit_temp(dir, status_txt, u, ios, msg, e)
       end if
@@ -314,6 +323,7 @@ contains
       call hdf5_write_attribute(h5, '/static', 'cutbacks', summary%cutbacks, err)
       call hdf5_write_attribute(h5, '/static', 'wall_time_s', summary%wall_time, err)
       call write_environment_h5(h5, model, err)
+      call write_parameters_h5(h5, model, err)
       do i = 1, size(lines)
          call write_h5_line(h5, '/static/'//group_name(lines(i)%name, i), lines(i), err)
       end do

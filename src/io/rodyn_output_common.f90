@@ -1,7 +1,8 @@
 !> Small helpers shared by the static and dynamic output writers: file paths, names as
 !> CSV fields, one-line texts, status words, the description attributes of HDF5
 !> datasets, the results of the water physics with their dry defaults, and the
-!> environment (sea, current, seabed) as key-value rows and as an HDF5 group.
+!> environment (sea, current, seabed) as key-value rows and as an HDF5 group, the deck
+!> parameters as an HDF5 group.
 module rodyn_output_common
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: model_t
@@ -12,7 +13,7 @@ module rodyn_output_common
    implicit none
    private
    public :: text_of, status_of, path_join, one_line, describe, csv_name
-   public :: env_item_t, environment_items, write_environment_h5
+   public :: env_item_t, environment_items, write_environment_h5, write_parameters_h5
    public :: wall_tension_of, seabed_force_of, water_fields_fit, touchdown_of
 
    !> One entry of the environment (docs/output.md, environment.csv): a key, its value
@@ -25,6 +26,29 @@ module rodyn_output_common
    end type env_item_t
 
 contains
+
+   !> Group /parameters (docs/output.md): one attribute per deck parameter as used (after
+   !> --set), named as the parameter (upper case): a float for a number, a string for a
+   !> string. Nothing when the deck has no *PARAMETER.
+   subroutine write_parameters_h5(h5, model, err)
+      type(hdf5_file_t), intent(in) :: h5   !< open file
+      type(model_t), intent(in) :: model    !< model
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: g = '/parameters'
+      integer :: k
+      if (.not. allocated(model%parameters)) return
+      if (size(model%parameters) == 0) return
+      call hdf5_create_group(h5, g, err)
+      do k = 1, size(model%parameters)
+         associate (p => model%parameters(k))
+            if (p%is_number) then
+               call hdf5_write_attribute(h5, g, p%name, p%value, err)
+            else
+               call hdf5_write_attribute(h5, g, p%name, p%text, err)
+            end if
+         end associate
+      end do
+   end subroutine write_parameters_h5
 
    !> The text of an optional allocatable string ('' when unallocated).
    pure function text_of(text) result(s)

@@ -38,7 +38,7 @@ module rodyn_output_dynamic
    use rodyn_format, only: format_e17
    use rodyn_kinds, only: wp, i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
-   use rodyn_model, only: model_t, scheme_names
+   use rodyn_model, only: model_t, scheme_names, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
       hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
@@ -48,7 +48,8 @@ module rodyn_output_dynamic
    use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, write_environment_h5, wall_tension_of, &
-                                  seabed_force_of, water_fields_fit, touchdown_of
+                                  seabed_force_of, water_fields_fit, touchdown_of, &
+                                  write_parameters_h5
    implicit none
    private
    public :: dynamic_writer_t
@@ -146,6 +147,7 @@ module rodyn_output_dynamic
       logical :: hdf5 = .false.                      !< dynamic.h5 requested
       character(len=:), allocatable :: dir           !< output folder
       character(len=:), allocatable :: deck_file     !< deck path, for status.txt
+      type(parameter_value_t), allocatable :: params(:) !< deck parameters, for status.txt
       integer :: u_nodes = -1                        !< unit of dynamic_nodes.csv
       integer :: u_elements = -1                     !< unit of dynamic_elements.csv
       integer :: u_ends = -1                         !< unit of dynamic_ends.csv
@@ -195,6 +197,7 @@ contains
       end if
       w%dir = dir
       w%deck_file = text_of(model%deck_file)
+      if (allocated(model%parameters)) w%params = model%parameters
       w%csv = model%output%csv
       w%hdf5 = model%output%hdf5
       w%frames = 0
@@ -221,7 +224,7 @@ contains
             return
          end if
       end do
-      call output_write_status(dir, w%progress, e, w%deck_file)  ! also makes the folder
+      call output_write_status(dir, w%progress, e, w%deck_file, w%params)  ! makes the folder
       allocate (w%line(size(lines)), w%pending(log_block))
       do i = 1, size(lines)
          call set_up_line(w%line(i), lines(i))
@@ -284,7 +287,7 @@ contains
             call write_held_h5(w, e)
          if (due .and. .not. has_error(e)) then
             w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
-            call output_write_status(w%dir, w%progress, e, w%deck_file)
+            call output_write_status(w%dir, w%progress, e, w%deck_file, w%params)
             call system_clock(w%clock_status)
          end if
       end if
@@ -351,7 +354,8 @@ contains
          call write_final_attributes(w, s, e)
       end if
       call release_all(w, e)
-      if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file))
+      if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file), &
+                                                     w%params)
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_close
 
@@ -442,6 +446,7 @@ contains
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
             model%dynamic%output_interval, err)
          call write_environment_h5(h5, model, err)
+         call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
          call hdf5_open_series(h5, '/dynamic/time', w%time, err)
