@@ -497,7 +497,8 @@ contains
    ! ============================================================= substitution
 
    !> Replace every `<NAME>` in line by the text of parameter NAME (any case) and mark
-   !> it used. err: a '<' without '>', a '<...>' that is not a name, an undefined name.
+   !> it used; a '<' followed by anything but a letter is plain text. err: a '<' and a
+   !> letter without '>', a '<...>' that is not a name, an undefined name.
    pure subroutine param_substitute(line, table, out, err)
       character(len=*), intent(in) :: line              !< text with references
       type(param_table_t), intent(inout) :: table       !< parameters defined so far
@@ -516,6 +517,16 @@ contains
          end if
          lt = p + lt - 1
          out = out//line(p:lt - 1)
+         ! a '<' not followed by a letter is text ('t < 3 s' in a *HEADING line)
+         if (lt == len(line)) then
+            out = out//'<'
+            exit
+         end if
+         if (index(letters, line(lt + 1:lt + 1)) == 0) then
+            out = out//'<'
+            p = lt + 1
+            cycle
+         end if
          gt = index(line(lt + 1:), '>')
          if (gt == 0) then
             call fail(err, "'<' without '>' in '"//line(lt:)//"' (a reference is <NAME>)")
