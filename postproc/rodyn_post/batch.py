@@ -305,7 +305,7 @@ def connect(address: str, timeout: float):
         raise BatchInputError("--scheduler needs Dask: python3 -m pip install "
                               "'dask[distributed]'") from None
     try:
-        return Client(address, timeout=f"{timeout}s", set_as_default=False)
+        return Client(address, timeout=f"{timeout}s")
     except (OSError, TimeoutError) as exc:
         raise BatchInputError(f"{address}: cannot reach the Dask scheduler "
                               f"({' '.join(str(exc).split())[:200]})") from None
@@ -386,9 +386,6 @@ def run_batch(args) -> int:
         if lock_is_live(info, token):
             raise BatchInputError(f"{out / case.id}: being written by another batch "
                                   f"({lock_owner(info)}; lock {lock_path(out, case.id)})")
-    state = {"cases": [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases],
-             "parameters": param_names, "extract": list(keys)}
-    (out / STATE_FILE).write_text(json.dumps(state, indent=1), encoding="utf-8")
     locked = []
     for case in todo:
         info = acquire_lock(out, case.id, token)
@@ -399,6 +396,9 @@ def run_batch(args) -> int:
                                   f"({lock_owner(info)})")
         locked.append(case.id)
     clean_temporaries(out, locked)
+    state = {"cases": [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases],
+             "parameters": param_names, "extract": list(keys)}
+    (out / STATE_FILE).write_text(json.dumps(state, indent=1), encoding="utf-8")
 
     extra = tuple(args.rodyn_arg) or ("--quiet",)
     specs = [CaseSpec(id=c.id, deck=str(c.deck), params=dict(c.params), out=str(out),
@@ -495,6 +495,10 @@ def rebuild_summary(args) -> int:
 
 def main(argv=None) -> int:
     """The command line; returns the exit status."""
+    from .cli import WriteError
+    from .quantities import InputError
+    from .results import RodynResultsError
+
     argv = list(sys.argv[1:] if argv is None else argv)
     command = argv.pop(0) if argv and argv[0] in SUBCOMMANDS else "run"
     try:
@@ -507,9 +511,12 @@ def main(argv=None) -> int:
             return plot_main(argv)
         from .batch_compare import main as compare_main
         return compare_main(argv)
-    except BatchInputError as exc:
+    except (BatchInputError, InputError, RodynResultsError) as exc:
         print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except WriteError as exc:
+        print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+        return EXIT_WRITE
     except ValueError as exc:      # --extract and other option values
         print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return EXIT_USAGE
