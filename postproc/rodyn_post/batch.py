@@ -447,6 +447,12 @@ def run_batch(args) -> int:
     for entry in ordered:
         if entry["record"] is None or entry["record"].get("status") in ("cancelled",
                                                                          "abandoned"):
+            # finished and published, but stopped before the driver took note of it
+            rec = read_record(out / entry["id"])
+            if (rec is not None and rec.get("status") == "complete"
+                    and rec.get("hash") == hashes[entry["id"]]):
+                entry["record"] = _ensure_extracted(out, rec, keys)
+                continue
             entry["status"] = "not run"
             entry["message"] = "batch interrupted" if interrupted else (
                 entry["record"] or {}).get("message", "")
