@@ -24,6 +24,7 @@ import contextlib
 import io
 import json
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -57,12 +58,22 @@ def write_decks(folder: Path, n: int, elements: int, duration: float) -> list:
     return paths
 
 
+CPU = {}
+
+
 def run_batch(pattern: Path, out: Path, jobs: int, rodyn: str) -> float:
+    """Wall time of a batch; CPU['self'], CPU['children']: its CPU seconds."""
+    r0, c0 = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(
+        resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     with contextlib.redirect_stdout(io.StringIO()):
         code = batch.main([str(pattern), "-o", str(out), "-j", str(jobs), "--rodyn", rodyn,
                            "--no-progress"])
     dt = time.perf_counter() - t0
+    r1, c1 = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(
+        resource.RUSAGE_CHILDREN)
+    CPU["self"] = r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime
+    CPU["children"] = c1.ru_utime + c1.ru_stime - c0.ru_utime - c0.ru_stime
     if code != 0:
         raise SystemExit(f"batch failed with exit status {code}")
     return dt
@@ -114,14 +125,17 @@ def main():
         # 2. throughput, 2 workers against 1
         for label, elements, duration in (("0.3 s cases", 30, 40.0), ("short cases", 4, 1.0)):
             decks = write_decks(work / f"thr{elements}", n_thr, elements, duration)
-            times = {}
+            times, cpu = {}, {}
             for jobs in (1, 2):
                 times[jobs] = min(run_batch(decks[0].parent / "c*.inp",
                                             work / f"thr{elements}_j{jobs}_{r}", jobs, rodyn)
                                   for r in range(1 if elements == 30 else args.repeat))
+                cpu[jobs] = dict(CPU)
             print(f"2. throughput, {n_thr} {label} ({elements} elements, {duration:g} s): "
                   f"-j 1 {times[1]:.2f} s, -j 2 {times[2]:.2f} s: "
-                  f"{times[1] / times[2]:.2f}x")
+                  f"{times[1] / times[2]:.2f}x; CPU a case: rodyn "
+                  f"{1e3 * cpu[2]['children'] / n_thr:.1f} ms, batch driver "
+                  f"{1e3 * cpu[2]['self'] / n_thr:.1f} ms")
         # 3. summary of many cases
         one = work / "b2_0" / "c0000"
         big = work / "big"
