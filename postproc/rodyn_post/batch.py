@@ -46,7 +46,7 @@ from typing import Dict, List, Optional
 
 from .batch_cases import (BatchInputError, Case, case_hash, cases_from_decks,
                           check_declared, decks_from_patterns, grid_cases,
-                          parse_assignment, read_case_table)
+                          merge_params, parse_assignment, read_case_table)
 from .batch_extract import DEFAULT_EXTRACT, extract_case, parse_extract, status_complete
 from .batch_run import (RESULT_FILE, CaseSpec, Running, acquire_lock, clean_temporaries,
                         lock_is_live, lock_owner, lock_path, read_lock, read_record,
@@ -221,7 +221,7 @@ def build_cases(args) -> List[Case]:
     common: Dict[str, str] = {}
     for item in args.set:
         name, value = parse_assignment(item, "--set")
-        common[name] = value
+        common = merge_params(common, {name: value})
     if args.cases or args.grid:
         if len(args.decks) != 1 or any(c in args.decks[0] for c in "*?["):
             raise BatchInputError(f"{'--cases' if args.cases else '--grid'} takes one "

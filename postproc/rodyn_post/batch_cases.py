@@ -186,23 +186,29 @@ def read_case_table(path: Path, deck: Path, common: Dict[str, str]) -> List[Case
         if safe_id(case_id) != case_id:
             raise BatchInputError(f"{path}:{number}: id {case_id!r} is not a folder name "
                                   "(letters, digits and . _ = + - only)")
-        params = dict(common)
-        for i, name in enumerate(header):
-            if i != id_col and row[i] != "":
-                params[name.upper()] = row[i]
+        params = merge_params(common, {name: row[i] for i, name in enumerate(header)
+                                       if i != id_col and row[i] != ""})
         cases.append(Case(case_id, deck, params, f"{path}:{number}"))
     _check_unique(cases)
     return cases
 
 
+def merge_params(common: Dict[str, str], own: Dict[str, str]) -> Dict[str, str]:
+    """`common` (--set) overridden by a case's own values; names compare without case."""
+    out = {k: v for k, v in common.items() if k.upper() not in {n.upper() for n in own}}
+    out.update(own)
+    return out
+
+
 def parse_assignment(text: str, option: str) -> Tuple[str, str]:
-    """'NAME=VALUE' of --set (NAME upper-cased)."""
+    """'NAME=VALUE' of --set or --grid (NAME as written; rodyn's parameter names are
+    compared without case by the batch)."""
     if "=" not in text:
         raise BatchInputError(f"{option} {text!r}: expected NAME=VALUE")
     name, value = (part.strip() for part in text.split("=", 1))
     if not _NAME.match(name):
         raise BatchInputError(f"{option} {text!r}: {name!r} is not a parameter name")
-    return name.upper(), value
+    return name, value
 
 
 def grid_cases(grid: Sequence[str], deck: Path, common: Dict[str, str]) -> List[Case]:
@@ -215,14 +221,13 @@ def grid_cases(grid: Sequence[str], deck: Path, common: Dict[str, str]) -> List[
             raise BatchInputError(f"--grid {item!r}: empty value in the list")
         if len(set(vals)) != len(vals):
             raise BatchInputError(f"--grid {item!r}: a value is repeated")
-        if name in (a[0] for a in axes):
+        if name.upper() in (a[0].upper() for a in axes):
             raise BatchInputError(f"--grid {name}: given twice")
         axes.append((name, vals))
     cases = []
     for combo in itertools.product(*(vals for _, vals in axes)):
         params = dict(zip((n for n, _ in axes), combo))
-        full = dict(common)
-        full.update(params)
+        full = merge_params(common, params)
         cases.append(Case(grid_id(params), deck, full,
                           "--grid " + " ".join(f"{k}={v}" for k, v in params.items())))
     _check_unique(cases)
@@ -249,7 +254,7 @@ def check_declared(cases: Sequence[Case]):
             declared[case.deck] = deck_parameters(case.deck)
         names = declared[case.deck]
         for name in case.params:
-            if name not in names:
+            if name.upper() not in names:
                 known = ", ".join(names) or "none"
                 raise BatchInputError(f"{case.origin}: parameter {name} is not declared by "
                                       f"*PARAMETER in {case.deck} (declared: {known})")
