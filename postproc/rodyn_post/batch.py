@@ -49,6 +49,7 @@ from .batch_cases import (BatchInputError, Case, case_hash, cases_from_decks,
                           merge_params, parse_assignment, read_case_table)
 from .batch_extract import DEFAULT_EXTRACT, extract_case, parse_extract, status_complete
 from .batch_run import (RESULT_FILE, CaseSpec, Running, acquire_lock, clean_temporaries,
+                        command_of, quote,
                         lock_is_live, lock_owner, lock_path, read_lock, read_record,
                         release_lock, run_case)
 
@@ -178,6 +179,8 @@ def _run_parser() -> argparse.ArgumentParser:
     p.add_argument("--force", action="store_true",
                    help="run every case, also those already complete")
     p.add_argument("--no-progress", action="store_true", help="no progress on stderr")
+    p.add_argument("--list", action="store_true",
+                   help="print each case (id, run or skip, command line) and run nothing")
     return p
 
 
@@ -381,6 +384,13 @@ def run_batch(args) -> int:
             entry["record"], entry["skipped"] = rec, True
         else:
             todo.append(case)
+    if args.list:
+        for case in cases:
+            what = "skip (complete)" if entries[case.id].get("skipped") else "run"
+            spec = CaseSpec(id=case.id, deck=str(case.deck), params=dict(case.params),
+                            out=str(out), rodyn=rodyn, hash=hashes[case.id], token=token)
+            print(f"{case.id}\t{what}\t{quote(command_of(spec, str(out / case.id)))}")
+        return EXIT_OK
     for case in todo:
         info = read_lock(lock_path(out, case.id))
         if lock_is_live(info, token):

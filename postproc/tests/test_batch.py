@@ -130,8 +130,12 @@ def test_local_batch_equals_lone_runs(batch12, tmp_path):
     assert not list(out.glob(".*.lock")) and not list(out.glob(".*.tmp-*"))
 
 
-def test_rerun_skips_complete_cases(batch12):
+def test_rerun_skips_complete_cases(batch12, capsys):
     out = batch12["out"]
+    assert run_main([batch12["base"] / "decks" / "case*.inp", "-o", out, "--rodyn", RODYN,
+                     "--list"]) == 0
+    listed = capsys.readouterr().out.splitlines()
+    assert len(listed) == 12 and all("\tskip (complete)\t" in x for x in listed)
     before = {p.name: p.stat().st_mtime_ns for p in out.glob("case*/batch_case.json")}
     assert run_main([batch12["base"] / "decks" / "case*.inp", "-o", out, "-j", "2",
                      "--rodyn", RODYN, "--no-progress"]) == 0
