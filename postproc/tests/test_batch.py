@@ -477,3 +477,29 @@ def test_locked_case_refused_and_stale_lock_taken_over(tmp_path, capsys):
                                 "batch": "other", "time": "now"}))
     assert run_main([good, "-o", out, "--rodyn", RODYN, "--no-progress"]) == 0
     assert not lock.exists()
+
+
+def test_seabed_and_static_extremes(tmp_path):
+    """A mooring leg on the seabed: touchdown range and seabed force, dynamic (short
+    surge) and static (a deck without *DYNAMIC: no times)."""
+    decks = tmp_path / "decks"
+    decks.mkdir()
+    inc = ROOT / "input" / "mooring_leg_section.inc"
+    for name, src in (("surge", "mooring_surge.inp"), ("static", "mooring_catenary.inp")):
+        text = (ROOT / "input" / src).read_text().replace("ELEMENTS=120", "ELEMENTS=30")
+        text = text.replace("TIME=120.0", "TIME=3.0")
+        (decks / f"{name}.inp").write_text(text.replace("INPUT=mooring_leg_section.inc",
+                                                        f"INPUT={inc}"))
+    out = tmp_path / "out"
+    assert run_main([decks / "*.inp", "-o", out, "--rodyn", RODYN, "--no-progress",
+                     "--extract", "all"]) == 0
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    lines = csv_rows(out / "surge" / "dynamic_lines.csv")
+    td = [float(r["touchdown_s_m"]) for r in lines]
+    assert float(rows["surge"]["LEG.touchdown_min_S_m"]) == min(td)
+    assert float(rows["surge"]["LEG.touchdown_max_S_m"]) == max(td)
+    assert float(rows["surge"]["LEG.seabed_normal_max_N_per_m"]) > 0
+    assert rows["static"]["LEG.tension_max_t_s"] == ""           # no time in statics
+    assert float(rows["static"]["LEG.touchdown_min_S_m"]) > 0
+    assert run_main(["plot", out, "--envelope", "seabed_normal", "-o",
+                     tmp_path / "sb.png"]) == 0
