@@ -36,6 +36,7 @@ import json
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -345,6 +346,11 @@ def _run_dask(client, specs: List[CaseSpec], retries: int, on_done, progress: Pr
         raise
 
 
+def _terminate(signum, frame):
+    """SIGTERM (kill, scancel) stops the batch as Ctrl-C does."""
+    raise KeyboardInterrupt
+
+
 # --- the batch -------------------------------------------------------------------------------
 
 def run_batch(args) -> int:
@@ -437,6 +443,9 @@ def run_batch(args) -> int:
             entries[case.id]["record"] = _ensure_extracted(out, entries[case.id]["record"],
                                                            keys)
     interrupted = False
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGTERM, _terminate)   # as Ctrl-C (scancel)
     try:
         if client is not None:
             _run_dask(client, specs, args.retries, on_done, progress)
@@ -445,6 +454,8 @@ def run_batch(args) -> int:
     except KeyboardInterrupt:
         interrupted = True
     finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
         progress.close()
         for cid in locked:
             release_lock(out, cid, token)

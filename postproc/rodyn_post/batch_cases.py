@@ -234,9 +234,18 @@ def grid_cases(grid: Sequence[str], deck: Path, common: Dict[str, str]) -> List[
     return cases
 
 
+# Names of the batch's own files in OUT: no case may be called so.
+RESERVED = ("batch.log", "batch_cases.json", "summary.csv", "summary.h5")
+
+
 def _check_unique(cases: Sequence[Case]):
     seen: Dict[str, Case] = {}
     for case in cases:
+        if case.id.lower() in RESERVED or case.id.lower().startswith(("compare_",
+                                                                      "envelope_",
+                                                                      "plot_")):
+            raise BatchInputError(f"{case.origin}: case id {case.id!r} is a name the batch "
+                                  "uses for its own files")
         key = case.id.lower()   # folders must differ on case-insensitive file systems too
         if key in seen:
             raise BatchInputError(f"{case.origin}: duplicate case id {case.id!r} (also "

@@ -424,6 +424,21 @@ def test_interrupt_and_resume(tmp_path):
     assert_same_summary(read_summary(out), read_summary(whole))
 
 
+def test_sigterm_stops_like_ctrl_c(tmp_path):
+    write_decks(tmp_path / "decks", n=6, elements=30, duration=40.0)
+    out = tmp_path / "out"
+    proc = subprocess.Popen(_batch_cmd(tmp_path / "decks" / "case*.inp", out),
+                            env=dict(os.environ, PYTHONPATH=str(POSTPROC)),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not list(out.glob("case*/batch_case.json")) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    proc.terminate()
+    assert proc.wait(timeout=60) == 130
+    assert not list(out.glob(".*.tmp-*")) and not list(out.glob(".*.lock"))
+    assert any(r["status"] == "not run" for r in csv_rows(out / "summary.csv"))
+
+
 # --- bad input ----------------------------------------------------------------------------
 
 PARAM_DECK = "*PARAMETER\nAMP = 0.4\n** a comment\nFREQ = 0.658\n*HEADING\nx\n"
@@ -451,6 +466,9 @@ def test_bad_input(tmp_path, capsys):
     err = _bad([deck, "--grid", "AMP=1,2", "--grid", "NOPE=3", "-o", out, "--rodyn",
                 RODYN], capsys)
     assert "NOPE" in err and str(deck) in err
+    table.write_text("id,AMP\nsummary.csv,0.1\n")
+    err = _bad([deck, "--cases", table, "-o", out, "--rodyn", RODYN], capsys)
+    assert f"{table}:2" in err and "its own files" in err
     err = _bad([tmp_path / "missing.inp", "-o", out, "--rodyn", RODYN], capsys)
     assert "missing.inp: no such deck" in err
     good = write_decks(tmp_path / "decks", n=1)[0]
