@@ -322,10 +322,17 @@ def cluster():
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(POSTPROC)] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep)
                            if p]))
+    saved = os.environ.get("PYTHONPATH")
     os.environ["PYTHONPATH"] = env["PYTHONPATH"]      # the worker processes import us
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None, silence_logs=50) as c:
-        yield c
+    try:
+        with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                      dashboard_address=None, silence_logs=50) as c:
+            yield c
+    finally:
+        if saved is None:
+            os.environ.pop("PYTHONPATH", None)
+        else:
+            os.environ["PYTHONPATH"] = saved
 
 
 def test_dask_local_cluster(batch12, cluster, tmp_path):
