@@ -397,6 +397,36 @@ def test_bad_deck_failing_case_and_time_limit(tmp_path, capsys):
     assert "3 of 6 cases not complete" in capsys.readouterr().err
 
 
+@pytest.mark.skipif(not Path("/proc/self/cmdline").exists(), reason="needs /proc")
+def test_case_killed_by_a_signal(tmp_path):
+    """A rodyn process killed from outside (not by the time limit): status signal."""
+    decks = write_decks(tmp_path / "decks", n=2, elements=30, duration=5000.0)
+    out = tmp_path / "out"
+    result = {}
+    thread = threading.Thread(target=lambda: result.setdefault("code", run_main(
+        [decks[0], "-o", out, "--rodyn", RODYN, "--no-progress", "--timeout", "60"])))
+    thread.start()
+    victim, deadline = None, time.monotonic() + 30
+    exe = str(Path(RODYN).resolve()).encode()
+    while victim is None and time.monotonic() < deadline:
+        for proc in Path("/proc").iterdir():
+            try:
+                cmd = (proc / "cmdline").read_bytes().split(b"\0")
+            except OSError:
+                continue
+            if cmd and cmd[0] == exe and str(out).encode() in b" ".join(cmd):
+                victim = int(proc.name)
+                break
+        time.sleep(0.05)
+    assert victim is not None
+    os.kill(victim, signal.SIGKILL)
+    thread.join(60)
+    assert result["code"] == 4
+    row = csv_rows(out / "summary.csv")[0]
+    assert row["status"] == "signal" and row["exit_code"] == "-9"
+    assert row["message"].startswith("killed by SIGKILL")
+
+
 def _batch_cmd(decks_glob, out):
     return [sys.executable, "-m", "rodyn_post.batch", str(decks_glob), "-o", str(out),
             "-j", "2", "--rodyn", RODYN, "--no-progress"]
