@@ -558,3 +558,21 @@ def test_seabed_and_static_extremes(tmp_path):
     assert float(rows["static"]["LEG.touchdown_min_S_m"]) > 0
     assert run_main(["plot", out, "--envelope", "seabed_normal", "-o",
                      tmp_path / "sb.png"]) == 0
+
+
+def test_deck_parameters_hash_and_ids(tmp_path):
+    from rodyn_post.batch_cases import case_hash, deck_parameters, grid_cases
+    inc = tmp_path / "sub" / "params.inc"
+    inc.parent.mkdir()
+    inc.write_text("*PARAMETER\nDEPTH = 100.0\n** HIDDEN = 1\n*SECTION, NAME=X\nNOT = 2\n")
+    deck = tmp_path / "deck.inp"
+    deck.write_text("** header\n*Parameter\n  amp = 0.4\nFREQ=2*<AMP>\n"
+                    "*INCLUDE, INPUT=sub/params.inc\n*HEADING\nx\n")
+    assert deck_parameters(deck) == {"AMP": "0.4", "FREQ": "2*<AMP>", "DEPTH": "100.0"}
+    h0 = case_hash(deck, {"AMP": "1"})
+    assert h0 == case_hash(deck, {"AMP": "1"}) != case_hash(deck, {"AMP": "2"})
+    inc.write_text(inc.read_text().replace("100.0", "200.0"))
+    assert case_hash(deck, {"AMP": "1"}) != h0          # an include changed
+    cases = grid_cases(["DIR=N/E,S W", "amp=1"], deck, {"DEPTH": "5"})
+    assert [c.id for c in cases] == ["DIR=N_E_amp=1", "DIR=S_W_amp=1"]
+    assert cases[0].params == {"DEPTH": "5", "DIR": "N/E", "amp": "1"}
