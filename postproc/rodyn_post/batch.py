@@ -41,7 +41,7 @@ import subprocess
 import sys
 import threading
 import time
-from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 from typing import Dict, List, Optional
 
@@ -279,20 +279,18 @@ def _run_local(specs: List[CaseSpec], jobs: int, on_done, progress: Progress):
     running = Running()
     pool = ThreadPoolExecutor(max_workers=jobs)
     futures = {pool.submit(run_case, spec, running): spec for spec in specs}
-    pending = set(futures)
+    left = len(futures)
     try:
-        while pending:
-            done, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
-            for fut in done:
-                spec = futures[fut]
-                try:
-                    record = fut.result()
-                except Exception as exc:  # noqa: BLE001 - a bug or an I/O error
-                    record = {"id": spec.id, "status": "error", "exit_code": None,
-                              "message": " ".join(f"{type(exc).__name__}: {exc}".split()),
-                              "wall_time_s": 0.0}
-                on_done(spec, record, min(running.count, len(pending)))
-            progress.running = min(running.count, len(pending))
+        for fut in as_completed(futures):   # one waiter per future: O(n) in all
+            spec = futures[fut]
+            left -= 1
+            try:
+                record = fut.result()
+            except Exception as exc:  # noqa: BLE001 - a bug or an I/O error
+                record = {"id": spec.id, "status": "error", "exit_code": None,
+                          "message": " ".join(f"{type(exc).__name__}: {exc}".split()),
+                          "wall_time_s": 0.0}
+            on_done(spec, record, min(running.count, left))
     except KeyboardInterrupt:
         running.kill_all()
         pool.shutdown(wait=True, cancel_futures=True)
@@ -431,8 +429,9 @@ def run_batch(args) -> int:
     def on_done(spec: CaseSpec, record: dict, running: int):
         entries[spec.id]["record"] = record
         release_lock(out, spec.id, token)
-        _log(out, f"case {spec.id}: {record.get('command', '(not started)')}")
-        _log(out, f"case {spec.id}: {record['status']}, exit {record.get('exit_code')}, "
+        stamp = time.strftime('%Y-%m-%dT%H:%M:%S')
+        _log(out, f"case {spec.id}: {record.get('command', '(not started)')}\n{stamp} "
+                  f"case {spec.id}: {record['status']}, exit {record.get('exit_code')}, "
                   f"{record.get('wall_time_s', 0.0):.3f} s"
                   + (f": {record['message']}" if record.get("message") else ""))
         progress.finished(spec.id, record["status"], record.get("wall_time_s") or 0.0,
