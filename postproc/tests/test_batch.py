@@ -1,0 +1,592 @@
+"""Tests of rodyn-batch (rodyn_post.batch): short runs of the paper's cable.
+
+Needs RODYN_EXE (tools/test.sh sets it); the Dask tests need `distributed`. The
+parameter-grid test needs a rodyn with --set (*PARAMETER) and is skipped otherwise.
+"""
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from rodyn_post import batch
+from rodyn_post.batch_extract import DEFAULT_EXTRACT, extract_case
+from rodyn_post.batch_summary import TIMING_COLUMNS, read_summary
+
+ROOT = Path(__file__).resolve().parents[2]
+RODYN = os.environ.get("RODYN_EXE")
+INCLUDE = ROOT / "input" / "paper_cable_section.inc"
+POSTPROC = ROOT / "postproc"
+
+pytestmark = pytest.mark.skipif(not RODYN or not Path(RODYN).is_file(),
+                                reason="RODYN_EXE not set (run through tools/test.sh)")
+
+
+def cable_deck(amplitude: float, frequency: float, elements: int = 4,
+               duration: float = 1.0) -> str:
+    """input/paper_case1.inp, short and coarse, with another heave motion."""
+    text = (ROOT / "input" / "paper_case1.inp").read_text()
+    text = text.replace("INPUT=paper_cable_section.inc", f"INPUT={INCLUDE}")
+    text = text.replace("ELEMENTS=30", f"ELEMENTS={elements}")
+    text = text.replace("TIME=900.0", f"TIME={duration}")
+    return text.replace("Z, 0.4, 0.658, 0.0", f"Z, {amplitude}, {frequency}, 0.0")
+
+
+def write_decks(folder: Path, n: int = 12, **kw) -> list:
+    folder.mkdir(parents=True, exist_ok=True)
+    decks = []
+    for k in range(n):
+        amp, freq = 0.1 + 0.1 * (k % 4), (0.5, 0.658, 0.8)[k // 4 % 3]
+        path = folder / f"case{k:02d}.inp"
+        path.write_text(cable_deck(amp, freq, **kw))
+        decks.append(path)
+    return decks
+
+
+def run_main(argv) -> int:
+    return batch.main([str(a) for a in argv])
+
+
+def csv_rows(path: Path) -> list:
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def same_values(a, b) -> bool:
+    """Equal bit for bit (nan equal to nan)."""
+    a, b = np.asarray(a), np.asarray(b)
+    if a.dtype.kind == "f":
+        return a.shape == b.shape and bool(np.all((a == b) | (np.isnan(a) & np.isnan(b))))
+    return a.shape == b.shape and bool(np.all(a == b))
+
+
+def assert_same_summary(s1: dict, s2: dict, ignore=TIMING_COLUMNS + ("skipped",)):
+    assert s1["columns"] == s2["columns"]
+    for col in s1["columns"]:
+        if col not in ignore:
+            assert same_values(s1["cases"][col], s2["cases"][col]), col
+    for name in ("envelope", "envelope_nodes"):
+        assert (s1[name] is None) == (s2[name] is None)
+        if s1[name] is not None:
+            for key in s1[name]:
+                assert same_values(s1[name][key], s2[name][key]), (name, key)
+
+
+@pytest.fixture(scope="module")
+def batch12(tmp_path_factory):
+    """12 short cases (12 deck files) run by a batch on 2 local workers."""
+    base = tmp_path_factory.mktemp("batch12")
+    decks = write_decks(base / "decks")
+    out = base / "out"
+    code = run_main([base / "decks" / "case*.inp", "-o", out, "-j", "2", "--rodyn", RODYN])
+    return {"base": base, "decks": decks, "out": out, "code": code}
+
+
+def test_local_batch_equals_lone_runs(batch12, tmp_path):
+    out = batch12["out"]
+    assert batch12["code"] == 0
+    rows = csv_rows(out / "summary.csv")
+    assert len(rows) == 12 and all(r["status"] == "complete" for r in rows)
+    summary = read_summary(out)
+    ids = list(summary["cases"]["id"])
+    assert ids == [f"case{k:02d}" for k in range(12)]
+    log = (out / "batch.log").read_text()
+    for k, deck in enumerate(batch12["decks"]):
+        case = out / ids[k]
+        assert (case / "command.txt").read_text().startswith(f"{RODYN} {deck} -o ")
+        assert f"case {ids[k]}: {RODYN} {deck}" in log
+        lone = tmp_path / ids[k]
+        subprocess.run([RODYN, str(deck), "-o", str(lone), "--quiet"], check=True)
+        scalars = extract_case(lone, DEFAULT_EXTRACT)["scalars"]
+        assert scalars, "nothing extracted"
+        for key, value in scalars.items():
+            assert same_values(summary["cases"][key][k], value), (ids[k], key)
+            text = rows[k][key]
+            assert same_values(float(text) if text else math.nan, value), (ids[k], key)
+    # the fast HDF5 path and rodyn_post's readers agree (all quantities)
+    from rodyn_post.batch_extract import EXTRACT_KEYS, extract_case_readers
+    for folder in (tmp_path / ids[-1], out / ids[0]):
+        fast, slow = extract_case(folder, EXTRACT_KEYS), extract_case_readers(folder,
+                                                                            EXTRACT_KEYS)
+        assert json.dumps(fast, sort_keys=True) == json.dumps(slow, sort_keys=True)
+    # one extreme straight from the lone run's CSV tables
+    ends = csv_rows(tmp_path / ids[-1] / "dynamic_ends.csv")
+    top = max(float(r["tension_N"]) for r in ends if r["end"] == "A")
+    assert summary["cases"]["CABLE.end_A_tension_max_N"][-1] == top
+    elements = csv_rows(tmp_path / ids[-1] / "dynamic_elements.csv")
+    tmax = max(elements, key=lambda r: float(r["effective_tension_N"]))
+    assert summary["cases"]["CABLE.tension_max_N"][-1] == float(tmax["effective_tension_N"])
+    assert summary["cases"]["CABLE.tension_max_t_s"][-1] == float(tmax["time_s"])
+    assert summary["cases"]["CABLE.tension_max_S_m"][-1] == float(tmax["s_m"])
+    # Newton statistics and envelopes are there
+    assert np.all(summary["cases"]["step_iterations"] > 0)
+    env = summary["envelope"]
+    assert set(np.unique(env["case"])) == set(range(12))
+    assert np.all(env["tension_max"] >= env["tension_min"])
+    assert not list(out.glob(".*.lock")) and not list(out.glob(".*.tmp-*"))
+
+
+def test_rerun_skips_complete_cases(batch12, capsys):
+    out = batch12["out"]
+    assert run_main([batch12["base"] / "decks" / "case*.inp", "-o", out, "--rodyn", RODYN,
+                     "--list"]) == 0
+    listed = capsys.readouterr().out.splitlines()
+    assert len(listed) == 12 and all("\tskip (complete)\t" in x for x in listed)
+    before = {p.name: p.stat().st_mtime_ns for p in out.glob("case*/batch_case.json")}
+    assert run_main([batch12["base"] / "decks" / "case*.inp", "-o", out, "-j", "2",
+                     "--rodyn", RODYN, "--no-progress"]) == 0
+    after = {p.name: p.stat().st_mtime_ns for p in out.glob("case*/batch_case.json")}
+    assert before == after
+    assert all(r["skipped"] == "1" for r in csv_rows(out / "summary.csv"))
+
+
+def test_plots_and_bulk_compare(batch12, tmp_path):
+    out = batch12["out"]
+    assert run_main(["plot", out, "--envelope", "tension", "-o", tmp_path / "env.png"]) == 0
+    assert (tmp_path / "env.png").stat().st_size > 1000
+    env = csv_rows(tmp_path / "env.csv")
+    summary = read_summary(out)
+    assert max(float(r["tension_max_N"]) for r in env) == np.max(
+        summary["cases"]["CABLE.tension_max_N"])
+    refdir = tmp_path / "refs"
+    refdir.mkdir()
+    ends = csv_rows(out / "case03" / "dynamic_ends.csv")
+    with open(refdir / "case03.csv", "w") as f:
+        f.write("time [s],tension [kN]\n")
+        for r in ends:
+            if r["end"] == "A":
+                f.write(f"{r['time_s']},{float(r['tension_N']) * 1e-3}\n")
+    (refdir / "nocase.csv").write_text("t,T\n0,1\n1,2\n")
+    code = run_main(["compare", out, refdir, "--at", "A", "--quantity", "end_tension",
+                     "-o", tmp_path / "errors.csv"])
+    rows = {r["id"]: r for r in csv_rows(tmp_path / "errors.csv")}
+    assert code == 4 and rows["nocase"]["status"] == "no case"
+    assert rows["case03"]["status"] == "ok"
+    assert float(rows["case03"]["rel_max_error"]) < 1e-12
+
+
+def test_plot_against_parameter(tmp_path):
+    """A batch from a case table... replaced by a fake summary: plot needs parameters."""
+    from rodyn_post.batch_summary import write_summary
+    entries = []
+    for k in range(6):
+        rec = {"status": "complete", "extract": {"scalars": {"L.tension_max_N": 1e3 * k},
+                                                 "envelope": {}}}
+        entries.append({"id": f"c{k}", "params": {"HS": str(k % 3), "DIR": str(k // 3)},
+                        "record": rec})
+    write_summary(tmp_path, entries, ["HS", "DIR"])
+    assert run_main(["plot", tmp_path, "--y", "tension_max_N", "--x", "HS", "--by",
+                     "DIR", "-o", tmp_path / "p.png"]) == 0
+    assert (tmp_path / "p.png").is_file()
+
+
+def _has_set() -> bool:
+    return bool(RODYN) and batch.rodyn_has_set(RODYN)
+
+
+@pytest.mark.skipif(not _has_set(), reason="this rodyn has no --set (*PARAMETER) yet")
+def test_parameter_grid_equals_lone_runs(tmp_path):
+    deck = tmp_path / "param.inp"
+    text = cable_deck(0.4, 0.658).replace("Z, 0.4, 0.658, 0.0", "Z, <AMP>, <FREQ>, 0.0")
+    deck.write_text(text.replace("*HEADING", "*PARAMETER\nAMP = 0.4\nFREQ = 0.658\n*HEADING"))
+    out = tmp_path / "out"
+    assert run_main([deck, "-o", out, "-j", "2", "--grid", "AMP=0.1,0.2,0.3,0.4",
+                     "--grid", "FREQ=0.5,0.658,0.8", "--rodyn", RODYN]) == 0
+    summary = read_summary(out)
+    assert len(summary["cases"]["id"]) == 12
+    assert summary["cases"]["id"][0] == "AMP=0.1_FREQ=0.5"
+    for k, case_id in enumerate(summary["cases"]["id"]):
+        params = dict(p.split("=") for p in case_id.split("_"))
+        lone = tmp_path / "lone" / case_id
+        subprocess.run([RODYN, str(deck), "-o", str(lone), "--quiet"]
+                       + [a for n, v in params.items() for a in ("--set", f"{n}={v}")],
+                       check=True)
+        for key, value in extract_case(lone)["scalars"].items():
+            assert same_values(summary["cases"][key][k], value), (case_id, key)
+
+
+SHIM = r"""#!{python}
+# A stand-in for rodyn's *PARAMETER / --set (until they land): substitutes <NAME> in
+# the deck, writes the expanded deck into the output folder and runs rodyn on it.
+import re, subprocess, sys
+from pathlib import Path
+REAL = {real!r}
+args = sys.argv[1:]
+if "--help" in args:
+    out = subprocess.run([REAL, "--help"], capture_output=True, text=True).stdout
+    print(out + "  --set NAME=VALUE  (test shim)")
+    sys.exit(0)
+sets, rest, k = {{}}, [], 0
+while k < len(args):
+    if args[k] == "--set":
+        name, value = args[k + 1].split("=", 1)
+        sets[name.upper()] = value
+        k += 2
+    else:
+        rest.append(args[k])
+        k += 1
+deck, out = Path(rest[0]), Path(rest[rest.index("-o") + 1])
+values, lines, inside = {{}}, [], False
+for line in deck.read_text().splitlines():
+    if line.startswith("*") and not line.startswith("**"):
+        inside = line.upper().startswith("*PARAMETER")
+        if inside:
+            continue
+    if inside:
+        if "=" in line and not line.startswith("**"):
+            name, value = line.split("=", 1)
+            values[name.strip().upper()] = value.strip()
+        continue
+    m = re.match(r"(\*INCLUDE, INPUT=)(.*)", line, re.I)
+    if m and not Path(m.group(2)).is_absolute():
+        line = m.group(1) + str(deck.parent.resolve() / m.group(2))
+    lines.append(line)
+for name in sets:
+    if name not in values:
+        print(f"{{deck}}: error: --set {{name}}: no such parameter", file=sys.stderr)
+        sys.exit(1)
+values.update(sets)
+text = re.sub(r"<([A-Za-z_][A-Za-z0-9_]*)>", lambda m: values[m.group(1).upper()],
+              "\n".join(lines) + "\n")
+out.mkdir(parents=True, exist_ok=True)
+expanded = out / deck.name
+expanded.write_text(text)
+rest[0] = str(expanded)
+sys.exit(subprocess.run([REAL] + rest).returncode)
+"""
+
+
+@pytest.fixture(scope="module")
+def shim(tmp_path_factory):
+    """An executable that behaves as rodyn with --set (a test stand-in)."""
+    path = tmp_path_factory.mktemp("shim") / "rodyn_set"
+    path.write_text(SHIM.format(python=sys.executable, real=str(Path(RODYN).resolve())))
+    path.chmod(0o755)
+    return str(path)
+
+
+def test_parameter_grid_through_set_shim(shim, tmp_path):
+    """The grid path (ids, --set command lines, hashes) with a stand-in for --set."""
+    deck = tmp_path / "param.inp"
+    text = cable_deck(0.4, 0.658).replace("Z, 0.4, 0.658, 0.0", "Z, <AMP>, <FREQ>, 0.0")
+    deck.write_text(text.replace("*HEADING", "*PARAMETER\nAMP = 0.4\nFREQ = 0.658\n"
+                                             "*HEADING"))
+    out = tmp_path / "out"
+    assert run_main([deck, "-o", out, "-j", "2", "--grid", "AMP=0.1,0.2,0.3,0.4",
+                     "--grid", "FREQ=0.5,0.658,0.8", "--rodyn", shim, "--no-progress"]) == 0
+    summary = read_summary(out)
+    ids = list(summary["cases"]["id"])
+    assert len(ids) == 12 and ids[:2] == ["AMP=0.1_FREQ=0.5", "AMP=0.1_FREQ=0.658"]
+    assert list(summary["cases"]["AMP"][:4]) == [0.1, 0.1, 0.1, 0.2]
+    cmd = (out / ids[5] / "command.txt").read_text()
+    assert cmd.endswith("--set AMP=0.2 --set FREQ=0.8 --quiet\n")
+    for k, case_id in enumerate(ids):
+        params = dict(p.split("=") for p in case_id.split("_"))
+        lone = tmp_path / "lone" / case_id
+        subprocess.run([shim, str(deck), "-o", str(lone), "--quiet"]
+                       + [a for n, v in params.items() for a in ("--set", f"{n}={v}")],
+                       check=True)
+        for key, value in extract_case(lone)["scalars"].items():
+            assert same_values(summary["cases"][key][k], value), (case_id, key)
+    # the same deck changed: every case runs again; a parameter plot from the summary
+    assert run_main(["plot", out, "--y", "CABLE.end_A_tension_max_N", "--x", "AMP",
+                     "--by", "FREQ", "-o", tmp_path / "p.png"]) == 0
+    deck.write_text(deck.read_text().replace("DT=0.1", "DT=0.05"))
+    assert run_main([deck, "-o", out, "-j", "2", "--grid", "AMP=0.1,0.2,0.3,0.4",
+                     "--grid", "FREQ=0.5,0.658,0.8", "--rodyn", shim, "--no-progress"]) == 0
+    assert not any(r["skipped"] == "1" for r in csv_rows(out / "summary.csv"))
+
+
+def test_example_case_table(shim, tmp_path):
+    """input/batch/cable_heave.inp with input/batch/cases.csv (shortened by --set)."""
+    out = tmp_path / "out"
+    code = run_main([ROOT / "input" / "batch" / "cable_heave.inp", "--cases",
+                     ROOT / "input" / "batch" / "cases.csv", "--set", "DURATION=2",
+                     "-o", out, "-j", "2", "--rodyn", shim, "--no-progress"])
+    assert code == 0
+    rows = csv_rows(out / "summary.csv")
+    assert [r["id"] for r in rows][-1] == "a04_f066_fine"
+    assert rows[-1]["ELEMENTS"] == "30" and rows[0]["ELEMENTS"] == ""
+    assert all(r["status"] == "complete" for r in rows)
+
+
+# --- Dask -------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def cluster():
+    distributed = pytest.importorskip("distributed")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(POSTPROC)] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep)
+                           if p]))
+    saved = os.environ.get("PYTHONPATH")
+    os.environ["PYTHONPATH"] = env["PYTHONPATH"]      # the worker processes import us
+    try:
+        with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                      dashboard_address=None, silence_logs=50) as c:
+            yield c
+    finally:
+        if saved is None:
+            os.environ.pop("PYTHONPATH", None)
+        else:
+            os.environ["PYTHONPATH"] = saved
+
+
+def test_dask_local_cluster(batch12, cluster, tmp_path):
+    out = tmp_path / "out"
+    code = run_main([batch12["base"] / "decks" / "case*.inp", "-o", out, "--scheduler",
+                     cluster.scheduler_address, "--rodyn", RODYN, "--no-progress"])
+    assert code == 0
+    assert_same_summary(read_summary(out), read_summary(batch12["out"]))
+
+
+def test_dask_worker_killed_mid_case(cluster, tmp_path):
+    decks = write_decks(tmp_path / "decks", n=4, elements=30, duration=200.0)
+    out = tmp_path / "out"
+    result = {}
+    thread = threading.Thread(target=lambda: result.setdefault("code", run_main(
+        [tmp_path / "decks" / "case*.inp", "-o", out, "--scheduler",
+         cluster.scheduler_address, "--rodyn", RODYN, "--no-progress"])))
+    thread.start()
+    killed = None
+    deadline = time.monotonic() + 30
+    while killed is None and time.monotonic() < deadline:
+        for tmp in out.glob(".case*.tmp-*"):
+            if (tmp / "stderr.txt").exists():
+                killed = (tmp.name.split(".tmp-")[0][1:], int(tmp.name.split("-")[1]))
+                os.kill(killed[1], signal.SIGKILL)
+                break
+        time.sleep(0.05)
+    thread.join(120)
+    assert killed is not None and not thread.is_alive()
+    assert result["code"] == 0
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert len(rows) == 4 and all(r["status"] == "complete" for r in rows.values())
+    record = json.loads((out / killed[0] / "batch_case.json").read_text())
+    assert record["pid"] != killed[1]        # run again by another worker process
+    assert len(decks) == 4
+
+
+# --- failures -----------------------------------------------------------------------------
+
+def test_bad_deck_failing_case_and_time_limit(tmp_path, capsys):
+    decks = write_decks(tmp_path / "decks", n=3)
+    bad = tmp_path / "decks" / "bad.inp"
+    bad.write_text(cable_deck(0.1, 0.5).replace("SECTION=CABLE, LENGTH", "SECTION=NONE, "
+                                                                           "LENGTH"))
+    nan = tmp_path / "decks" / "nan.inp"
+    nan.write_text((ROOT / "tests" / "program" / "dynamic_nan.inp").read_text()
+                   .replace("../../input/paper_cable_section.inc", str(INCLUDE)))
+    slow = tmp_path / "decks" / "slow.inp"
+    slow.write_text(cable_deck(0.1, 0.5, elements=30, duration=5000.0))
+    out = tmp_path / "out"
+    code = run_main(list(decks) + [bad, nan, slow, "-o", out, "-j", "2", "--timeout", "1.5",
+                                   "--rodyn", RODYN, "--no-progress"])
+    assert code == 4
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert [rows[f"case{k:02d}"]["status"] for k in range(3)] == ["complete"] * 3
+    assert rows["bad"]["status"] == "failed" and rows["bad"]["exit_code"] == "1"
+    assert "error" in rows["bad"]["message"] and "NONE" in rows["bad"]["message"]
+    assert rows["nan"]["status"] == "failed" and rows["nan"]["exit_code"] == "2"
+    assert "NaN or Inf" in rows["nan"]["message"]
+    assert rows["nan"]["CABLE.end_A_tension_max_N"] != ""     # frames up to the failure
+    from rodyn_post.batch_extract import extract_case_readers
+    assert json.dumps(extract_case(out / "nan"), sort_keys=True) == json.dumps(
+        extract_case_readers(out / "nan"), sort_keys=True)
+    assert rows["slow"]["status"] == "timeout" and "time limit" in rows["slow"]["message"]
+    assert "3 of 6 cases not complete" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(not Path("/proc/self/cmdline").exists(), reason="needs /proc")
+def test_case_killed_by_a_signal(tmp_path):
+    """A rodyn process killed from outside (not by the time limit): status signal."""
+    decks = write_decks(tmp_path / "decks", n=2, elements=30, duration=5000.0)
+    out = tmp_path / "out"
+    result = {}
+    thread = threading.Thread(target=lambda: result.setdefault("code", run_main(
+        [decks[0], "-o", out, "--rodyn", RODYN, "--no-progress", "--timeout", "60"])))
+    thread.start()
+    victim, deadline = None, time.monotonic() + 30
+    exe = str(Path(RODYN).resolve()).encode()
+    while victim is None and time.monotonic() < deadline:
+        for proc in Path("/proc").iterdir():
+            try:
+                cmd = (proc / "cmdline").read_bytes().split(b"\0")
+            except OSError:
+                continue
+            if cmd and cmd[0] == exe and str(out).encode() in b" ".join(cmd):
+                victim = int(proc.name)
+                break
+        time.sleep(0.05)
+    assert victim is not None
+    os.kill(victim, signal.SIGKILL)
+    thread.join(60)
+    assert result["code"] == 4
+    row = csv_rows(out / "summary.csv")[0]
+    assert row["status"] == "signal" and row["exit_code"] == "-9"
+    assert row["message"].startswith("killed by SIGKILL")
+
+
+def _batch_cmd(decks_glob, out):
+    return [sys.executable, "-m", "rodyn_post.batch", str(decks_glob), "-o", str(out),
+            "-j", "2", "--rodyn", RODYN, "--no-progress"]
+
+
+def test_interrupt_and_resume(tmp_path):
+    write_decks(tmp_path / "decks", n=12, elements=30, duration=40.0)
+    pattern = tmp_path / "decks" / "case*.inp"
+    env = dict(os.environ, PYTHONPATH=str(POSTPROC))
+    out = tmp_path / "out"
+    proc = subprocess.Popen(_batch_cmd(pattern, out), env=env, stderr=subprocess.PIPE,
+                            stdout=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    while len(list(out.glob("case*/batch_case.json"))) < 3 and time.monotonic() < deadline:
+        time.sleep(0.02)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    finished = {p.parent.name: p.stat().st_mtime_ns for p in out.glob("case*/batch_case.json")}
+    assert 3 <= len(finished) < 12
+    assert not list(out.glob(".*.tmp-*")) and not list(out.glob(".*.lock"))
+    rows = csv_rows(out / "summary.csv")
+    assert sum(r["status"] == "not run" for r in rows) == 12 - len(finished)
+    done = subprocess.run(_batch_cmd(pattern, out), env=env, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    for name, mtime in finished.items():
+        assert (out / name / "batch_case.json").stat().st_mtime_ns == mtime, name
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert {k for k, r in rows.items() if r["skipped"] == "1"} == set(finished)
+    whole = tmp_path / "whole"
+    assert subprocess.run(_batch_cmd(pattern, whole), env=env).returncode == 0
+    assert_same_summary(read_summary(out), read_summary(whole))
+
+
+def test_sigterm_stops_like_ctrl_c(tmp_path):
+    write_decks(tmp_path / "decks", n=6, elements=30, duration=40.0)
+    out = tmp_path / "out"
+    proc = subprocess.Popen(_batch_cmd(tmp_path / "decks" / "case*.inp", out),
+                            env=dict(os.environ, PYTHONPATH=str(POSTPROC)),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not list(out.glob("case*/batch_case.json")) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    proc.terminate()
+    assert proc.wait(timeout=60) == 130
+    assert not list(out.glob(".*.tmp-*")) and not list(out.glob(".*.lock"))
+    assert any(r["status"] == "not run" for r in csv_rows(out / "summary.csv"))
+
+
+# --- bad input ----------------------------------------------------------------------------
+
+PARAM_DECK = "*PARAMETER\nAMP = 0.4\n** a comment\nFREQ = 0.658\n*HEADING\nx\n"
+
+
+def _bad(argv, capsys) -> str:
+    code = run_main(argv)
+    err = capsys.readouterr().err.strip()
+    assert code == 1, err
+    assert len(err.splitlines()) == 1, err
+    return err
+
+
+def test_bad_input(tmp_path, capsys):
+    deck = tmp_path / "param.inp"
+    deck.write_text(PARAM_DECK)
+    out = tmp_path / "out"
+    table = tmp_path / "cases.csv"
+    table.write_text("id,AMP,DEPTH\nc1,0.1,100\nc2,0.2,200\n")
+    err = _bad([deck, "--cases", table, "-o", out, "--rodyn", RODYN], capsys)
+    assert f"{table}:2" in err and "DEPTH" in err
+    table.write_text("id,AMP\nc1,0.1\nc2,0.2\nc1,0.3\n")
+    err = _bad([deck, "--cases", table, "-o", out, "--rodyn", RODYN], capsys)
+    assert f"{table}:4" in err and "duplicate case id 'c1'" in err
+    err = _bad([deck, "--grid", "AMP=1,2", "--grid", "NOPE=3", "-o", out, "--rodyn",
+                RODYN], capsys)
+    assert "NOPE" in err and str(deck) in err
+    table.write_text("id,AMP\nsummary.csv,0.1\n")
+    err = _bad([deck, "--cases", table, "-o", out, "--rodyn", RODYN], capsys)
+    assert f"{table}:2" in err and "its own files" in err
+    err = _bad([tmp_path / "missing.inp", "-o", out, "--rodyn", RODYN], capsys)
+    assert "missing.inp: no such deck" in err
+    good = write_decks(tmp_path / "decks", n=1)[0]
+    err = _bad([good, "-o", out, "--scheduler", "tcp://127.0.0.1:1", "--connect-timeout",
+                "1", "--rodyn", RODYN], capsys)
+    assert "tcp://127.0.0.1:1" in err
+    assert not out.exists() or not list(out.iterdir())
+
+
+def test_locked_case_refused_and_stale_lock_taken_over(tmp_path, capsys):
+    import socket
+    good = write_decks(tmp_path / "decks", n=1)[0]
+    out = tmp_path / "out"
+    out.mkdir()
+    lock = out / ".case00.lock"
+    lock.write_text(json.dumps({"pid": os.getpid(), "host": socket.gethostname(),
+                                "batch": "other", "time": "now"}))
+    err = _bad([good, "-o", out, "--rodyn", RODYN], capsys)
+    assert "being written by another batch" in err and f"pid {os.getpid()}" in err
+    assert not (out / "case00").exists()
+    dead = subprocess.Popen(["true"])
+    dead.wait()
+    lock.write_text(json.dumps({"pid": dead.pid, "host": socket.gethostname(),
+                                "batch": "other", "time": "now"}))
+    assert run_main([good, "-o", out, "--rodyn", RODYN, "--no-progress"]) == 0
+    assert not lock.exists()
+
+
+def test_seabed_and_static_extremes(tmp_path):
+    """A mooring leg on the seabed: touchdown range and seabed force, dynamic (short
+    surge) and static (a deck without *DYNAMIC: no times)."""
+    decks = tmp_path / "decks"
+    decks.mkdir()
+    inc = ROOT / "input" / "mooring_leg_section.inc"
+    for name, src in (("surge", "mooring_surge.inp"), ("static", "mooring_catenary.inp")):
+        text = (ROOT / "input" / src).read_text().replace("ELEMENTS=120", "ELEMENTS=30")
+        text = text.replace("TIME=120.0", "TIME=3.0")
+        (decks / f"{name}.inp").write_text(text.replace("INPUT=mooring_leg_section.inc",
+                                                        f"INPUT={inc}"))
+    out = tmp_path / "out"
+    assert run_main([decks / "*.inp", "-o", out, "--rodyn", RODYN, "--no-progress",
+                     "--extract", "all"]) == 0
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    lines = csv_rows(out / "surge" / "dynamic_lines.csv")
+    td = [float(r["touchdown_s_m"]) for r in lines]
+    assert float(rows["surge"]["LEG.touchdown_min_S_m"]) == min(td)
+    assert float(rows["surge"]["LEG.touchdown_max_S_m"]) == max(td)
+    assert float(rows["surge"]["LEG.seabed_normal_max_N_per_m"]) > 0
+    assert rows["static"]["LEG.tension_max_t_s"] == ""           # no time in statics
+    assert float(rows["static"]["LEG.touchdown_min_S_m"]) > 0
+    from rodyn_post.batch_extract import EXTRACT_KEYS, extract_case_readers
+    for case in ("surge", "static"):
+        fast = extract_case(out / case, EXTRACT_KEYS)
+        slow = extract_case_readers(out / case, EXTRACT_KEYS)
+        assert json.dumps(fast, sort_keys=True) == json.dumps(slow, sort_keys=True)
+    assert run_main(["plot", out, "--envelope", "seabed_normal", "-o",
+                     tmp_path / "sb.png"]) == 0
+
+
+def test_deck_parameters_hash_and_ids(tmp_path):
+    from rodyn_post.batch_cases import case_hash, deck_parameters, grid_cases
+    inc = tmp_path / "sub" / "params.inc"
+    inc.parent.mkdir()
+    inc.write_text("*PARAMETER\nDEPTH = 100.0\n** HIDDEN = 1\n*SECTION, NAME=X\nNOT = 2\n")
+    deck = tmp_path / "deck.inp"
+    deck.write_text("** header\n*Parameter\n  amp = 0.4\nFREQ=2*<AMP>\n"
+                    "*INCLUDE, INPUT=sub/params.inc\n*HEADING\nx\n")
+    assert deck_parameters(deck) == {"AMP": "0.4", "FREQ": "2*<AMP>", "DEPTH": "100.0"}
+    h0 = case_hash(deck, {"AMP": "1"})
+    assert h0 == case_hash(deck, {"AMP": "1"}) != case_hash(deck, {"AMP": "2"})
+    inc.write_text(inc.read_text().replace("100.0", "200.0"))
+    assert case_hash(deck, {"AMP": "1"}) != h0          # an include changed
+    cases = grid_cases(["DIR=N/E,S W", "amp=1"], deck, {"DEPTH": "5"})
+    assert [c.id for c in cases] == ["DIR=N_E_amp=1", "DIR=S_W_amp=1"]
+    assert cases[0].params == {"DEPTH": "5", "DIR": "N/E", "amp": "1"}
