@@ -24,7 +24,7 @@ if ((${#missing[@]})); then
   $sudo_cmd apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-if ! python3 -c 'import numpy, matplotlib, scipy, h5py, pytest' >/dev/null 2>&1; then
+if ! python3 -c 'import numpy, matplotlib, scipy, h5py, pytest, distributed' >/dev/null 2>&1; then
   echo "setup: installing Python packages from postproc/requirements.txt"
   python3 -m pip install -q -r postproc/requirements.txt 2>/dev/null ||
     python3 -m pip install -q --break-system-packages -r postproc/requirements.txt

@@ -45,6 +45,8 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 from typing import Dict, List, Optional
 
+from .errors import EXIT_OK, EXIT_USAGE, EXIT_WRITE
+from .cli import run as cli_run
 from .batch_cases import (BatchInputError, Case, case_hash, cases_from_decks,
                           check_declared, decks_from_patterns, grid_cases,
                           merge_params, parse_assignment, read_case_table)
@@ -55,8 +57,8 @@ from .batch_run import (RESULT_FILE, CaseSpec, Running, acquire_lock, clean_temp
                         release_lock, run_case)
 
 PROG = "rodyn-batch"
-EXIT_OK, EXIT_BAD_INPUT, EXIT_USAGE, EXIT_WRITE, EXIT_CASES_FAILED = 0, 1, 2, 3, 4
-EXIT_INTERRUPTED = 130
+EXIT_CASES_FAILED = 4      # some cases did not complete (the batch itself ran)
+EXIT_INTERRUPTED = 130     # Ctrl-C or SIGTERM: finished cases kept
 STATE_FILE = "batch_cases.json"
 LOG_FILE = "batch.log"
 SUBCOMMANDS = ("run", "summary", "plot", "compare")
@@ -520,35 +522,30 @@ def rebuild_summary(args) -> int:
 
 
 def main(argv=None) -> int:
-    """The command line; returns the exit status."""
-    from .cli import WriteError
-    from .quantities import InputError
-    from .results import RodynResultsError
-
+    """The command line; returns the exit status (rodyn_post.cli.run turns the known
+    failures, bad input and unwritable outputs, into a one-line message and status)."""
     argv = list(sys.argv[1:] if argv is None else argv)
     command = argv.pop(0) if argv and argv[0] in SUBCOMMANDS else "run"
-    try:
-        if command == "run":
-            return run_batch(_run_parser().parse_args(argv))
-        if command == "summary":
-            return rebuild_summary(_summary_parser().parse_args(argv))
-        if command == "plot":
-            from .batch_plot import main as plot_main
-            return plot_main(argv)
-        from .batch_compare import main as compare_main
-        return compare_main(argv)
-    except (BatchInputError, InputError, RodynResultsError) as exc:
-        print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except WriteError as exc:
-        print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
-        return EXIT_WRITE
-    except ValueError as exc:      # --extract and other option values
-        print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
-        return EXIT_USAGE
-    except OSError as exc:
-        print(f"{PROG}: error: {exc.filename or ''}: {exc.strerror or exc}", file=sys.stderr)
-        return EXIT_WRITE
+
+    def body():
+        try:
+            if command == "run":
+                return run_batch(_run_parser().parse_args(argv))
+            if command == "summary":
+                return rebuild_summary(_summary_parser().parse_args(argv))
+            if command == "plot":
+                from .batch_plot import main as plot_main
+                return plot_main(argv)
+            from .batch_compare import main as compare_main
+            return compare_main(argv)
+        except ValueError as exc:      # --extract and other option values
+            print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+            return EXIT_USAGE
+        except OSError as exc:
+            print(f"{PROG}: error: {exc.filename or ''}: {exc.strerror or exc}",
+                  file=sys.stderr)
+            return EXIT_WRITE
+    return cli_run(PROG, body)
 
 
 if __name__ == "__main__":

@@ -26,11 +26,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Dict, List, Optional, Sequence, Tuple
 
+from .errors import InputError
+
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _UNSAFE = re.compile(r"[^A-Za-z0-9._=+-]")
 
 
-class BatchInputError(Exception):
+class BatchInputError(InputError):
     """Bad input of a batch (case table, grid, decks, scheduler): exit status 1."""
 
 

@@ -1,10 +1,9 @@
 """What a batch keeps of each case: the extremes and the envelopes along the lines.
 
-`extract_case(folder, keys)` reads a case's results once and returns plain numbers:
-a finished dynamic.h5 of the run in status.txt straight with h5py (only the datasets
-used); otherwise (a killed run, CSV tables only, a deck without *DYNAMIC) through
-`load_dynamic` / `load_static` (`extract_case_readers`, which gives the same numbers
-for every folder, as the tests check):
+`extract_case(folder, keys)` reads a case's results once, with rodyn_post's readers
+(`load_dynamic`, which takes dynamic.h5 or, for a killed run or CSV tables only, the
+CSV files; `load_static` for a deck without *DYNAMIC: the file formats are read in
+one place), and returns plain numbers:
 
 - `scalars`: {column: float}, columns named `<LINE>.<quantity>_<stat>[_t_s|_S_m]`
   in SI (docs/batch.md lists them), e.g. `CABLE.tension_max_N`, its time
@@ -134,101 +133,10 @@ def _line_arrays(line, dynamic: bool) -> dict:
             "touchdown_s": np.array([line.touchdown_s], dtype=float)}
 
 
-class _LazyArrays(dict):
-    """The arrays of `_line_arrays` computed on first use (the fast path reads only
-    the datasets the extraction asks for)."""
-
-    def __init__(self, makers: dict):
-        super().__init__()
-        self.makers = makers
-
-    def __missing__(self, key):
-        value = self[key] = self.makers[key]()
-        return value
-
-
-def _fast_h5(folder: Path):
-    """(time, [(name, gp_s, node_s, end_held, arrays)], has_seabed, info, file) read
-    straight from a finished dynamic.h5 that belongs to the run status.txt describes
-    (the same step counters), only the datasets used; None otherwise (the caller then
-    uses load_dynamic, which also reads killed runs and CSV-only folders). The file is
-    returned open: close it after use."""
-    import h5py
-
-    path = Path(folder) / "dynamic.h5"
-    if not path.is_file():
-        return None
-    try:
-        status = _read_key_values(Path(folder) / "status.txt")
-        f = h5py.File(path, "r", locking=False)
-    except (RodynResultsError, OSError, UnicodeDecodeError):
-        return None
-    try:
-        dyn = f["dynamic"]
-        counters = ("steps", "step_iterations", "step_cutbacks")
-        if any(k not in dyn.attrs or k not in status
-               or int(dyn.attrs[k]) != int(status[k]) for k in counters):
-            f.close()
-            return None
-        time = np.asarray(dyn["time"][...], dtype=float)
-        lines = []
-        for key, g in dyn.items():
-            if key in ("time", "log"):
-                continue
-
-            def read(name, g=g):
-                return np.asarray(g[name][...], dtype=float)
-
-            def optional(name, default, g=g):
-                return read(name) if name in g else default()
-
-            makers = {
-                "tension": lambda read=read: read("effective_tension"),
-                "moment": lambda read=read: np.hypot(read("moment_1"), read("moment_2")),
-                "curvature": lambda read=read: read("bending_curvature"),
-                "torque": lambda read=read: read("torque"),
-                "end_tension": lambda read=read: read("end_tension"),
-            }
-            arrays = _LazyArrays(makers)
-            nn = g["node_s"].shape[0]
-            makers["wall_tension"] = lambda o=optional, a=arrays: o(
-                "wall_tension", lambda: a["tension"])
-            makers["seabed_normal"] = lambda o=optional, n=nn: o(
-                "seabed_normal", lambda: np.zeros((len(time), n)))
-            makers["touchdown_s"] = lambda o=optional: o(
-                "touchdown_s", lambda: np.full(len(time), -1.0))
-            lines.append((str(g.attrs["name"]), read("gp_s"), read("node_s"),
-                          np.asarray(g["reactions"].attrs["end_held"], dtype=bool), arrays))
-        env = f.get("environment")
-        has_seabed = bool(env is not None and int(env.attrs.get("seabed", 0)))
-        info = {"frames": int(len(time)), "dynamic": True}
-        log_it = dyn["log"]["iterations"]
-        if log_it.shape[0]:
-            info["max_step_iterations"] = int(np.max(log_it[...]))
-    except (KeyError, OSError, ValueError, TypeError):
-        f.close()
-        return None
-    return time, lines, has_seabed, info, f
-
-
 def extract_case(folder: Path, keys: Iterable[str] = DEFAULT_EXTRACT) -> dict:
-    """Extremes and envelopes of the results in `folder` (see the module doc).
-    Raises RodynResultsError when there are no readable results.
-
-    A finished dynamic.h5 of the run in status.txt is read straight with h5py, only the
-    datasets used (about 1 ms); anything else (a killed run, CSV only, statics) through
-    load_dynamic / load_static. Both give the same numbers (tested)."""
-    fast = _fast_h5(Path(folder))
-    if fast is not None:
-        time, lines, has_seabed, info, f = fast
-        with f:
-            scalars, envelope = _extract_lines(lines, time, has_seabed, tuple(keys))
-        return {"scalars": scalars, "envelope": envelope, "info": info}
-    return extract_case_readers(folder, keys)
-
-
-def extract_case_readers(folder: Path, keys: Iterable[str] = DEFAULT_EXTRACT) -> dict:
-    """extract_case through rodyn_post's readers (load_dynamic / load_static)."""
+    """Extremes and envelopes of the results in `folder` (see the module doc), read
+    with rodyn_post's readers (load_dynamic, or load_static for a deck without
+    *DYNAMIC). Raises RodynResultsError when there are no readable results."""
     keys = tuple(keys)
     results, dynamic = _load(Path(folder))
     if results is None:
