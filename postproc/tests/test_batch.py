@@ -184,11 +184,6 @@ def test_plot_against_parameter(tmp_path):
     assert (tmp_path / "p.png").is_file()
 
 
-def _has_set() -> bool:
-    return bool(RODYN) and batch.rodyn_has_set(RODYN)
-
-
-@pytest.mark.skipif(not _has_set(), reason="this rodyn has no --set (*PARAMETER) yet")
 def test_parameter_grid_equals_lone_runs(tmp_path):
     deck = tmp_path / "param.inp"
     text = cable_deck(0.4, 0.658).replace("Z, 0.4, 0.658, 0.0", "Z, <AMP>, <FREQ>, 0.0")
@@ -209,104 +204,39 @@ def test_parameter_grid_equals_lone_runs(tmp_path):
             assert same_values(summary["cases"][key][k], value), (case_id, key)
 
 
-SHIM = r"""#!{python}
-# A stand-in for rodyn's *PARAMETER / --set (until they land): substitutes <NAME> in
-# the deck, writes the expanded deck into the output folder and runs rodyn on it.
-import re, subprocess, sys
-from pathlib import Path
-REAL = {real!r}
-args = sys.argv[1:]
-if "--help" in args:
-    out = subprocess.run([REAL, "--help"], capture_output=True, text=True).stdout
-    print(out + "  --set NAME=VALUE  (test shim)")
-    sys.exit(0)
-sets, rest, k = {{}}, [], 0
-while k < len(args):
-    if args[k] == "--set":
-        name, value = args[k + 1].split("=", 1)
-        sets[name.upper()] = value
-        k += 2
-    else:
-        rest.append(args[k])
-        k += 1
-deck, out = Path(rest[0]), Path(rest[rest.index("-o") + 1])
-values, lines, inside = {{}}, [], False
-for line in deck.read_text().splitlines():
-    if line.startswith("*") and not line.startswith("**"):
-        inside = line.upper().startswith("*PARAMETER")
-        if inside:
-            continue
-    if inside:
-        if "=" in line and not line.startswith("**"):
-            name, value = line.split("=", 1)
-            values[name.strip().upper()] = value.strip()
-        continue
-    m = re.match(r"(\*INCLUDE, INPUT=)(.*)", line, re.I)
-    if m and not Path(m.group(2)).is_absolute():
-        line = m.group(1) + str(deck.parent.resolve() / m.group(2))
-    lines.append(line)
-for name in sets:
-    if name not in values:
-        print(f"{{deck}}: error: --set {{name}}: no such parameter", file=sys.stderr)
-        sys.exit(1)
-values.update(sets)
-text = re.sub(r"<([A-Za-z_][A-Za-z0-9_]*)>", lambda m: values[m.group(1).upper()],
-              "\n".join(lines) + "\n")
-out.mkdir(parents=True, exist_ok=True)
-expanded = out / deck.name
-expanded.write_text(text)
-rest[0] = str(expanded)
-sys.exit(subprocess.run([REAL] + rest).returncode)
-"""
-
-
-@pytest.fixture(scope="module")
-def shim(tmp_path_factory):
-    """An executable that behaves as rodyn with --set (a test stand-in)."""
-    path = tmp_path_factory.mktemp("shim") / "rodyn_set"
-    path.write_text(SHIM.format(python=sys.executable, real=str(Path(RODYN).resolve())))
-    path.chmod(0o755)
-    return str(path)
-
-
-def test_parameter_grid_through_set_shim(shim, tmp_path):
-    """The grid path (ids, --set command lines, hashes) with a stand-in for --set."""
+def test_parameter_grid_ids_commands_and_rerun(tmp_path):
+    """The grid path: ids, parameter columns, --set command lines; a changed deck runs
+    every case again; a parameter plot from the summary."""
     deck = tmp_path / "param.inp"
     text = cable_deck(0.4, 0.658).replace("Z, 0.4, 0.658, 0.0", "Z, <AMP>, <FREQ>, 0.0")
     deck.write_text(text.replace("*HEADING", "*PARAMETER\nAMP = 0.4\nFREQ = 0.658\n"
                                              "*HEADING"))
     out = tmp_path / "out"
-    assert run_main([deck, "-o", out, "-j", "2", "--grid", "AMP=0.1,0.2,0.3,0.4",
-                     "--grid", "FREQ=0.5,0.658,0.8", "--rodyn", shim, "--no-progress"]) == 0
+    grid = ["--grid", "AMP=0.1,0.2,0.3,0.4", "--grid", "FREQ=0.5,0.658,0.8"]
+    assert run_main([deck, "-o", out, "-j", "2", *grid, "--rodyn", RODYN,
+                     "--no-progress"]) == 0
     summary = read_summary(out)
     ids = list(summary["cases"]["id"])
     assert len(ids) == 12 and ids[:2] == ["AMP=0.1_FREQ=0.5", "AMP=0.1_FREQ=0.658"]
     assert list(summary["cases"]["AMP"][:4]) == [0.1, 0.1, 0.1, 0.2]
     cmd = (out / ids[5] / "command.txt").read_text()
     assert cmd.endswith("--set AMP=0.2 --set FREQ=0.8 --quiet\n")
-    for k, case_id in enumerate(ids):
-        params = dict(p.split("=") for p in case_id.split("_"))
-        lone = tmp_path / "lone" / case_id
-        subprocess.run([shim, str(deck), "-o", str(lone), "--quiet"]
-                       + [a for n, v in params.items() for a in ("--set", f"{n}={v}")],
-                       check=True)
-        for key, value in extract_case(lone)["scalars"].items():
-            assert same_values(summary["cases"][key][k], value), (case_id, key)
-    # the same deck changed: every case runs again; a parameter plot from the summary
+    status = (out / ids[5] / "status.txt").read_text()   # rodyn echoes the values used
+    assert "parameter.AMP = 0.2" in status and "parameter.FREQ = 0.8" in status
     assert run_main(["plot", out, "--y", "CABLE.end_A_tension_max_N", "--x", "AMP",
                      "--by", "FREQ", "-o", tmp_path / "p.png"]) == 0
     deck.write_text(deck.read_text().replace("DT=0.1", "DT=0.05"))
-    assert run_main([deck, "-o", out, "-j", "2", "--grid", "AMP=0.1,0.2,0.3,0.4",
-                     "--grid", "FREQ=0.5,0.658,0.8", "--rodyn", shim, "--no-progress"]) == 0
+    assert run_main([deck, "-o", out, "-j", "2", *grid, "--rodyn", RODYN,
+                     "--no-progress"]) == 0
     assert not any(r["skipped"] == "1" for r in csv_rows(out / "summary.csv"))
 
 
-def test_example_case_table(shim, tmp_path):
+def test_example_case_table(tmp_path):
     """input/batch/cable_heave.inp with input/batch/cases.csv (shortened by --set)."""
     out = tmp_path / "out"
     code = run_main([ROOT / "input" / "batch" / "cable_heave.inp", "--cases",
                      ROOT / "input" / "batch" / "cases.csv", "--set", "DURATION=2",
-                     "-o", out, "-j", "2", "--rodyn", shim, "--no-progress"])
+                     "-o", out, "-j", "2", "--rodyn", RODYN, "--no-progress"])
     assert code == 0
     rows = csv_rows(out / "summary.csv")
     assert [r["id"] for r in rows][-1] == "a04_f066_fine"
