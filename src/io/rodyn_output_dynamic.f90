@@ -211,6 +211,11 @@ contains
       w%frames = 0
       w%steps = 0
       w%n_pending = 0
+      w%frames_held = 0
+      w%steps_held = 0
+      w%last_time = 0.0_wp
+      w%failed = .false.
+      w%h5_failed = .false.
       w%flush_time = 0.0_wp
       w%progress = run_summary_t()
       if (present(static_summary)) w%progress = static_summary
