@@ -49,27 +49,46 @@ contains
       type(line_result_t), intent(in) :: lines(:)    !< static results per line
       type(run_summary_t), intent(in) :: summary     !< how the run went
       type(error_t), intent(inout) :: err            !< status
+      ! the files in the order written (after environment.csv, results.h5)
+      character(len=*), parameter :: order(*) = [character(len=20) :: nodes_csv, &
+         elements_csv, reactions_csv, lines_csv, environment_csv, results_h5]
       type(error_t) :: e, e_status
       type(run_summary_t) :: s
+      integer :: k, j
       call outdir_make(dir, e)
       if (has_error(e)) then
          call set_error(err, e%code, e%message)
          return
       end if
       call check_lines(lines, e)
-      if (model%output%csv) then
-         call write_nodes_csv(dir, lines, e)
-         call write_elements_csv(dir, lines, e)
-         call write_reactions_csv(dir, lines, e)
-         call write_lines_csv(dir, lines, e)
-         call output_write_environment(dir, model, e)
-      end if
-      if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
+      k = 0
+      do while (k < size(order) .and. .not. has_error(e))
+         k = k + 1
+         select case (k)
+         case (1)
+            if (model%output%csv) call write_nodes_csv(dir, lines, e)
+         case (2)
+            if (model%output%csv) call write_elements_csv(dir, lines, e)
+         case (3)
+            if (model%output%csv) call write_reactions_csv(dir, lines, e)
+         case (4)
+            if (model%output%csv) call write_lines_csv(dir, lines, e)
+         case (5)
+            if (model%output%csv) call output_write_environment(dir, model, e)
+         case (6)
+            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
+         end select
+      end do
       ! status.txt last, and true: not complete when a file could not be written
       s = summary
       if (has_error(e)) then
          s%complete = .false.
          s%status = e%message
+         ! the file that failed is gone; no older file stands for those not written
+         do j = max(k, 1), size(order)
+            if (merge(model%output%hdf5, model%output%csv, j == size(order))) &
+               call remove_file(path_join(dir, trim(order(j))))
+         end do
       end if
       call output_write_status(dir, s, e_status, deck_file=text_of(model%deck_file), &
                                params=model%parameters)

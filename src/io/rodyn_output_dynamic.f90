@@ -170,6 +170,7 @@ module rodyn_output_dynamic
       integer :: hold_frames = 1                     !< frames held for dynamic.h5 at most
       integer :: frames_held = 0                     !< frames since the last sync
       type(run_summary_t) :: progress                !< what status.txt says while running
+      type(run_summary_t) :: synced                  !< progress as of the last sync
       real(wp) :: static_wall_time = 0.0_wp          !< wall time before open [s]
       integer(i8) :: clock_start = 0_i8              !< system_clock count at open
       integer(i8) :: clock_status = 0_i8             !< count at the last status.txt
@@ -227,6 +228,7 @@ contains
       w%progress%step_iterations = 0
       w%progress%step_tangents = 0
       w%progress%step_cutbacks = 0
+      w%synced = w%progress
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
       w%clock_status = w%clock_start
@@ -352,11 +354,11 @@ contains
       end if
       w%steps = w%steps + 1
       w%steps_held = w%steps_held + 1
-      if (w%steps_held >= log_block) call sync(w, e)
-      if (has_error(e)) call note_failure(w, e)
       w%progress%step_iterations = w%progress%step_iterations + log%iterations
       w%progress%step_tangents = w%progress%step_tangents + log%tangents
       w%progress%step_cutbacks = w%progress%step_cutbacks + log%cutbacks
+      if (w%steps_held >= log_block) call sync(w, e)
+      if (has_error(e)) call note_failure(w, e)
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_step
 
@@ -761,6 +763,7 @@ contains
       w%steps_held = 0
       w%progress%time_reached = w%last_time
       w%progress%steps = w%steps
+      w%synced = w%progress
       if (present(rewrite_status)) then
          if (.not. rewrite_status) return
       end if
@@ -791,8 +794,11 @@ contains
       type(dynamic_writer_t), intent(in) :: w      !< writer (failed)
       type(run_summary_t), intent(inout) :: s      !< summary to adjust
       s%complete = .false.
-      s%time_reached = w%progress%time_reached
-      s%steps = w%progress%steps
+      s%time_reached = w%synced%time_reached
+      s%steps = w%synced%steps
+      s%step_iterations = w%synced%step_iterations
+      s%step_tangents = w%synced%step_tangents
+      s%step_cutbacks = w%synced%step_cutbacks
       if (.not. allocated(s%status)) s%status = w%why
       if (s%status == 'complete' .or. s%status == running) s%status = w%why
    end subroutine as_synced
