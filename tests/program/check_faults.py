@@ -202,7 +202,7 @@ def disk_full(exe, src, work, sizes, big):
              "dynamic": make_deck(src, work, "case1_short.inp", 2.0)}
     if big:      # every size too small: exit 3 each time
         decks = {"static": big_static(src, work),
-                 "dynamic": make_deck(src, work, "case1_40s.inp", 40.0)}
+                 "dynamic": make_deck(src, work, "case1_120s.inp", 120.0)}
     mnt = work / "mnt"
     mnt.mkdir(exist_ok=True)
     probe = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4k", "tmpfs", str(mnt)],
