@@ -19,6 +19,7 @@ program rodyn
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_output, only: output_write_static, output_write_status
+   use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
    use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
    use rodyn_kinds, only: wp
    implicit none
@@ -28,11 +29,17 @@ program rodyn
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit
+      !> POSIX _exit(2): leave without the exit handlers (HDF5's among them).
+      subroutine c_quick_exit(status) bind(c, name='_exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_quick_exit
    end interface
 
    type(cli_options_t) :: opts
    type(error_t) :: err, out_err
    type(model_t) :: model
+   type(outdir_lock_t) :: lock   ! the output folder's lock, released in finish
    type(mesh_t), target :: mesh
    type(state_t), target :: state
    type(static_problem_t) :: prob
@@ -87,7 +94,10 @@ program rodyn
    ! the output folder is made and marked 'running' before any computing: an unwritable
    ! folder fails now, and a run killed midway leaves a status that says so
    summary%status = 'running'
-   call output_write_status(opts%outdir, summary, err, opts%deck, model%parameters)
+   ! one run per output folder: a second run into it is refused here (exit 3)
+   call outdir_lock(opts%outdir, lock, err)
+   if (.not. has_error(err)) call output_write_status(opts%outdir, summary, err, opts%deck, &
+                                                      model%parameters)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
       call finish(err%code)
@@ -156,11 +166,16 @@ contains
       name = scheme_names(k)
    end function scheme_name
 
-   !> Flush and leave with the given exit status (no STOP text on the terminal).
+   !> Release the output folder's lock, flush and leave with the given exit status (no
+   !> STOP text on the terminal). Every file is closed by then; after a failure the
+   !> exit handlers are skipped: HDF5's would try again to flush a file whose close
+   !> failed (a full disk) and crash.
    subroutine finish(code)
       integer, intent(in) :: code !< exit status
+      call outdir_unlock(lock)
       flush (output_unit)
       flush (error_unit)
+      if (code /= stat_ok) call c_quick_exit(int(code, c_int))
       call c_exit(int(code, c_int))
    end subroutine finish
 end program rodyn

@@ -88,7 +88,14 @@ contains
       call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
                          prob%water)
       call dynamic_output_open(writer, dir, model, frame_lines, err)
-      if (has_error(err)) return
+      if (has_error(err)) then
+         ! status.txt says so (it must not keep the static run's complete = true)
+         summary%dynamic = .true.
+         summary%complete = .false.
+         summary%status = err%message
+         call dynamic_output_close(writer, summary, werr)
+         return
+      end if
       call system_clock(clock0, clock_rate)
       clock_last = clock0
       summary%dynamic = .true.

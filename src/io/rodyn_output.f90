@@ -2,14 +2,18 @@
 !> status file. The layout of every file is documented in docs/output.md.
 !>
 !> Every file is first written under a hidden temporary name in the output folder
-!> ('.static_nodes.csv.tmp') and renamed into place only when complete, so a reader
-!> never sees a half-written file. The folder is created (with its parents) if missing.
+!> ('.static_nodes.csv.tmp') and renamed into place only when written whole and closed
+!> without error (rodyn_outfile, which checks every write), so a reader never sees a
+!> half-written file. The folder is created (with its parents) if missing. status.txt
+!> is written last and says complete = true only when every file was written.
 module rodyn_output
-   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_null_char, c_associated
    use rodyn_kinds, only: wp, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_model, only: model_t, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t
+   use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
+      temp_name, commit_rename, remove_file
+   use rodyn_outdir, only: outdir_make
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
@@ -29,40 +33,6 @@ module rodyn_output
    character(len=*), parameter :: status_txt = 'status.txt'
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
 
-   interface
-      !> POSIX mkdir(2).
-      function c_mkdir(path, mode) bind(c, name='mkdir') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: path(*) !< NUL-terminated path
-         integer(c_int), value :: mode                 !< permissions (before umask)
-         integer(c_int) :: r                           !< 0, or -1 on failure
-      end function c_mkdir
-      !> C rename(3): atomic replacement within one file system.
-      function c_rename(old, new) bind(c, name='rename') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: old(*)  !< NUL-terminated source
-         character(kind=c_char), intent(in) :: new(*)  !< NUL-terminated destination
-         integer(c_int) :: r                           !< 0, or -1 on failure
-      end function c_rename
-      !> C remove(3).
-      function c_remove(path) bind(c, name='remove') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: path(*) !< NUL-terminated path
-         integer(c_int) :: r                           !< 0, or -1 on failure
-      end function c_remove
-      !> POSIX opendir(3), used to check that a folder exists.
-      function c_opendir(path) bind(c, name='opendir') result(d)
-         import :: c_char, c_ptr
-         character(kind=c_char), intent(in) :: path(*) !< NUL-terminated path
-         type(c_ptr) :: d                              !< DIR *, null on failure
-      end function c_opendir
-      !> POSIX closedir(3).
-      function c_closedir(d) bind(c, name='closedir') result(r)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: d                       !< DIR * from c_opendir
-         integer(c_int) :: r                           !< 0, or -1 on failure
-      end function c_closedir
-   end interface
 
 contains
 
@@ -79,22 +49,48 @@ contains
       type(line_result_t), intent(in) :: lines(:)    !< static results per line
       type(run_summary_t), intent(in) :: summary     !< how the run went
       type(error_t), intent(inout) :: err            !< status
+      ! the files in the order written (after environment.csv, results.h5)
+      character(len=*), parameter :: order(*) = [character(len=20) :: nodes_csv, &
+         elements_csv, reactions_csv, lines_csv, environment_csv, results_h5]
       type(error_t) :: e, e_status
-      call make_directory(dir, e)
+      type(run_summary_t) :: s
+      integer :: k, j
+      call outdir_make(dir, e)
       if (has_error(e)) then
          call set_error(err, e%code, e%message)
          return
       end if
       call check_lines(lines, e)
-      if (model%output%csv) then
-         call write_nodes_csv(dir, lines, e)
-         call write_elements_csv(dir, lines, e)
-         call write_reactions_csv(dir, lines, e)
-         call write_lines_csv(dir, lines, e)
-         call output_write_environment(dir, model, e)
+      k = 0
+      do while (k < size(order) .and. .not. has_error(e))
+         k = k + 1
+         select case (k)
+         case (1)
+            if (model%output%csv) call write_nodes_csv(dir, lines, e)
+         case (2)
+            if (model%output%csv) call write_elements_csv(dir, lines, e)
+         case (3)
+            if (model%output%csv) call write_reactions_csv(dir, lines, e)
+         case (4)
+            if (model%output%csv) call write_lines_csv(dir, lines, e)
+         case (5)
+            if (model%output%csv) call output_write_environment(dir, model, e)
+         case (6)
+            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
+         end select
+      end do
+      ! status.txt last, and true: not complete when a file could not be written
+      s = summary
+      if (has_error(e)) then
+         s%complete = .false.
+         s%status = e%message
+         ! the file that failed is gone; no older file stands for those not written
+         do j = max(k, 1), size(order)
+            if (merge(model%output%hdf5, model%output%csv, j == size(order))) &
+               call remove_file(path_join(dir, trim(order(j))))
+         end do
       end if
-      if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
-      call output_write_status(dir, summary, e_status, deck_file=text_of(model%deck_file), &
+      call output_write_status(dir, s, e_status, deck_file=text_of(model%deck_file), &
                                params=model%parameters)
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (has_error(e_status)) call set_error(err, e_status%code, e_status%message)
@@ -112,45 +108,53 @@ contains
       character(len=*), intent(in), optional :: deck_file !< path of the deck
       type(parameter_value_t), intent(in), optional :: params(:) !< deck parameters used
       type(error_t) :: e
-      integer :: u, ios, k
-      character(len=512) :: msg
-      call make_directory(dir, e)
-      call open_temp(dir, status_txt, u, e)
-      if (.not. has_error(e)) then
-         ios = 0
-         msg = ''
-         call put_line(u, 'complete = '//trim(merge('true ', 'false', summary%complete)), &
-            ios, msg)
-         call put_line(u, 'status = '//one_line(status_of(summary)), ios, msg)
-         call put_line(u, 'load_factor = '//real_str(summary%load_factor), ios, msg)
-         call put_line(u, 'increments = '//int_str(summary%increments), ios, msg)
-         call put_line(u, 'iterations = '//int_str(summary%iterations), ios, msg)
-         call put_line(u, 'cutbacks = '//int_str(summary%cutbacks), ios, msg)
-         call put_line(u, 'wall_time_s = '//real_str(summary%wall_time), ios, msg)
-         if (summary%dynamic) then
-            call put_line(u, 'dynamic = true', ios, msg)
-            call put_line(u, 'time_reached_s = '//real_str(summary%time_reached), ios, msg)
-            call put_line(u, 'steps = '//int_str(summary%steps), ios, msg)
-            call put_line(u, 'step_iterations = '//int_str(summary%step_iterations), ios, &
-               msg)
-            call put_line(u, 'step_tangents = '//int_str(summary%step_tangents), ios, msg)
-            call put_line(u, 'step_cutbacks = '//int_str(summary%step_cutbacks), ios, msg)
+      type(out_file_t) :: f
+      integer :: k, attempt
+      call outdir_make(dir, e)
+      do attempt = 1, 2
+         if (attempt == 2) then
+            ! a full disk: the old status.txt goes first, to make room for the new one
+            call remove_file(path_join(dir, status_txt))
+            e = error_t()
          end if
-         call put_line(u, 'rodyn_version = '//rodyn_version, ios, msg)
-         if (present(deck_file)) then
-            call put_line(u, 'deck = '//one_line(deck_file), ios, msg)
-         else
-            call put_line(u, 'deck = ', ios, msg)
+         call outfile_create(f, dir, status_txt, e)
+         if (.not. has_error(e)) then
+            call outfile_put(f, 'complete = '//trim(merge('true ', 'false', summary%complete)))
+            call outfile_put(f, 'status = '//one_line(status_of(summary)))
+            call outfile_put(f, 'load_factor = '//real_str(summary%load_factor))
+            call outfile_put(f, 'increments = '//int_str(summary%increments))
+            call outfile_put(f, 'iterations = '//int_str(summary%iterations))
+            call outfile_put(f, 'cutbacks = '//int_str(summary%cutbacks))
+            call outfile_put(f, 'wall_time_s = '//real_str(summary%wall_time))
+            if (summary%dynamic) then
+               call outfile_put(f, 'dynamic = true')
+               call outfile_put(f, 'time_reached_s = '//real_str(summary%time_reached))
+               call outfile_put(f, 'steps = '//int_str(summary%steps))
+               call outfile_put(f, 'step_iterations = '//int_str(summary%step_iterations))
+               call outfile_put(f, 'step_tangents = '//int_str(summary%step_tangents))
+               call outfile_put(f, 'step_cutbacks = '//int_str(summary%step_cutbacks))
+            end if
+            call outfile_put(f, 'rodyn_version = '//rodyn_version)
+            if (present(deck_file)) then
+               call outfile_put(f, 'deck = '//one_line(deck_file))
+            else
+               call outfile_put(f, 'deck = ')
+            end if
+            if (present(params)) then
+               do k = 1, size(params)
+                  call outfile_put(f, 'parameter.'//params(k)%name//' = '// &
+                     one_line(params(k)%text))
+               end do
+            end if
+            call outfile_commit(f, e)
          end if
-         if (present(params)) then
-            do k = 1, size(params)
-               call put_line(u, 'parameter.'//params(k)%name//' = '// &
-                  one_line(params(k)%text), ios, msg)
-            end do
-         end if
-         call commit_temp(dir, status_txt, u, ios, msg, e)
+         if (.not. has_error(e)) exit
+      end do
+      if (has_error(e)) then
+         ! no status.txt rather than one that is not this run's, or not true
+         call remove_file(path_join(dir, status_txt))
+         call set_error(err, e%code, e%message)
       end if
-      if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine output_write_status
 
    !> Write environment.csv into folder `dir` (key, value, unit rows of the sea, current
@@ -162,25 +166,22 @@ contains
       type(model_t), intent(in) :: model          !< model (water, seabed)
       type(error_t), intent(inout) :: err         !< status
       type(env_item_t), allocatable :: items(:)
-      integer :: u, ios, k
-      integer(c_int) :: r
-      character(len=512) :: msg
+      type(out_file_t) :: f
+      integer :: k
       if (has_error(err)) return
       if (.not. model%water%present) then
-         r = c_remove(path_join(dir, environment_csv)//c_null_char)
+         call remove_file(path_join(dir, environment_csv))
          return
       end if
       items = environment_items(model)
-      call open_temp(dir, environment_csv, u, err)
+      call outfile_create(f, dir, environment_csv, err)
       if (has_error(err)) return
-      ios = 0
-      msg = ''
-      call put_line(u, 'key,value,unit', ios, msg)
+      call outfile_put(f, 'key,value,unit')
       do k = 1, size(items)
-         call put_line(u, items(k)%key//','//real_str(items(k)%value)//','// &
-            items(k)%unit, ios, msg)
+         call outfile_put(f, items(k)%key//','//real_str(items(k)%value)//','// &
+            items(k)%unit)
       end do
-      call commit_temp(dir, environment_csv, u, ios, msg, err)
+      call outfile_commit(f, err)
    end subroutine output_write_environment
 
    ! ------------------------------------------------------------------ CSV tables
@@ -192,25 +193,22 @@ contains
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
       real(wp), allocatable :: fn(:), ff(:)
-      integer :: u, ios, i, k
-      character(len=512) :: msg
+      type(out_file_t) :: f
+      integer :: i, k
       if (has_error(err)) return
-      call open_temp(dir, nodes_csv, u, err)
+      call outfile_create(f, dir, nodes_csv, err)
       if (has_error(err)) return
-      ios = 0
-      msg = ''
-      call put_line(u, 'line,node,s_m,x_m,y_m,z_m,seabed_normal_N_per_m,'// &
-         'seabed_friction_N_per_m', ios, msg)
+      call outfile_put(f, 'line,node,s_m,x_m,y_m,z_m,seabed_normal_N_per_m,'// &
+         'seabed_friction_N_per_m')
       do i = 1, size(lines)
          fn = seabed_force_of(lines(i), 1)
          ff = seabed_force_of(lines(i), 2)
          do k = 1, size(lines(i)%node_s)
-            call put_line(u, csv_name(lines(i)%name)//','//int_str(k)//','// &
-               reals_str([lines(i)%node_s(k), lines(i)%node_x(:, k), fn(k), ff(k)]), &
-               ios, msg)
+            call outfile_put(f, csv_name(lines(i)%name)//','//int_str(k)//','// &
+               reals_str([lines(i)%node_s(k), lines(i)%node_x(:, k), fn(k), ff(k)]))
          end do
       end do
-      call commit_temp(dir, nodes_csv, u, ios, msg, err)
+      call outfile_commit(f, err)
    end subroutine write_nodes_csv
 
    !> static_elements.csv: section forces and strains, one row per integration point.
@@ -219,28 +217,26 @@ contains
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
       real(wp), allocatable :: tw(:)
-      integer :: u, ios, i, k
-      character(len=512) :: msg
+      type(out_file_t) :: f
+      integer :: i, k
       if (has_error(err)) return
-      call open_temp(dir, elements_csv, u, err)
+      call outfile_create(f, dir, elements_csv, err)
       if (has_error(err)) return
-      ios = 0
-      msg = ''
-      call put_line(u, 'line,element,point,s_m,effective_tension_N,wall_tension_N,'// &
+      call outfile_put(f, 'line,element,point,s_m,effective_tension_N,wall_tension_N,'// &
          'shear_1_N,shear_2_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_1_per_m,'// &
-         'curvature_2_per_m,twist_per_m,curvature_per_m', ios, msg)
+         'curvature_2_per_m,twist_per_m,curvature_per_m')
       do i = 1, size(lines)
          associate (r => lines(i))
             tw = wall_tension_of(r)
             do k = 1, size(r%gp_s)
-               call put_line(u, csv_name(r%name)//','//int_str(r%gp_element(k))//','// &
+               call outfile_put(f, csv_name(r%name)//','//int_str(r%gp_element(k))//','// &
                   int_str(r%gp_point(k))//','//reals_str([r%gp_s(k), r%tension(k), tw(k), &
                   r%shear(:, k), r%moment(:, k), r%torque(k), r%curvature(:, k), &
-                  hypot(r%curvature(1, k), r%curvature(2, k))]), ios, msg)
+                  hypot(r%curvature(1, k), r%curvature(2, k))]))
             end do
          end associate
       end do
-      call commit_temp(dir, elements_csv, u, ios, msg, err)
+      call outfile_commit(f, err)
    end subroutine write_elements_csv
 
    !> static_reactions.csv: force and moment of each support on the line, global axes.
@@ -249,23 +245,20 @@ contains
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
       character(len=1), parameter :: end_name(2) = ['A', 'B']
-      integer :: u, ios, i, j
-      character(len=512) :: msg
+      type(out_file_t) :: f
+      integer :: i, j
       if (has_error(err)) return
-      call open_temp(dir, reactions_csv, u, err)
+      call outfile_create(f, dir, reactions_csv, err)
       if (has_error(err)) return
-      ios = 0
-      msg = ''
-      call put_line(u, 'line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N', ios, msg)
+      call outfile_put(f, 'line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N')
       do i = 1, size(lines)
          do j = 1, 2
             if (.not. lines(i)%end_held(j)) cycle
-            call put_line(u, csv_name(lines(i)%name)//','//end_name(j)//','// &
-               reals_str([lines(i)%reaction(:, j), norm2(lines(i)%reaction(1:3, j))]), &
-               ios, msg)
+            call outfile_put(f, csv_name(lines(i)%name)//','//end_name(j)//','// &
+               reals_str([lines(i)%reaction(:, j), norm2(lines(i)%reaction(1:3, j))]))
          end do
       end do
-      call commit_temp(dir, reactions_csv, u, ios, msg, err)
+      call outfile_commit(f, err)
    end subroutine write_reactions_csv
 
    !> static_lines.csv: one row per line: unstretched length and touchdown point
@@ -274,21 +267,19 @@ contains
       character(len=*), intent(in) :: dir         !< output folder
       type(line_result_t), intent(in) :: lines(:) !< results
       type(error_t), intent(inout) :: err         !< status
-      integer :: u, ios, i
-      character(len=512) :: msg
+      type(out_file_t) :: f
+      integer :: i
       if (has_error(err)) return
-      call open_temp(dir, lines_csv, u, err)
+      call outfile_create(f, dir, lines_csv, err)
       if (has_error(err)) return
-      ios = 0
-      msg = ''
-      call put_line(u, 'line,length_m,touchdown_s_m', ios, msg)
+      call outfile_put(f, 'line,length_m,touchdown_s_m')
       do i = 1, size(lines)
          associate (r => lines(i))
-            call put_line(u, csv_name(r%name)//','//reals_str([r%node_s(size(r%node_s)), &
-               touchdown_of(r)]), ios, msg)
+            call outfile_put(f, csv_name(r%name)//','//reals_str([r%node_s(size(r%node_s)), &
+               touchdown_of(r)]))
          end associate
       end do
-      call commit_temp(dir, lines_csv, u, ios, msg, err)
+      call outfile_commit(f, err)
    end subroutine write_lines_csv
 
    ! ------------------------------------------------------------------ HDF5
@@ -302,11 +293,10 @@ contains
       type(error_t), intent(inout) :: err         !< status
       type(hdf5_file_t) :: h5
       character(len=:), allocatable :: tmp
-      integer :: i, r
+      integer :: i
       if (has_error(err)) return
-      tmp = path_join(dir, '.'//results_h5//'.tmp')
+      tmp = temp_name(dir, results_h5)
       call hdf5_create_file(h5, tmp, err)
-      if (has_error(err)) return
       call hdf5_write_attribute(h5, '/', 'program', 'rodyn', err)
       call hdf5_write_attribute(h5, '/', 'version', rodyn_version, err)
       call hdf5_write_attribute(h5, '/', 'deck_file', text_of(model%deck_file), err)
@@ -328,12 +318,14 @@ contains
          call write_h5_line(h5, '/static/'//group_name(lines(i)%name, i), lines(i), err)
       end do
       call hdf5_close_file(h5, err)
-      if (.not. has_error(err)) then
-         r = c_rename(tmp//c_null_char, path_join(dir, results_h5)//c_null_char)
-         if (r /= 0) call set_error(err, stat_io, 'output_write_static: cannot rename '''// &
-            tmp//''' to '''//path_join(dir, results_h5)//'''')
+      if (.not. has_error(err)) call commit_rename(tmp, path_join(dir, results_h5), err)
+      if (has_error(err)) then
+         if (index(err%message, path_join(dir, results_h5)//'''') == 0) err%message = &
+            'cannot write '''//path_join(dir, results_h5)//''': '//err%message
+         ! nothing incomplete, nor an older results.h5, next to this run's status.txt
+         call remove_file(tmp)
+         call remove_file(path_join(dir, results_h5))
       end if
-      if (has_error(err)) r = c_remove(tmp//c_null_char)
    end subroutine write_results_h5
 
    !> One line's group: node and integration-point datasets and the reactions.
@@ -423,89 +415,6 @@ contains
          end associate
       end do
    end subroutine check_lines
-
-   !> Create folder `dir` and its parents (mkdir per path component), then check it.
-   subroutine make_directory(dir, err)
-      character(len=*), intent(in) :: dir !< folder path ('' means '.')
-      type(error_t), intent(inout) :: err !< status
-      integer(c_int), parameter :: mode = int(o'777', c_int)
-      character(len=:), allocatable :: d
-      type(c_ptr) :: handle
-      integer :: k
-      integer(c_int) :: r
-      d = trim(dir)
-      if (len(d) == 0) d = '.'
-      do k = 2, len(d) + 1
-         if (k <= len(d)) then
-            if (d(k:k) /= '/') cycle
-         end if
-         if (d(k - 1:k - 1) == '/') cycle
-         r = c_mkdir(d(:k - 1)//c_null_char, mode)  ! fails harmlessly when it exists
-      end do
-      handle = c_opendir(d//c_null_char)
-      if (.not. c_associated(handle)) then
-         call set_error(err, stat_io, 'output: cannot create folder '''//d//'''')
-         return
-      end if
-      r = c_closedir(handle)
-   end subroutine make_directory
-
-   !> Open '<dir>/.<name>.tmp' for writing.
-   subroutine open_temp(dir, name, u, err)
-      character(len=*), intent(in) :: dir  !< output folder
-      character(len=*), intent(in) :: name !< final file name
-      integer, intent(out) :: u            !< unit
-      type(error_t), intent(inout) :: err  !< status
-      integer :: ios
-      character(len=512) :: msg
-      u = -1
-      if (has_error(err)) return
-      open (newunit=u, file=path_join(dir, '.'//name//'.tmp'), status='replace', &
-         action='write', form='formatted', access='sequential', iostat=ios, iomsg=msg)
-      if (ios /= 0) call set_error(err, stat_io, 'output: cannot write '''// &
-         path_join(dir, name)//''': '//trim(msg))
-   end subroutine open_temp
-
-   !> Close the temporary file and rename it into place, or delete it after a failure.
-   subroutine commit_temp(dir, name, u, ios, msg, err)
-      character(len=*), intent(in) :: dir     !< output folder
-      character(len=*), intent(in) :: name    !< final file name
-      integer, intent(in) :: u                !< unit from open_temp
-      integer, intent(inout) :: ios           !< status of the writes so far
-      character(len=*), intent(inout) :: msg  !< message of the failed write
-      type(error_t), intent(inout) :: err     !< status
-      character(len=:), allocatable :: tmp, final
-      integer :: ios2
-      integer(c_int) :: r
-      tmp = path_join(dir, '.'//name//'.tmp')
-      final = path_join(dir, name)
-      if (ios == 0) then
-         close (u, iostat=ios, iomsg=msg)
-      else
-         close (u, status='delete', iostat=ios2)
-      end if
-      if (ios /= 0) then
-         r = c_remove(tmp//c_null_char)
-         call set_error(err, stat_io, 'output: cannot write '''//final//''': '//trim(msg))
-         return
-      end if
-      r = c_rename(tmp//c_null_char, final//c_null_char)
-      if (r /= 0) then
-         r = c_remove(tmp//c_null_char)
-         call set_error(err, stat_io, 'output: cannot rename '''//tmp//''' to '''// &
-            final//'''')
-      end if
-   end subroutine commit_temp
-
-   !> Write one record unless an earlier write failed.
-   subroutine put_line(u, text, ios, msg)
-      integer, intent(in) :: u               !< unit
-      character(len=*), intent(in) :: text   !< record
-      integer, intent(inout) :: ios          !< 0, or the first failure
-      character(len=*), intent(inout) :: msg !< message of the first failure
-      if (ios /= 0) return
-      write (u, '(a)', iostat=ios, iomsg=msg) text
-   end subroutine put_line
 
    ! ------------------------------------------------------------------ text helpers
 

@@ -4,25 +4,25 @@
 !>
 !> Life cycle: dynamic_output_open (after output_write_static has written the static
 !> files), then dynamic_output_step after every time step and dynamic_output_frame at
-!> every output time, in any order, then dynamic_output_close. The files are created
-!> under their final names (truncating older ones) and grow as the run goes; unlike the
-!> static files they are not written under a temporary name.
+!> every output time, in any order, then dynamic_output_close. The CSV tables are
+!> created under their final names (truncating older ones) with their header, and grow
+!> as the run goes; dynamic.h5 is created under a temporary name and renamed into place
+!> once its header and empty datasets are on disk.
 !>
 !> What is on disk when (the flush policy; cost measured in test_output_dynamic.pf):
-!> - CSV tables: the rows of a frame, and the row of a step, are flushed (Fortran FLUSH:
-!>   handed to the operating system) before the call that wrote them returns.
-!> - dynamic.h5: frames are held in memory (hdf5_series_hold, at most frame_block
-!>   frames or hold_bytes) and written as one block per dataset, with the step rows held
-!>   and a flush (H5Fflush), at the first frame, before each rewrite of status.txt, when
-!>   the hold is full (or log_block step rows are), and at close: one extent change and
-!>   one write per dataset for m frames instead of m of each.
-!> - status.txt: rewritten (temporary file + rename) at open, after a frame when at
-!>   least status_interval (1 s) of wall time has passed since the last rewrite, right
-!>   after dynamic.h5 was written up to that frame, with complete = false, status =
-!>   running and how far the run (and the file) got, and at close with the final
-!>   summary. A killed run leaves a status.txt that says it did not finish and where
-!>   dynamic.h5 ends (a rewrite costs ~0.3 ms; one per frame would cost more than the
-!>   frame).
+!> frames and step rows are held in memory (CSV rows as text, rodyn_outfile; dynamic.h5
+!> values with hdf5_series_hold, at most frame_block frames or hold_bytes) and written
+!> together, in a "sync": the CSV rows (write(2), checked), then dynamic.h5 (one block
+!> per dataset, the step rows, H5Fflush), then status.txt (temporary file + rename) with
+!> complete = false, status = running and the time and steps of the last frame synced.
+!> A sync happens at the first frame, after a frame when status_interval (1 s) of wall
+!> time has passed since the last one, when the hold is full (or log_block step rows
+!> are), and at close. So status.txt, the CSV tables and dynamic.h5 hold the same frames
+!> whenever the run is killed (a kill inside a sync can leave the data files one block
+!> ahead of status.txt, never behind it).
+!> On a write failure (a full disk) nothing more is written: the CSV tables are cut back
+!> to their last sync (whole frames), a dynamic.h5 whose write failed is removed, and
+!> status.txt says complete = false, the failure, and the time and steps of that sync.
 !> There is no fsync: the files survive the process being killed, not a machine crash.
 !> HDF5 file format: the default (oldest) one, so that a killed run's file opens
 !> without h5clear (see docs/output.md for what HDF5 allows while the run is live).
@@ -46,6 +46,9 @@ module rodyn_output_dynamic
       hdf5_series_hold, hdf5_series_write_held, &
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment
+   use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
+      outfile_mark, outfile_close, outfile_abort, outfile_pending, temp_name, &
+      commit_rename, remove_file
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
@@ -148,11 +151,16 @@ module rodyn_output_dynamic
       character(len=:), allocatable :: dir           !< output folder
       character(len=:), allocatable :: deck_file     !< deck path, for status.txt
       type(parameter_value_t), allocatable :: params(:) !< deck parameters, for status.txt
-      integer :: u_nodes = -1                        !< unit of dynamic_nodes.csv
-      integer :: u_elements = -1                     !< unit of dynamic_elements.csv
-      integer :: u_ends = -1                         !< unit of dynamic_ends.csv
-      integer :: u_log = -1                          !< unit of dynamic_log.csv
-      integer :: u_lines = -1                        !< unit of dynamic_lines.csv
+      type(out_file_t) :: f_nodes                    !< dynamic_nodes.csv
+      type(out_file_t) :: f_elements                 !< dynamic_elements.csv
+      type(out_file_t) :: f_ends                     !< dynamic_ends.csv
+      type(out_file_t) :: f_log                      !< dynamic_log.csv
+      type(out_file_t) :: f_lines                    !< dynamic_lines.csv
+      logical :: failed = .false.                    !< a write failed: nothing more written
+      logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
+      character(len=:), allocatable :: why           !< the first failure
+      real(wp) :: last_time = 0.0_wp                 !< time of the last frame [s]
+      integer :: steps_held = 0                      !< step rows since the last sync
       type(hdf5_file_t) :: h5                        !< dynamic.h5
       type(hdf5_series_t) :: time                    !< /dynamic/time
       type(hdf5_series_t) :: log(n_log_series)       !< /dynamic/log/*
@@ -160,8 +168,9 @@ module rodyn_output_dynamic
       type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
       integer :: n_pending = 0                       !< rows held in pending
       integer :: hold_frames = 1                     !< frames held for dynamic.h5 at most
-      integer :: frames_held = 0                     !< frames held, not yet in the file
+      integer :: frames_held = 0                     !< frames since the last sync
       type(run_summary_t) :: progress                !< what status.txt says while running
+      type(run_summary_t) :: synced                  !< progress as of the last sync
       real(wp) :: static_wall_time = 0.0_wp          !< wall time before open [s]
       integer(i8) :: clock_start = 0_i8              !< system_clock count at open
       integer(i8) :: clock_status = 0_i8             !< count at the last status.txt
@@ -203,6 +212,11 @@ contains
       w%frames = 0
       w%steps = 0
       w%n_pending = 0
+      w%frames_held = 0
+      w%steps_held = 0
+      w%last_time = 0.0_wp
+      w%failed = .false.
+      w%h5_failed = .false.
       w%flush_time = 0.0_wp
       w%progress = run_summary_t()
       if (present(static_summary)) w%progress = static_summary
@@ -214,6 +228,7 @@ contains
       w%progress%step_iterations = 0
       w%progress%step_tangents = 0
       w%progress%step_cutbacks = 0
+      w%synced = w%progress
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
       w%clock_status = w%clock_start
@@ -230,15 +245,19 @@ contains
          call set_up_line(w%line(i), lines(i))
       end do
       if (w%csv) then
-         call open_csv(w, nodes_csv, nodes_head, w%u_nodes, e)
-         call open_csv(w, elements_csv, elements_head, w%u_elements, e)
-         call open_csv(w, ends_csv, ends_head, w%u_ends, e)
-         call open_csv(w, log_csv, log_head, w%u_log, e)
-         call open_csv(w, lines_csv, lines_head, w%u_lines, e)
+         call open_csv(w, nodes_csv, nodes_head, w%f_nodes, e)
+         call open_csv(w, elements_csv, elements_head, w%f_elements, e)
+         call open_csv(w, ends_csv, ends_head, w%f_ends, e)
+         call open_csv(w, log_csv, log_head, w%f_log, e)
+         call open_csv(w, lines_csv, lines_head, w%f_lines, e)
          call output_write_environment(dir, model, e)
       end if
-      if (w%hdf5) call create_h5(w, model, lines, e)
+      if (w%hdf5 .and. .not. has_error(e)) then
+         call create_h5(w, model, lines, e)
+         if (has_error(e)) w%h5_failed = .true.
+      end if
       if (has_error(e)) then
+         call note_failure(w, e)
          call release_all(w, e)
          call set_error(err, e%code, e%message)
          return
@@ -274,24 +293,29 @@ contains
             return
          end if
       end do
-      if (w%csv) call write_frame_csv(w, time, lines, e)
-      if (w%hdf5) call write_frame_h5(w, time, lines, e)
+      if (w%failed) then
+         call set_error(err, stat_io, w%why)
+         return
+      end if
+      if (w%csv) call write_frame_csv(w, time, lines)
+      if (w%hdf5) then
+         call write_frame_h5(w, time, lines, e)
+         if (has_error(e)) w%h5_failed = .true.
+      end if
       if (.not. has_error(e)) then
          w%frames = w%frames + 1
-         w%progress%time_reached = time
-         w%progress%steps = w%steps
+         w%frames_held = w%frames_held + 1
+         w%last_time = time
          due = seconds_since(w%clock_status) >= status_interval
-         ! dynamic.h5: the frames held are written (and the file flushed) with the first
-         ! frame, when the hold is full, and before status.txt is rewritten
-         if (w%hdf5 .and. (due .or. w%frames == 1 .or. w%frames_held >= w%hold_frames)) &
-            call write_held_h5(w, e)
-         if (due .and. .not. has_error(e)) then
-            w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
-            call output_write_status(w%dir, w%progress, e, w%deck_file, w%params)
-            call system_clock(w%clock_status)
-         end if
+         ! frames, steps and status.txt synced with the first frame, every second, and
+         ! when the hold is full
+         if (due .or. w%frames == 1 .or. w%frames_held >= w%hold_frames .or. &
+             csv_held(w) > hold_bytes) call sync(w, e)
       end if
-      if (has_error(e)) call set_error(err, e%code, e%message)
+      if (has_error(e)) then
+         call note_failure(w, e)
+         call set_error(err, e%code, e%message)
+      end if
    end subroutine dynamic_output_frame
 
    !> Append one time step's row: to dynamic_log.csv at once (flushed), to dynamic.h5
@@ -302,11 +326,14 @@ contains
       type(error_t), intent(inout) :: err         !< status
       type(error_t) :: e
       character(len=row_len) :: row
-      character(len=512) :: msg
-      integer :: n, ios
+      integer :: n
       if (has_error(err)) return
       if (.not. w%is_open) then
          call set_error(err, stat_io, 'dynamic_output_step: the writer is not open')
+         return
+      end if
+      if (w%failed) then
+         call set_error(err, stat_io, w%why)
          return
       end if
       if (w%csv) then
@@ -319,44 +346,55 @@ contains
          call put_reals(row, n, [log%kinetic, log%strain, log%gravity, log%external_work, &
             log%damping_work, log%hydro_work, log%seabed_work, log%total, log%momentum, &
             log%angular_momentum])
-         write (w%u_log, '(a)', iostat=ios, iomsg=msg) row(:n)
-         if (ios == 0) call flush_unit(w, w%u_log, ios, msg)
-         if (ios /= 0) call set_error(e, stat_io, 'dynamic_output_step: cannot write '''// &
-            path_join(w%dir, log_csv)//''': '//trim(msg))
+         call outfile_put(w%f_log, row(:n))
       end if
       if (w%hdf5) then
          w%n_pending = w%n_pending + 1
          w%pending(w%n_pending) = log
-         if (w%n_pending == log_block) call write_held_h5(w, e)
       end if
       w%steps = w%steps + 1
+      w%steps_held = w%steps_held + 1
       w%progress%step_iterations = w%progress%step_iterations + log%iterations
       w%progress%step_tangents = w%progress%step_tangents + log%tangents
       w%progress%step_cutbacks = w%progress%step_cutbacks + log%cutbacks
+      if (w%steps_held >= log_block) call sync(w, e)
+      if (has_error(e)) call note_failure(w, e)
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_step
 
-   !> Finish the run's output: write the step rows still held and the final attributes
-   !> of dynamic.h5 (complete, status, steps, time reached, ...), close every file and
-   !> rewrite status.txt from `summary` with the dynamic keys. Acts even when err
+   !> Finish the run's output: write everything still held (a last sync), the final
+   !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
+   !> file and rewrite status.txt from `summary` with the dynamic keys. Acts even when err
    !> already holds an error (a failed run still closes its files); an output failure
-   !> is then recorded only if err was clear. Does nothing for a writer never opened.
+   !> is then recorded only if err was clear. After a write failure status.txt gives the
+   !> time and steps of the last sync (what the files hold) and complete = false; a
+   !> dynamic.h5 whose write failed is removed. Does nothing for a writer never opened.
    subroutine dynamic_output_close(w, summary, err)
       type(dynamic_writer_t), intent(inout) :: w   !< writer (closed on return)
       type(run_summary_t), intent(in) :: summary   !< how the run went
       type(error_t), intent(inout) :: err          !< status
       type(run_summary_t) :: s
-      type(error_t) :: e
+      type(error_t) :: e, eh
       s = summary
       s%dynamic = .true.
-      if (w%is_open .and. w%hdf5) then
-         call write_held_h5(w, e)
-         call write_final_attributes(w, s, e)
+      if (w%is_open .and. .not. w%failed) then
+         call sync(w, e, rewrite_status=.false.)
+         if (has_error(e)) call note_failure(w, e)
+      end if
+      if (w%failed) call as_synced(w, s)
+      if (w%is_open .and. w%hdf5 .and. .not. w%h5_failed) then
+         call write_final_attributes(w, s, eh)
+         if (has_error(eh)) then
+            w%h5_failed = .true.
+            call note_failure(w, eh)
+         end if
       end if
       call release_all(w, e)
+      if (w%failed) call as_synced(w, s)
       if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file), &
                                                      w%params)
       if (has_error(e)) call set_error(err, e%code, e%message)
+      if (w%failed) call set_error(err, stat_io, w%why)
    end subroutine dynamic_output_close
 
    ! ------------------------------------------------------------------ set-up
@@ -393,27 +431,19 @@ contains
       lo%line_head%s = ','//csv_name(r%name)
    end subroutine set_up_line
 
-   !> Create (truncate) one CSV table and write its header.
-   subroutine open_csv(w, name, header, u, err)
+   !> Create (truncate) one CSV table and write its header (flushed: a table of no frame).
+   subroutine open_csv(w, name, header, f, err)
       type(dynamic_writer_t), intent(inout) :: w  !< writer (folder)
       character(len=*), intent(in) :: name        !< file name
       character(len=*), intent(in) :: header      !< header row
-      integer, intent(out) :: u                   !< unit (-1 on failure)
+      type(out_file_t), intent(inout) :: f        !< the table
       type(error_t), intent(inout) :: err         !< status
-      character(len=512) :: msg
-      integer :: ios
-      u = -1
       if (has_error(err)) return
-      open (newunit=u, file=path_join(w%dir, name), status='replace', action='write', &
-         form='formatted', access='sequential', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         u = -1
-      else
-         write (u, '(a)', iostat=ios, iomsg=msg) header
-         if (ios == 0) call flush_unit(w, u, ios, msg)
-      end if
-      if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_open: cannot write '''// &
-         path_join(w%dir, name)//''': '//trim(msg))
+      call outfile_create(f, w%dir, name, err, live=.true.)
+      if (has_error(err)) return
+      call outfile_put(f, header)
+      call outfile_flush(f, err)
+      call outfile_mark(f)
    end subroutine open_csv
 
    !> Create dynamic.h5: root attributes, /deck, each line's static datasets and empty
@@ -426,7 +456,8 @@ contains
       character(len=:), allocatable :: g
       integer :: i, k, nv
       if (has_error(err)) return
-      call hdf5_create_file(w%h5, path_join(w%dir, dynamic_h5), err)
+      ! under a temporary name until the header and the empty datasets are on disk
+      call hdf5_create_file(w%h5, temp_name(w%dir, dynamic_h5), err)
       if (has_error(err)) return
       associate (h5 => w%h5)
          call hdf5_write_attribute(h5, '/', 'program', 'rodyn', err)
@@ -481,6 +512,10 @@ contains
          end do
       end if
       call flush_h5(w, err)
+      if (.not. has_error(err)) then
+         call commit_rename(temp_name(w%dir, dynamic_h5), path_join(w%dir, dynamic_h5), err)
+         if (.not. has_error(err)) w%h5%path = path_join(w%dir, dynamic_h5)
+      end if
    end subroutine create_h5
 
    !> One line's group: its static datasets and its empty time histories.
@@ -586,23 +621,19 @@ contains
 
    ! ------------------------------------------------------------------ frames
 
-   !> The frame's rows of dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv.
-   subroutine write_frame_csv(w, time, lines, err)
+   !> The frame's rows of dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv and
+   !> dynamic_lines.csv, held until the next sync (failures are kept in the tables).
+   subroutine write_frame_csv(w, time, lines)
       type(dynamic_writer_t), intent(inout) :: w   !< open writer
       real(wp), intent(in) :: time                 !< time of the frame [s]
       type(line_result_t), intent(in) :: lines(:)  !< state
-      type(error_t), intent(inout) :: err          !< status
       character(len=row_len) :: row
       character(len=64) :: t
-      character(len=512) :: msg
       real(wp), allocatable :: fn(:), ff(:), tw(:)
       real(wp) :: vals(8)
-      integer :: nt, n, i, k, j, ios
-      if (has_error(err)) return
+      integer :: nt, n, i, k, j
       nt = 0
       call format_real(time, t, nt)
-      ios = 0
-      msg = ''
       do i = 1, size(lines)
          associate (r => lines(i), lo => w%line(i))
             fn = seabed_force_of(r, 1)
@@ -614,12 +645,10 @@ contains
                vals(4) = fn(k)
                vals(5) = ff(k)
                call put_reals(row, n, vals(1:5))
-               if (ios == 0) write (w%u_nodes, '(a)', iostat=ios, iomsg=msg) row(:n)
+               call outfile_put(w%f_nodes, row(:n))
             end do
          end associate
       end do
-      if (ios == 0) call flush_unit(w, w%u_nodes, ios, msg)
-      call check_csv(ios, msg, nodes_csv)
       do i = 1, size(lines)
          associate (r => lines(i), lo => w%line(i))
             tw = wall_tension_of(r)
@@ -632,12 +661,10 @@ contains
                vals(5) = r%torque(k)
                vals(6) = bending_curvature_at(r%curvature(:, k))
                call put_reals(row, n, vals(1:6))
-               if (ios == 0) write (w%u_elements, '(a)', iostat=ios, iomsg=msg) row(:n)
+               call outfile_put(w%f_elements, row(:n))
             end do
          end associate
       end do
-      if (ios == 0) call flush_unit(w, w%u_elements, ios, msg)
-      call check_csv(ios, msg, elements_csv)
       do i = 1, size(lines)
          associate (r => lines(i), lo => w%line(i))
             do j = 1, 2
@@ -645,33 +672,20 @@ contains
                n = 0
                call put_text(row, n, t(:nt)//lo%end_head(j)%s)
                call put_reals(row, n, [r%reaction(:, j), norm2(r%reaction(1:3, j))])
-               if (ios == 0) write (w%u_ends, '(a)', iostat=ios, iomsg=msg) row(:n)
+               call outfile_put(w%f_ends, row(:n))
             end do
          end associate
       end do
-      if (ios == 0) call flush_unit(w, w%u_ends, ios, msg)
-      call check_csv(ios, msg, ends_csv)
       do i = 1, size(lines)
          n = 0
          call put_text(row, n, t(:nt)//w%line(i)%line_head%s)
          call put_reals(row, n, [touchdown_of(lines(i))])
-         if (ios == 0) write (w%u_lines, '(a)', iostat=ios, iomsg=msg) row(:n)
+         call outfile_put(w%f_lines, row(:n))
       end do
-      if (ios == 0) call flush_unit(w, w%u_lines, ios, msg)
-      call check_csv(ios, msg, lines_csv)
-   contains
-      !> Record the first failed write of a table.
-      subroutine check_csv(ios, msg, name)
-         integer, intent(in) :: ios              !< status of the writes
-         character(len=*), intent(in) :: msg     !< message of the failure
-         character(len=*), intent(in) :: name    !< file name
-         if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_frame: cannot write '''// &
-            path_join(w%dir, name)//''': '//trim(msg))
-      end subroutine check_csv
    end subroutine write_frame_csv
 
-   !> The frame's values appended to dynamic.h5's series (held in memory until
-   !> write_held_h5).
+   !> The frame's values appended to dynamic.h5's series (held in memory until the
+   !> next sync).
    subroutine write_frame_h5(w, time, lines, err)
       type(dynamic_writer_t), intent(inout) :: w   !< open writer
       real(wp), intent(in) :: time                 !< time of the frame [s]
@@ -699,26 +713,95 @@ contains
          end associate
       end do
       call hdf5_append_steps(w%time, [time], err)
-      w%frames_held = w%frames_held + 1
    end subroutine write_frame_h5
 
-   !> Write the frames held (one block per series), then the step rows held, and flush
-   !> dynamic.h5: everything appended so far is in the file.
-   subroutine write_held_h5(w, err)
-      type(dynamic_writer_t), intent(inout) :: w   !< open writer
-      type(error_t), intent(inout) :: err          !< status
+   !> Sync: write everything held to disk, in this order: the CSV rows (the tables
+   !> then marked as ending with a whole frame), the frames and step rows of dynamic.h5
+   !> and its flush, then (unless rewrite_status is false) status.txt with the time and
+   !> steps of the last frame: the files and status.txt then tell the same story.
+   subroutine sync(w, err, rewrite_status)
+      type(dynamic_writer_t), intent(inout) :: w      !< open writer
+      type(error_t), intent(inout) :: err             !< status
+      logical, intent(in), optional :: rewrite_status !< rewrite status.txt (default yes)
+      type(error_t) :: eh
+      integer(i8) :: c0
       integer :: i, k
-      if (has_error(err)) return
-      call hdf5_series_write_held(w%time, err)
-      do i = 1, size(w%line)
-         do k = 1, n_line_series
-            call hdf5_series_write_held(w%line(i)%series(k), err)
+      if (has_error(err) .or. w%failed) return
+      if (w%csv) then
+         call system_clock(c0)
+         call outfile_flush(w%f_nodes, err)
+         call outfile_flush(w%f_elements, err)
+         call outfile_flush(w%f_ends, err)
+         call outfile_flush(w%f_lines, err)
+         call outfile_flush(w%f_log, err)
+         w%flush_time = w%flush_time + seconds_since(c0)
+         if (has_error(err)) return
+      end if
+      if (w%hdf5) then
+         call hdf5_series_write_held(w%time, eh)
+         do i = 1, size(w%line)
+            do k = 1, n_line_series
+               call hdf5_series_write_held(w%line(i)%series(k), eh)
+            end do
          end do
-      end do
+         call write_pending_log(w, eh)
+         call flush_h5(w, eh)
+         if (has_error(eh)) then
+            w%h5_failed = .true.
+            call set_error(err, eh%code, eh%message)
+            return
+         end if
+      end if
+      if (w%csv) then
+         call outfile_mark(w%f_nodes)
+         call outfile_mark(w%f_elements)
+         call outfile_mark(w%f_ends)
+         call outfile_mark(w%f_lines)
+         call outfile_mark(w%f_log)
+      end if
       w%frames_held = 0
-      call write_pending_log(w, err)
-      call flush_h5(w, err)
-   end subroutine write_held_h5
+      w%steps_held = 0
+      w%progress%time_reached = w%last_time
+      w%progress%steps = w%steps
+      w%synced = w%progress
+      if (present(rewrite_status)) then
+         if (.not. rewrite_status) return
+      end if
+      w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
+      call output_write_status(w%dir, w%progress, err, w%deck_file, w%params)
+      call system_clock(w%clock_status)
+   end subroutine sync
+
+   !> Characters of CSV rows held in memory.
+   pure integer function csv_held(w)
+      type(dynamic_writer_t), intent(in) :: w   !< writer
+      csv_held = outfile_pending(w%f_nodes) + outfile_pending(w%f_elements) + &
+         outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log)
+   end function csv_held
+
+   !> Record a write failure: nothing more is written.
+   subroutine note_failure(w, e)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer
+      type(error_t), intent(in) :: e               !< the failure
+      if (w%failed .or. .not. has_error(e)) return
+      w%failed = .true.
+      w%why = e%message
+   end subroutine note_failure
+
+   !> A summary after a write failure: incomplete, the failure as status, and the time
+   !> and steps of the last sync (what the files hold).
+   subroutine as_synced(w, s)
+      type(dynamic_writer_t), intent(in) :: w      !< writer (failed)
+      type(run_summary_t), intent(inout) :: s      !< summary to adjust
+      s%complete = .false.
+      s%time_reached = w%synced%time_reached
+      s%steps = w%synced%steps
+      s%step_iterations = w%synced%step_iterations
+      s%step_tangents = w%synced%step_tangents
+      s%step_cutbacks = w%synced%step_cutbacks
+      if (.not. allocated(s%status)) s%status = w%why
+      if (s%status == 'complete' .or. s%status == running) s%status = w%why
+   end subroutine as_synced
 
    !> Append the step rows held in memory to /dynamic/log and forget them.
    subroutine write_pending_log(w, err)
@@ -776,58 +859,56 @@ contains
    ! ------------------------------------------------------------------ files
 
    !> Close every file and dataset of the writer (errors recorded in err) and free its
-   !> scratch; keeps dir and deck_file for status.txt.
+   !> scratch; keeps dir and deck_file for status.txt. After a failure (w%failed) the
+   !> CSV tables are cut back to their last sync and what dynamic.h5 holds in memory is
+   !> dropped; a dynamic.h5 whose write or close failed is removed.
    subroutine release_all(w, err)
       type(dynamic_writer_t), intent(inout) :: w   !< writer
       type(error_t), intent(inout) :: err          !< status
+      type(error_t) :: eh
       integer :: i, k
-      call close_unit(w%u_nodes, nodes_csv)
-      call close_unit(w%u_elements, elements_csv)
-      call close_unit(w%u_ends, ends_csv)
-      call close_unit(w%u_log, log_csv)
-      call close_unit(w%u_lines, lines_csv)
-      call hdf5_close_series(w%time, err)
+      if (w%failed) then     ! rows held since the last sync are dropped
+         call outfile_abort(w%f_nodes)
+         call outfile_abort(w%f_elements)
+         call outfile_abort(w%f_ends)
+         call outfile_abort(w%f_log)
+         call outfile_abort(w%f_lines)
+      else
+         call outfile_close(w%f_nodes, err)
+         call outfile_close(w%f_elements, err)
+         call outfile_close(w%f_ends, err)
+         call outfile_close(w%f_log, err)
+         call outfile_close(w%f_lines, err)
+      end if
+      ! after a failure the held steps are dropped (the series see an error)
+      if (w%failed) call set_error(eh, stat_io, w%why)
+      call hdf5_close_series(w%time, eh)
       do k = 1, n_log_series
-         call hdf5_close_series(w%log(k), err)
+         call hdf5_close_series(w%log(k), eh)
       end do
       if (allocated(w%line)) then
          do i = 1, size(w%line)
             do k = 1, n_line_series
-               call hdf5_close_series(w%line(i)%series(k), err)
+               call hdf5_close_series(w%line(i)%series(k), eh)
             end do
          end do
          deallocate (w%line)
       end if
-      call hdf5_close_file(w%h5, err)
+      if (w%h5%id >= 0) then
+         call hdf5_close_file(w%h5, eh)
+         if (has_error(eh)) then
+            w%h5_failed = .true.
+            call note_failure(w, eh)
+         end if
+      end if
+      if (w%h5_failed .and. allocated(w%dir)) then
+         call remove_file(temp_name(w%dir, dynamic_h5))
+         call remove_file(path_join(w%dir, dynamic_h5))
+      end if
       if (allocated(w%pending)) deallocate (w%pending)
       w%n_pending = 0
       w%is_open = .false.
-   contains
-      !> Close a CSV unit if open.
-      subroutine close_unit(u, name)
-         integer, intent(inout) :: u             !< unit (-1: not open)
-         character(len=*), intent(in) :: name    !< file name, for the message
-         integer :: ios
-         character(len=512) :: msg
-         if (u < 0) return
-         close (u, iostat=ios, iomsg=msg)
-         u = -1
-         if (ios /= 0) call set_error(err, stat_io, 'dynamic_output_close: cannot '// &
-            'write '''//path_join(text_of(w%dir), name)//''': '//trim(msg))
-      end subroutine close_unit
    end subroutine release_all
-
-   !> Flush a CSV unit, timing it.
-   subroutine flush_unit(w, u, ios, msg)
-      type(dynamic_writer_t), intent(inout) :: w  !< writer (flush_time)
-      integer, intent(in) :: u                    !< unit
-      integer, intent(out) :: ios                 !< status
-      character(len=*), intent(inout) :: msg      !< message on failure
-      integer(i8) :: c0
-      call system_clock(c0)
-      flush (u, iostat=ios, iomsg=msg)
-      w%flush_time = w%flush_time + seconds_since(c0)
-   end subroutine flush_unit
 
    !> Flush dynamic.h5, timing it.
    subroutine flush_h5(w, err)
