@@ -115,8 +115,8 @@ contains
          prob%af_acc = 0.0_wp
       end if
       call inertia_build(model, mesh, prob%inert)
-      call state_allocate(prob%s0, nn)
       prob%scheme = model%dynamic%scheme
+      call state_allocate(prob%s0, nn, prob%scheme == scheme_alpha)
       prob%fields0 = (prob%scheme == scheme_emc .or. prob%scheme == scheme_trapezoidal) &
                      .and. .not. all(mesh%elem_cable)
       if (prob%fields0) allocate (prob%gp0(max_points, mesh%n_elements), &
@@ -300,7 +300,7 @@ contains
       wp_ = this%wf
       do node = 1, this%mesh%n_nodes
          fi = this%inert%m(node)*(c2*this%dx(:, node) - inertia_rest(this%s0%v(:, node), &
-                                                                     this%s0%a(:, node)))
+                                                                     node, 0))
          this%fint(1:3, node) = this%fint(1:3, node) + fi
          fx = max(fx, maxval(abs(fi)))
          kb = 0.0_wp
@@ -313,7 +313,7 @@ contains
             d1 = this%s1%d(:, i, node)
             dm = (1.0_wp - wp_)*this%s0%d(:, i, node) + wp_*d1
             h = mi*(c2*(d1 - this%s0%d(:, i, node)) &
-                    - inertia_rest(this%s0%dd(:, i, node), this%s0%ad(:, i, node)))
+                    - inertia_rest(this%s0%dd(:, i, node), node, i))
             this%fint(4:6, node) = this%fint(4:6, node) + cross(dm, h)
             if (.not. want_k) cycle
             ! d(dm x h) = wp (dth x d1) x h + dm x (mi c2 dth x d1)
@@ -352,13 +352,21 @@ contains
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
    contains
       !> The part of mass * (inertia + damping) per unit mass that does not depend on the
-      !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest).
-      pure function inertia_rest(v0, a0) result(g)
+      !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest). The
+      !> acceleration at t_n (generalized-alpha only: the other schemes' states hold
+      !> none) is node's, of its position (i = 0) or of its director i.
+      pure function inertia_rest(v0, node, i) result(g)
          real(wp), intent(in) :: v0(3) !< velocity at t_n
-         real(wp), intent(in) :: a0(3) !< acceleration at t_n
+         integer, intent(in) :: node   !< node
+         integer, intent(in) :: i      !< 0: position, 1 or 2: director d_i
          real(wp) :: g(3)
-         real(wp) :: b, gm, dt
+         real(wp) :: b, gm, dt, a0(3)
          if (this%scheme == scheme_alpha) then
+            if (i == 0) then
+               a0 = this%s0%a(:, node)
+            else
+               a0 = this%s0%ad(:, i, node)
+            end if
             ! (1-am) a1 + am a0 + alpha v_f, a1 = (dq - dt v0 - dt^2 (1/2 - b) a0)/(b dt^2),
             ! v_f = (1-af) v1 + af v0, v1 = v0 + dt ((1-gm) a0 + gm a1)
             b = this%beta_n

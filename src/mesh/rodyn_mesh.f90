@@ -9,7 +9,7 @@ module rodyn_mesh
    use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_section, only: section_stiffness
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position, end_a, end_b, element_cable
+                          bc_position, end_a, end_b, element_cable, scheme_alpha
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
@@ -115,7 +115,8 @@ contains
                 mesh%elem_cable(ne))
       mesh%elem_nodes = 0
       mesh%eps0 = 0.0_wp
-      call state_allocate(state, nn)
+      ! the accelerations only for the generalized-alpha scheme (rodyn_state)
+      call state_allocate(state, nn, model%dynamic%scheme == scheme_alpha)
       do l = 1, nl
          p = mesh%line_order(l)
          call line_elements(model, mesh, l)

@@ -11,20 +11,30 @@ module rodyn_state
       real(wp), allocatable :: d(:, :, :)  !< (3, 3, nn) directors d(:, i, a) [-]
       real(wp), allocatable :: v(:, :)     !< (3, nn) velocities [m/s]
       real(wp), allocatable :: dd(:, :, :) !< (3, 3, nn) director velocities [1/s]
-      real(wp), allocatable :: a(:, :)     !< (3, nn) accelerations [m/s2] (generalized-alpha)
-      real(wp), allocatable :: ad(:, :, :) !< (3, 3, nn) director accelerations [1/s2]
+      !> (3, nn) accelerations [m/s2] and (3, 3, nn) director accelerations [1/s2]: the
+      !> generalized-alpha scheme's; (3, 0) and (3, 3, 0) for the others (state_allocate)
+      real(wp), allocatable :: a(:, :)
+      real(wp), allocatable :: ad(:, :, :)
    end type state_t
 
 contains
 
-   !> Allocate a state for nn nodes.
-   subroutine state_allocate(state, nn)
-      type(state_t), intent(inout) :: state !< state to allocate
-      integer, intent(in) :: nn             !< number of nodes
+   !> Allocate a state for nn nodes; the accelerations only if asked (the
+   !> generalized-alpha scheme; the others never read them: 0.58 KiB a cubic element
+   !> for the two states of a step, bench/memory_scaling.py).
+   subroutine state_allocate(state, nn, accelerations)
+      type(state_t), intent(inout) :: state      !< state to allocate
+      integer, intent(in) :: nn                  !< number of nodes
+      logical, intent(in), optional :: accelerations !< allocate a and ad (default no)
+      integer :: na
+      na = 0
+      if (present(accelerations)) then
+         if (accelerations) na = nn
+      end if
       if (allocated(state%x)) deallocate (state%x, state%d, state%v, state%dd, state%a, &
                                           state%ad)
       allocate (state%x(3, nn), state%d(3, 3, nn), state%v(3, nn), state%dd(3, 3, nn), &
-                state%a(3, nn), state%ad(3, 3, nn))
+                state%a(3, na), state%ad(3, 3, na))
       state%a = 0.0_wp
       state%ad = 0.0_wp
       state%x = 0.0_wp
@@ -33,8 +43,9 @@ contains
       state%dd = 0.0_wp
    end subroutine state_allocate
 
-   !> dst = src, field by field into dst's arrays (allocated for the same nodes; no
-   !> reallocation, unlike an assignment of the whole type).
+   !> dst = src, field by field into dst's arrays (allocated for the same nodes and
+   !> the same choice of accelerations; no reallocation, unlike an assignment of the
+   !> whole type).
    subroutine state_copy(src, dst)
       type(state_t), intent(in) :: src    !< state copied
       type(state_t), intent(inout) :: dst !< overwritten
