@@ -95,6 +95,8 @@ module rodyn_model
       integer, allocatable :: seg_section(:)    !< (nseg) index into model%sections
       real(wp), allocatable :: seg_length(:)    !< (nseg) unstretched length [m]
       integer, allocatable :: seg_elements(:)   !< (nseg) number of elements
+      character(len=:), allocatable :: card_at  !< 'FILE:LINE' of its *LINE card (unset
+                                                !< for a line built in code)
    end type line_def_t
 
    !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an

@@ -152,7 +152,7 @@ contains
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
       real(wp) :: w_hydro, w_seabed
       integer :: level, good, step_cuts
-      logical :: retried, accepted
+      logical :: retried, accepted, nonfinite
       character(len=240) :: msg
       opts%max_iterations = model%dynamic%max_iterations
       opts%force_tol = model%dynamic%force_tol
@@ -236,7 +236,11 @@ contains
          end if
          ! failed: NaN or Inf stops the run (where, from the failed iterate), otherwise
          ! back to t_n and halve the step
-         if (has_error(nerr) .and. index(nerr%message, 'not finite') > 0) then
+         ! (two tests: Fortran does not promise to skip the second when the first fails,
+         ! and nerr%message is unallocated without an error)
+         nonfinite = .false.
+         if (has_error(nerr)) nonfinite = index(nerr%message, 'not finite') > 0
+         if (nonfinite) then
             write (msg, '(a,es12.5,a)') 'dynamics: NaN or Inf at t = ', t1, &
                ' s ('//nonfinite_where(prob)//'); results up to t = '
             write (msg, '(a,es12.5,a)') trim(msg), t, ' s are written'

@@ -356,6 +356,7 @@ contains
             end if
          end do
          line%name = name
+         line%card_at = card%file//':'//int_str(card%line)
          section = ''
          call card_get_name(card, 'SECTION', section, err)
          if (has_error(err)) return
