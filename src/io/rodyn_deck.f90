@@ -28,6 +28,7 @@ module rodyn_deck
                                card_data_count, card_data_reals, real_str, int_str, param_len
    use rodyn_deck_params, only: param_override_t
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
+                                 max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  location, resolve_line, node_count, node_number, node_label
@@ -243,6 +244,12 @@ contains
          if (has_error(err)) return
          call card_data_reals(card, 1, 3, g, err, what)
          if (has_error(err)) return
+         if (norm2(g) > max_gravity) then
+            call card_data_error(card, 1, 'the gravity of '//real_str(norm2(g))// &
+                                 ' m/s2 is not physical: its magnitude must be at most '// &
+                                 real_str(max_gravity)//' m/s2 (about 100 g)', err)
+            return
+         end if
          model%gravity = g
       end associate
    end subroutine read_gravity_card
@@ -369,6 +376,11 @@ contains
                             real_str(line%length), err)
             return
          end if
+         if (line%length > max_distance) then
+            call param_fail(card, 'LENGTH', 'LENGTH must be at most '// &
+                            real_str(max_distance)//' m, got '//real_str(line%length), err)
+            return
+         end if
          call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=plain)
          if (has_error(err)) return
          if (card_find_param(card, 'ELEMENTS') > 0 .and. &
@@ -392,6 +404,12 @@ contains
          if (has_error(err)) return
          call card_data_reals(card, 1, 6, x, err, what1)
          if (has_error(err)) return
+         if (maxval(abs(x)) > max_distance) then
+            call card_data_error(card, 1, 'a coordinate of '//real_str(maxval(abs(x)))// &
+                                 ' m is not physical: the ends must lie within '// &
+                                 real_str(max_distance)//' m of the origin', err)
+            return
+         end if
          line%end_a = x(1:3)
          line%end_b = x(4:6)
 
@@ -534,15 +552,16 @@ contains
          st%requested = .true.
          call card_get_int(card, 'INCREMENTS', st%increments, err)
          if (has_error(err)) return
-         if (st%increments < 1) then
-            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be >= 1, got '// &
-                            int_str(st%increments), err)
+         if (st%increments < 1 .or. st%increments > max_increments) then
+            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be between 1 and '// &
+                            int_str(max_increments)//', got '//int_str(st%increments), err)
             return
          end if
          call card_get_int(card, 'MAX ITERATIONS', st%max_iterations, err)
          if (has_error(err)) return
-         if (st%max_iterations < 1) then
-            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be >= 1, got '// &
+         if (st%max_iterations < 1 .or. st%max_iterations > max_iterations) then
+            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be between 1 '// &
+                            'and '//int_str(max_iterations)//', got '// &
                             int_str(st%max_iterations), err)
             return
          end if

@@ -17,6 +17,7 @@ module rodyn_deck_dynamic
                                card_data_real, card_data_table, card_get_table, upper_case, &
                                real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+                                 max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  location, resolve_line, node_count, node_number, node_label
    implicit none
@@ -124,7 +125,8 @@ contains
          call card_get_choice(card, 'TANGENT', tangents, k, err)
          if (has_error(err)) return
          dy%reuse_tangent = k == 2
-         call get_int_range(card, 'MAX ITERATIONS', 1, huge(1), dy%max_iterations, err)
+         call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, dy%max_iterations, &
+                            err)
          call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, dy%max_cutbacks, err)
          call get_tolerance(card, 'FORCE TOL', dy%force_tol, err)
          call get_tolerance(card, 'DISP TOL', dy%disp_tol, err)
@@ -361,6 +363,12 @@ contains
          end do
          call data_check(card, id, 'frequency', v(2), .false., err)
          if (has_error(err)) return
+         if (v(2) > max_frequency) then
+            call card_data_error(card, id, 'a frequency of '//real_str(v(2))//' Hz is not '// &
+                                 'physical for a line: it must be at most '// &
+                                 real_str(max_frequency)//' Hz', err)
+            return
+         end if
          mo%amplitude(j) = v(1)
          mo%frequency(j) = v(2)
          mo%phase(j) = v(3)*pi/180.0_wp
