@@ -158,6 +158,8 @@ module rodyn_model
       real(wp) :: force(3) = 0.0_wp !< force [N]
       real(wp) :: moment(3) = 0.0_wp !< moment [N m]
       integer :: amplitude = 0      !< index into model%amplitudes (0: constant in time)
+      character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *LOAD card (unset for
+                                               !< a load set in code)
    end type point_load_t
 
    !> Static analysis controls (*STATIC).

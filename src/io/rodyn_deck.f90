@@ -526,6 +526,7 @@ contains
       if (has_error(err)) return
       load%force = v(1:3)
       load%moment = v(4:6)
+      load%card_at = card%file//':'//int_str(card%line)
       pend%n_loads = pend%n_loads + 1
       model%loads(pend%n_loads) = load
       pend%load_line(pend%n_loads) = ref_t(line, ic)
