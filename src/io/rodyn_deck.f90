@@ -34,7 +34,8 @@ module rodyn_deck
                                  location, resolve_line, node_count, node_number, node_label
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
-                                 read_initial_velocity_card, validate_dynamics
+                                 read_initial_velocity_card, validate_dynamics, &
+                                 dynamic_warnings
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
@@ -120,6 +121,8 @@ contains
          end if
       end do
       call validate_model(deck, pend, model, err)
+      if (present(warnings) .and. .not. has_error(err)) &
+         warnings = warnings//dynamic_warnings(deck, model)
    end subroutine deck_read
 
    !> Number of cards with the given keyword.
