@@ -106,7 +106,7 @@ def short_case2(folder):
     folder = Path(folder)
     work = folder.parent
     text = (REPO / "input" / "paper_case2.inp").read_text()
-    text, n = re.subn(r"TIME=15\.0, OUTPUT INTERVAL=0\.15", "TIME=0.6, OUTPUT INTERVAL=0.03",
+    text, n = re.subn(r"TIME=15\.0, OUTPUT INTERVAL=0\.06", "TIME=0.6, OUTPUT INTERVAL=0.03",
                       text)
     assert n == 1
     shutil.copy(REPO / "input" / "paper_cable_section.inc", work)

@@ -494,7 +494,7 @@ def test_real_paper_case2_short(tmp_path):
 
     res = load_dynamic(out)
     assert res.complete and res.source.name == "dynamic.h5" and res.scheme == "EMC"
-    assert res.steps == 20 and len(res.time) == 3  # frames at 0, 0.15, 0.3 s
+    assert res.steps == 20 and len(res.time) == 6  # frames at 0, 0.06, ..., 0.3 s
     assert res.motion_frequencies() == [1.0]
     # the top tension plotted is the end A column of dynamic_ends.csv
     with open(out / "dynamic_ends.csv", newline="") as f:

@@ -7,7 +7,7 @@ program rodyn
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    use rodyn_kinds, only: rodyn_version
-   use rodyn_error, only: error_t, has_error, stat_ok, stat_io, stat_input
+   use rodyn_error, only: error_t, has_error, stat_ok, stat_io, stat_input, stat_numerical
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names
    use rodyn_deck, only: deck_read
@@ -69,9 +69,17 @@ program rodyn
 
    call deck_read(opts%deck, model, err, opts%sets, warnings)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
-   if (.not. has_error(err)) call mesh_build(model, mesh, state, err)
+   ! --check computes nothing: the lines' starting catenaries are solved only for a run
+   if (.not. has_error(err)) call mesh_build(model, mesh, state, err, &
+                                             initial_shape=.not. opts%check)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
+      ! a starting shape that cannot be computed is a failed run: status.txt says so
+      if (err%code == stat_numerical) then
+         summary%status = err%message
+         call output_write_status(opts%outdir, summary, out_err, opts%deck, model%parameters)
+         if (has_error(out_err)) write (error_unit, '(a)') out_err%message
+      end if
       call finish(err%code)
    end if
    call dof_map(mesh, dof_first, dof_count, n_dof, half_bw)

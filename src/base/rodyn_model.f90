@@ -95,6 +95,8 @@ module rodyn_model
       integer, allocatable :: seg_section(:)    !< (nseg) index into model%sections
       real(wp), allocatable :: seg_length(:)    !< (nseg) unstretched length [m]
       integer, allocatable :: seg_elements(:)   !< (nseg) number of elements
+      character(len=:), allocatable :: card_at  !< 'FILE:LINE' of its *LINE card (unset
+                                                !< for a line built in code)
    end type line_def_t
 
    !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an
@@ -156,6 +158,8 @@ module rodyn_model
       real(wp) :: force(3) = 0.0_wp !< force [N]
       real(wp) :: moment(3) = 0.0_wp !< moment [N m]
       integer :: amplitude = 0      !< index into model%amplitudes (0: constant in time)
+      character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *LOAD card (unset for
+                                               !< a load set in code)
    end type point_load_t
 
    !> Static analysis controls (*STATIC).

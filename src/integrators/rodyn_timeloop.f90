@@ -15,6 +15,7 @@ module rodyn_timeloop
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
    use rodyn_model, only: model_t, scheme_emc
+   use rodyn_load_check, only: load_divergence_hint
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_begin_step, dynamics_end_step, &
                              dynamics_accept_step
@@ -152,8 +153,9 @@ contains
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
       real(wp) :: w_hydro, w_seabed
       integer :: level, good, step_cuts
-      logical :: retried, accepted
+      logical :: retried, accepted, nonfinite
       character(len=240) :: msg
+      character(len=:), allocatable :: why
       opts%max_iterations = model%dynamic%max_iterations
       opts%force_tol = model%dynamic%force_tol
       opts%disp_tol = model%dynamic%disp_tol
@@ -236,7 +238,11 @@ contains
          end if
          ! failed: NaN or Inf stops the run (where, from the failed iterate), otherwise
          ! back to t_n and halve the step
-         if (has_error(nerr) .and. index(nerr%message, 'not finite') > 0) then
+         ! (two tests: Fortran does not promise to skip the second when the first fails,
+         ! and nerr%message is unallocated without an error)
+         nonfinite = .false.
+         if (has_error(nerr)) nonfinite = index(nerr%message, 'not finite') > 0
+         if (nonfinite) then
             write (msg, '(a,es12.5,a)') 'dynamics: NaN or Inf at t = ', t1, &
                ' s ('//nonfinite_where(prob)//'); results up to t = '
             write (msg, '(a,es12.5,a)') trim(msg), t, ' s are written'
@@ -262,9 +268,12 @@ contains
          if (level > model%dynamic%max_cutbacks) then
             write (msg, '(a,es12.5,a,i0,a)') 'dynamics: no convergence at t = ', t, &
                ' s after ', model%dynamic%max_cutbacks, ' halvings of the step'
-            if (has_error(nerr)) msg = trim(msg)//' ('//nerr%message//')'
-            call set_error(err, stat_numerical, trim(msg))
-            summary%status = trim(msg)
+            ! what diverged: a load beyond the lines' reach, else the solver's reason
+            why = load_divergence_hint(model)
+            if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
+            if (len(why) > 0) why = ' ('//why//')'
+            call set_error(err, stat_numerical, trim(msg)//why)
+            summary%status = trim(msg)//why
             return
          end if
       end do

@@ -28,12 +28,14 @@ module rodyn_deck
                                card_data_count, card_data_reals, real_str, int_str, param_len
    use rodyn_deck_params, only: param_override_t
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
+                                 max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  location, resolve_line, node_count, node_number, node_label
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
-                                 read_initial_velocity_card, validate_dynamics
+                                 read_initial_velocity_card, validate_dynamics, &
+                                 dynamic_warnings
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
@@ -119,6 +121,8 @@ contains
          end if
       end do
       call validate_model(deck, pend, model, err)
+      if (present(warnings) .and. .not. has_error(err)) &
+         warnings = warnings//dynamic_warnings(deck, model)
    end subroutine deck_read
 
    !> Number of cards with the given keyword.
@@ -243,6 +247,12 @@ contains
          if (has_error(err)) return
          call card_data_reals(card, 1, 3, g, err, what)
          if (has_error(err)) return
+         if (norm2(g) > max_gravity) then
+            call card_data_error(card, 1, 'the gravity of '//real_str(norm2(g))// &
+                                 ' m/s2 is not physical: its magnitude must be at most '// &
+                                 real_str(max_gravity)//' m/s2 (about 100 g)', err)
+            return
+         end if
          model%gravity = g
       end associate
    end subroutine read_gravity_card
@@ -356,6 +366,7 @@ contains
             end if
          end do
          line%name = name
+         line%card_at = card%file//':'//int_str(card%line)
          section = ''
          call card_get_name(card, 'SECTION', section, err)
          if (has_error(err)) return
@@ -366,6 +377,11 @@ contains
          if (card_find_param(card, 'LENGTH') > 0 .and. .not. line%length > 0.0_wp) then
             call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
                             real_str(line%length), err)
+            return
+         end if
+         if (line%length > max_distance) then
+            call param_fail(card, 'LENGTH', 'LENGTH must be at most '// &
+                            real_str(max_distance)//' m, got '//real_str(line%length), err)
             return
          end if
          call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=plain)
@@ -391,6 +407,12 @@ contains
          if (has_error(err)) return
          call card_data_reals(card, 1, 6, x, err, what1)
          if (has_error(err)) return
+         if (maxval(abs(x)) > max_distance) then
+            call card_data_error(card, 1, 'a coordinate of '//real_str(maxval(abs(x)))// &
+                                 ' m is not physical: the ends must lie within '// &
+                                 real_str(max_distance)//' m of the origin', err)
+            return
+         end if
          line%end_a = x(1:3)
          line%end_b = x(4:6)
 
@@ -507,6 +529,7 @@ contains
       if (has_error(err)) return
       load%force = v(1:3)
       load%moment = v(4:6)
+      load%card_at = card%file//':'//int_str(card%line)
       pend%n_loads = pend%n_loads + 1
       model%loads(pend%n_loads) = load
       pend%load_line(pend%n_loads) = ref_t(line, ic)
@@ -533,15 +556,16 @@ contains
          st%requested = .true.
          call card_get_int(card, 'INCREMENTS', st%increments, err)
          if (has_error(err)) return
-         if (st%increments < 1) then
-            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be >= 1, got '// &
-                            int_str(st%increments), err)
+         if (st%increments < 1 .or. st%increments > max_increments) then
+            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be between 1 and '// &
+                            int_str(max_increments)//', got '//int_str(st%increments), err)
             return
          end if
          call card_get_int(card, 'MAX ITERATIONS', st%max_iterations, err)
          if (has_error(err)) return
-         if (st%max_iterations < 1) then
-            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be >= 1, got '// &
+         if (st%max_iterations < 1 .or. st%max_iterations > max_iterations) then
+            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be between 1 '// &
+                            'and '//int_str(max_iterations)//', got '// &
                             int_str(st%max_iterations), err)
             return
          end if

@@ -17,14 +17,19 @@ module rodyn_deck_dynamic
                                card_data_real, card_data_table, card_get_table, upper_case, &
                                real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+                                 max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  location, resolve_line, node_count, node_number, node_label
    implicit none
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
-   public :: read_initial_velocity_card, validate_dynamics
+   public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings
 
    integer, parameter :: max_steps = 100000000    !< most time steps TIME/DT of a run
+   ! Time resolution of the prescribed motions and loads (docs/dynamics.md, "Time step
+   ! and output interval warnings"): below these a run may be meaningless
+   real(wp), parameter :: min_steps_per_period = 10.0_wp   !< steps a shortest period
+   real(wp), parameter :: min_frames_per_period = 10.0_wp  !< frames a shortest period
    real(wp), parameter :: rho_inf_alpha = 0.8_wp  !< default RHO INF with SCHEME=ALPHA [-]
    character(len=*), parameter :: what_amp = 't, value'          !< *AMPLITUDE columns
    character(len=*), parameter :: what_table = 't, ux, uy, uz'   !< *MOTION table columns
@@ -124,7 +129,8 @@ contains
          call card_get_choice(card, 'TANGENT', tangents, k, err)
          if (has_error(err)) return
          dy%reuse_tangent = k == 2
-         call get_int_range(card, 'MAX ITERATIONS', 1, huge(1), dy%max_iterations, err)
+         call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, dy%max_iterations, &
+                            err)
          call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, dy%max_cutbacks, err)
          call get_tolerance(card, 'FORCE TOL', dy%force_tol, err)
          call get_tolerance(card, 'DISP TOL', dy%disp_tol, err)
@@ -361,6 +367,12 @@ contains
          end do
          call data_check(card, id, 'frequency', v(2), .false., err)
          if (has_error(err)) return
+         if (v(2) > max_frequency) then
+            call card_data_error(card, id, 'a frequency of '//real_str(v(2))//' Hz is not '// &
+                                 'physical for a line: it must be at most '// &
+                                 real_str(max_frequency)//' Hz', err)
+            return
+         end if
          mo%amplitude(j) = v(1)
          mo%frequency(j) = v(2)
          mo%phase(j) = v(3)*pi/180.0_wp
@@ -437,6 +449,147 @@ contains
    end subroutine get_int_range
 
    ! ================================================================ validation
+
+   !> Warnings 'FILE:LINE: warning: *DYNAMIC: ...' (each ended by a newline; '' if none)
+   !> for a dynamic analysis that cannot resolve what it is given: a DT not well below
+   !> the shortest period of the harmonic *MOTIONs (fewer than min_steps_per_period steps
+   !> a period) or longer than the sampling interval of a *MOTION table or of an
+   !> *AMPLITUDE table used by a *LOAD (the steps skip its points); an OUTPUT INTERVAL
+   !> that writes fewer than min_frames_per_period frames a shortest harmonic period (the
+   !> results miss the extremes of the motion). The run goes on.
+   function dynamic_warnings(deck, model) result(text)
+      type(deck_t), intent(in) :: deck      !< all cards
+      type(model_t), intent(in) :: model    !< the validated model
+      character(len=:), allocatable :: text !< the warning lines
+      real(wp) :: dt, out, period, sampling
+      integer :: ic, idyn, j, im, ia
+      character(len=:), allocatable :: dt_at, out_at, what, shortest
+      text = ''
+      if (.not. model%dynamic%requested) return
+      idyn = 0
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword == 'DYNAMIC') idyn = ic
+      end do
+      if (idyn == 0) return
+      dt = model%dynamic%dt
+      out = model%dynamic%output_interval
+      dt_at = param_at(deck%cards(idyn), 'DT')
+      out_at = param_at(deck%cards(idyn), 'OUTPUT INTERVAL')
+      ! the shortest harmonic period, and where
+      period = huge(1.0_wp)
+      shortest = ''
+      im = 0
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword /= 'MOTION') cycle
+         im = im + 1
+         if (im > size(model%motions)) exit
+         associate (mo => model%motions(im), card => deck%cards(ic))
+            if (mo%kind == motion_harmonic) then
+               do j = 1, 3
+                  if (.not. (mo%frequency(j) > 0.0_wp .and. mo%amplitude(j) /= 0.0_wp)) cycle
+                  if (1.0_wp/mo%frequency(j) < period) then
+                     period = 1.0_wp/mo%frequency(j)
+                     shortest = 'the motion at '//real_str(mo%frequency(j))//' Hz (*MOTION'// &
+                                ' at '//card%file//':'//int_str(card%line)//')'
+                  end if
+               end do
+            else if (allocated(mo%time)) then
+               if (size(mo%time) >= 2) then
+                  sampling = minval(mo%time(2:) - mo%time(:size(mo%time) - 1))
+                  what = 'the *MOTION table '//mo%file//' (*MOTION at '//card%file//':'// &
+                         int_str(card%line)//')'
+                  call check_sampling(sampling, what)
+               end if
+            end if
+         end associate
+      end do
+      ia = 0
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword /= 'AMPLITUDE') cycle
+         ia = ia + 1
+         if (ia > size(model%amplitudes)) exit
+         if (.not. allocated(model%loads)) exit
+         if (.not. any(model%loads%amplitude == ia)) cycle
+         associate (amp => model%amplitudes(ia), card => deck%cards(ic))
+            if (size(amp%time) < 2) cycle
+            sampling = minval(amp%time(2:) - amp%time(:size(amp%time) - 1))
+            what = 'the *AMPLITUDE '//trim(amp%name)//' (at '//card%file//':'// &
+                   int_str(card%line)//'), used by a *LOAD'
+            call check_sampling(sampling, what)
+         end associate
+      end do
+      if (len(shortest) == 0) return
+      if (dt > period/min_steps_per_period) then
+         text = text//dt_at//': warning: *DYNAMIC: DT='//real_str(dt)//' s is not well '// &
+                'below the period of '//shortest//', '//num3(period)//' s: '// &
+                num3(period/dt)//' steps a period, fewer than '// &
+                num3(min_steps_per_period)//' (at 2 or fewer the motion is aliased '// &
+                'away); take DT <= '//num3_down(period/min_steps_per_period)//' s'//lf
+      else if (out > 0.0_wp .and. out > period/min_frames_per_period) then
+         text = text//out_at//': warning: *DYNAMIC: OUTPUT INTERVAL='//real_str(out)// &
+                ' s writes '//num3(period/out)//' frames a period of '//shortest// &
+                ', fewer than '//num3(min_frames_per_period)//': the results miss '// &
+                'the extremes of the motion; take OUTPUT INTERVAL <= '// &
+                num3_down(period/min_frames_per_period)//' s'//lf
+      end if
+   contains
+      !> Warn when DT is longer than a table's sampling interval.
+      subroutine check_sampling(dtab, name)
+         real(wp), intent(in) :: dtab          !< shortest interval between rows [s]
+         character(len=*), intent(in) :: name  !< the table, for the message
+         if (.not. dt > dtab*(1.0_wp + 1.0e-9_wp)) return
+         text = text//dt_at//': warning: *DYNAMIC: DT='//real_str(dt)//' s is longer '// &
+                'than the sampling interval of '//name//', '//num3(dtab)//' s: the '// &
+                'steps skip its points; take DT <= '//num3_down(dtab*(1.0_wp + 1.0e-9_wp))// &
+                ' s'//lf
+      end subroutine check_sampling
+   end function dynamic_warnings
+
+   !> A positive number with 3 significant digits, for a message: '3.04', '0.152'.
+   pure function num3(x) result(t)
+      real(wp), intent(in) :: x           !< the number
+      character(len=:), allocatable :: t  !< its text
+      character(len=32) :: b, f
+      integer :: d
+      d = 2 - floor(log10(max(abs(x), tiny(x))))
+      if (d < 0 .or. d > 9) then
+         write (b, '(es9.2)') x
+      else
+         write (f, '(a,i0,a)') '(f0.', d, ')'
+         write (b, f) x
+      end if
+      t = trim(adjustl(b))
+      if (index(t, '.') > 0 .and. index(t, 'E') == 0) then
+         do while (t(len(t):len(t)) == '0')
+            t = t(:len(t) - 1)
+         end do
+         if (t(len(t):len(t)) == '.') t = t(:len(t) - 1)
+      end if
+      if (t(1:1) == '.') t = '0'//t
+   end function num3
+
+   !> A positive number rounded down to 3 significant digits (a bound to stay below).
+   pure function num3_down(x) result(t)
+      real(wp), intent(in) :: x           !< the number, > 0
+      character(len=:), allocatable :: t  !< its text
+      real(wp) :: scale
+      scale = 10.0_wp**(floor(log10(x)) - 2)
+      t = num3(floor(x/scale)*scale)
+   end function num3_down
+
+   !> 'FILE:LINE' of parameter `name` of a card (the keyword line's if not given).
+   pure function param_at(card, name) result(at)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      character(len=:), allocatable :: at  !< location
+      integer :: ip
+      ip = card_find_param(card, name)
+      if (ip > 0) then
+         at = card%file//':'//int_str(card%params(ip)%line)
+      else
+         at = card%file//':'//int_str(card%line)
+      end if
+   end function param_at
 
    !> Whole-deck checks of the dynamic keywords, once the lines and boundaries are
    !> resolved: AMPLITUDE= of *LOAD names an *AMPLITUDE; a *MOTION's line and node exist,

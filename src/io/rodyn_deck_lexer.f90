@@ -49,6 +49,8 @@ module rodyn_deck_lexer
    integer, parameter :: max_exponent10 = 100   !< numbers are below 10**max_exponent10
    integer, parameter :: min_exponent10 = -100  !< non-zero numbers are at least 10**min_..
    character(len=1), parameter :: lf = achar(10), cr = achar(13), tab = achar(9)
+   !> the UTF-8 byte-order mark, EF BB BF
+   character(len=3), parameter :: utf8_bom = achar(239)//achar(187)//achar(191)
 
    !> A string of any length (one field of a data line, one line of a file).
    type :: field_t
@@ -1317,7 +1319,8 @@ contains
 
    ! ===================================================================== files
 
-   !> Read a whole file into a string. ok = .false. if it cannot be opened or read.
+   !> Read a whole file into a string, without a leading UTF-8 byte-order mark. ok =
+   !> .false. if it cannot be opened or read.
    subroutine read_file_text(path, text, ok)
       character(len=*), intent(in) :: path                !< file to read
       character(len=:), allocatable, intent(out) :: text  !< its contents
@@ -1347,6 +1350,10 @@ contains
          end if
       end if
       close (u)
+      ! a UTF-8 byte-order mark (Windows editors write one) is no part of the text
+      if (len(text) >= 3) then
+         if (text(1:3) == utf8_bom) text = text(4:)
+      end if
       ok = .true.
    end subroutine read_file_text
 

@@ -14,11 +14,18 @@ module rodyn_deck_support
    implicit none
    private
    public :: ref_t, pending_t, max_cutbacks, max_elements
+   public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: check_once, get_node, get_bounded, get_tolerance, data_check, param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
+   ! Physically absurd magnitudes, refused at reading (docs/deck.md, "Bounds"):
+   real(wp), parameter :: max_gravity = 1000.0_wp      !< |g| at most 100 g [m/s2]
+   real(wp), parameter :: max_frequency = 1000.0_wp    !< a prescribed motion's [Hz]
+   real(wp), parameter :: max_distance = 1.0e7_wp      !< LENGTH, coordinates [m]
+   integer, parameter :: max_increments = 100000       !< *STATIC INCREMENTS
+   integer, parameter :: max_iterations = 1000         !< MAX ITERATIONS (Newton)
 
    !> A reference by name from one card to a section, line or amplitude, resolved after
    !> all cards are read.

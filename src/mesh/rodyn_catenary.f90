@@ -81,7 +81,7 @@ contains
       call catenary_ends(cat, f, jac)
       res = norm2(f - [xs, zs])
       do it = 1, 200
-         if (res <= 1.0e-13_wp*length) return
+         if (res <= 1.0e-13_wp*hanging_length(cat)) return
          det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
          dx(1) = -(jac(2, 2)*(f(1) - xs) - jac(1, 2)*(f(2) - zs))/det
          dx(2) = -(-jac(2, 1)*(f(1) - xs) + jac(1, 1)*(f(2) - zs))/det
@@ -101,10 +101,26 @@ contains
          if (ls > 60) exit
          res = res_new
       end do
-      if (res <= 1.0e-10_wp*length) return
-      write (msg, '(a,es10.3,a)') 'catenary_solve: no convergence (end misfit ', res, ' m)'
+      if (res <= 1.0e-10_wp*hanging_length(cat)) return
+      if (hanging_length(cat) < huge(1.0_wp) .and. res < huge(1.0_wp)) then
+         write (msg, '(a,es10.3,a,es10.3,a)') 'the starting catenary does not converge '// &
+            '(end misfit ', res, ' m on a hanging length of ', hanging_length(cat), ' m)'
+      else
+         write (msg, '(a,es11.3e3,a,es11.3e3,a)') 'the starting catenary does not '// &
+            'converge (its tensions overflow or underflow: weight ', w, ' N/m, EA ', ea, ' N)'
+      end if
       call set_error(err, stat_numerical, trim(msg))
    end subroutine catenary_solve
+
+   !> Length of the line as it hangs, stretched by its largest tension: L (1 + T_max/EA),
+   !> the scale of the end misfit's round-off (a line of tiny EA stretches to many times
+   !> its unstretched length, and the misfit with it). Infinite when EA underflows it.
+   pure real(wp) function hanging_length(cat) result(ls)
+      type(catenary_t), intent(in) :: cat !< catenary with trial h, v0
+      real(wp) :: tmax
+      tmax = max(hypot(cat%h, cat%v0), hypot(cat%h, cat%v0 + cat%w*cat%length))
+      ls = cat%length + cat%length*(tmax/cat%ea)
+   end function hanging_length
 
    !> Position (X, Z) and unit tangent (tX, tZ) at unstretched arc length s; tension.
    !> With a grounded length lb > 0 (v0 = 0): on the seabed for s <= lb, stretched by H.

@@ -16,6 +16,7 @@ module rodyn_mesh
    use rodyn_environment, only: seabed_z
    use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule
    use rodyn_shape, only: max_nen, max_order
+   use rodyn_memory, only: memory_estimate, memory_physical, memory_text
    implicit none
    private
    public :: mesh_t, mesh_build, mesh_node
@@ -78,13 +79,36 @@ contains
                                           dim=1)
    end function mesh_nearest_node
 
-   !> Build the mesh and the initial configuration from the model.
-   subroutine mesh_build(model, mesh, state, err)
+   !> Build the mesh and the initial configuration from the model. First the memory the
+   !> run needs is estimated (rodyn_memory): more than the machine's physical memory is
+   !> refused (stat_input, at the *LINE card with most elements) before any allocation.
+   !> With initial_shape false (rodyn --check, which computes nothing) the lines' starting
+   !> catenaries are not solved: the state is left at zero, only the checks that need no
+   !> computing (a slack line that cannot hang) are made.
+   subroutine mesh_build(model, mesh, state, err, initial_shape)
       type(model_t), intent(in) :: model     !< validated model
       type(mesh_t), intent(out) :: mesh      !< mesh
       type(state_t), intent(inout) :: state  !< initial configuration
       type(error_t), intent(inout) :: err    !< status
+      logical, intent(in), optional :: initial_shape !< solve the starting shape (default)
       integer :: l, nl, nn, ne, p, k
+      logical :: shape
+      real(wp) :: need, have
+      integer :: largest
+      shape = .true.
+      if (present(initial_shape)) shape = initial_shape
+      call memory_estimate(model, need, largest)
+      have = memory_physical()
+      if (have > 0.0_wp .and. need > have .and. largest > 0) then
+         associate (ld => model%lines(largest))
+            call set_error(err, stat_input, line_at(model, largest)//': error: *LINE: '// &
+                           'the model needs about '//memory_text(need)//' of memory '// &
+                           '(line '//trim(ld%name)//': '//int_text(ld%n_elements)// &
+                           ' elements of order '//int_text(ld%order)//'), more than the '// &
+                           memory_text(have)//' of this machine: use fewer elements')
+         end associate
+         return
+      end if
       do p = 1, max_order
          mesh%rules(p) = rod_rule(p)
       end do
@@ -124,7 +148,7 @@ contains
             mesh%line_cable(l) = all(mesh%elem_cable(e1:e1 + model%lines(l)%n_elements - 1))
          end associate
          call line_stress_free_strains(model, mesh, l)
-         call line_initial_shape(model, mesh, l, state, err)
+         call line_initial_shape(model, mesh, l, state, shape, err)
          if (has_error(err)) return
       end do
       mesh%n_cable = count(mesh%elem_cable)
@@ -213,6 +237,29 @@ contains
       ea = ea/model%lines(l)%length
    end subroutine line_mean_weight
 
+   !> An integer as text.
+   pure function int_text(i) result(s)
+      integer, intent(in) :: i           !< the integer
+      character(len=:), allocatable :: s !< its decimal text
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function int_text
+
+   !> 'FILE:LINE' of the *LINE card of line l (the deck's name for a line built in code).
+   pure function line_at(model, l) result(at)
+      type(model_t), intent(in) :: model  !< model
+      integer, intent(in) :: l            !< line index
+      character(len=:), allocatable :: at !< location
+      if (allocated(model%lines(l)%card_at)) then
+         at = model%lines(l)%card_at
+      else if (allocated(model%deck_file)) then
+         at = model%deck_file
+      else
+         at = 'rodyn'
+      end if
+   end function line_at
+
    !> True when node k of line l is held in position by a *BOUNDARY.
    pure logical function held_in_position(model, l, k)
       type(model_t), intent(in) :: model !< model
@@ -282,11 +329,12 @@ contains
    !> Initial configuration of line l: the elastic catenary when both ends are held in
    !> position and the line hangs (weight > 0, ends not vertically aligned), else the
    !> straight line from A towards B.
-   subroutine line_initial_shape(model, mesh, l, state, err)
+   subroutine line_initial_shape(model, mesh, l, state, shape, err)
       type(model_t), intent(in) :: model     !< model
       type(mesh_t), intent(in) :: mesh       !< mesh
       integer, intent(in) :: l               !< line index
       type(state_t), intent(inout) :: state  !< configuration (line l filled)
+      logical, intent(in) :: shape           !< solve the shape (else only check the line)
       type(error_t), intent(inout) :: err    !< status
       real(wp) :: chord(3), up(3), eh(3), span, rise, w, gmag, xz(2), tg(2), tens, t(3)
       real(wp) :: hint(3), dist, ea, sk, z_lo, xy(3)
@@ -313,10 +361,12 @@ contains
                write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its held ends' // &
                   ' but cannot hang as a catenary (weightless, or ends vertically above' // &
                   ' each other): no static shape to start from'
-               call set_error(err, stat_input, trim(model%deck_file)//': error: '//trim(msg))
+               call set_error(err, stat_input, line_at(model, l)//': error: *LINE: '// &
+                              trim(msg))
                return
             end if
          end if
+         if (.not. shape) return
          if (mesh%line_catenary(l) .and. w > 0.0_wp .and. span >= 1.0e-9_wp*ld%length) then
             eh = eh/span
             ! the lower end on the seabed: the catenary with a grounded length if it touches
@@ -333,7 +383,8 @@ contains
                b_low = .false.
                call catenary_solve(w, ea, ld%length, span, rise, cat, err)
                if (has_error(err)) then
-                  err%message = 'line '//trim(ld%name)//': '//err%message
+                  err%message = line_at(model, l)//': error: *LINE: line '//trim(ld%name)// &
+                                ': '//err%message
                   return
                end if
             end if

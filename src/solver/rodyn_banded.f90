@@ -26,6 +26,7 @@
 module rodyn_banded
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, stat_numerical
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
@@ -263,6 +264,13 @@ contains
       integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
       integer :: info, node
       character(len=160) :: msg
+      ! an overflowed state, not a mechanism: say so rather than blame the supports (the
+      ! diagonal only: n values, against n kl ku operations of the factorisation)
+      if (.not. all(ieee_is_finite(bm%ab(bm%kv, :)))) then
+         call set_error(err, stat_numerical, 'banded_factor: the stiffness holds Inf or '// &
+                        'NaN: the state diverged (overflow), not a singular tangent')
+         return
+      end if
       if (.not. bm%pivoting) then
          call factor_unpivoted(bm, info)
          if (info /= 0) then

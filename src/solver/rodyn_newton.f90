@@ -141,7 +141,8 @@ contains
       if (has_error(err)) return
       rn = prob%residual_norm()
       if (.not. ieee_is_finite(rn)) then
-         call set_error(err, stat_numerical, 'newton_solve: residual is not finite')
+         call set_error(err, stat_numerical, 'newton_solve: the residual '// &
+                        'overflowed (not finite): the state diverged')
          return
       end if
       call log_line(0, rn, 0.0_wp, 0.0_wp)
@@ -197,7 +198,8 @@ contains
             alpha = a_new
          end do
          if (.not. ieee_is_finite(rn_trial)) then
-            call set_error(err, stat_numerical, 'newton_solve: residual is not finite')
+            call set_error(err, stat_numerical, 'newton_solve: the residual '// &
+                        'overflowed (not finite): the state diverged')
             return
          end if
          rn_prev = rn

@@ -34,6 +34,7 @@ module rodyn_statics
    use rodyn_rotation, only: skew
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
    use rodyn_model, only: model_t
+   use rodyn_load_check, only: load_divergence_hint
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
@@ -258,6 +259,7 @@ contains
       integer :: level
       logical :: retried
       character(len=200) :: msg
+      character(len=:), allocatable :: why
       opts%max_iterations = model%static%max_iterations
       opts%force_tol = model%static%force_tol
       opts%disp_tol = model%static%disp_tol
@@ -312,9 +314,12 @@ contains
          if (level >= model%static%max_cutbacks) then
             write (msg, '(a,f9.6,a,i0,a)') 'statics: no convergence beyond load factor ', &
                lam, ' after ', level, ' halvings of the increment'
-            if (has_error(nerr)) msg = trim(msg)//' ('//nerr%message//')'
-            call set_error(err, stat_numerical, trim(msg))
-            summary%status = trim(msg)
+            ! what diverged: a load beyond the lines' reach, else the solver's reason
+            why = load_divergence_hint(model)
+            if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
+            if (len(why) > 0) why = ' ('//why//')'
+            call set_error(err, stat_numerical, trim(msg)//why)
+            summary%status = trim(msg)//why
             summary%complete = .false.
             return
          end if

@@ -55,7 +55,7 @@ def main():
     with open(os.path.join(inputs, "paper_case1.inp")) as f:
         base = f.read()
     section = os.path.join(inputs, "paper_cable_section.inc")
-    line = "*DYNAMIC, DT=0.1, TIME=900.0, OUTPUT INTERVAL=0.5"
+    line = "*DYNAMIC, DT=0.1, TIME=900.0, OUTPUT INTERVAL=0.1"
     if line not in base:
         sys.exit("paper_case1.inp: *DYNAMIC line not found")
     runs = {}
