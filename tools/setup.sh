@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Install what rodyn needs on a Debian machine, only what is missing:
-# gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface (Debian packages),
+# gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface, m4 (to build pFUnit for
+# the tests: tools/pfunit.sh) (Debian packages),
 # numpy, matplotlib, scipy, h5py, pytest for the post-processing (PyPI), and the
 # post-processing package itself (postproc/, editable: its console commands go on the
 # PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev)
+debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev m4)
 # python3 and pip may come from elsewhere (pyenv): ask Debian only when absent
 command -v python3 >/dev/null 2>&1 || debs+=(python3)
 python3 -m pip --version >/dev/null 2>&1 || debs+=(python3-pip)

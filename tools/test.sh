@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Whole test suite: set up, then
+# Whole test suite: set up, build real pFUnit 4.9.0 once per machine into a cache outside
+# the repository (tools/pfunit.sh; later runs reuse it), then
 #  1. Debug build (-fcheck=all -ffpe-trap=invalid,zero,overflow, warnings on): every test;
 #  2. Release build: every test again (optimised code paths), and the post-processing
 #     tests (pytest) on a result made by the Release program.
@@ -7,13 +8,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
+pfunit="$(bash tools/pfunit.sh)"  # its install prefix
 jobs="$(nproc)"
 
-cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON >/dev/null
+cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON \
+      -DCMAKE_PREFIX_PATH="$pfunit" >/dev/null
 cmake --build build-debug -j "$jobs" >/dev/null
 (cd build-debug && ctest -j "$jobs" --output-on-failure)
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
+      -DCMAKE_PREFIX_PATH="$pfunit" >/dev/null
 cmake --build build -j "$jobs" >/dev/null
 (cd build && ctest -j "$jobs" --output-on-failure)
 
