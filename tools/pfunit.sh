@@ -6,8 +6,8 @@
 #
 #   cache:  ${RODYN_PFUNIT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/rodyn}
 #   prefix: <cache>/pfunit-4.9.0-gfortran-<gfortran version>
-#   source: ../shared/vendor/pFUnit-4.9.0.tar.gz beside the repository when there
-#           (sha256 checked), else pFUnit's own v4.9.0 release on GitHub.
+#   source: ../shared/vendor/pFUnit-4.9.0.tar.gz beside the repository when there,
+#           else pFUnit's own v4.9.0 release on GitHub (sha256 checked either way).
 #
 # Safe to interrupt: everything is built and installed in a temporary folder of the
 # cache, and the finished install is renamed into place in one step, so the prefix is
@@ -19,9 +19,14 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 
 version=4.9.0
-sha256=14f70ea1d33194b6676590212dc3520f06d693debd146ac0a7e4fb084383c2ab  # the vendored tarball
-url="https://github.com/Goddard-Fortran-Ecosystem/pFUnit/releases/download/v${version}/pFUnit-${version}.tar.gz"
+# the vendored tarball (../shared/vendor/README.md)
 vendored="$root/../shared/vendor/pFUnit-${version}.tar.gz"
+vendored_sha256=14f70ea1d33194b6676590212dc3520f06d693debd146ac0a7e4fb084383c2ab
+# pFUnit's release asset (an uncompressed tar holding the git submodules gFTL, gFTL-shared
+# and fArgParse, unlike GitHub's automatic archives of the tag); its sha256 as Spack's
+# pfunit package lists it
+url="https://github.com/Goddard-Fortran-Ecosystem/pFUnit/releases/download/v${version}/pFUnit-v${version}.tar"
+url_sha256=caea019f623d4e02dd3e8442cee88e6087b4c431a2628e9ec2de55b527b51ab6
 
 fc="${FC:-gfortran}"
 fc_version="$("$fc" -dumpfullversion 2>/dev/null || "$fc" -dumpversion)"
@@ -48,6 +53,7 @@ if command -v flock >/dev/null 2>&1; then
     echo "$prefix"
     exit 0
   fi
+  rm -rf "$cache/.$name.tmp."*  # left by a killed build (no one else is building)
 fi
 if [ -e "$prefix" ]; then  # not complete (made by hand?): never reuse nor overwrite it
   echo "pfunit: $prefix exists but holds no complete pFUnit install; remove it" >&2
@@ -67,26 +73,30 @@ command -v m4 >/dev/null 2>&1 || {
 }
 
 # ------------------------------------------------------------------ source
-tarball="$tmp/pFUnit-${version}.tar.gz"
+tarball="$tmp/pFUnit-${version}.tar"
 if [ -f "$vendored" ]; then
   echo "pfunit: source: $vendored" >&2
   cp "$vendored" "$tarball"
-  if ! echo "$sha256  $tarball" | sha256sum -c --status; then
-    echo "pfunit: $vendored: sha256 is not $sha256" >&2
-    exit 1
-  fi
+  sha256="$vendored_sha256"
 else
-  # pFUnit's release tarball holds its git submodules (gFTL, fArgParse), unlike GitHub's
-  # automatic source archives of the tag.
   echo "pfunit: source: $url" >&2
   if command -v curl >/dev/null 2>&1; then
-    curl -fsSL --retry 3 -o "$tarball" "$url"
+    fetch=(curl -fsSL --retry 3 -o "$tarball" "$url")
   else
-    wget -q -O "$tarball" "$url"
+    fetch=(wget -q -O "$tarball" "$url")
   fi
+  "${fetch[@]}" || {
+    echo "pfunit: could not download $url (offline? put the tarball at $vendored)" >&2
+    exit 1
+  }
+  sha256="$url_sha256"
+fi
+if ! echo "$sha256  $tarball" | sha256sum -c --status; then
+  echo "pfunit: the pFUnit source's sha256 is not $sha256" >&2
+  exit 1
 fi
 mkdir "$tmp/src"
-tar -xzf "$tarball" -C "$tmp/src" --strip-components=1
+tar -xf "$tarball" -C "$tmp/src" --strip-components=1  # gzip or not: tar sees which
 
 # ------------------------------------------------------------------ build and install
 # Serial pFUnit only (no MPI, OpenMP, hamcrest, ESMF, robust runner). Installed with

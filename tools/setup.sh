@@ -36,7 +36,11 @@ fi
 # checkout. Several checkouts may share one Python: install again when the installed
 # rodyn_post is another checkout's, or its commands or version are not those of
 # pyproject.toml; otherwise nothing is done (a fraction of a second).
-if ! python3 - "$PWD/postproc" >/dev/null 2>&1 <<'EOF'
+# RODYN_SKIP_PY_INSTALL=1 leaves the installed one alone (a throw-away clone on a machine
+# whose Python others use: run its tests with PYTHONPATH=<clone>/postproc instead).
+if [ "${RODYN_SKIP_PY_INSTALL:-0}" = 1 ]; then
+  echo "setup: RODYN_SKIP_PY_INSTALL=1: the post-processing package is not installed"
+elif ! python3 - "$PWD/postproc" >/dev/null 2>&1 <<'EOF'
 import importlib.metadata, importlib.util, re, sys
 from pathlib import Path
 postproc = Path(sys.argv[1]).resolve()
