@@ -11,14 +11,22 @@ bash tools/setup.sh
 pfunit="$(bash tools/pfunit.sh)"  # its install prefix
 jobs="$(nproc)"
 
+# Build quietly (stdout dropped), but show stderr (warnings, errors) except the two lines
+# pFUnit's preprocessor writes for every .pf it translates. A failed build fails the script
+# (pipefail: the status is cmake's).
+build() {
+  cmake --build "$1" -j "$jobs" 2>&1 >/dev/null |
+    { grep -v -e '^Processing file ' -e '^ \.\.\. Done\.  Results in ' >&2 || true; }
+}
+
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DBUILD_TESTING=ON \
       -DCMAKE_PREFIX_PATH="$pfunit" >/dev/null
-cmake --build build-debug -j "$jobs" >/dev/null
+build build-debug
 (cd build-debug && ctest -j "$jobs" --output-on-failure)
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
       -DCMAKE_PREFIX_PATH="$pfunit" >/dev/null
-cmake --build build -j "$jobs" >/dev/null
+build build
 (cd build && ctest -j "$jobs" --output-on-failure)
 
 RODYN_EXE="$PWD/build/rodyn" python3 -m pytest -q postproc/tests
