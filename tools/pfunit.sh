@@ -13,8 +13,10 @@
 # cache, and the finished install is renamed into place in one step, so the prefix is
 # either complete or absent. Concurrent callers wait for each other (flock). On failure
 # the build log is kept beside the prefix and its end is shown.
-# Needs gfortran, cmake, make and m4 (tools/setup.sh installs them). Usage:
-#   bash tools/pfunit.sh            (about 2 minutes of CPU the first time, then instant)
+# Needs gfortran (or $FC), cmake, make, python3 and m4 (tools/setup.sh installs them).
+# Usage:
+#   bash tools/pfunit.sh     (about 3 minutes of CPU the first time, on
+#                             RODYN_PFUNIT_JOBS=2 jobs by default; then instant)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 
@@ -66,7 +68,7 @@ tmp="$(mktemp -d "$cache/.$name.tmp.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 
 echo "pfunit: building pFUnit ${version} with $fc ${fc_version} into $prefix" \
-     "(once per machine, about 2 minutes; log: $log)" >&2
+     "(once per machine, about 3 minutes of CPU; log: $log)" >&2
 command -v m4 >/dev/null 2>&1 || {
   echo "pfunit: m4 is needed to build pFUnit (Debian: apt-get install m4, or bash tools/setup.sh)" >&2
   exit 1
