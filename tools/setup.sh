@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Install what rodyn needs on a Debian machine, only what is missing:
-# gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface (Debian packages),
+# gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface, m4 (to build pFUnit for
+# the tests: tools/pfunit.sh) (Debian packages),
 # numpy, matplotlib, scipy, h5py, pytest for the post-processing (PyPI), and the
 # post-processing package itself (postproc/, editable: its console commands go on the
 # PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev)
+debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev m4)
 # python3 and pip may come from elsewhere (pyenv): ask Debian only when absent
 command -v python3 >/dev/null 2>&1 || debs+=(python3)
 python3 -m pip --version >/dev/null 2>&1 || debs+=(python3-pip)
@@ -35,7 +36,11 @@ fi
 # checkout. Several checkouts may share one Python: install again when the installed
 # rodyn_post is another checkout's, or its commands or version are not those of
 # pyproject.toml; otherwise nothing is done (a fraction of a second).
-if ! python3 - "$PWD/postproc" >/dev/null 2>&1 <<'EOF'
+# RODYN_SKIP_PY_INSTALL=1 leaves the installed one alone (a throw-away clone on a machine
+# whose Python others use: run its tests with PYTHONPATH=<clone>/postproc instead).
+if [ "${RODYN_SKIP_PY_INSTALL:-0}" = 1 ]; then
+  echo "setup: RODYN_SKIP_PY_INSTALL=1: the post-processing package is not installed"
+elif ! python3 - "$PWD/postproc" >/dev/null 2>&1 <<'EOF'
 import importlib.metadata, importlib.util, re, sys
 from pathlib import Path
 postproc = Path(sys.argv[1]).resolve()
