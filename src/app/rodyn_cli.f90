@@ -3,7 +3,7 @@
 !>         [--progress] [--version] [--help]
 module rodyn_cli
    use rodyn_error, only: error_t, set_error, stat_input
-   use rodyn_deck_params, only: param_override_t, param_valid_name
+   use rodyn_deck_params, only: param_override_t, param_valid_name, upper_case
    implicit none
    private
    public :: cli_options_t, cli_parse, cli_usage, cli_default_outdir
@@ -134,7 +134,7 @@ contains
                         "' is not a parameter name (a letter, then letters, digits and '_')")
          return
       end if
-      o%name = upper(o%name)
+      o%name = upper_case(o%name)
       if (len(o%text) == 0) then
          call set_error(err, stat_input, "rodyn: error: --set '"//arg//"': no value")
          return
@@ -148,17 +148,6 @@ contains
       opts%sets = [opts%sets, o]
    end subroutine add_set
 
-   !> Upper-case copy (ASCII letters).
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s  !< text
-      character(len=len(s)) :: u         !< the text in upper case
-      integer :: k, c
-      u = s
-      do k = 1, len(s)
-         c = iachar(s(k:k))
-         if (c >= iachar('a') .and. c <= iachar('z')) u(k:k) = achar(c - 32)
-      end do
-   end function upper
 
    !> Default output folder: the deck's file name without folder and extension.
    pure function cli_default_outdir(deck) result(dir)

@@ -30,7 +30,7 @@ module rodyn_deck_lexer
    use rodyn_model, only: name_len
    use rodyn_deck_params, only: param_table_t, param_override_t, deck_param_t, param_find, &
                                 param_add, param_split_definition, param_value, &
-                                param_substitute
+                                param_substitute, upper_case
    implicit none
    private
    public :: field_t, param_t, data_line_t, card_t, deck_t, table_t
@@ -1215,17 +1215,6 @@ contains
 
    ! =================================================================== strings
 
-   !> Upper-case copy of s (ASCII letters only).
-   pure function upper_case(s) result(u)
-      character(len=*), intent(in) :: s  !< text
-      character(len=len(s)) :: u         !< the text in upper case
-      integer :: k, c
-      u = s
-      do k = 1, len(s)
-         c = iachar(s(k:k))
-         if (c >= iachar('a') .and. c <= iachar('z')) u(k:k) = achar(c - 32)
-      end do
-   end function upper_case
 
    !> A keyword or parameter name: trimmed, upper case, runs of blanks made one blank.
    pure function normalise_name(s) result(n)

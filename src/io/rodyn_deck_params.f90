@@ -25,7 +25,7 @@ module rodyn_deck_params
    public :: deck_param_t, param_table_t, param_override_t
    public :: param_valid_name, param_find, param_add, param_split_definition
    public :: param_value, param_eval, param_substitute, param_number_text
-   public :: param_name_len
+   public :: param_name_len, upper_case
 
    integer, parameter :: param_name_len = 32      !< longest parameter name
    real(wp), parameter :: big = 1.0e300_wp        !< largest magnitude of a value
@@ -83,7 +83,7 @@ contains
       type(param_table_t), intent(in) :: table !< parameters
       character(len=*), intent(in) :: name     !< name, any case
       character(len=len(name)) :: u
-      u = upper(name)
+      u = upper_case(name)
       do k = 1, table%n
          if (table%p(k)%name == u) return
       end do
@@ -127,7 +127,7 @@ contains
                    "letters, digits and '_', at most "//itoa(param_name_len)//' characters)')
          return
       end if
-      name = upper(name)
+      name = upper_case(name)
       if (len(text) == 0) call fail(err, name//": no value after '='")
    end subroutine param_split_definition
 
@@ -377,7 +377,7 @@ contains
             if (index(letters//digits10//'_', ps%s(ps%pos:ps%pos)) == 0) exit
             ps%pos = ps%pos + 1
          end do
-         name = upper(ps%s(first:ps%pos - 1))
+         name = upper_case(ps%s(first:ps%pos - 1))
          k = param_find(table, name)
          if (k == 0) then
             ps%msg = "unknown name '"//name//"' (not a parameter defined above)"
@@ -541,8 +541,8 @@ contains
          end if
          k = param_find(table, name)
          if (k == 0) then
-            call fail(err, '<'//upper(name)//'> is not defined (no *PARAMETER '// &
-                      upper(name)//' above)')
+            call fail(err, '<'//upper_case(name)//'> is not defined (no *PARAMETER '// &
+                      upper_case(name)//' above)')
             return
          end if
          table%p(k)%used = .true.
@@ -620,8 +620,8 @@ contains
       err%message = message
    end subroutine fail
 
-   !> Upper-case copy (ASCII letters).
-   pure function upper(s) result(u)
+   !> Upper-case copy of s (ASCII letters only).
+   pure function upper_case(s) result(u)
       character(len=*), intent(in) :: s  !< text
       character(len=len(s)) :: u         !< the text in upper case
       integer :: k, c
@@ -630,7 +630,7 @@ contains
          c = iachar(s(k:k))
          if (c >= iachar('a') .and. c <= iachar('z')) u(k:k) = achar(c - 32)
       end do
-   end function upper
+   end function upper_case
 
    !> Integer as text.
    pure function itoa(i) result(s)

@@ -10,7 +10,7 @@ module rodyn_outdir
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
    use rodyn_error, only: error_t, set_error, has_error, stat_io
-   use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
+   use rodyn_outfile, only: path_join, out_file_t, outfile_create, outfile_put, outfile_commit, &
       temp_name, remove_file
    implicit none
    private
@@ -118,7 +118,7 @@ contains
       if (has_error(err)) return
       d = trim(dir)
       if (len(d) == 0) d = '.'
-      path = join(d, lock_name)
+      path = path_join(d, lock_name)
       do attempt = 1, 3
          open (newunit=u, file=path, status='new', action='write', iostat=ios)
          if (ios == 0) then
@@ -229,15 +229,4 @@ contains
       s = trim(buf)
    end function int_text
 
-   !> dir/name (no doubled slash).
-   pure function join(dir, name) result(path)
-      character(len=*), intent(in) :: dir   !< folder
-      character(len=*), intent(in) :: name  !< file name
-      character(len=:), allocatable :: path !< joined path
-      if (dir(len(dir):len(dir)) == '/') then
-         path = dir//name
-      else
-         path = dir//'/'//name
-      end if
-   end function join
 end module rodyn_outdir

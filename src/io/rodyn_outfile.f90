@@ -28,7 +28,7 @@ module rodyn_outfile
    private
    public :: out_file_t, outfile_create, outfile_put, outfile_flush, outfile_mark
    public :: outfile_commit, outfile_close, outfile_abort, outfile_pending
-   public :: temp_name, commit_rename, remove_file, system_error
+   public :: temp_name, commit_rename, remove_file, system_error, path_join
 
    integer, parameter :: chunk = 65536   !< buffer of a whole file, written when full
 
@@ -108,7 +108,7 @@ contains
       character(len=*), intent(in) :: dir   !< folder
       character(len=*), intent(in) :: name  !< final file name
       character(len=:), allocatable :: path !< temporary path
-      path = join(dir, '.'//name//'.tmp')
+      path = path_join(dir, '.'//name//'.tmp')
    end function temp_name
 
    !> Create a file in `dir`: '<dir>/.<name>.tmp' to be committed, or with live true
@@ -121,7 +121,7 @@ contains
       logical, intent(in), optional :: live       !< write under the final name
       f%live = .false.
       if (present(live)) f%live = live
-      f%final = join(dir, name)
+      f%final = path_join(dir, name)
       if (f%live) then
          f%path = f%final
       else
@@ -327,7 +327,7 @@ contains
    end subroutine grow
 
    !> dir/name (no doubled slash).
-   pure function join(dir, name) result(path)
+   pure function path_join(dir, name) result(path)
       character(len=*), intent(in) :: dir   !< folder
       character(len=*), intent(in) :: name  !< file name
       character(len=:), allocatable :: path !< joined path
@@ -338,5 +338,5 @@ contains
       else
          path = trim(dir)//'/'//name
       end if
-   end function join
+   end function path_join
 end module rodyn_outfile

@@ -10,6 +10,7 @@ module rodyn_output_common
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_dataset, &
       hdf5_create_group
    use rodyn_error, only: error_t
+   use rodyn_outfile, only: path_join
    implicit none
    private
    public :: text_of, status_of, path_join, one_line, describe, csv_name
@@ -74,19 +75,6 @@ contains
       end if
    end function status_of
 
-   !> dir/name (no doubled slash).
-   pure function path_join(dir, name) result(path)
-      character(len=*), intent(in) :: dir   !< folder
-      character(len=*), intent(in) :: name  !< file name
-      character(len=:), allocatable :: path !< joined path
-      if (len_trim(dir) == 0) then
-         path = name
-      else if (dir(len_trim(dir):len_trim(dir)) == '/') then
-         path = trim(dir)//name
-      else
-         path = trim(dir)//'/'//name
-      end if
-   end function path_join
 
    !> Text on one line: line breaks and tabs become blanks, trailing blanks dropped.
    pure function one_line(text) result(s)
