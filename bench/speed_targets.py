@@ -358,6 +358,17 @@ def peers_rows(rodyn, run_peers):
         note = (f"{when}; CableDyn {peer['wall_median_s']:.3g} s ({peer['settings']}), "
                 f"rodyn {mine['wall_median_s']:.3g} s ({mine['settings']}); "
                 f"with the peers' static start (wall_total_median_s): {total:.2f}")
+        # like for like (both timed inside the process over static start and stepping),
+        # in CSV files that have the column
+        lm = rp.best_at(rows, "rodyn", "tension_max_rel", PEERS_TARGET_ERROR,
+                        "wall_inprocess_median_s")
+        lp = rp.best_at(rows, "CableDyn", "tension_max_rel", PEERS_TARGET_ERROR,
+                        "wall_inprocess_median_s")
+        if lm is not None and lp is not None:
+            note += (f"; like for like (wall_inprocess_median_s): "
+                     f"{lp['wall_inprocess_median_s'] / lm['wall_inprocess_median_s']:.2f} "
+                     f"(CableDyn {lp['wall_inprocess_median_s']:.3g} s, rodyn "
+                     f"{lm['wall_inprocess_median_s']:.3g} s, {lm['settings']})")
         out.append(row(target, ">= 5", base, ISSUE, ratio, False, lambda v: v >= 5.0, ".2f",
                        note))
     return out
