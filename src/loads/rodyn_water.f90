@@ -141,13 +141,53 @@ contains
       real(wp), intent(out) :: fs(:, :)        !< (3, p+1) seabed forces [N]
       real(wp), intent(out) :: ke(:, :)        !< (3(p+1), 3(p+1)) d(fh + fs)/dx^{n+1} [N/m]
       logical, intent(in) :: want_k            !< form ke
-      real(wp) :: wj, nn(max_nen), ds(max_nen), gapn(max_nen), gcon(max_nen)
+      real(wp) :: wj, nn(max_nen), ds(max_nen), gapn(max_nen), gcon(max_nen), bc(max_nen)
       real(wp) :: lo(max_order + 1), hi(max_order + 1), xi
       integer :: g, a, nen, nparts, k
+      logical :: whole
       nen = p + 1
       fh = 0.0_wp
       fs = 0.0_wp
       if (want_k) ke = 0.0_wp
+      ! the seabed's parts of the element in contact (module header)
+      nparts = 0
+      whole = .false.
+      if (wl%env%seabed) then
+         do a = 1, nen     ! (loops, not array constructors: those allocate)
+            gapn(a) = dot_product(wl%env%n, xf(:, a)) - wl%env%c0
+            gcon(a) = gapn(a)
+            if (wl%env%dynamic) gcon(a) = gcon(a) + wl%env%c/wl%env%k* &
+                                          dot_product(wl%env%n, vf(:, a))
+         end do
+         if (minval(gcon(1:nen)) <= 0.1_wp*le) then
+            ! the polynomial lies between its least and largest Bernstein coefficients:
+            ! all of one sign decides the element without the root search
+            call bernstein_of_nodal(p, gcon(1:nen), bc(1:nen))
+            if (maxval(bc(1:nen)) < 0.0_wp) then
+               nparts = 1
+               lo(1) = -1.0_wp
+               hi(1) = 1.0_wp
+            else if (minval(bc(1:nen)) <= 0.0_wp) then
+               call contact_parts(p, gcon(1:nen), nparts, lo, hi)
+            end if
+         end if
+         whole = nparts == 1
+         if (whole) whole = lo(1) == -1.0_wp .and. hi(1) == 1.0_wp
+      end if
+      ! a cubic element grounded over its whole length: its water rule (p + 1 = 4 Gauss
+      ! points) is the seabed's, so water and seabed are taken together at each point
+      ! (one point law, one interpolation; mooring surge deck, 24 cubic cable elements:
+      ! 13 % fewer instructions a run)
+      if (whole .and. wl%ng(p) == 4) then
+         do g = 1, 4
+            nn(1:nen) = wl%n(1:nen, g, p)
+            ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
+            wj = wl%w(g, p)*0.5_wp*le
+            call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, &
+                                 ior(part_water, part_seabed), fh, fs, ke, want_k)
+         end do
+         return
+      end if
       do g = 1, wl%ng(p)
          nn(1:nen) = wl%n(1:nen, g, p)
          ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
@@ -155,15 +195,6 @@ contains
          call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, part_water, &
                               fh, fs, ke, want_k)
       end do
-      if (.not. wl%env%seabed) return
-      ! the seabed: exactly over the parts of the element where N > 0 (module header)
-      do a = 1, nen     ! (loops, not array constructors: those allocate)
-         gapn(a) = dot_product(wl%env%n, xf(:, a)) - wl%env%c0
-         gcon(a) = gapn(a)
-         if (wl%env%dynamic) gcon(a) = gcon(a) + wl%env%c/wl%env%k*dot_product(wl%env%n, vf(:, a))
-      end do
-      if (minval(gcon(1:nen)) > 0.1_wp*le) return
-      call contact_parts(p, gcon(1:nen), nparts, lo, hi)
       do k = 1, nparts
          do g = 1, 4
             if (lo(k) == -1.0_wp .and. hi(k) == 1.0_wp) then
@@ -202,25 +233,57 @@ contains
       real(wp), intent(inout) :: ke(:, :)      !< (3 nen, 3 nen) tangent [N/m]
       logical, intent(in) :: want_k            !< form the tangent
       real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
-      real(wp) :: ka(3, 3), kb(3, 3)
-      integer :: i, j
-      x = matmul(xf, nn(1:nen))
-      xp = matmul(xf, ds(1:nen))
-      v = matmul(vf, nn(1:nen))
-      acc = matmul(af, nn(1:nen))
+      real(wp) :: ka(3, 3), kn(3, 3), kd(3, 3), kb(3, 3), c
+      integer :: i, j, a
+      ! x, x', v and a at the point, in one pass over the nodes
+      x = 0.0_wp
+      xp = 0.0_wp
+      v = 0.0_wp
+      acc = 0.0_wp
+      do a = 1, nen
+         x = x + nn(a)*xf(:, a)
+         xp = xp + ds(a)*xf(:, a)
+         v = v + nn(a)*vf(:, a)
+         acc = acc + nn(a)*af(:, a)
+      end do
       call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, parts)
       do i = 1, nen
-         fh(:, i) = fh(:, i) + wj*nn(i)*gh
-         fs(:, i) = fs(:, i) + wj*nn(i)*gs
+         if (iand(parts, part_water) /= 0) fh(:, i) = fh(:, i) + wj*nn(i)*gh
+         if (iand(parts, part_seabed) /= 0) fs(:, i) = fs(:, i) + wj*nn(i)*gs
       end do
       if (.not. want_k) return
+      ! K_ij += wj N_i (N_j kn + N_j' kd), kn = c_x df/dx + c_v df/dv + c_a df/da,
+      ! kd = c_x df/dx'
+      kn = cx*kx + cv*kv + ca*ka
+      kd = cx*kxp
       do j = 1, nen
-         kb = cx*(nn(j)*kx + ds(j)*kxp) + cv*nn(j)*kv + ca*nn(j)*ka
+         kb = nn(j)*kn + ds(j)*kd
          do i = 1, nen
-            ke(3*i - 2:3*i, 3*j - 2:3*j) = ke(3*i - 2:3*i, 3*j - 2:3*j) + wj*nn(i)*kb
+            c = wj*nn(i)
+            ke(3*i - 2:3*i, 3*j - 2:3*j) = ke(3*i - 2:3*i, 3*j - 2:3*j) + c*kb
          end do
       end do
    end subroutine water_add_point
+
+   !> Bernstein coefficients b_0..b_p on [-1, 1] of the polynomial of degree p (<= 3)
+   !> through the values g at the p + 1 equally spaced nodes:
+   !>   p = 1: b = g;   p = 2: b_1 = (4 g_2 - g_1 - g_3)/2;
+   !>   p = 3: b_1 = (-5 g_1 + 18 g_2 - 9 g_3 + 2 g_4)/6, b_2 = (2 g_1 - 9 g_2 + 18 g_3 - 5 g_4)/6;
+   !> b_0 = g_1 and b_p = g_(p+1). The polynomial lies between min b and max b on [-1, 1]
+   !> (Farin, "Curves and Surfaces for CAGD", 5th ed., 2002, section 5.1: convex hull).
+   pure subroutine bernstein_of_nodal(p, g, b)
+      integer, intent(in) :: p          !< order (1 to 3)
+      real(wp), intent(in) :: g(:)      !< (p+1) nodal values
+      real(wp), intent(out) :: b(:)     !< (p+1) Bernstein coefficients
+      b(1:p + 1) = g(1:p + 1)
+      select case (p)
+      case (2)
+         b(2) = (4.0_wp*g(2) - g(1) - g(3))/2.0_wp
+      case (3)
+         b(2) = (-5.0_wp*g(1) + 18.0_wp*g(2) - 9.0_wp*g(3) + 2.0_wp*g(4))/6.0_wp
+         b(3) = (2.0_wp*g(1) - 9.0_wp*g(2) + 18.0_wp*g(3) - 5.0_wp*g(4))/6.0_wp
+      end select
+   end subroutine bernstein_of_nodal
 
    !> The intervals [lo, hi] of xi in [-1, 1] where the polynomial sum N_a(xi) g_a is
    !> negative: sign changes at 8p + 1 sample points, each root refined by bisection.
@@ -258,6 +321,9 @@ contains
             xm = x0
             root = x1
             do it = 1, 60
+               ! (bracket down to adjacent doubles: then the midpoint is an end, and the
+               ! halvings left would change nothing)
+               if (0.5_wp*(xm + root) == xm .or. 0.5_wp*(xm + root) == root) exit
                if ((value_at(0.5_wp*(xm + root)) < 0.0_wp) .eqv. inside) then
                   xm = 0.5_wp*(xm + root)
                else
