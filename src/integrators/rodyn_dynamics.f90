@@ -422,7 +422,7 @@ contains
    subroutine dyn_save_base(this)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       this%x_base = this%s1%x
-      this%d_base = this%s1%d
+      if (this%mesh%n_cable < this%mesh%n_elements) this%d_base = this%s1%d
       this%dx_base = this%dx
    end subroutine dyn_save_base
 

@@ -43,6 +43,8 @@ contains
          do a = 1, p + 1
             node = mesh%elem_nodes(a, e)
             inert%m(node) = inert%m(node) + ma(a)
+            ! a cable element has no directors, so no rotary inertia
+            if (mesh%elem_cable(e)) cycle
             inert%md(1, node) = inert%md(1, node) + m1(a)
             inert%md(2, node) = inert%md(2, node) + m2(a)
          end do

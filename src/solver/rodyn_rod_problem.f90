@@ -170,10 +170,10 @@ contains
          return
       end if
       do node = 1, this%mesh%n_nodes
-         if (this%sup%ndof(node) == 3) then      ! no rotation unknowns
-            d(:, :, node) = this%d_base(:, :, node)
-            cycle
-         end if
+         ! no rotation unknowns: the directors stay as they were at save_base (nothing
+         ! turns them in between), so they are not copied back (nor saved, for a mesh of
+         ! cables only)
+         if (this%sup%ndof(node) == 3) cycle
          k = this%sup%first(node) - 1
          th = alpha*this%du(k + 4:k + 6)
          if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
