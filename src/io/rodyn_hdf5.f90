@@ -683,7 +683,10 @@ contains
             count(3 - r:), stat)
          if (failed(stat, 'select in dataset', where, series%file, series%path, err)) &
             exit blk
-         call h5screate_simple_f(1, [n], mspace, stat)
+         ! the memory space has the shape of the file selection: HDF5 then copies the
+         ! block as a whole instead of iterating over a 1-D to 2-D match element by
+         ! element (mooring surge deck: 3.6e8 instructions in 9 syncs before)
+         call h5screate_simple_f(r, count(3 - r:), mspace, stat)
          if (failed(stat, 'select in dataset', where, series%file, series%path, err)) &
             exit blk
          series%n_steps = series%n_steps + m
