@@ -11,7 +11,9 @@ module rodyn_model
    public :: water_t, seabed_t, attachment_t, rho_water_default
    public :: element_rod, element_cable, element_names
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
-   public :: motion_harmonic, motion_table
+   public :: motion_harmonic, motion_table, motion_vessel
+   public :: vessel_t, vessel_rao_t, vessel_from_rao, vessel_from_table
+   public :: rao_interp_complex, rao_interp_polar
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
 
@@ -43,6 +45,14 @@ module rodyn_model
    ! Kinds of prescribed motion (*MOTION, TYPE=...)
    integer, parameter :: motion_harmonic = 1     !< sum of sines per direction
    integer, parameter :: motion_table = 2        !< displacement time series from a file
+   integer, parameter :: motion_vessel = 3       !< a point of a vessel (*VESSEL)
+
+   ! Kinds of vessel motion (*VESSEL, TYPE=...)
+   integer, parameter :: vessel_from_rao = 1     !< displacement RAOs in the deck's sea
+   integer, parameter :: vessel_from_table = 2   !< 6-DOF time series from a file
+   ! Interpolation of an RAO table (*VESSEL, INTERPOLATION=...)
+   integer, parameter :: rao_interp_complex = 1  !< real and imaginary parts
+   integer, parameter :: rao_interp_polar = 2    !< amplitude, and phase on the shorter arc
 
    ! Symbolic node numbers for the two ends of a line (resolved by the mesh)
    integer, parameter :: end_a = 1         !< first node of a line (S = 0)
@@ -181,6 +191,32 @@ module rodyn_model
       real(wp), allocatable :: value(:)  !< (n) values [-]
    end type amplitude_t
 
+   !> A displacement RAO table (rodyn_vessel): 6 complex values per wave period and
+   !> heading relative to the vessel, H = R exp(-i eps) for a phase lag eps.
+   type :: vessel_rao_t
+      real(wp), allocatable :: period(:)      !< (np) increasing wave periods [s]
+      real(wp), allocatable :: heading(:)     !< (nh) increasing relative headings [rad], [0, 2 pi)
+      complex(wp), allocatable :: h(:, :, :)  !< (6, np, nh) [m/m, rad/m]
+      integer :: interp = rao_interp_complex  !< rao_interp_* constant
+   end type vessel_rao_t
+
+   !> A vessel (*VESSEL): its reference point at rest, heading, and motion xi = (surge,
+   !> sway, heave, roll, pitch, yaw) of the reference point in vessel axes (rodyn_vessel).
+   type :: vessel_t
+      character(len=name_len) :: name = ''
+      real(wp) :: origin(3) = 0.0_wp          !< reference point at rest, global [m]
+      real(wp) :: heading = 0.0_wp            !< heading at rest, about global z [rad]
+      integer :: kind = vessel_from_table     !< vessel_from_* constant
+      type(vessel_rao_t) :: rao               !< RAO table (vessel_from_rao)
+      character(len=:), allocatable :: file   !< the file a table was read from
+      real(wp), allocatable :: time(:)        !< (n) times of a motion table [s]
+      real(wp), allocatable :: motion(:, :)   !< (6, n) xi at those times [m, rad]
+      !> the sea's components as the vessel's motion needs them (rodyn_vessel's
+      !> vessel_coefficients), set up before the dynamic analysis
+      complex(wp), allocatable :: coef(:, :)  !< (6, nc) complex response factors
+      real(wp), allocatable :: omega(:)       !< (nc) angular frequencies [rad/s]
+   end type vessel_t
+
    !> Prescribed motion of a held node (*MOTION): a displacement added to the position
    !> the node has at the start of the dynamic analysis, multiplied by the ramp
    !> r(t) = (1 - cos(pi t / ramp))/2 for t < ramp, 1 after (ramp = 0: no ramp).
@@ -197,6 +233,9 @@ module rodyn_model
       character(len=:), allocatable :: file !< the file the table was read from
       real(wp), allocatable :: time(:)      !< (n) [s]
       real(wp), allocatable :: disp(:, :)   !< (3, n) [m]
+      ! vessel: the node is fixed to vessel model%vessels(vessel) at the point where it
+      ! is at the start of the dynamic analysis (the vessel at rest)
+      integer :: vessel = 0                 !< index into model%vessels
    end type motion_t
 
    !> Initial velocity of a whole line as a rigid body (*INITIAL VELOCITY): each node
@@ -253,6 +292,7 @@ module rodyn_model
       type(point_load_t), allocatable :: loads(:)
       type(amplitude_t), allocatable :: amplitudes(:)
       type(motion_t), allocatable :: motions(:)
+      type(vessel_t), allocatable :: vessels(:)
       type(initial_velocity_t), allocatable :: initial_velocities(:)
       type(attachment_t), allocatable :: attachments(:)
       type(water_t) :: water

@@ -36,6 +36,7 @@ module rodyn_deck
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics, &
                                  dynamic_warnings
+   use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
@@ -95,6 +96,7 @@ contains
       allocate (model%loads(keyword_count(deck, 'LOAD')))
       allocate (model%amplitudes(keyword_count(deck, 'AMPLITUDE')))
       allocate (model%motions(keyword_count(deck, 'MOTION')))
+      allocate (model%vessels(keyword_count(deck, 'VESSEL')))
       allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
       allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
       allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
@@ -105,6 +107,8 @@ contains
       allocate (pend%load_amp(size(model%loads)))
       allocate (pend%amplitude_card(size(model%amplitudes)))
       allocate (pend%motion_line(size(model%motions)))
+      allocate (pend%motion_vessel(size(model%motions)))
+      allocate (pend%vessel_card(size(model%vessels)))
       allocate (pend%iv_line(size(model%initial_velocities)))
       allocate (pend%seg_line(keyword_count(deck, 'SEGMENT')))
       allocate (pend%seg_section(size(pend%seg_line)))
@@ -146,6 +150,7 @@ contains
       model%loads = model%loads(1:pend%n_loads)
       model%amplitudes = model%amplitudes(1:pend%n_amplitudes)
       model%motions = model%motions(1:pend%n_motions)
+      model%vessels = model%vessels(1:pend%n_vessels)
       model%initial_velocities = model%initial_velocities(1:pend%n_ivs)
       model%attachments = model%attachments(1:pend%n_attachments)
    end subroutine trim_model
@@ -196,6 +201,8 @@ contains
             call read_segment_card(card, ic, pend, err)
          case ('ATTACHMENT')
             call read_attachment_card(deck, ic, model, pend, err)
+         case ('VESSEL')
+            call read_vessel_card(deck, ic, model, pend, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -711,6 +718,8 @@ contains
          if (has_error(err)) return
       end do
       call validate_dynamics(deck, pend, model, err)
+      if (has_error(err)) return
+      call validate_vessels(deck, pend, model, err)
       if (has_error(err)) return
       call validate_water(deck, pend, model, err)
       if (has_error(err)) return

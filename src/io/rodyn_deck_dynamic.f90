@@ -9,7 +9,8 @@ module rodyn_deck_dynamic
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, amplitude_t, motion_t, initial_velocity_t, scheme_alpha, &
-                          scheme_names, motion_harmonic, motion_table, bc_free, end_a
+                          scheme_names, motion_harmonic, motion_table, motion_vessel, &
+                          bc_free, end_a
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_file_error, card_get_real, &
                                card_get_name, card_get_choice, card_get_int, &
@@ -224,16 +225,18 @@ contains
       type(model_t), intent(inout) :: model   !< model: one motion appended
       type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
-      character(len=8), parameter :: types(2) = [character(len=8) :: 'HARMONIC', 'TABLE']
-      integer, parameter :: kinds(2) = [motion_harmonic, motion_table]
+      character(len=8), parameter :: types(3) = [character(len=8) :: 'HARMONIC', 'TABLE', &
+                                                 'VESSEL']
+      integer, parameter :: kinds(3) = [motion_harmonic, motion_table, motion_vessel]
       type(motion_t) :: mo
       type(table_t) :: table
-      character(len=:), allocatable :: line
+      character(len=:), allocatable :: line, vessel
       integer :: it, n
 
+      vessel = ''
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
-                                'TYPE', 'RAMP', 'INPUT'], err)
+                                'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return
@@ -246,7 +249,22 @@ contains
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
 
+         if (mo%kind /= motion_vessel .and. card_find_param(card, 'VESSEL') > 0) then
+            call param_fail(card, 'VESSEL', 'VESSEL is only allowed with TYPE=VESSEL', err)
+            return
+         end if
          select case (mo%kind)
+         case (motion_vessel)
+            if (card_find_param(card, 'INPUT') > 0) then
+               call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
+               return
+            end if
+            if (card%n_data > 0) then
+               call card_data_error(card, 1, 'data lines are not allowed with TYPE=VESSEL'// &
+                                    ' (the motion is the vessel''s, *VESSEL)', err)
+               return
+            end if
+            call card_get_name(card, 'VESSEL', vessel, err, required=.true.)
          case (motion_harmonic)
             if (card_find_param(card, 'INPUT') > 0) then
                call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
@@ -280,6 +298,7 @@ contains
       pend%n_motions = pend%n_motions + 1
       model%motions(pend%n_motions) = mo
       pend%motion_line(pend%n_motions) = ref_t(line, ic)
+      pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
    end subroutine read_motion_card
 
    !> *INITIAL VELOCITY, LINE=: data lines vx, vy, vz [m/s]; wx, wy, wz [rad/s];
@@ -493,6 +512,18 @@ contains
                                 ' at '//card%file//':'//int_str(card%line)//')'
                   end if
                end do
+            else if (mo%kind == motion_vessel .and. mo%vessel > 0) then
+               associate (ve => model%vessels(mo%vessel))
+                  if (allocated(ve%time)) then
+                     if (size(ve%time) >= 2) then
+                        sampling = minval(ve%time(2:) - ve%time(:size(ve%time) - 1))
+                        what = 'the motion table '//ve%file//' of *VESSEL '// &
+                               trim(ve%name)//' (*MOTION at '//card%file//':'// &
+                               int_str(card%line)//')'
+                        call check_sampling(sampling, what)
+                     end if
+                  end if
+               end associate
             else if (allocated(mo%time)) then
                if (size(mo%time) >= 2) then
                   sampling = minval(mo%time(2:) - mo%time(:size(mo%time) - 1))

@@ -41,6 +41,8 @@ module rodyn_deck_support
       type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
       type(ref_t), allocatable :: load_amp(:)     !< per load: its AMPLITUDE= ('' if none)
       type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE=
+      type(ref_t), allocatable :: motion_vessel(:) !< per motion: its VESSEL= ('' if none)
+      integer, allocatable :: vessel_card(:)      !< per vessel: card index
       type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE=
       type(ref_t), allocatable :: seg_line(:)     !< per *SEGMENT: its LINE=
       type(ref_t), allocatable :: seg_section(:)  !< per *SEGMENT: its SECTION=
@@ -55,6 +57,7 @@ module rodyn_deck_support
       integer :: n_loads = 0        !< loads read so far
       integer :: n_amplitudes = 0   !< amplitudes read so far
       integer :: n_motions = 0      !< motions read so far
+      integer :: n_vessels = 0      !< vessels read so far
       integer :: n_ivs = 0          !< initial velocities read so far
       integer :: n_segments = 0     !< segments read so far
       integer :: n_attachments = 0  !< attachments read so far

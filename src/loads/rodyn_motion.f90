@@ -2,10 +2,12 @@
 !> direction or a displacement table, times a smooth ramp-in) and load amplitudes.
 module rodyn_motion
    use rodyn_kinds, only: wp, pi, two_pi
-   use rodyn_model, only: motion_t, amplitude_t, motion_harmonic, motion_table
+   use rodyn_model, only: motion_t, amplitude_t, motion_harmonic, motion_table, &
+                          motion_vessel, vessel_t, vessel_from_rao
+   use rodyn_vessel, only: vessel_point_position, vessel_harmonic_motion, vessel_local_point
    implicit none
    private
-   public :: motion_displacement, amplitude_value, ramp_factor
+   public :: motion_displacement, amplitude_value, ramp_factor, vessel_motion
 
 contains
 
@@ -23,12 +25,28 @@ contains
       end if
    end function ramp_factor
 
-   !> Displacement of a moved node at time t, from its position at t = 0 [m].
-   pure function motion_displacement(mo, t) result(u)
+   !> Displacement of a moved node at time t, from its position x0 at t = 0 [m]. A point
+   !> of a vessel: u = X(r xi(t)) - x0, X the position of the vessel's point p at x0 for
+   !> the vessel motion xi (rodyn_vessel; X = x0 for xi = 0), r the ramp: the rotations
+   !> stay exact while they are ramped in.
+   pure function motion_displacement(mo, t, vessels, x0) result(u)
       type(motion_t), intent(in) :: mo !< motion
       real(wp), intent(in) :: t        !< time [s]
+      type(vessel_t), intent(in), optional :: vessels(:) !< the model's (motion_vessel)
+      real(wp), intent(in), optional :: x0(3) !< the node at t = 0 (motion_vessel) [m]
       real(wp) :: u(3)
+      real(wp) :: xi(6), p(3)
       integer :: j
+      if (mo%kind == motion_vessel) then
+         u = 0.0_wp
+         if (.not. (present(vessels) .and. present(x0))) return
+         associate (ve => vessels(mo%vessel))
+            xi = ramp_factor(t, mo%ramp)*vessel_motion(ve, t)
+            p = vessel_local_point(ve%origin, ve%heading, x0)
+            u = vessel_point_position(ve%origin, ve%heading, xi, p) - x0
+         end associate
+         return
+      end if
       select case (mo%kind)
       case (motion_harmonic)
          do j = 1, 3
@@ -43,6 +61,25 @@ contains
       end select
       u = ramp_factor(t, mo%ramp)*u
    end function motion_displacement
+
+   !> Motion xi(t) = (surge, sway, heave [m], roll, pitch, yaw [rad]) of a vessel's
+   !> reference point, in vessel axes: from its RAOs in the sea (the response factors
+   !> set up before the run), or its table (linear interpolation, constant beyond the
+   !> ends).
+   pure function vessel_motion(ve, t) result(xi)
+      type(vessel_t), intent(in) :: ve !< vessel
+      real(wp), intent(in) :: t        !< time [s]
+      real(wp) :: xi(6)
+      integer :: k
+      xi = 0.0_wp
+      if (ve%kind == vessel_from_rao) then
+         if (allocated(ve%coef)) xi = vessel_harmonic_motion(ve%coef, ve%omega, t)
+         return
+      end if
+      do k = 1, 6
+         xi(k) = interpolate(ve%time, ve%motion(k, :), t)
+      end do
+   end function vessel_motion
 
    !> Value of an amplitude at time t (linear interpolation, constant beyond the ends).
    pure real(wp) function amplitude_value(amp, t)

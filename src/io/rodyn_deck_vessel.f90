@@ -1,0 +1,292 @@
+!> Deck reader, *VESSEL (docs/deck.md, docs/vessels.md): a vessel's reference point at
+!> rest, its heading, and its motion, from displacement RAOs (TYPE=RAO) or from a 6-DOF
+!> time series (TYPE=TABLE), both read from INPUT=file; and the whole-deck checks of
+!> vessels (validate_vessels: unique names, the VESSEL= of *MOTION, no clamped end on a
+!> vessel, a sea for RAOs).
+module rodyn_deck_vessel
+   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, vessel_t, vessel_from_rao, vessel_from_table, &
+                          rao_interp_complex, rao_interp_polar, motion_vessel, bc_clamped
+   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
+                               card_find_param, &
+                               card_file_error, card_get_name, card_get_choice, &
+                               card_check_data, card_data_reals, card_get_table, real_str, &
+                               int_str, param_len
+   use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
+                                 node_label
+   implicit none
+   private
+   public :: read_vessel_card, validate_vessels
+
+   character(len=*), parameter :: what_rao = 'period, heading, surge, sway, heave, roll,'// &
+                                  ' pitch, yaw amplitudes, the same 6 phases'
+   character(len=*), parameter :: what_motion = 't, surge, sway, heave, roll, pitch, yaw'
+   real(wp), parameter :: deg = pi/180.0_wp   !< one degree [rad]
+
+contains
+
+   !> *VESSEL, NAME=, TYPE=RAO|TABLE, INPUT=file [, PHASE=LAG|LEAD]
+   !> [, ROTATION UNITS=DEG|RAD] [, INTERPOLATION=COMPLEX|POLAR]; one data line
+   !> x, y, z [m], heading [deg] of the reference point at rest.
+   !> RAO rows: period [s], relative heading [deg], 6 amplitudes (m/m for translations,
+   !> ROTATION UNITS per m for rotations), 6 phases [deg], on a full grid of periods and
+   !> headings. TABLE rows: t [s], surge, sway, heave [m], roll, pitch, yaw (ROTATION UNITS).
+   subroutine read_vessel_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *VESSEL card
+      type(model_t), intent(inout) :: model   !< model: one vessel appended
+      type(pending_t), intent(inout) :: pend  !< counts the vessels, remembers the card
+      type(error_t), intent(inout) :: err     !< status
+      type(vessel_t) :: ve
+      type(table_t) :: table
+      character(len=:), allocatable :: name
+      real(wp) :: v(4), rot
+      integer :: it, iphase, iunit, interp, n
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'INPUT', &
+                                'PHASE', 'ROTATION UNITS', 'INTERPOLATION'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         ve%name = name
+         it = 0
+         call card_get_choice(card, 'TYPE', [character(len=8) :: 'RAO', 'TABLE'], it, err, &
+                              required=.true.)
+         if (has_error(err)) return
+         ve%kind = merge(vessel_from_rao, vessel_from_table, it == 1)
+         iunit = 1
+         call card_get_choice(card, 'ROTATION UNITS', [character(len=8) :: 'DEG', 'RAD'], &
+                              iunit, err)
+         if (has_error(err)) return
+         rot = merge(deg, 1.0_wp, iunit == 1)
+         iphase = 1
+         call card_get_choice(card, 'PHASE', [character(len=8) :: 'LAG', 'LEAD'], iphase, err)
+         if (has_error(err)) return
+         interp = 1
+         call card_get_choice(card, 'INTERPOLATION', [character(len=8) :: 'COMPLEX', &
+                              'POLAR'], interp, err)
+         if (has_error(err)) return
+         if (ve%kind == vessel_from_table) then
+            if (card_find_param(card, 'PHASE') > 0) then
+               call param_fail(card, 'PHASE', 'PHASE is only allowed with TYPE=RAO', err)
+               return
+            end if
+            if (card_find_param(card, 'INTERPOLATION') > 0) then
+               call param_fail(card, 'INTERPOLATION', 'INTERPOLATION is only allowed'// &
+                               ' with TYPE=RAO', err)
+               return
+            end if
+         end if
+         call card_check_data(card, 1, 1, err, 'x, y, z, heading')
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 4, v, err, 'x, y, z, heading')
+         if (has_error(err)) return
+         ve%origin = v(1:3)
+         ve%heading = v(4)*deg
+
+         if (ve%kind == vessel_from_table) then
+            call card_get_table(card, 'INPUT', 7, what_motion, table, err, required=.true.)
+            if (has_error(err)) return
+            call check_motion_table(card, table, err)
+            if (has_error(err)) return
+            n = table%n_rows
+            ve%file = table%path
+            ve%time = table%values(1, 1:n)
+            ve%motion = table%values(2:7, 1:n)
+            ve%motion(4:6, :) = rot*ve%motion(4:6, :)
+         else
+            call card_get_table(card, 'INPUT', 14, what_rao, table, err, required=.true.)
+            if (has_error(err)) return
+            ve%file = table%path
+            ve%rao%interp = merge(rao_interp_complex, rao_interp_polar, interp == 1)
+            call rao_grid(card, table, rot, iphase == 1, ve, err)
+            if (has_error(err)) return
+         end if
+         call record_table_text(table, model)
+      end associate
+      pend%n_vessels = pend%n_vessels + 1
+      model%vessels(pend%n_vessels) = ve
+      pend%vessel_card(pend%n_vessels) = ic
+   end subroutine read_vessel_card
+
+   !> A 6-DOF motion table: at least 2 rows, times increasing strictly, finite values.
+   subroutine check_motion_table(card, table, err)
+      type(card_t), intent(in) :: card      !< the *VESSEL card
+      type(table_t), intent(in) :: table    !< rows t, 6 motions
+      type(error_t), intent(inout) :: err   !< status
+      integer :: k
+      if (table%n_rows < 2) then
+         call param_fail(card, 'INPUT', "'"//table%path//"' has "//int_str(table%n_rows)// &
+                         ' row(s) ('//what_motion//'): at least 2 are needed', err)
+         return
+      end if
+      do k = 2, table%n_rows
+         if (.not. table%values(1, k) > table%values(1, k - 1)) then
+            call card_file_error(card, table%path, table%line(k), 'times must increase'// &
+                                 ' strictly: t = '//real_str(table%values(1, k))// &
+                                 ' follows t = '//real_str(table%values(1, k - 1)), err)
+            return
+         end if
+      end do
+   end subroutine check_motion_table
+
+   !> The RAO rows as a full grid of periods (increasing) and headings (in [0, 360) deg):
+   !> every heading has every period once; amplitudes not negative, periods positive.
+   !> H = R exp(-i eps) for a lag eps, R exp(+i eps) for a lead.
+   subroutine rao_grid(card, table, rot, lag, ve, err)
+      type(card_t), intent(in) :: card      !< the *VESSEL card
+      type(table_t), intent(in) :: table    !< rows of 14 values
+      real(wp), intent(in) :: rot           !< radians per rotation unit
+      logical, intent(in) :: lag            !< phases are lags (else leads)
+      type(vessel_t), intent(inout) :: ve   !< rao set
+      type(error_t), intent(inout) :: err   !< status
+      real(wp), allocatable :: periods(:), headings(:)
+      logical, allocatable :: seen(:, :)
+      real(wp) :: h, amp(6), sgn
+      integer :: k, ip, ih, np, nh, row
+
+      if (table%n_rows < 1) then
+         call param_fail(card, 'INPUT', "'"//table%path//"' has no rows ("//what_rao//')', &
+                         err)
+         return
+      end if
+      allocate (periods(0), headings(0))
+      do k = 1, table%n_rows
+         associate (r => table%values(:, k))
+            if (.not. r(1) > 0.0_wp) then
+               call card_file_error(card, table%path, table%line(k), 'the wave period'// &
+                                    ' must be positive, got '//real_str(r(1)), err)
+               return
+            end if
+            if (any(r(3:8) < 0.0_wp)) then
+               call card_file_error(card, table%path, table%line(k), 'RAO amplitudes'// &
+                                    ' must not be negative', err)
+               return
+            end if
+            h = modulo(r(2), 360.0_wp)
+            if (.not. any(periods == r(1))) periods = [periods, r(1)]
+            if (.not. any(headings == h)) headings = [headings, h]
+         end associate
+      end do
+      call sort(periods)
+      call sort(headings)
+      np = size(periods)
+      nh = size(headings)
+      allocate (seen(np, nh), ve%rao%h(6, np, nh))
+      seen = .false.
+      ve%rao%period = periods
+      ve%rao%heading = headings*pi/180.0_wp
+      sgn = merge(-1.0_wp, 1.0_wp, lag)
+      do k = 1, table%n_rows
+         associate (r => table%values(:, k))
+            ip = findloc(periods, r(1), dim=1)
+            ih = findloc(headings, modulo(r(2), 360.0_wp), dim=1)
+            if (seen(ip, ih)) then
+               call card_file_error(card, table%path, table%line(k), 'period '// &
+                                    real_str(r(1))//' s at heading '//real_str(r(2))// &
+                                    ' deg is given twice', err)
+               return
+            end if
+            seen(ip, ih) = .true.
+            amp = r(3:8)
+            amp(4:6) = rot*amp(4:6)
+            ve%rao%h(:, ip, ih) = amp*exp(cmplx(0.0_wp, sgn*r(9:14)*pi/180.0_wp, wp))
+         end associate
+      end do
+      do ih = 1, nh
+         do ip = 1, np
+            if (seen(ip, ih)) cycle
+            row = table%line(table%n_rows)
+            call card_file_error(card, table%path, row, 'the RAO table is not a full'// &
+                                 ' grid: heading '//real_str(headings(ih))//' deg has no'// &
+                                 ' row for period '//real_str(periods(ip))//' s (every'// &
+                                 ' heading needs every period)', err)
+            return
+         end do
+      end do
+   contains
+      !> Insertion sort, increasing.
+      pure subroutine sort(a)
+         real(wp), intent(inout) :: a(:)
+         real(wp) :: x
+         integer :: i, j
+         do i = 2, size(a)
+            x = a(i)
+            j = i - 1
+            do while (j >= 1)
+               if (a(j) <= x) exit
+               a(j + 1) = a(j)
+               j = j - 1
+            end do
+            a(j + 1) = x
+         end do
+      end subroutine sort
+   end subroutine rao_grid
+
+   !> Keep the text of a table file with the deck text (once per file).
+   subroutine record_table_text(table, model)
+      type(table_t), intent(in) :: table     !< a table read from a file
+      type(model_t), intent(inout) :: model  !< model whose deck_text is extended
+      character(len=:), allocatable :: head
+      head = '** ---- file: '//table%path//achar(10)
+      if (index(model%deck_text, head) > 0) return
+      model%deck_text = model%deck_text//head//table%text
+   end subroutine record_table_text
+
+   !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
+   !> (its index set); its node is not clamped (the end's rotation would not follow the
+   !> vessel); a vessel moved by RAOs needs a sea.
+   subroutine validate_vessels(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
+      type(model_t), intent(inout) :: model   !< motions' vessel indices set
+      type(error_t), intent(inout) :: err     !< status
+      integer :: i, j, k, ib, nn, node
+      do i = 1, size(model%vessels)
+         do j = 1, i - 1
+            if (model%vessels(j)%name /= model%vessels(i)%name) cycle
+            call param_fail(deck%cards(pend%vessel_card(i)), 'NAME', 'vessel '// &
+                            trim(model%vessels(i)%name)//' is already defined (at '// &
+                            location(deck, pend%vessel_card(j))//')', err)
+            return
+         end do
+         if (model%vessels(i)%kind == vessel_from_rao) then
+            call card_error(deck%cards(pend%vessel_card(i)), 'TYPE=RAO moves the vessel in'// &
+                            ' the waves of the deck, and this version reads no waves yet:'// &
+                            ' give its motion as TYPE=TABLE', err)
+            return
+         end if
+      end do
+      do k = 1, size(model%motions)
+         if (model%motions(k)%kind /= motion_vessel) cycle
+         associate (card => deck%cards(pend%motion_line(k)%card), &
+                    name => pend%motion_vessel(k)%name, mo => model%motions(k))
+            do i = 1, size(model%vessels)
+               if (model%vessels(i)%name == name) exit
+            end do
+            if (i > size(model%vessels)) then
+               call param_fail(card, 'VESSEL', "VESSEL '"//name//"' is not defined (no"// &
+                               ' *VESSEL with NAME='//name//' in the deck)', err)
+               return
+            end if
+            mo%vessel = i
+            nn = node_count(model%lines(mo%line))
+            node = node_number(mo%node, nn)
+            do ib = 1, size(model%constraints)
+               associate (b => model%constraints(ib))
+                  if (b%line /= mo%line .or. node_number(b%node, nn) /= node) cycle
+                  if (b%kind /= bc_clamped) cycle
+                  call card_error(card, 'line '//trim(model%lines(mo%line)%name)//' '// &
+                                  node_label(node, nn)//' is CLAMPED (*BOUNDARY at '// &
+                                  location(deck, pend%bc_line(ib)%card)//'): a clamped'// &
+                                  ' end does not turn with a vessel yet; hold it PINNED', &
+                                  err)
+                  return
+               end associate
+            end do
+         end associate
+      end do
+   end subroutine validate_vessels
+end module rodyn_deck_vessel
