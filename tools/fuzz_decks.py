@@ -234,7 +234,7 @@ def m_long_line(rng, data, ctx):
     lines = lines_of(data)
     i = rng.randrange(len(lines) + 1)
     n = rng.choice([200, 1000, 5000, 100000])
-    kind = rng.choice(["comment", "data", "keyword", "name", "value"])
+    kind = rng.choice(["comment", "data", "keyword", "name", "value", "expression"])
     if kind == "comment":
         new = b"**" + b"x" * n + b"\n"
     elif kind == "data":
@@ -243,8 +243,10 @@ def m_long_line(rng, data, ctx):
         new = b"*" + b"A" * n + b"\n"
     elif kind == "name":
         new = b"*SECTION, NAME=" + b"N" * n + b"\n1, 1, 1, 1, 1\n"
-    else:
+    elif kind == "value":
         new = b"*GRAVITY\n0, 0, -" + b"9" * n + b"\n"
+    else:
+        new = b"*PARAMETER\nFUZZ_X = " + deep_expression(rng) + b"\n"
     lines.insert(i, new)
     return b"".join(lines), f"long {kind} line ({n}) at {i + 1}"
 
@@ -371,8 +373,8 @@ def m_parameter(rng, data, ctx):
         i = rng.choice(defs)
         name = lines[i].split(b"=")[0]
         e = rng.choice([b"1/0", b"0**-1", b"(1", b"1)", b"2**2000", b"-8**0.5", b"x+",
-                        b"\"open", b"1e400", b"A" * 40, b"((((((((((((((((((((1))))))))))))))"
-                        b"))))))", b"2**2**2**2**2", b"" + name.strip()])
+                        b"\"open", b"1e400", b"A" * 40, b"2**2**2**2**2", b"" + name.strip(),
+                        deep_expression(rng)])
         lines[i] = name + b"= " + e + b"\n"
         return b"".join(lines), f"line {i + 1}: {e[:20]!r}"
     body = rng.choice([b"A = 1\nB = <A>\n", b"A = <B>\nB = 1\n", b"A = 1\nA = 2\n",
@@ -381,6 +383,17 @@ def m_parameter(rng, data, ctx):
     at = rng.randrange(len(lines) + 1)
     lines[at:at] = [b"*PARAMETER\n", body]
     return b"".join(lines), f"*PARAMETER block {body[:24]!r} at line {at + 1}"
+
+
+def deep_expression(rng):
+    """Parentheses, signs or powers nested 50 to 100 000 deep."""
+    n = rng.choice([50, 99, 101, 5000, 100000])
+    kind = rng.choice(["paren", "sign", "power"])
+    if kind == "paren":
+        return b"(" * n + b"1" + b")" * n
+    if kind == "sign":
+        return b"-" * n + b"1"
+    return b"1**" * n + b"1"
 
 
 def m_splice(rng, data, ctx):
@@ -573,6 +586,7 @@ def run_limited(cmd, cwd, timeout):
 
 
 def run_case(k, args, seeds):
+    """Record of random case k: a seed deck mutated and run."""
     rng = random.Random(f"{args.seed}:{k}")
     bad = [s for s in seeds if s[0].startswith("tests/decks/bad/")]
     good = [s for s in seeds if not s[0].startswith("tests/decks/bad/")]
@@ -585,6 +599,12 @@ def run_case(k, args, seeds):
             check = True
         else:
             files = capped
+    return run_files(k, args, seed, files, done, check)
+
+
+def run_files(k, args, seed, files, done, check):
+    """Record of case k: files written into a folder of their own, rodyn run on seed's
+    main deck there (with --check when check), the outcome judged."""
     folder = tempfile.mkdtemp(prefix=f"case{k:05d}_", dir=args.work)
     top = place(files, folder)
     cmd = [args.rodyn, "--quiet"] + (["--check"] if check else []) + [seed[1], "-o", "out"]
@@ -594,6 +614,8 @@ def run_case(k, args, seeds):
     out = out.decode("utf-8", "replace")
     err = err.decode("utf-8", "replace")
     category, violation = judge(code, out, err, check, os.path.join(top, "out"))
+    if category == "signal" and code == -signal.SIGFPE and args.fpe_trap_ok:
+        category, violation = "FPE trap", ""
     record = {"case": k, "seed_deck": seed[0], "mode": "check" if check else "run",
               "mutations": done, "exit": code, "category": category,
               "violation": violation, "wall_s": round(wall, 4)}
@@ -607,6 +629,33 @@ def run_case(k, args, seeds):
                     + "\n---- stderr\n" + err[-20000:] + "\n")
     shutil.rmtree(folder, ignore_errors=True)
     return record
+
+
+# ---------------------------------------------------------------- regressions
+# Decks that broke the contract once, rebuilt here (too big to keep as files), run with
+# --check before the random cases in every mode: (name, text appended to
+# tests/decks/good/minimal.inp).
+REGRESSIONS = [
+    ("keyword of 1 000 000 characters (17 s at 200 000, cubic)",
+     b"*" + b"A" * 1000000 + b"\n"),
+    ("parentheses nested 100 000 deep (stack overflow, SIGSEGV)",
+     b"*PARAMETER\nX = " + b"(" * 100000 + b"1" + b")" * 100000 + b"\n"),
+    ("100 000 unary signs (stack overflow, SIGSEGV)",
+     b"*PARAMETER\nX = " + b"-" * 100000 + b"1\n"),
+    ("100 000 powers in a row (stack overflow, SIGSEGV)",
+     b"*PARAMETER\nX = " + b"1**" * 100000 + b"1\n"),
+]
+
+
+def run_regressions(args, seeds):
+    """Records of the REGRESSIONS cases (numbered -1, -2, ...)."""
+    minimal = [sd for sd in seeds if sd[0] == "tests/decks/good/minimal.inp"][0]
+    records = []
+    for k, (name, tail) in enumerate(REGRESSIONS):
+        files = {minimal[1]: minimal[2][minimal[1]] + tail}
+        records.append(run_files(-1 - k, args, (minimal[0], minimal[1]), files,
+                                 [f"regression: {name}"], True))
+    return records
 
 
 # ---------------------------------------------------------------- self-test
@@ -658,15 +707,17 @@ def summary_table(records, wall):
     modes = collections.Counter(r["mode"] for r in records)
     times = sorted(r["wall_s"] for r in records)
     lines = ["| outcome | cases |", "|---|---|"]
-    for c in ["exit 0", "exit 1", "exit 2", "exit 3", "signal", "crash", "hang",
-              "bad exit", "memory"]:
+    for c in ["exit 0", "exit 1", "exit 2", "exit 3", "FPE trap", "signal", "crash",
+              "hang", "bad exit", "memory"]:
         lines.append(f"| {c} | {cats.get(c, 0)} |")
     nviol = sum(1 for r in records if r["violation"])
     lines.append(f"| **violations** | **{nviol}** |")
     for v, n in sorted(bad.items()):
         lines.append(f"| - {v} | {n} |")
     lines.append("")
-    lines.append(f"{len(records)} decks ({modes.get('check', 0)} with --check, "
+    nreg = sum(1 for r in records if r["case"] < 0)
+    lines.append(f"{len(records) - nreg} random decks and {nreg} regression decks "
+                 f"({modes.get('check', 0)} with --check, "
                  f"{modes.get('run', 0)} run), {wall:.1f} s wall; per deck median "
                  f"{times[len(times) // 2]:.3f} s, max {times[-1]:.3f} s")
     return "\n".join(lines), nviol
@@ -687,6 +738,8 @@ def main():
     p.add_argument("--save", default=None,
                    help="folder for failing cases (default: WORK/failures, kept)")
     p.add_argument("--json", default=None, help="write every case's record here")
+    p.add_argument("--fpe-trap-ok", action="store_true",
+                   help="a SIGFPE is no violation (a Debug build traps overflow on purpose)")
     p.add_argument("--self-test", action="store_true",
                    help="check the harness on stand-ins that break the contract")
     args = p.parse_args()
@@ -706,8 +759,9 @@ def main():
     seeds = seed_decks(args.root)
     t0 = time.monotonic()
     cases = range(args.first, args.first + args.count)
+    records = run_regressions(args, seeds)
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        records = list(pool.map(lambda k: run_case(k, args, seeds), cases))
+        records += list(pool.map(lambda k: run_case(k, args, seeds), cases))
     wall = time.monotonic() - t0
     table, nviol = summary_table(records, wall)
     print(f"rodyn deck fuzzer: seed {args.seed}, cases {args.first}.."
