@@ -18,7 +18,8 @@ Every case must keep rodyn's contract (README.md, docs/deck.md, docs/output.md):
   * exit status 0, 1, 2 or 3, never a signal, never a Fortran runtime error;
   * done within the time limit (--timeout, default 20 s);
   * exit 1 prints `FILE:LINE: error: ` (or `rodyn: error: ` for the command line,
-    `PATH: error: cannot open deck` for a missing main deck);
+    `PATH: error: cannot open deck` for a missing main deck), FILE a file of the case
+    and LINE one of its lines;
   * exit 2 only from a run (never from --check, which computes nothing), leaving
     status.txt with `complete = false` and a status that names what failed;
   * exit 3 prints a message with `error`; exit 0 of a run leaves `complete = true`.
@@ -64,7 +65,7 @@ ODD_BYTES = [b"\x00", b"\xff", b"\xfe", b"\x1a", b"\x7f", b"\x0b", b"\x0c", b"\x
 NUMBER_RE = re.compile(rb"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?")
 PARAM_RE = re.compile(rb"(?P<name>[A-Za-z][A-Za-z ]*?)\s*=\s*(?P<value>[^,]*)")
 INPUT_RE = re.compile(rb"INPUT\s*=\s*\"?([^,\"\r\n]+)\"?", re.IGNORECASE)
-LOC_RE = re.compile(r"^\S[^\n]*?:\d+: error: ", re.MULTILINE)
+LOC_RE = re.compile(r"^(\S[^\n]*?):(\d+): error: ", re.MULTILINE)
 CLI_RE = re.compile(r"^rodyn: error: |^\S[^\n]*: error: cannot open deck", re.MULTILINE)
 CRASH_RE = re.compile(r"Fortran runtime error|Program received signal|Backtrace for this "
                       r"error|Error termination|Segmentation fault|malloc\(\)|"
@@ -535,8 +536,25 @@ def read_status(path):
     return status
 
 
-def judge(code, out, err, check, outdir):
-    """The verdict of one case: (category, violation text or '')."""
+def bad_location(path, line, top):
+    """'' when FILE:LINE of a message names a file of the case (relative to its folder
+    top) and a line of it (1 to its number of lines, counted at LF, CR or CR LF, plus
+    one for a message at the end), else what is wrong."""
+    try:
+        with open(os.path.join(top, path), "rb") as f:
+            data = f.read()
+    except OSError:
+        return f"exit 1 naming a file that is not there: {path}"
+    n = max(data.count(b"\n"), len(data.splitlines())) + 1
+    if not 1 <= line <= n:
+        return f"exit 1 naming line {line} of {path}, which has {n - 1} lines"
+    return ""
+
+
+def judge(code, out, err, check, top):
+    """The verdict of one case: (category, violation text or ''); top is the folder
+    rodyn ran in, its output folder top/out."""
+    outdir = os.path.join(top, "out")
     if code is None:
         return "hang", "no exit within the time limit"
     if code < 0:
@@ -548,9 +566,12 @@ def judge(code, out, err, check, outdir):
     if code not in (0, 1, 2, 3):
         return "bad exit", f"exit status {code}"
     if code == 1:
-        if LOC_RE.search(err) or CLI_RE.search(err):
+        if CLI_RE.search(err):
             return "exit 1", ""
-        return "exit 1", "exit 1 without FILE:LINE: error:"
+        m = LOC_RE.search(err)
+        if not m:
+            return "exit 1", "exit 1 without FILE:LINE: error:"
+        return "exit 1", bad_location(m.group(1), int(m.group(2)), top)
     if code == 2:
         if check:
             return "exit 2", "exit 2 from --check, which computes nothing"
@@ -613,7 +634,7 @@ def run_files(k, args, seed, files, done, check):
     wall = time.monotonic() - t0
     out = out.decode("utf-8", "replace")
     err = err.decode("utf-8", "replace")
-    category, violation = judge(code, out, err, check, os.path.join(top, "out"))
+    category, violation = judge(code, out, err, check, top)
     if category == "signal" and code == -signal.SIGFPE and args.fpe_trap_ok:
         category, violation = "FPE trap", ""
     record = {"case": k, "seed_deck": seed[0], "mode": "check" if check else "run",
@@ -661,6 +682,7 @@ def run_regressions(args, seeds):
 # ---------------------------------------------------------------- self-test
 # Stand-ins for rodyn that break its contract one way each (and two that keep it): the
 # harness must flag every case of the first kind and none of the second.
+DECK_ARG = 'for a; do [ "$a" = -o ] && break; d=$a; done; '   # the deck: before -o
 FAKES = {
     "segfault": ("signal", 'kill -SEGV $$'),
     "hang": ("hang", 'sleep 30'),
@@ -672,9 +694,13 @@ FAKES = {
                                'exit 2'),
     "exit 5": ("bad exit", 'exit 5'),
     "exit 0 of a run, no status.txt": ("exit 0", 'exit 0'),
+    "exit 1 at a file that is not there": ("exit 1", 'echo "nothere.inp:1: error: *LINE: x"'
+                                           ' >&2; exit 1'),
+    "exit 1 beyond the last line": ("exit 1", DECK_ARG + 'echo "$d:999999: error: *LINE: x"'
+                                    ' >&2; exit 1'),
 }
 KEEPS = {
-    "exit 1 at FILE:LINE": 'echo "a.inp:3: error: *LINE: x" >&2; exit 1',
+    "exit 1 at FILE:LINE": DECK_ARG + 'echo "$d:1: error: *LINE: x" >&2; exit 1',
     "exit 0, status complete": 'mkdir -p out; printf "complete = true\\nstatus = complete'
                                '\\n" > out/status.txt; exit 0',
 }
