@@ -723,7 +723,17 @@ def self_test(args, seeds):
         ok = ok and good
         print(f"{'ok  ' if good else 'FAIL'} {name}: {rec['category']}, "
               f"{rec['violation'] or 'no violation'}")
-    return ok
+    # the same seed gives the same decks; another seed, others
+    def decks(seed):
+        out = []
+        for k in range(50):
+            rng = random.Random(f"{seed}:{k}")
+            out.append(mutate(rng, seeds, rng.choice(seeds)))
+        return out
+    same, other = decks("a") == decks("a"), decks("a") != decks("b")
+    print(f"{'ok  ' if same and other else 'FAIL'} deterministic: 50 cases of one seed "
+          f"{'equal' if same else 'differ'}, of two seeds {'differ' if other else 'equal'}")
+    return ok and same and other
 
 
 # ---------------------------------------------------------------- driver
