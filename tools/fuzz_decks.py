@@ -10,9 +10,10 @@ own, with `--check` in about half of the cases and as a full run otherwise. A fu
 is kept short: on every *DYNAMIC card TIME is cut to at most 10 steps (TIME <= 10 DT),
 *STATIC INCREMENTS to at most 10, MAX ITERATIONS (*STATIC and *DYNAMIC) to 20 and
 CUTBACKS to 3 (written on the card when it has none), and a line's or segment's ELEMENTS
-to 60 (the cuts are written into the deck after the mutation; a deck
-whose DT or TIME is no number, nor a parameter set to one, runs with `--check`, and so
-do the three seeds of CHECK_ONLY, which take seconds even so).
+to 60 (the cuts are written into the deck after the mutation, on values rodyn accepts:
+a value beyond rodyn's bounds, such as INCREMENTS=2147483647, stays for rodyn to refuse;
+a deck whose DT or TIME is no number, nor a parameter set to one, runs with `--check`,
+and so do the three seeds of CHECK_ONLY, which take seconds even so).
 
 Every case must keep rodyn's contract (README.md, docs/deck.md, docs/output.md):
   * exit status 0, 1, 2 or 3, never a signal, never a Fortran runtime error;
@@ -80,6 +81,7 @@ CHECK_ONLY = {"input/riser_lazy_wave.inp", "input/riser_lazy_wave_heave.inp",
               "tests/decks/good/water_segmented.inp"}
 BAD_SEED_SHARE = 0.25         # share of cases mutating a deck of tests/decks/bad
 MAX_STEPS, MAX_INCREMENTS, MAX_ITERATIONS, MAX_CUTBACKS, MAX_ELEMENTS = 10, 10, 20, 3, 60
+MAX_STEPS_BOUND, BIG = 100000000, 1.0e100   # rodyn's bounds on TIME/DT and on reals
 
 
 # ---------------------------------------------------------------- seed decks and bundles
@@ -461,14 +463,15 @@ def number(text, values):
         return None
 
 
-def cap_param(line, name, cap, add=False):
-    """The keyword line with parameter NAME cut to at most cap (when it is a number
-    above it); with add, NAME=cap is appended when the line lacks NAME."""
+def cap_param(line, name, cap, bound, add=False):
+    """The keyword line with parameter NAME cut to cap when it is a number above cap and
+    at most bound (the largest rodyn accepts: a value beyond is left for rodyn to
+    refuse); with add, NAME=cap is appended when the line lacks NAME."""
     rx = re.compile(rb"(,\s*" + name + rb"\s*=\s*)([^,\r\n]*)", re.IGNORECASE)
     m = rx.search(line)
     if m:
         try:
-            if float(m.group(2)) > cap:
+            if cap < float(m.group(2)) <= bound:
                 return line[:m.start(2)] + str(cap).encode() + line[m.end(2):]
         except ValueError:
             pass
@@ -494,16 +497,17 @@ def cap_for_run(files):
                     vdt, vtm = number(dt.group(1), values), number(tm.group(1), values)
                     if vdt is None or vtm is None:
                         return None
-                    if vdt > 0 and vtm > MAX_STEPS * vdt:
+                    if 0 < vdt < BIG and vtm < BIG and \
+                            MAX_STEPS * vdt < vtm <= MAX_STEPS_BOUND * vdt:
                         new = repr(MAX_STEPS * vdt).encode()
                         line = line[:tm.start(1)] + new + line[tm.end(1):]
             if s.startswith(b"*STATIC"):
-                line = cap_param(line, rb"INCREMENTS", MAX_INCREMENTS)
+                line = cap_param(line, rb"INCREMENTS", MAX_INCREMENTS, 100000)
             if s.startswith(b"*STATIC") or s.startswith(b"*DYNAMIC"):
-                line = cap_param(line, rb"MAX ITERATIONS", MAX_ITERATIONS, add=True)
-                line = cap_param(line, rb"CUTBACKS", MAX_CUTBACKS, add=True)
+                line = cap_param(line, rb"MAX ITERATIONS", MAX_ITERATIONS, 1000, add=True)
+                line = cap_param(line, rb"CUTBACKS", MAX_CUTBACKS, 30, add=True)
             if s.startswith(b"*LINE") or s.startswith(b"*SEGMENT"):
-                line = cap_param(line, rb"ELEMENTS", MAX_ELEMENTS)
+                line = cap_param(line, rb"ELEMENTS", MAX_ELEMENTS, 10000000)
             lines[i] = line
         out[rel] = b"".join(lines)
     return out
