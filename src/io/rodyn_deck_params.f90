@@ -15,7 +15,8 @@
 !>   primary = number | NAME | '(' sum ')'
 !> so -2**2 = -4 as in Fortran. Every intermediate value must stay below 1e300 in
 !> magnitude (no overflow, no floating-point exception), a divisor must not be zero,
-!> a negative number has only whole powers.
+!> a negative number has only whole powers. Signs, powers and parentheses nest at most
+!> max_depth deep (the parser recurses once a level: 50 000 levels overflowed the stack).
 module rodyn_deck_params
    use, intrinsic :: iso_fortran_env, only: int64
    use rodyn_kinds, only: wp
@@ -29,6 +30,7 @@ module rodyn_deck_params
 
    integer, parameter :: param_name_len = 32      !< longest parameter name
    real(wp), parameter :: big = 1.0e300_wp        !< largest magnitude of a value
+   integer, parameter :: max_depth = 100          !< deepest nesting of an expression
    character(len=*), parameter :: letters = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz'
    character(len=*), parameter :: digits10 = '0123456789'
 
@@ -61,6 +63,7 @@ module rodyn_deck_params
    type :: parser_t
       character(len=:), allocatable :: s      !< the expression
       integer :: pos = 1                      !< next character
+      integer :: depth = 0                    !< unary levels open (signs, **, '(')
       character(len=:), allocatable :: msg    !< '' or the first problem
    end type parser_t
 
@@ -287,16 +290,24 @@ contains
       character(len=1) :: op
       call skip_blanks(ps)
       v = 0.0_wp
+      if (ps%depth >= max_depth) then
+         ps%msg = 'signs, powers and parentheses nested deeper than '//itoa(max_depth)// &
+                  ' levels'
+         return
+      end if
+      ps%depth = ps%depth + 1
       if (ps%pos <= len(ps%s)) then
          op = ps%s(ps%pos:ps%pos)
          if (op == '+' .or. op == '-') then
             ps%pos = ps%pos + 1
             call parse_unary(ps, table, v)
             if (op == '-') v = -v
+            ps%depth = ps%depth - 1
             return
          end if
       end if
       call parse_power(ps, table, v)
+      ps%depth = ps%depth - 1
    end subroutine parse_unary
 
    !> power = primary ['**' unary]
