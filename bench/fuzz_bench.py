@@ -5,7 +5,7 @@ Runs tools/fuzz_decks.py (the same cases as its quick mode in CTest, 300 of them
 9 700 more) and writes its summary with the machine it ran on:
 bench/results/fuzz_bench.md (the table docs/fuzz.md quotes) and, with --json, every
 case's record. Exits 1 when any case broke rodyn's contract (the failing decks are kept,
-see the fuzzer's output). About 6 minutes on one core of the 2-core machine.
+see the fuzzer's output). 5 to 12 minutes on one core of the 2-core machine (quiet or shared).
 
     nice -n 10 python3 bench/fuzz_bench.py [--rodyn build/rodyn] [--count 10000]
 """
