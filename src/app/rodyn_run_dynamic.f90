@@ -16,7 +16,7 @@ module rodyn_run_dynamic
    use rodyn_recovery, only: recover_state
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
                                    dynamic_output_frame, dynamic_output_step, &
-                                   dynamic_output_close
+                                   dynamic_output_close, dynamic_output_ends_step
    implicit none
    private
    public :: run_dynamic, dynamic_not_available, stderr_is_terminal
@@ -34,14 +34,15 @@ module rodyn_run_dynamic
    type(line_result_t), allocatable :: frame_lines(:)
    type(model_t), pointer :: ctx_model => null()
    real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
-   ! Support forces of a frame (see write_pending): the step forces R (the support
-   ! force averaged over a step, the step's residual at the held dofs) of the step that
-   ! ends at the frame (r_pend, length h_pend, frame time t_pend), of the step before it
-   ! (r_back, h_back), and of the last step converged (r_prev, h_prev). A frame waits,
-   ! pending, for the step after it.
-   real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_prev(:, :), r_frame(:, :)
-   real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, h_prev = 0.0_wp, t_pend = 0.0_wp
-   logical :: pending = .false., have_back = .false., have_prev = .false.
+   ! Support forces at the end of every step (see write_pending): the step forces R
+   ! (the support force averaged over a step, the step's residual at the held dofs) of
+   ! the last step converged (r_pend, length h_pend, ending at t_pend, step number
+   ! k_pend) and of the step before it (r_back, h_back). The last step waits, pending,
+   ! for the step after it; so does a frame at its end (frame_waiting).
+   real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_frame(:, :)
+   real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, t_pend = 0.0_wp
+   integer :: k_pend = 0
+   logical :: pending = .false., have_back = .false., frame_waiting = .false.
    logical :: show_progress = .false.
    integer(kind=8) :: clock0, clock_last, clock_rate
 
@@ -78,10 +79,11 @@ contains
       ctx_model => model
       r_start = r0
       pending = .false.
-      have_prev = .false.
-      if (allocated(r_pend)) deallocate (r_pend, r_back, r_prev, r_frame)
-      allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_prev(6, mesh%n_nodes), &
-                r_frame(6, mesh%n_nodes))
+      have_back = .false.
+      frame_waiting = .false.
+      k_pend = 0
+      if (allocated(r_pend)) deallocate (r_pend, r_back, r_frame)
+      allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_frame(6, mesh%n_nodes))
       show_progress = progress
       if (.not. model%dynamic%start_static) call apply_initial_velocities(model, mesh, state)
       call dynamics_setup(prob, model, mesh, state)
@@ -108,8 +110,8 @@ contains
                              /real(clock_rate, wp)
       end block
       if (show_progress) write (error_unit, '(a)') ''
-      ! a frame still waiting for the step after it (the run stopped, or the step past
-      ! the end failed): extrapolated
+      ! the last step (and a frame at its end) still waiting for the step after it (the
+      ! run stopped, or the step past the end failed): extrapolated
       if (pending) then
          call clear_error(werr)
          call write_pending(prob, .false., werr)
@@ -128,32 +130,29 @@ contains
    end subroutine run_dynamic
 
    !> A frame: positions and section forces of the state at t; its support forces wait
-   !> for the next step (write_pending), but at t = 0 (the start state's). The last
+   !> with the step that ends at t for the next step (write_pending), but at t = 0 (the
+   !> start state's, also the first row of the support forces of every step). The last
    !> frame's next step is the time loop's step past the end.
    subroutine on_frame(t, prob, err)
       real(wp), intent(in) :: t                        !< time [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< converged state
       type(error_t), intent(inout) :: err              !< status
-      if (pending) call write_pending(prob, .true., err)   ! the frame before, if waiting
+      if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
       if (has_error(err)) return
       if (t > 0.0_wp) then
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, prob%sup%held, &
                             frame_lines, prob%water)
-         r_pend = prob%r
-         h_pend = prob%dt
-         t_pend = t
-         r_back = r_prev
-         h_back = h_prev
-         have_back = have_prev
-         pending = .true.
+         frame_waiting = .true.
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
                             frame_lines, prob%water)
+         call dynamic_output_ends_step(writer, 0, t, end_forces(prob, r_start), err)
          call dynamic_output_frame(writer, t, frame_lines, err)
       end if
    end subroutine on_frame
 
-   !> Write the pending frame with its support forces at the frame time t_k: the step
+   !> Write the support forces at the end t_k of the pending step k (and the frame
+   !> waiting there, with the same forces): the step
    !> force of step k belongs to its force point t_{k-1} + w h_k (w = 1/2, or 1 - alpha_f
    !> with SCHEME=ALPHA), so written at t_k it would lag by (1 - w) h_k (a first-order
    !> error in time: 7 % of the top tension's dynamic range on the paper's case 1 at
@@ -168,8 +167,8 @@ contains
       type(dynamic_problem_t), intent(in) :: prob !< problem (after the next step if next)
       logical, intent(in) :: next                 !< prob%r is the force of the next step
       type(error_t), intent(inout) :: err         !< status
-      real(wp) :: w
-      integer :: l, k, node
+      real(wp) :: w, reaction(6, 2, size(frame_lines))
+      integer :: l, k
       w = prob%wf
       if (next) then
          r_frame = r_pend + (prob%r - r_pend)*(1.0_wp - w)*h_pend &
@@ -180,16 +179,35 @@ contains
       else
          r_frame = r_pend
       end if
+      pending = .false.
+      reaction = end_forces(prob, r_frame)
+      call dynamic_output_ends_step(writer, k_pend, t_pend, reaction, err)
+      if (.not. frame_waiting) return
+      do l = 1, size(frame_lines)
+         do k = 1, 2
+            if (frame_lines(l)%end_held(k)) frame_lines(l)%reaction(:, k) = reaction(:, k, l)
+         end do
+      end do
+      frame_waiting = .false.
+      call dynamic_output_frame(writer, t_pend, frame_lines, err)
+   end subroutine write_pending
+
+   !> The support forces of the held line ends (zero at free ends) from the forces r
+   !> at the nodes: (6, 2, lines), force and moment at end A, end B of each line.
+   function end_forces(prob, r) result(reaction)
+      type(dynamic_problem_t), intent(in) :: prob      !< problem (mesh)
+      real(wp), intent(in) :: r(:, :)                  !< (6, nodes) [N, N m]
+      real(wp) :: reaction(6, 2, size(frame_lines))
+      integer :: l, k, node
+      reaction = 0.0_wp
       do l = 1, size(frame_lines)
          do k = 1, 2
             if (.not. frame_lines(l)%end_held(k)) cycle
             node = mesh_node(prob%mesh, l, merge(end_a, end_b, k == 1))
-            frame_lines(l)%reaction(:, k) = r_frame(:, node)
+            reaction(:, k, l) = r(:, node)
          end do
       end do
-      pending = .false.
-      call dynamic_output_frame(writer, t_pend, frame_lines, err)
-   end subroutine write_pending
+   end function end_forces
 
    subroutine on_step(log, err)
       type(step_log_t), intent(in) :: log   !< step
@@ -205,13 +223,22 @@ contains
       type(error_t), intent(inout) :: err              !< status
       integer(kind=8) :: now
       real(wp) :: wall, frac, rate, left
-      ! after every step: a frame waiting for this step is written, and this step's
-      ! force is kept as the one before the next frame's step
+      ! after every step: the step before (and a frame at its end) waiting for this step
+      ! is written, and this step waits for the next (not the step past the end)
       if (pending .and. t > t_pend .and. .not. has_error(err)) &
          call write_pending(prob, .true., err)
-      r_prev = prob%r
-      h_prev = prob%dt
-      have_prev = .true.
+      if (t <= ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) then
+         if (k_pend > 0 .or. pending) then
+            r_back = r_pend
+            h_back = h_pend
+            have_back = .true.
+         end if
+         r_pend = prob%r
+         h_pend = prob%dt
+         t_pend = t
+         k_pend = writer%steps
+         pending = .true.
+      end if
       if (.not. show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
       if (t > ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) return ! past the end
       call system_clock(now)

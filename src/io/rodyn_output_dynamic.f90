@@ -57,11 +57,13 @@ module rodyn_output_dynamic
    private
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
+   public :: dynamic_output_ends_step
    public :: dynamic_output_close
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
    character(len=*), parameter :: ends_csv = 'dynamic_ends.csv'
+   character(len=*), parameter :: ends_step_csv = 'dynamic_ends_step.csv'
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
@@ -73,6 +75,8 @@ module rodyn_output_dynamic
    character(len=*), parameter :: lines_head = 'time_s,line,touchdown_s_m'
    character(len=*), parameter :: ends_head = &
       'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
+   character(len=*), parameter :: ends_step_head = &
+      'step,time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
    character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
       'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,hydro_work_J,'// &
       'seabed_work_J,total_J,px,py,pz,Lx,Ly,Lz'
@@ -138,6 +142,8 @@ module rodyn_output_dynamic
       type(text_t) :: end_head(2)                    !< ',LINE,A' and ',LINE,B'
       type(text_t) :: line_head                      !< ',LINE'
       type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
+      type(hdf5_series_t) :: step_reactions          !< support forces, row per step
+      type(hdf5_series_t) :: step_end_tension        !< their magnitudes, row per step
    end type line_out_t
 
    !> The open output of a dynamic run: file units, the HDF5 file and its open datasets,
@@ -155,6 +161,7 @@ module rodyn_output_dynamic
       type(out_file_t) :: f_elements                 !< dynamic_elements.csv
       type(out_file_t) :: f_ends                     !< dynamic_ends.csv
       type(out_file_t) :: f_log                      !< dynamic_log.csv
+      type(out_file_t) :: f_ends_step                !< dynamic_ends_step.csv
       type(out_file_t) :: f_lines                    !< dynamic_lines.csv
       logical :: failed = .false.                    !< a write failed: nothing more written
       logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
@@ -163,6 +170,7 @@ module rodyn_output_dynamic
       integer :: steps_held = 0                      !< step rows since the last sync
       type(hdf5_file_t) :: h5                        !< dynamic.h5
       type(hdf5_series_t) :: time                    !< /dynamic/time
+      type(hdf5_series_t) :: step_time               !< /dynamic/step_time
       type(hdf5_series_t) :: log(n_log_series)       !< /dynamic/log/*
       type(line_out_t), allocatable :: line(:)       !< per line
       type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
@@ -176,6 +184,7 @@ module rodyn_output_dynamic
       integer(i8) :: clock_status = 0_i8             !< count at the last status.txt
       integer, public :: frames = 0                  !< frames written
       integer, public :: steps = 0                   !< step rows written
+      integer, public :: end_rows = 0                !< rows of support forces written
       real(wp), public :: flush_time = 0.0_wp        !< wall time spent flushing [s]
    end type dynamic_writer_t
 
@@ -211,6 +220,7 @@ contains
       w%hdf5 = model%output%hdf5
       w%frames = 0
       w%steps = 0
+      w%end_rows = 0
       w%n_pending = 0
       w%frames_held = 0
       w%steps_held = 0
@@ -249,6 +259,7 @@ contains
          call open_csv(w, elements_csv, elements_head, w%f_elements, e)
          call open_csv(w, ends_csv, ends_head, w%f_ends, e)
          call open_csv(w, log_csv, log_head, w%f_log, e)
+         call open_csv(w, ends_step_csv, ends_step_head, w%f_ends_step, e)
          call open_csv(w, lines_csv, lines_head, w%f_lines, e)
          call output_write_environment(dir, model, e)
       end if
@@ -361,6 +372,56 @@ contains
       if (has_error(e)) call note_failure(w, e)
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_step
+
+   !> Append the support forces at the end of step `step` (0: the start state), at time
+   !> `time`: one row per held end to dynamic_ends_step.csv, one row to each line's
+   !> step_reactions and step_end_tension in dynamic.h5 and to /dynamic/step_time
+   !> (both held until the next sync). reaction(:, k, l): force and moment of the
+   !> support on line l at end k (A, B), as the frames' reactions (docs/output.md).
+   subroutine dynamic_output_ends_step(w, step, time, reaction, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      integer, intent(in) :: step                   !< step number (0: start) [-]
+      real(wp), intent(in) :: time                  !< time at the end of the step [s]
+      real(wp), intent(in) :: reaction(:, :, :)     !< (6, 2, lines) [N, N m]
+      type(error_t), intent(inout) :: err           !< status
+      character(len=row_len) :: row
+      type(error_t) :: e
+      integer :: i, j, n
+      if (has_error(err)) return
+      if (.not. w%is_open) then
+         call set_error(err, stat_io, 'dynamic_output_ends_step: the writer is not open')
+         return
+      end if
+      if (w%failed) then
+         call set_error(err, stat_io, w%why)
+         return
+      end if
+      do i = 1, size(w%line)
+         associate (lo => w%line(i))
+            if (w%csv) then
+               do j = 1, 2
+                  if (.not. lo%end_held(j)) cycle
+                  n = 0
+                  call put_int(row, n, step)
+                  call put_real(row, n, time)
+                  call put_text(row, n, lo%end_head(j)%s)
+                  call put_reals(row, n, [reaction(:, j, i), norm2(reaction(1:3, j, i))])
+                  call outfile_put(w%f_ends_step, row(:n))
+               end do
+            end if
+            if (w%hdf5) then
+               call hdf5_append_steps(lo%step_reactions, reshape(reaction(:, :, i), [12]), e)
+               call hdf5_append_steps(lo%step_end_tension, [norm2(reaction(1:3, 1, i)), &
+                                                            norm2(reaction(1:3, 2, i))], e)
+            end if
+         end associate
+      end do
+      if (w%hdf5) call hdf5_append_steps(w%step_time, [time], e)
+      if (has_error(e)) w%h5_failed = .true.
+      if (.not. has_error(e)) w%end_rows = w%end_rows + 1
+      if (has_error(e)) call note_failure(w, e)
+      if (has_error(e)) call set_error(err, e%code, e%message)
+   end subroutine dynamic_output_ends_step
 
    !> Finish the run's output: write everything still held (a last sync), the final
    !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
@@ -481,6 +542,10 @@ contains
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
          call hdf5_open_series(h5, '/dynamic/time', w%time, err)
+         call hdf5_create_series_1d(h5, '/dynamic/step_time', err, chunk_steps=log_chunk)
+         call describe(h5, '/dynamic/step_time', 's', 'time of each row of the '// &
+            'support forces written every step: 0, then the end of each step', err)
+         call hdf5_open_series(h5, '/dynamic/step_time', w%step_time, err)
          do i = 1, size(lines)
             g = '/dynamic/'//group_name(lines(i)%name, i)
             call create_h5_line(h5, g, lines(i), err)
@@ -488,6 +553,9 @@ contains
                call hdf5_open_series(h5, g//'/'//trim(line_series_name(k)), &
                   w%line(i)%series(k), err)
             end do
+            call hdf5_open_series(h5, g//'/step_reactions', w%line(i)%step_reactions, err)
+            call hdf5_open_series(h5, g//'/step_end_tension', w%line(i)%step_end_tension, &
+               err)
          end do
          call create_h5_log(h5, err)
          do k = 1, n_log_series
@@ -505,10 +573,13 @@ contains
          end do
          w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
          call hdf5_series_hold(w%time, w%hold_frames)
+         call hdf5_series_hold(w%step_time, log_block + 2)
          do i = 1, size(lines)
             do k = 1, n_line_series
                call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
             end do
+            call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
+            call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
          end do
       end if
       call flush_h5(w, err)
@@ -563,6 +634,15 @@ contains
          'seabed normal contact force per unit length at the nodes; row per frame')
       call history(g//'/seabed_friction', nn, 'N/m', &
          'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
+      call describe(h5, g//'/step_reactions', 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
+         'force and moment of the support on the line, global axes, at the times of '// &
+         '/dynamic/step_time (every step); columns as reactions', err)
+      call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
+         merge(1, 0, r%end_held), err)
+      call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
+      call describe(h5, g//'/step_end_tension', 'N', 'magnitude of the support force at '// &
+         'the times of /dynamic/step_time (every step); columns end A, end B', err)
       call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
       call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
          'seabed, -1 when none; one value per frame', err)
@@ -734,15 +814,19 @@ contains
          call outfile_flush(w%f_ends, err)
          call outfile_flush(w%f_lines, err)
          call outfile_flush(w%f_log, err)
+         call outfile_flush(w%f_ends_step, err)
          w%flush_time = w%flush_time + seconds_since(c0)
          if (has_error(err)) return
       end if
       if (w%hdf5) then
          call hdf5_series_write_held(w%time, eh)
+         call hdf5_series_write_held(w%step_time, eh)
          do i = 1, size(w%line)
             do k = 1, n_line_series
                call hdf5_series_write_held(w%line(i)%series(k), eh)
             end do
+            call hdf5_series_write_held(w%line(i)%step_reactions, eh)
+            call hdf5_series_write_held(w%line(i)%step_end_tension, eh)
          end do
          call write_pending_log(w, eh)
          call flush_h5(w, eh)
@@ -758,6 +842,7 @@ contains
          call outfile_mark(w%f_ends)
          call outfile_mark(w%f_lines)
          call outfile_mark(w%f_log)
+         call outfile_mark(w%f_ends_step)
       end if
       w%frames_held = 0
       w%steps_held = 0
@@ -776,7 +861,8 @@ contains
    pure integer function csv_held(w)
       type(dynamic_writer_t), intent(in) :: w   !< writer
       csv_held = outfile_pending(w%f_nodes) + outfile_pending(w%f_elements) + &
-         outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log)
+         outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log) &
+         + outfile_pending(w%f_ends_step)
    end function csv_held
 
    !> Record a write failure: nothing more is written.
@@ -872,17 +958,20 @@ contains
          call outfile_abort(w%f_elements)
          call outfile_abort(w%f_ends)
          call outfile_abort(w%f_log)
+         call outfile_abort(w%f_ends_step)
          call outfile_abort(w%f_lines)
       else
          call outfile_close(w%f_nodes, err)
          call outfile_close(w%f_elements, err)
          call outfile_close(w%f_ends, err)
          call outfile_close(w%f_log, err)
+         call outfile_close(w%f_ends_step, err)
          call outfile_close(w%f_lines, err)
       end if
       ! after a failure the held steps are dropped (the series see an error)
       if (w%failed) call set_error(eh, stat_io, w%why)
       call hdf5_close_series(w%time, eh)
+      call hdf5_close_series(w%step_time, eh)
       do k = 1, n_log_series
          call hdf5_close_series(w%log(k), eh)
       end do
@@ -891,6 +980,8 @@ contains
             do k = 1, n_line_series
                call hdf5_close_series(w%line(i)%series(k), eh)
             end do
+            call hdf5_close_series(w%line(i)%step_reactions, eh)
+            call hdf5_close_series(w%line(i)%step_end_tension, eh)
          end do
          deallocate (w%line)
       end if
@@ -1043,7 +1134,7 @@ contains
 
 
    !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
-   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time' and 'log' used in
+   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time', 'log', 'step_time' of
    !> /dynamic (deck names are upper case, so this does not happen from a deck).
    pure function group_name(name, i) result(s)
       character(len=*), intent(in) :: name  !< line name
@@ -1052,7 +1143,8 @@ contains
       character(len=16) :: buf
       integer :: k
       s = trim(name)
-      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log') then
+      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log' .or. &
+          s == 'step_time') then
          write (buf, '(i0)') i
          s = 'line_'//trim(buf)
       end if
