@@ -9,14 +9,17 @@ module rodyn_run_dynamic
    use rodyn_error, only: error_t, has_error, set_error, clear_error
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t
+   use rodyn_state, only: state_t, state_copy
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
-   use rodyn_timeloop, only: timeloop_run
+   use rodyn_timeloop, only: timeloop_run, timeloop_state_t
+   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write
+   use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
                                    dynamic_output_frame, dynamic_output_step, &
-                                   dynamic_output_close, dynamic_output_ends_step
+                                   dynamic_output_close, dynamic_output_ends_step, &
+                                   dynamic_output_mark
    implicit none
    private
    public :: run_dynamic, dynamic_not_available, stderr_is_terminal
@@ -27,12 +30,22 @@ module rodyn_run_dynamic
          integer(c_int), value :: fd
          integer(c_int) :: r
       end function c_isatty
+      !> raise(3): the test hook's SIGKILL.
+      function c_raise(sig) result(r) bind(c, name='raise')
+         import :: c_int
+         integer(c_int), value :: sig
+         integer(c_int) :: r
+      end function c_raise
    end interface
 
    ! run context of one call of run_dynamic (read by the callbacks)
    type(dynamic_writer_t) :: writer
    type(line_result_t), allocatable :: frame_lines(:)
    type(model_t), pointer :: ctx_model => null()
+   type(run_summary_t), pointer :: ctx_summary => null()
+   character(len=:), allocatable :: ctx_dir       !< output folder (checkpoints)
+   type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
+   integer :: kill_after = -1                     !< test hook: SIGKILL after this step
    real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
    ! Support forces at the end of every step (see write_pending): the step forces R
    ! (the support force averaged over a step, the step's residual at the held dofs) of
@@ -64,19 +77,32 @@ contains
 
    !> Run the dynamic analysis from state (the static solution or the defined start) and
    !> write its outputs into dir. r0: support forces of the start state (for frame 0).
-   subroutine run_dynamic(model, mesh, state, r0, dir, summary, err, log_unit, progress)
+   !> With resume (rodyn --restart), continue the run of that checkpoint instead: the
+   !> state is the checkpoint's start state, and the files in dir are continued.
+   !> The environment variable RODYN_TEST_KILL_AFTER_STEP=N (a test hook) makes the
+   !> program kill itself with SIGKILL once step N has been handed to the writer.
+   subroutine run_dynamic(model, mesh, state, r0, dir, summary, err, log_unit, progress, &
+                          resume)
       type(model_t), intent(in), target :: model     !< model
       type(mesh_t), intent(in), target :: mesh       !< mesh
       type(state_t), intent(inout), target :: state  !< start, then final state
       real(wp), intent(in) :: r0(:, :)               !< (6, nn) start support forces
       character(len=*), intent(in) :: dir            !< output folder
-      type(run_summary_t), intent(inout) :: summary  !< progress (dynamic fields)
+      type(run_summary_t), intent(inout), target :: summary !< progress (dynamic fields)
       type(error_t), intent(inout) :: err            !< status
       integer, intent(in) :: log_unit                !< Newton log (< 0: none)
       logical, intent(in) :: progress                !< show the progress line
+      type(checkpoint_t), intent(in), optional :: resume !< continue from this checkpoint
       type(dynamic_problem_t) :: prob
       type(error_t) :: werr
+      character(len=32) :: hook
+      integer :: stat
       ctx_model => model
+      ctx_summary => summary
+      ctx_dir = dir
+      kill_after = -1
+      call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
+      if (stat == 0) read (hook, *, iostat=stat) kill_after
       r_start = r0
       pending = .false.
       have_back = .false.
@@ -85,11 +111,18 @@ contains
       if (allocated(r_pend)) deallocate (r_pend, r_back, r_frame)
       allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_frame(6, mesh%n_nodes))
       show_progress = progress
-      if (.not. model%dynamic%start_static) call apply_initial_velocities(model, mesh, state)
+      if (.not. model%dynamic%start_static .and. .not. present(resume)) &
+         call apply_initial_velocities(model, mesh, state)
+      start_state = state
       call dynamics_setup(prob, model, mesh, state)
       call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
                          prob%water)
-      call dynamic_output_open(writer, dir, model, frame_lines, err)
+      if (present(resume)) then
+         call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark)
+         if (.not. has_error(err)) call restore(resume)
+      else
+         call dynamic_output_open(writer, dir, model, frame_lines, err)
+      end if
       if (has_error(err)) then
          ! status.txt says so (it must not keep the static run's complete = true)
          summary%dynamic = .true.
@@ -101,7 +134,13 @@ contains
       call system_clock(clock0, clock_rate)
       clock_last = clock0
       summary%dynamic = .true.
-      call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, after_step)
+      if (present(resume)) then
+         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
+                           after_step, on_checkpoint, resume%loop)
+      else
+         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
+                           after_step, on_checkpoint)
+      end if
       block
          integer(kind=8) :: clock_end
          call system_clock(clock_end)
@@ -127,7 +166,70 @@ contains
       end if
       call dynamic_output_close(writer, summary, werr)
       if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, werr%message)
+   contains
+      !> The problem and the pending support forces as the checkpoint holds them (the
+      !> problem set up from the start state; a frame waiting recovered again, with the
+      !> water at the last step's force time as then).
+      subroutine restore(ck)
+         type(checkpoint_t), intent(in) :: ck      !< the checkpoint
+         call state_copy(ck%now, prob%s1)
+         prob%r = ck%r
+         prob%dt = ck%dt
+         prob%t0 = ck%t0
+         prob%f_conv = ck%f_conv
+         prob%m_conv = ck%m_conv
+         prob%f_last = ck%f_last
+         prob%m_last = ck%m_last
+         prob%have_conv = ck%have_conv
+         r_pend = ck%r_pend
+         r_back = ck%r_back
+         h_pend = ck%h_pend
+         h_back = ck%h_back
+         t_pend = ck%t_pend
+         k_pend = ck%k_pend
+         pending = ck%pending
+         have_back = ck%have_back
+         frame_waiting = ck%frame_waiting
+         if (frame_waiting) then
+            if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
+                                                       .true.)
+            call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                               prob%sup%held, frame_lines, prob%water)
+         end if
+      end subroutine restore
    end subroutine run_dynamic
+
+   !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
+   !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).
+   subroutine on_checkpoint(ls, prob, err)
+      type(timeloop_state_t), intent(in) :: ls         !< the time loop's state
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
+      type(error_t), intent(inout) :: err              !< status
+      type(checkpoint_t) :: ck
+      ck%loop = ls
+      ck%summary = ctx_summary
+      ck%start = start_state
+      ck%now = prob%s1
+      ck%r = prob%r
+      ck%dt = prob%dt
+      ck%t0 = prob%t0
+      ck%f_conv = prob%f_conv
+      ck%m_conv = prob%m_conv
+      ck%f_last = prob%f_last
+      ck%m_last = prob%m_last
+      ck%have_conv = prob%have_conv
+      ck%r_pend = r_pend
+      ck%r_back = r_back
+      ck%h_pend = h_pend
+      ck%h_back = h_back
+      ck%t_pend = t_pend
+      ck%k_pend = k_pend
+      ck%pending = pending
+      ck%have_back = have_back
+      ck%frame_waiting = frame_waiting
+      call dynamic_output_mark(writer, ck%mark, err)
+      call checkpoint_write(ctx_dir, ctx_model, ck, err)
+   end subroutine on_checkpoint
 
    !> A frame: positions and section forces of the state at t; its support forces wait
    !> with the step that ends at t for the next step (write_pending), but at t = 0 (the
@@ -222,11 +324,15 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
       type(error_t), intent(inout) :: err              !< status
       integer(kind=8) :: now
+      integer(c_int) :: stat_kill
       real(wp) :: wall, frac, rate, left
       ! after every step: the step before (and a frame at its end) waiting for this step
       ! is written, and this step waits for the next (not the step past the end)
       if (pending .and. t > t_pend .and. .not. has_error(err)) &
          call write_pending(prob, .true., err)
+      if (writer%steps == kill_after .and. t <= ctx_model%dynamic%duration) then
+         stat_kill = c_raise(9_c_int)       ! the test hook: SIGKILL, as a killed job
+      end if
       if (t <= ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) then
          if (k_pend > 0 .or. pending) then
             r_back = r_pend

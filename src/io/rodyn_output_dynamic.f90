@@ -43,12 +43,12 @@ module rodyn_output_dynamic
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
       hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
-      hdf5_series_hold, hdf5_series_write_held, &
+      hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, temp_name, &
-      commit_rename, remove_file
+      commit_rename, remove_file, outfile_reopen
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
@@ -57,7 +57,7 @@ module rodyn_output_dynamic
    private
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
-   public :: dynamic_output_ends_step
+   public :: dynamic_output_ends_step, dynamic_output_mark, dynamic_output_mark_t
    public :: dynamic_output_close
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
@@ -132,6 +132,20 @@ module rodyn_output_dynamic
       character(len=:), allocatable :: s !< the text
    end type text_t
 
+   !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
+   !> files hold, and the writer's counters; dynamic_output_open continues from it.
+   type :: dynamic_output_mark_t
+      integer(i8) :: csv_bytes(6) = 0_i8  !< bytes of dynamic_nodes, _elements, _ends,
+                                          !< _log, _lines, _ends_step.csv
+      integer :: frames = 0               !< frames written
+      integer :: steps = 0                !< step rows written
+      integer :: end_rows = 0             !< rows of support forces of every step
+      real(wp) :: last_time = 0.0_wp      !< time of the last frame [s]
+      integer :: step_iterations = 0      !< Newton iterations so far
+      integer :: step_tangents = 0        !< tangents so far
+      integer :: step_cutbacks = 0        !< halvings so far
+   end type dynamic_output_mark_t
+
    !> One line: its sizes, the fixed start of its CSV rows and its open HDF5 series.
    type :: line_out_t
       integer :: nn = 0                              !< nodes
@@ -197,7 +211,7 @@ contains
    !> status.txt saying the run is in progress. No frame is written: call
    !> dynamic_output_frame for the initial state if it is wanted. On failure everything
    !> opened is closed again (dynamic_output_close may still be called).
-   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary)
+   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume)
       type(dynamic_writer_t), intent(inout) :: w        !< the writer (not open)
       character(len=*), intent(in) :: dir               !< output folder
       type(model_t), intent(in) :: model                !< model (title, deck, options)
@@ -205,6 +219,8 @@ contains
       type(error_t), intent(inout) :: err               !< status
       type(run_summary_t), intent(in), optional :: static_summary !< the static run,
                                                         !< kept in status.txt meanwhile
+      type(dynamic_output_mark_t), intent(in), optional :: resume !< continue the files
+                                                        !< of a run from this checkpoint
       character(len=*), parameter :: where = 'dynamic_output_open'
       type(error_t) :: e
       integer :: i
@@ -238,6 +254,17 @@ contains
       w%progress%step_iterations = 0
       w%progress%step_tangents = 0
       w%progress%step_cutbacks = 0
+      if (present(resume)) then
+         w%frames = resume%frames
+         w%steps = resume%steps
+         w%end_rows = resume%end_rows
+         w%last_time = resume%last_time
+         w%progress%time_reached = resume%last_time
+         w%progress%steps = resume%steps
+         w%progress%step_iterations = resume%step_iterations
+         w%progress%step_tangents = resume%step_tangents
+         w%progress%step_cutbacks = resume%step_cutbacks
+      end if
       w%synced = w%progress
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
@@ -254,17 +281,28 @@ contains
       do i = 1, size(lines)
          call set_up_line(w%line(i), lines(i))
       end do
-      if (w%csv) then
+      if (w%csv .and. present(resume)) then
+         call reopen_csv(nodes_csv, w%f_nodes, 1)
+         call reopen_csv(elements_csv, w%f_elements, 2)
+         call reopen_csv(ends_csv, w%f_ends, 3)
+         call reopen_csv(log_csv, w%f_log, 4)
+         call reopen_csv(lines_csv, w%f_lines, 5)
+         call reopen_csv(ends_step_csv, w%f_ends_step, 6)
+      else if (w%csv) then
          call open_csv(w, nodes_csv, nodes_head, w%f_nodes, e)
          call open_csv(w, elements_csv, elements_head, w%f_elements, e)
          call open_csv(w, ends_csv, ends_head, w%f_ends, e)
          call open_csv(w, log_csv, log_head, w%f_log, e)
          call open_csv(w, ends_step_csv, ends_step_head, w%f_ends_step, e)
          call open_csv(w, lines_csv, lines_head, w%f_lines, e)
-         call output_write_environment(dir, model, e)
       end if
+      if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
-         call create_h5(w, model, lines, e)
+         if (present(resume)) then
+            call reopen_h5(w, lines, resume, e)
+         else
+            call create_h5(w, model, lines, e)
+         end if
          if (has_error(e)) w%h5_failed = .true.
       end if
       if (has_error(e)) then
@@ -274,7 +312,45 @@ contains
          return
       end if
       w%is_open = .true.
+   contains
+      !> A CSV table of the interrupted run, cut back to the checkpoint's bytes.
+      subroutine reopen_csv(name, f, k)
+         character(len=*), intent(in) :: name       !< file name
+         type(out_file_t), intent(inout) :: f       !< the table
+         integer, intent(in) :: k                   !< its index in csv_bytes
+         if (has_error(e)) return
+         call outfile_reopen(f, dir, name, resume%csv_bytes(k), e)
+      end subroutine reopen_csv
    end subroutine dynamic_output_open
+
+   !> A checkpoint of the output: write everything held (a sync, status.txt too) and
+   !> return what the files then hold and the writer's counters.
+   subroutine dynamic_output_mark(w, mark, err)
+      type(dynamic_writer_t), intent(inout) :: w          !< open writer
+      type(dynamic_output_mark_t), intent(out) :: mark    !< where the output stands
+      type(error_t), intent(inout) :: err                 !< status
+      type(error_t) :: e
+      if (has_error(err)) return
+      if (.not. w%is_open .or. w%failed) then
+         call set_error(err, stat_io, 'dynamic_output_mark: the writer is not open')
+         return
+      end if
+      call sync(w, e)
+      if (has_error(e)) then
+         call note_failure(w, e)
+         call set_error(err, e%code, e%message)
+         return
+      end if
+      mark%csv_bytes = [w%f_nodes%written, w%f_elements%written, w%f_ends%written, &
+                        w%f_log%written, w%f_lines%written, w%f_ends_step%written]
+      mark%frames = w%frames
+      mark%steps = w%steps
+      mark%end_rows = w%end_rows
+      mark%last_time = w%last_time
+      mark%step_iterations = w%progress%step_iterations
+      mark%step_tangents = w%progress%step_tangents
+      mark%step_cutbacks = w%progress%step_cutbacks
+   end subroutine dynamic_output_mark
 
    !> Append one output frame at time `time`: every line's nodes, integration points
    !> and held ends, to the CSV tables and dynamic.h5 (with the step rows still held),
@@ -514,8 +590,7 @@ contains
       type(model_t), intent(in) :: model           !< model
       type(line_result_t), intent(in) :: lines(:)  !< initial state
       type(error_t), intent(inout) :: err          !< status
-      character(len=:), allocatable :: g
-      integer :: i, k, nv
+      integer :: i
       if (has_error(err)) return
       ! under a temporary name until the header and the empty datasets are on disk
       call hdf5_create_file(w%h5, temp_name(w%dir, dynamic_h5), err)
@@ -541,53 +616,91 @@ contains
          call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
-         call hdf5_open_series(h5, '/dynamic/time', w%time, err)
          call hdf5_create_series_1d(h5, '/dynamic/step_time', err, chunk_steps=log_chunk)
          call describe(h5, '/dynamic/step_time', 's', 'time of each row of the '// &
             'support forces written every step: 0, then the end of each step', err)
-         call hdf5_open_series(h5, '/dynamic/step_time', w%step_time, err)
          do i = 1, size(lines)
-            g = '/dynamic/'//group_name(lines(i)%name, i)
-            call create_h5_line(h5, g, lines(i), err)
-            do k = 1, n_line_series
-               call hdf5_open_series(h5, g//'/'//trim(line_series_name(k)), &
-                  w%line(i)%series(k), err)
-            end do
-            call hdf5_open_series(h5, g//'/step_reactions', w%line(i)%step_reactions, err)
-            call hdf5_open_series(h5, g//'/step_end_tension', w%line(i)%step_end_tension, &
-               err)
+            call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
          end do
          call create_h5_log(h5, err)
-         do k = 1, n_log_series
-            call hdf5_open_series(h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
-               err)
-         end do
       end associate
-      ! frames held in memory and written in blocks (see the flush policy above)
-      if (.not. has_error(err)) then
-         nv = 1
-         do i = 1, size(lines)
-            do k = 1, n_line_series
-               nv = nv + int(w%line(i)%series(k)%n_cols)
-            end do
-         end do
-         w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
-         call hdf5_series_hold(w%time, w%hold_frames)
-         call hdf5_series_hold(w%step_time, log_block + 2)
-         do i = 1, size(lines)
-            do k = 1, n_line_series
-               call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
-            end do
-            call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
-            call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
-         end do
-      end if
+      call open_h5_series(w, lines, err)
       call flush_h5(w, err)
       if (.not. has_error(err)) then
          call commit_rename(temp_name(w%dir, dynamic_h5), path_join(w%dir, dynamic_h5), err)
          if (.not. has_error(err)) w%h5%path = path_join(w%dir, dynamic_h5)
       end if
    end subroutine create_h5
+
+   !> Open every time history of dynamic.h5 (w%h5 open) for appending, and hold the
+   !> frames and the support forces of every step in memory (see the flush policy).
+   subroutine open_h5_series(w, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer, w%h5 open
+      type(line_result_t), intent(in) :: lines(:)  !< the lines (names)
+      type(error_t), intent(inout) :: err          !< status
+      character(len=:), allocatable :: g
+      integer :: i, k, nv
+      call hdf5_open_series(w%h5, '/dynamic/time', w%time, err)
+      call hdf5_open_series(w%h5, '/dynamic/step_time', w%step_time, err)
+      do i = 1, size(lines)
+         g = '/dynamic/'//group_name(lines(i)%name, i)
+         do k = 1, n_line_series
+            call hdf5_open_series(w%h5, g//'/'//trim(line_series_name(k)), &
+               w%line(i)%series(k), err)
+         end do
+         call hdf5_open_series(w%h5, g//'/step_reactions', w%line(i)%step_reactions, err)
+         call hdf5_open_series(w%h5, g//'/step_end_tension', w%line(i)%step_end_tension, err)
+      end do
+      do k = 1, n_log_series
+         call hdf5_open_series(w%h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
+            err)
+      end do
+      if (has_error(err)) return
+      nv = 1
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            nv = nv + int(w%line(i)%series(k)%n_cols)
+         end do
+      end do
+      w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
+      call hdf5_series_hold(w%time, w%hold_frames)
+      call hdf5_series_hold(w%step_time, log_block + 2)
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
+         end do
+         call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
+         call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
+      end do
+   end subroutine open_h5_series
+
+   !> Open the dynamic.h5 of an interrupted run again and cut every time history back
+   !> to the rows of the checkpoint `mark` (frames, steps, rows of support forces).
+   subroutine reopen_h5(w, lines, mark, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer
+      type(line_result_t), intent(in) :: lines(:)  !< the lines (names)
+      type(dynamic_output_mark_t), intent(in) :: mark !< rows kept
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i, k
+      if (has_error(err)) return
+      call hdf5_open_file(w%h5, path_join(w%dir, dynamic_h5), err, writable=.true.)
+      call hdf5_write_attribute(w%h5, '/', 'complete', 0, err)
+      call hdf5_write_attribute(w%h5, '/', 'status', running, err)
+      call open_h5_series(w, lines, err)
+      call hdf5_series_truncate(w%time, mark%frames, err)
+      call hdf5_series_truncate(w%step_time, mark%end_rows, err)
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            call hdf5_series_truncate(w%line(i)%series(k), mark%frames, err)
+         end do
+         call hdf5_series_truncate(w%line(i)%step_reactions, mark%end_rows, err)
+         call hdf5_series_truncate(w%line(i)%step_end_tension, mark%end_rows, err)
+      end do
+      do k = 1, n_log_series
+         call hdf5_series_truncate(w%log(k), mark%steps, err)
+      end do
+      call flush_h5(w, err)
+   end subroutine reopen_h5
 
    !> One line's group: its static datasets and its empty time histories.
    subroutine create_h5_line(h5, g, r, err)
