@@ -13,7 +13,8 @@ module rodyn_run_dynamic
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
    use rodyn_timeloop, only: timeloop_run, timeloop_state_t
-   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write
+   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file
+   use rodyn_outfile, only: remove_file, path_join
    use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
@@ -121,6 +122,8 @@ contains
          call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark)
          if (.not. has_error(err)) call restore(resume)
       else
+         ! a checkpoint of an earlier run in this folder no longer fits its files
+         call remove_file(path_join(dir, checkpoint_file))
          call dynamic_output_open(writer, dir, model, frame_lines, err)
       end if
       if (has_error(err)) then
