@@ -13,7 +13,8 @@ module rodyn_run_dynamic
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
    use rodyn_timeloop, only: timeloop_run, timeloop_state_t
-   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file
+   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
+                               checkpoint_program_id
    use rodyn_outfile, only: remove_file, path_join
    use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
@@ -45,6 +46,7 @@ module rodyn_run_dynamic
    type(model_t), pointer :: ctx_model => null()
    type(run_summary_t), pointer :: ctx_summary => null()
    character(len=:), allocatable :: ctx_dir       !< output folder (checkpoints)
+   character(len=:), allocatable :: program_id    !< checkpoint_program_id(), once a run
    type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
    integer :: kill_after = -1                     !< test hook: SIGKILL after this step
    real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
@@ -101,6 +103,8 @@ contains
       ctx_model => model
       ctx_summary => summary
       ctx_dir = dir
+      program_id = ''
+      if (model%dynamic%checkpoint > 0.0_wp) program_id = checkpoint_program_id()
       kill_after = -1
       call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
       if (stat == 0) read (hook, *, iostat=stat) kill_after
@@ -231,7 +235,7 @@ contains
       ck%have_back = have_back
       ck%frame_waiting = frame_waiting
       call dynamic_output_mark(writer, ck%mark, err)
-      call checkpoint_write(ctx_dir, ctx_model, ck, err)
+      call checkpoint_write(ctx_dir, ctx_model, program_id, ck, err)
    end subroutine on_checkpoint
 
    !> A frame: positions and section forces of the state at t; its support forces wait

@@ -64,9 +64,10 @@ module rodyn_checkpoint
 contains
 
    !> Write ck as dir/checkpoint.h5: to a temporary, closed, then renamed over the old.
-   subroutine checkpoint_write(dir, model, ck, err)
+   subroutine checkpoint_write(dir, model, program_id, ck, err)
       character(len=*), intent(in) :: dir         !< output folder
       type(model_t), intent(in) :: model          !< model (deck text, parameters)
+      character(len=*), intent(in) :: program_id  !< checkpoint_program_id(), once a run
       type(checkpoint_t), intent(in) :: ck        !< what to keep
       type(error_t), intent(inout) :: err         !< status
       type(hdf5_file_t) :: h5
@@ -75,7 +76,7 @@ contains
       if (has_error(err)) return
       tmp = temp_name(dir, checkpoint_file)
       call hdf5_create_file(h5, tmp, e)
-      call hdf5_write_dataset(h5, '/program', checkpoint_program_id(), e)
+      call hdf5_write_dataset(h5, '/program', program_id, e)
       call hdf5_write_dataset(h5, '/deck', deck_identity(model), e)
       call hdf5_write_dataset(h5, '/reals', pack_reals(ck), e)
       call hdf5_write_dataset(h5, '/integers', pack_ints(ck), e)
