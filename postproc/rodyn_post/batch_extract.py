@@ -14,8 +14,8 @@ one place), and returns plain numbers:
 The end tensions' extremes come from the support forces written every step when the
 run wrote them (rodyn since issue 12: they then do not depend on the frame interval),
 else from the frames. The quantities (`--extract`, EXTRACT_KEYS): end_tension,
-tension, wall_tension, moment, curvature (with the minimum bend radius), torque, seabed (seabed normal force
-and touchdown range; only for a run with a seabed). Newton statistics come from
+tension, wall_tension, moment, curvature (with the minimum bend radius), torque, seabed
+(seabed normal force and touchdown range; only for a run with a seabed). Newton statistics come from
 status.txt (`newton_stats`) and are always kept.
 
 Values are the binary64 numbers of the files (no rounding): a summary row equals, bit

@@ -43,8 +43,9 @@ contains
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
    !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme
-   !> (formulation note, sections 3 and 4), Newton controls and the checkpoint interval. No data lines; at most one. RHO INF only
-   !> with SCHEME=ALPHA, where it defaults to 0.8 (1 otherwise: no numerical damping).
+   !> (formulation note, sections 3 and 4), Newton controls and the checkpoint interval.
+   !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8
+   !> (1 otherwise: no numerical damping).
    subroutine read_dynamic_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *DYNAMIC card
