@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Checkpoint and restart (issue 12; docs/dynamics.md "Checkpoint and restart"): a run
 killed with SIGKILL and continued with `rodyn DECK --restart DIR` leaves the same files
-as a run never interrupted: every CSV table byte for byte, every dataset of
-dynamic.h5 and results.h5 equal to the bit (h5py, numpy.array_equal).
+as a run never interrupted: every CSV table byte for byte, every dataset and
+attribute of dynamic.h5 and results.h5 equal to the bit (h5py, numpy.array_equal), and
+status.txt (but wall_time_s, which counts the continued run only).
 
 The kill is the test hook RODYN_TEST_KILL_AFTER_STEP=N (rodyn raises SIGKILL on itself
 once step N has been handed to the writer: a kill at a fixed step, also between a
@@ -61,11 +62,27 @@ def run(rodyn, args, kill=None, expect=0):
 
 
 def datasets(path):
+    """{name: value} of every dataset, and of every attribute as 'object@name' (but
+    wall_time_s: the continued run's counts its own part only)."""
     out = {}
+
+    def visit(name, obj):
+        if isinstance(obj, h5py.Dataset):
+            out[name] = obj[()]
+        for key, value in obj.attrs.items():
+            if key != "wall_time_s":
+                out[f"{name}@{key}"] = value
+
     with h5py.File(path, "r") as f:
-        f.visititems(lambda name, obj: out.__setitem__(name, obj[()])
-                     if isinstance(obj, h5py.Dataset) else None)
+        visit("/", f)
+        f.visititems(visit)
     return out
+
+
+def status_lines(path):
+    """status.txt without its wall_time_s line."""
+    with open(path) as f:
+        return [line for line in f if not line.startswith("wall_time_s")]
 
 
 def same_files(ref, other, tag):
@@ -73,6 +90,8 @@ def same_files(ref, other, tag):
     n = 0
     for name in sorted(os.listdir(ref)):
         a, b = os.path.join(ref, name), os.path.join(other, name)
+        if name == "status.txt" and status_lines(a) != status_lines(b):
+            FAILURES.append(f"{tag}: status.txt differs (wall_time_s aside)")
         if name.endswith(".csv"):
             with open(a, "rb") as fa, open(b, "rb") as fb:
                 if fa.read() != fb.read():
