@@ -9,12 +9,12 @@ The kill is the test hook RODYN_TEST_KILL_AFTER_STEP=N (rodyn raises SIGKILL on 
 once step N has been handed to the writer: a kill at a fixed step, also between a
 checkpoint and the next). Decks, from the shipped ones, shortened:
 
-- case 1 (EMC, dt = 0.1 s), 10 s, frames every 0.5 s, CHECKPOINT=1.5: killed after steps
-  33, 77 and 99 (the last); killed twice (47, then 81 in the continued run); killed
+- case 1 (EMC, dt = 0.1 s), 6 s, frames every 0.5 s, CHECKPOINT=1.5: killed after steps
+  23, 47 and 59 (the last); killed twice (19, then 43 in the continued run); killed
   after step 7, before the first checkpoint: --restart refused (exit 1);
-- case 1 with SCHEME=ALPHA (accelerations in the state), killed after step 51;
+- case 1 with SCHEME=ALPHA (accelerations in the state), killed after step 37;
 - the mooring leg surged in water (cable elements, drag, added mass, seabed contact;
-  24 elements, dt = 0.05 s, 3 s, frames every 0.1 s, CHECKPOINT=1), killed after 37.
+  24 elements, dt = 0.05 s, 2 s, frames every 0.1 s, CHECKPOINT=0.5), killed after 27.
 
 Refused with exit 1 and a message naming the cause: a checkpoint continued with another
 deck (an amplitude edited), with another --set value, and one written by another build
@@ -125,25 +125,25 @@ def main():
     rodyn, input_dir, work = sys.argv[1:4]
     os.makedirs(work, exist_ok=True)
     case1 = [(r"TIME=900\.0, OUTPUT INTERVAL=0\.1",
-              "TIME=10.0, OUTPUT INTERVAL=0.5, CHECKPOINT=1.5")]
+              "TIME=6.0, OUTPUT INTERVAL=0.5, CHECKPOINT=1.5")]
     emc = deck(input_dir, work, "case1", "paper_case1.inp", case1)
     alpha = deck(input_dir, work, "case1_alpha", "paper_case1.inp",
                  [(case1[0][0], case1[0][1] + ", SCHEME=ALPHA")])
     surge = deck(input_dir, work, "surge", "mooring_surge.inp",
                  [(r"ELEMENTS=120", "ELEMENTS=24"),
                   (r"TIME=120\.0, OUTPUT INTERVAL=0\.1",
-                   "TIME=3.0, OUTPUT INTERVAL=0.1, CHECKPOINT=1.0")])
+                   "TIME=2.0, OUTPUT INTERVAL=0.1, CHECKPOINT=0.5")])
     refs = {}
     for path in (emc, alpha, surge):
         ref = os.path.join(work, os.path.basename(path)[:-4] + "_ref")
         shutil.rmtree(ref, ignore_errors=True)
         run(rodyn, [path, "-o", ref])
         refs[path] = ref
-    for kill in (33, 77, 99):
+    for kill in (23, 47, 59):
         killed_and_continued(rodyn, emc, refs[emc], work, f"emc_kill{kill}", [kill])
-    killed_and_continued(rodyn, emc, refs[emc], work, "emc_kill47_81", [47, 81])
-    killed_and_continued(rodyn, alpha, refs[alpha], work, "alpha_kill51", [51])
-    killed_and_continued(rodyn, surge, refs[surge], work, "surge_kill37", [37])
+    killed_and_continued(rodyn, emc, refs[emc], work, "emc_kill19_43", [19, 43])
+    killed_and_continued(rodyn, alpha, refs[alpha], work, "alpha_kill37", [37])
+    killed_and_continued(rodyn, surge, refs[surge], work, "surge_kill27", [27])
 
     # killed before the first checkpoint: nothing to continue
     early = os.path.join(work, "emc_kill7")
@@ -154,8 +154,8 @@ def main():
         FAILURES.append(f"kill before the first checkpoint: message {proc.stderr!r}")
 
     # another deck, another parameter, another build: refused, the files untouched
-    kept = os.path.join(work, "emc_kill77")
-    run(rodyn, [emc, "-o", kept], kill=77, expect=-9)
+    kept = os.path.join(work, "emc_kill40")
+    run(rodyn, [emc, "-o", kept], kill=40, expect=-9)
     before = {n: open(os.path.join(kept, n), "rb").read() for n in os.listdir(kept)
               if n.endswith(".csv")}
     other = deck(input_dir, work, "case1_other", "paper_case1.inp",
