@@ -384,8 +384,9 @@ def _read_h5(path: Path, status) -> DynamicResults:
                          if k not in _OPTIONAL_LOG or k in log_group},
                         f"{path}: /dynamic/log")
         lines = []
+        step_time = np.zeros(0)   # the same in every line group (rodyn writes them alike)
         for key, group in dyn.items():
-            if key in ("time", "log", "step_time"):
+            if key in ("time", "log"):
                 continue
             if not isinstance(group, h5py.Group):
                 raise RodynResultsError(f"{path}: {group.name} is not a line group")
@@ -396,15 +397,15 @@ def _read_h5(path: Path, status) -> DynamicResults:
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
             for k in ("step_reactions", "step_end_tension"):
-                if isinstance(group.get(k), h5py.Dataset) and "step_time" in dyn:
+                if isinstance(group.get(k), h5py.Dataset) and "step_time" in group:
                     arrays[k] = np.asarray(group[k][...], dtype=float)
+            if isinstance(group.get("step_time"), h5py.Dataset):
+                step_time = np.asarray(group["step_time"][...], dtype=float)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
                                     f"{path}: {group.name}"))
         from .environment import environment_of
         environment = environment_of(f, path)
         deck = f["deck"].asstr()[()] if isinstance(f.get("deck"), h5py.Dataset) else ""
-        step_time = (np.asarray(dyn["step_time"][...], dtype=float)
-                     if isinstance(dyn.get("step_time"), h5py.Dataset) else np.zeros(0))
         finished = "steps" in dyn.attrs
         counters = {}
         if finished:

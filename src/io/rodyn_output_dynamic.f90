@@ -158,6 +158,7 @@ module rodyn_output_dynamic
       type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
       type(hdf5_series_t) :: step_reactions          !< support forces, row per step
       type(hdf5_series_t) :: step_end_tension        !< their magnitudes, row per step
+      type(hdf5_series_t) :: step_time               !< their times, row per step
    end type line_out_t
 
    !> The open output of a dynamic run: file units, the HDF5 file and its open datasets,
@@ -184,7 +185,6 @@ module rodyn_output_dynamic
       integer :: steps_held = 0                      !< step rows since the last sync
       type(hdf5_file_t) :: h5                        !< dynamic.h5
       type(hdf5_series_t) :: time                    !< /dynamic/time
-      type(hdf5_series_t) :: step_time               !< /dynamic/step_time
       type(hdf5_series_t) :: log(n_log_series)       !< /dynamic/log/*
       type(line_out_t), allocatable :: line(:)       !< per line
       type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
@@ -451,8 +451,8 @@ contains
 
    !> Append the support forces at the end of step `step` (0: the start state), at time
    !> `time`: one row per held end to dynamic_ends_step.csv, one row to each line's
-   !> step_reactions and step_end_tension in dynamic.h5 and to /dynamic/step_time
-   !> (both held until the next sync). reaction(:, k, l): force and moment of the
+   !> step_time, step_reactions and step_end_tension in dynamic.h5 (held until the next
+   !> sync). reaction(:, k, l): force and moment of the
    !> support on line l at end k (A, B), as the frames' reactions (docs/output.md).
    subroutine dynamic_output_ends_step(w, step, time, reaction, err)
       type(dynamic_writer_t), intent(inout) :: w    !< open writer
@@ -486,13 +486,13 @@ contains
                end do
             end if
             if (w%hdf5) then
+               call hdf5_append_steps(lo%step_time, [time], e)
                call hdf5_append_steps(lo%step_reactions, reshape(reaction(:, :, i), [12]), e)
                call hdf5_append_steps(lo%step_end_tension, [norm2(reaction(1:3, 1, i)), &
                                                             norm2(reaction(1:3, 2, i))], e)
             end if
          end associate
       end do
-      if (w%hdf5) call hdf5_append_steps(w%step_time, [time], e)
       if (has_error(e)) w%h5_failed = .true.
       if (.not. has_error(e)) w%end_rows = w%end_rows + 1
       if (has_error(e)) call note_failure(w, e)
@@ -616,9 +616,6 @@ contains
          call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
-         call hdf5_create_series_1d(h5, '/dynamic/step_time', err, chunk_steps=log_chunk)
-         call describe(h5, '/dynamic/step_time', 's', 'time of each row of the '// &
-            'support forces written every step: 0, then the end of each step', err)
          do i = 1, size(lines)
             call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
          end do
@@ -641,7 +638,6 @@ contains
       character(len=:), allocatable :: g
       integer :: i, k, nv
       call hdf5_open_series(w%h5, '/dynamic/time', w%time, err)
-      call hdf5_open_series(w%h5, '/dynamic/step_time', w%step_time, err)
       do i = 1, size(lines)
          g = '/dynamic/'//group_name(lines(i)%name, i)
          do k = 1, n_line_series
@@ -650,6 +646,7 @@ contains
          end do
          call hdf5_open_series(w%h5, g//'/step_reactions', w%line(i)%step_reactions, err)
          call hdf5_open_series(w%h5, g//'/step_end_tension', w%line(i)%step_end_tension, err)
+         call hdf5_open_series(w%h5, g//'/step_time', w%line(i)%step_time, err)
       end do
       do k = 1, n_log_series
          call hdf5_open_series(w%h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
@@ -664,13 +661,13 @@ contains
       end do
       w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
       call hdf5_series_hold(w%time, w%hold_frames)
-      call hdf5_series_hold(w%step_time, log_block + 2)
       do i = 1, size(lines)
          do k = 1, n_line_series
             call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
          end do
          call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
          call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
+         call hdf5_series_hold(w%line(i)%step_time, log_block + 2)
       end do
    end subroutine open_h5_series
 
@@ -688,13 +685,13 @@ contains
       call hdf5_write_attribute(w%h5, '/', 'status', running, err)
       call open_h5_series(w, lines, err)
       call hdf5_series_truncate(w%time, mark%frames, err)
-      call hdf5_series_truncate(w%step_time, mark%end_rows, err)
       do i = 1, size(lines)
          do k = 1, n_line_series
             call hdf5_series_truncate(w%line(i)%series(k), mark%frames, err)
          end do
          call hdf5_series_truncate(w%line(i)%step_reactions, mark%end_rows, err)
          call hdf5_series_truncate(w%line(i)%step_end_tension, mark%end_rows, err)
+         call hdf5_series_truncate(w%line(i)%step_time, mark%end_rows, err)
       end do
       do k = 1, n_log_series
          call hdf5_series_truncate(w%log(k), mark%steps, err)
@@ -747,15 +744,18 @@ contains
          'seabed normal contact force per unit length at the nodes; row per frame')
       call history(g//'/seabed_friction', nn, 'N/m', &
          'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call hdf5_create_series_1d(h5, g//'/step_time', err, chunk_steps=log_chunk)
+      call describe(h5, g//'/step_time', 's', 'time of each row of step_reactions and '// &
+         'step_end_tension: 0, then the end of each step', err)
       call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
       call describe(h5, g//'/step_reactions', 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
          'force and moment of the support on the line, global axes, at the times of '// &
-         '/dynamic/step_time (every step); columns as reactions', err)
+         'step_time (every step); columns as reactions', err)
       call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
       call describe(h5, g//'/step_end_tension', 'N', 'magnitude of the support force at '// &
-         'the times of /dynamic/step_time (every step); columns end A, end B', err)
+         'the times of step_time (every step); columns end A, end B', err)
       call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
       call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
          'seabed, -1 when none; one value per frame', err)
@@ -933,13 +933,13 @@ contains
       end if
       if (w%hdf5) then
          call hdf5_series_write_held(w%time, eh)
-         call hdf5_series_write_held(w%step_time, eh)
          do i = 1, size(w%line)
             do k = 1, n_line_series
                call hdf5_series_write_held(w%line(i)%series(k), eh)
             end do
             call hdf5_series_write_held(w%line(i)%step_reactions, eh)
             call hdf5_series_write_held(w%line(i)%step_end_tension, eh)
+            call hdf5_series_write_held(w%line(i)%step_time, eh)
          end do
          call write_pending_log(w, eh)
          call flush_h5(w, eh)
@@ -1084,7 +1084,6 @@ contains
       ! after a failure the held steps are dropped (the series see an error)
       if (w%failed) call set_error(eh, stat_io, w%why)
       call hdf5_close_series(w%time, eh)
-      call hdf5_close_series(w%step_time, eh)
       do k = 1, n_log_series
          call hdf5_close_series(w%log(k), eh)
       end do
@@ -1095,6 +1094,7 @@ contains
             end do
             call hdf5_close_series(w%line(i)%step_reactions, eh)
             call hdf5_close_series(w%line(i)%step_end_tension, eh)
+            call hdf5_close_series(w%line(i)%step_time, eh)
          end do
          deallocate (w%line)
       end if
@@ -1247,7 +1247,7 @@ contains
 
 
    !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
-   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time', 'log', 'step_time' of
+   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time' and 'log' used in
    !> /dynamic (deck names are upper case, so this does not happen from a deck).
    pure function group_name(name, i) result(s)
       character(len=*), intent(in) :: name  !< line name
@@ -1256,8 +1256,7 @@ contains
       character(len=16) :: buf
       integer :: k
       s = trim(name)
-      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log' .or. &
-          s == 'step_time') then
+      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log') then
          write (buf, '(i0)') i
          s = 'line_'//trim(buf)
       end if

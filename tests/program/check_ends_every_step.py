@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The support forces are written every step (dynamic_ends_step.csv, and step_time,
-step_reactions, step_end_tension in dynamic.h5), so that the extremes at the ends do not
+step_reactions, step_end_tension of each line in dynamic.h5), so that the extremes at the ends do not
 depend on the frame interval (issue 12). The paper's case 1 for 20 s (dt = 0.1 s, end A
 heaved at 0.658 Hz) is run twice: frames every 0.5 s (3 frames a period of the motion)
 and a frame every step. Checked:
@@ -82,7 +82,7 @@ def main():
             print("h5py not available: dynamic.h5 not checked")
             continue
         with h5py.File(os.path.join(out, "dynamic.h5"), "r") as f:
-            t = f["dynamic/step_time"][...]
+            t = f["dynamic/CABLE/step_time"][...]
             ten = f["dynamic/CABLE/step_end_tension"][...]
             reac = f["dynamic/CABLE/step_reactions"][...]
         for k, end in enumerate("AB"):
