@@ -11,9 +11,11 @@ one place), and returns plain numbers:
 - `envelope`: {line: {"s": [...], "<quantity>_min": [...], "<quantity>_max": [...]}}
   over all frames at the points the quantity lives on (the range graph of the case).
 
-The quantities (`--extract`, EXTRACT_KEYS): end_tension, tension, wall_tension,
-moment, curvature (with the minimum bend radius), torque, seabed (seabed normal force
-and touchdown range; only for a run with a seabed). Newton statistics come from
+The end tensions' extremes come from the support forces written every step when the
+run wrote them (rodyn since issue 12: they then do not depend on the frame interval),
+else from the frames. The quantities (`--extract`, EXTRACT_KEYS): end_tension,
+tension, wall_tension, moment, curvature (with the minimum bend radius), torque, seabed
+(seabed normal force and touchdown range; only for a run with a seabed). Newton statistics come from
 status.txt (`newton_stats`) and are always kept.
 
 Values are the binary64 numbers of the files (no rounding): a summary row equals, bit
@@ -147,6 +149,9 @@ def extract_case(folder: Path, keys: Iterable[str] = DEFAULT_EXTRACT) -> dict:
     has_seabed = bool(env is not None and getattr(env, "seabed", False))
     lines = [(line.name, line.gp_s, line.node_s, line.end_held, _line_arrays(line, dynamic))
              for line in results.lines]
+    if dynamic:   # the ends' extremes from the support forces of every step, if written
+        for line, (_, _, _, _, arrays) in zip(results.lines, lines):
+            arrays["end_time"], arrays["end_tension"] = results.end_tension_series(line)
     scalars, envelope = _extract_lines(lines, time, has_seabed, keys)
     info = {"frames": int(len(time)) if dynamic else 0, "dynamic": dynamic}
     if dynamic and len(results.log):
@@ -164,7 +169,7 @@ def _extract_lines(lines, time, has_seabed: bool, keys: tuple) -> tuple:
             for e, end in enumerate("AB"):
                 if end_held[e]:
                     _put_peak(scalars, f"{name}.end_{end}_tension", "N",
-                              a["end_tension"][:, e:e + 1], time, None)
+                              a["end_tension"][:, e:e + 1], a.get("end_time", time), None)
         for key, unit in (("tension", "N"), ("wall_tension", "N"), ("torque", "Nm")):
             if key in keys:
                 _put_peak(scalars, f"{name}.{key}", unit, a[key], time, gp_s)

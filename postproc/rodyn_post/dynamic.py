@@ -5,8 +5,11 @@ takes a results folder (or the path of a dynamic.h5) and returns a `DynamicResul
 run information, the frame times, one `LineDynamic` per line (deck order) and the step
 log (`StepLog`, one row per time step). dynamic.h5 is read with h5py when it is there
 (opened with locking=False, so a run still going can be read); otherwise the CSV tables
-(dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv, dynamic_log.csv) and
-status.txt. Both give the same arrays: the CSV fields carry 17 significant digits.
+(dynamic_nodes.csv, dynamic_elements.csv, dynamic_ends.csv, dynamic_log.csv,
+dynamic_ends_step.csv) and status.txt. Both give the same arrays: the CSV fields carry 17
+significant digits. The support forces of every step (`DynamicResults.step_time`,
+`LineDynamic.step_reactions`, `step_end_tension`) are empty in results of a rodyn that
+did not write them; `LineDynamic.end_tension_series()` picks them when there.
 
 A run that was killed or failed is read up to what is on disk: in the CSV tables a
 last frame with missing rows, or a last row cut short, is dropped (docs/output.md,
@@ -19,7 +22,7 @@ from __future__ import annotations
 
 import csv
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -34,6 +37,7 @@ STATUS_FILE = "status.txt"
 NODES_CSV = "dynamic_nodes.csv"
 ELEMENTS_CSV = "dynamic_elements.csv"
 ENDS_CSV = "dynamic_ends.csv"
+ENDS_STEP_CSV = "dynamic_ends_step.csv"
 LOG_CSV = "dynamic_log.csv"
 LINES_CSV = "dynamic_lines.csv"
 
@@ -45,6 +49,7 @@ ELEMENTS_HEADER = ("time_s", "line", "element", "point", "s_m", "effective_tensi
 LINES_HEADER = ("time_s", "line", "touchdown_s_m")
 ENDS_HEADER = ("time_s", "line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
                "tension_N")
+ENDS_STEP_HEADER = ("step",) + ENDS_HEADER
 LOG_HEADER = ("step", "time_s", "dt_s", "iterations", "cutbacks", "kinetic_J", "strain_J",
               "gravity_J", "external_work_J", "damping_work_J", "hydro_work_J",
               "seabed_work_J", "total_J", "px", "py", "pz", "Lx", "Ly", "Lz")
@@ -105,10 +110,17 @@ class LineDynamic:
     seabed_normal: np.ndarray = None    # (nf, nn)  N/m  seabed normal force per length
     seabed_friction: np.ndarray = None  # (nf, nn)  N/m  seabed friction force per length
     touchdown_s: np.ndarray = None      # (nf,)     m    largest S on the seabed; -1: none
+    step_reactions: np.ndarray = None   # (ns1, 12) N, N m  as reactions, every step
+    step_end_tension: np.ndarray = None  # (ns1, 2)  N    as end_tension, every step
 
     def xyz(self, frame: int) -> np.ndarray:
         """Node positions (nn, 3) of one frame [m]."""
         return np.column_stack([self.x[frame], self.y[frame], self.z[frame]])
+
+    def __post_init__(self):
+        for key, cols in (("step_reactions", 12), ("step_end_tension", 2)):
+            if getattr(self, key) is None:   # not written (an older rodyn): no rows
+                object.__setattr__(self, key, np.zeros((0, cols)))
 
     @property
     def top_end(self) -> int:
@@ -201,6 +213,8 @@ class DynamicResults:
     source: Path             # dynamic.h5 or dynamic_nodes.csv
     warnings: tuple = field(default=())  # what was dropped or looked odd
     environment: object = field(default=None)  # environment.Environment; None: dry
+    step_time: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    # (ns1,) s, times of the support forces of every step: 0, then each step's end
 
     def line(self, name: str) -> LineDynamic:
         """The line called `name` (KeyError if there is none)."""
@@ -208,6 +222,14 @@ class DynamicResults:
             if line.name == name:
                 return line
         raise KeyError(name)
+
+    def end_tension_series(self, line: LineDynamic) -> tuple:
+        """(time (n,), end tension (n, 2)) of a line: the series of every step when the
+        run wrote it (extremes at the ends then do not depend on the frame interval),
+        else the frames'."""
+        if len(self.step_time) and len(line.step_end_tension) == len(self.step_time):
+            return self.step_time, line.step_end_tension
+        return self.time, line.end_tension
 
     def frame_at(self, t: float) -> int:
         """Index of the frame nearest to time t."""
@@ -304,8 +326,25 @@ def _make_line(name, arrays, n_frames, where) -> LineDynamic:
     values["touchdown_s"] = np.asarray(np.full(n_frames, -1.0) if touchdown is None
                                        else touchdown, dtype=float)
     _check_shapes(values, H5_WATER_DATASETS, sizes, where)
+    for key, cols in (("step_reactions", 12), ("step_end_tension", 2)):
+        step = arrays.get(key)
+        if step is not None:
+            values[key] = np.asarray(step, dtype=float)
+            if values[key].ndim != 2 or values[key].shape[1] != cols:
+                raise RodynResultsError(f"{where}: {key} has shape {values[key].shape}, "
+                                        f"expected (n_steps + 1, {cols})")
     return LineDynamic(name=name, end_held=np.asarray(arrays["end_held"], dtype=bool),
                        **values)
+
+
+def _same_step_rows(step_time, lines) -> tuple:
+    """(step_time, lines) with the support forces of every step cut to the rows all of
+    them hold (a run killed while writing them)."""
+    n = min([len(step_time)] + [len(line.step_end_tension) for line in lines] +
+            [len(line.step_reactions) for line in lines])
+    return step_time[:n], [replace(line, step_reactions=line.step_reactions[:n],
+                                   step_end_tension=line.step_end_tension[:n])
+                           for line in lines]
 
 
 def _make_log(arrays, where) -> StepLog:
@@ -345,6 +384,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
                          if k not in _OPTIONAL_LOG or k in log_group},
                         f"{path}: /dynamic/log")
         lines = []
+        step_time = np.zeros(0)   # the same in every line group (rodyn writes them alike)
         for key, group in dyn.items():
             if key in ("time", "log"):
                 continue
@@ -356,6 +396,11 @@ def _read_h5(path: Path, status) -> DynamicResults:
                     arrays[k] = group[k][...]
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
+            for k in ("step_reactions", "step_end_tension"):
+                if isinstance(group.get(k), h5py.Dataset) and "step_time" in group:
+                    arrays[k] = np.asarray(group[k][...], dtype=float)
+            if isinstance(group.get("step_time"), h5py.Dataset):
+                step_time = np.asarray(group["step_time"][...], dtype=float)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
                                     f"{path}: {group.name}"))
         from .environment import environment_of
@@ -369,6 +414,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
                          "wall_time_s")}
     if not lines:
         raise RodynResultsError(f"{path}: no lines in /dynamic")
+    step_time, lines = _same_step_rows(step_time, lines)
     if not finished:  # running or killed: counters from what was flushed
         counters = {"steps": len(log), "step_iterations": int(log.iterations.sum()),
                     "step_cutbacks": int(log.cutbacks.sum()),
@@ -383,7 +429,8 @@ def _read_h5(path: Path, status) -> DynamicResults:
         wall_time_s=float(counters["wall_time_s"]), scheme=str(info["scheme"]),
         dt=float(info["dt"]), title=str(info["title"]), deck=str(deck),
         version=str(info["version"]), deck_file=str(info["deck_file"]),
-        folder=path.parent, source=path, environment=environment)
+        folder=path.parent, source=path, environment=environment,
+        step_time=step_time)
 
 
 
@@ -499,6 +546,7 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
                                     f"{NODES_CSV}")
     ends, complete_frames = _ends(end_rows, end_head, folder / ENDS_CSV, times, line_names)
     touchdown = _touchdown(folder / LINES_CSV, times, line_names, warnings)
+    step_time, step_ends = _ends_step(folder / ENDS_STEP_CSV, ends, warnings)
     if complete_frames < n_frames:
         warnings.append(f"last frame (t = {times[-1]:g} s) incomplete in {ENDS_CSV}, "
                         "dropped")
@@ -540,6 +588,7 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
         if name in touchdown:
             arrays["touchdown_s"] = touchdown[name][:n_frames]
         arrays.update(ends[name])
+        arrays.update(step_ends.get(name, {}))
         lines.append(_make_line(name, arrays, n_frames, f"{folder}: line {name!r}"))
 
     log = _make_log(_log_arrays(log_rows, log_head, folder / LOG_CSV), f"{folder / LOG_CSV}")
@@ -551,7 +600,8 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
         time_reached_s=status["time_reached_s"], wall_time_s=status["wall_time_s"],
         scheme="", dt=dt, title="", deck="", version=status["rodyn_version"],
         deck_file=status["deck"], folder=folder, source=folder / NODES_CSV,
-        warnings=tuple(warnings), environment=load_environment(folder))
+        warnings=tuple(warnings), environment=load_environment(folder),
+        step_time=step_time)
 
 
 def _touchdown(path, times, line_names, warnings) -> dict:
@@ -624,6 +674,48 @@ def _ends(rows, header, path, times, line_names):
                 if missing:
                     complete_frames = n_frames - 1
     return out, complete_frames
+
+
+def _ends_step(path, ends, warnings) -> tuple:
+    """(step_time (ns1,), {line: {step_reactions (ns1, 12), step_end_tension (ns1, 2)}})
+    from dynamic_ends_step.csv (empty when the file is missing: an older rodyn). Each
+    step has one row per held end (`ends`: the frames' end_held); a last step with
+    fewer rows (a kill while writing) is dropped."""
+    if not path.is_file():
+        return np.zeros(0), {}
+    header, rows = _read_rows(path, ENDS_STEP_HEADER, warnings)
+    held = [(name, k) for name, line in ends.items() for k in (0, 1) if line["end_held"][k]]
+    col = {c: header.index(c) for c in ENDS_STEP_HEADER}
+    steps, times, values = [], [], {}
+    for number, fields in rows:
+        try:
+            step, t = int(fields[col["step"]]), float(fields[col["time_s"]])
+            vals = [float(fields[col[c]]) for c in ENDS_STEP_HEADER[4:]]
+        except ValueError:
+            raise RodynResultsError(f"{path}: line {number}: not a number") from None
+        key = (fields[col["line"]], "AB".find(fields[col["end"]]))
+        if key not in held:
+            raise RodynResultsError(f"{path}: line {number}: line {key[0]!r} end "
+                                    f"{fields[col['end']]!r} is not a held end of the frames")
+        if not steps or steps[-1] != step:
+            steps.append(step)
+            times.append(t)
+        values[(len(steps) - 1,) + key] = vals
+    n = len(steps)
+    if n and any((n - 1,) + key not in values for key in held):
+        warnings.append(f"{path.name}: last step ({steps[-1]}) incomplete, dropped")
+        n -= 1
+    out = {name: {"step_reactions": np.zeros((n, 12)), "step_end_tension": np.zeros((n, 2))}
+           for name in ends}
+    for i in range(n):
+        for name, k in held:
+            vals = values.get((i, name, k))
+            if vals is None:
+                raise RodynResultsError(f"{path}: no row for line {name!r} end {'AB'[k]} "
+                                        f"at step {steps[i]}")
+            out[name]["step_reactions"][i, 6 * k:6 * k + 6] = vals[:6]
+            out[name]["step_end_tension"][i, k] = vals[6]
+    return np.asarray(times[:n], dtype=float), out
 
 
 def _log_arrays(rows, header, path) -> dict:

@@ -1,6 +1,6 @@
 !> Command line of the rodyn program:
-!>   rodyn DECK [-o DIR] [--set NAME=VALUE ...] [--check] [--verbose] [--quiet]
-!>         [--progress] [--version] [--help]
+!>   rodyn DECK [-o DIR] [--restart DIR] [--set NAME=VALUE ...] [--check] [--verbose]
+!>         [--quiet] [--progress] [--version] [--help]
 module rodyn_cli
    use rodyn_error, only: error_t, set_error, stat_input
    use rodyn_deck_params, only: param_override_t, param_valid_name, upper_case
@@ -13,6 +13,7 @@ module rodyn_cli
       character(len=:), allocatable :: deck    !< input deck path
       character(len=:), allocatable :: outdir  !< output folder ('' = default)
       logical :: check = .false.               !< validate the deck only
+      logical :: restart = .false.             !< continue the run in outdir (--restart)
       logical :: verbose = .false.             !< Newton iteration log on stdout
       logical :: quiet = .false.               !< nothing on stdout
       logical :: progress = .false.            !< progress line even when stderr is no terminal
@@ -22,12 +23,14 @@ module rodyn_cli
    end type cli_options_t
 
    character(len=*), parameter :: cli_usage = &
-      'usage: rodyn DECK [-o DIR] [--set NAME=VALUE ...] [--check] [--verbose] [--quiet]'// &
-      ' [--progress] [--version] [--help]'// &
+      'usage: rodyn DECK [-o DIR] [--restart DIR] [--set NAME=VALUE ...] [--check]'// &
+      ' [--verbose] [--quiet] [--progress] [--version] [--help]'// &
       new_line('a')//new_line('a')// &
       '  DECK           keyword input deck (see docs/deck.md)'//new_line('a')// &
       '  -o, --output DIR  folder for the results (default: the deck name without'// &
       ' extension)'//new_line('a')// &
+      '  --restart DIR  continue the killed dynamic run in folder DIR from its last'// &
+      ' checkpoint'//new_line('a')// &
       '  --set NAME=VALUE  value of the deck''s *PARAMETER NAME (repeatable)'// &
       new_line('a')// &
       '  --check        read and validate the deck, build the mesh, compute nothing'// &
@@ -58,11 +61,17 @@ contains
          allocate (character(len=length) :: arg)
          call get_command_argument(i, arg)
          select case (arg)
-         case ('-o', '--output')
+         case ('-o', '--output', '--restart')
             if (i == n) then
                call set_error(err, stat_input, 'rodyn: error: '//arg//' needs a folder')
                return
             end if
+            if (len(opts%outdir) > 0 .and. (arg == '--restart' .or. opts%restart)) then
+               call set_error(err, stat_input, 'rodyn: error: '//arg//': the output '// &
+                              'folder is given twice (-o and --restart name it both)')
+               return
+            end if
+            if (arg == '--restart') opts%restart = .true.
             i = i + 1
             call get_command_argument(i, length=length)
             deallocate (opts%outdir)

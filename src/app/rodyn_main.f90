@@ -7,7 +7,8 @@ program rodyn
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    use rodyn_kinds, only: rodyn_version
-   use rodyn_error, only: error_t, has_error, stat_ok, stat_io, stat_input, stat_numerical
+   use rodyn_error, only: error_t, has_error, set_error, stat_ok, stat_io, stat_input, &
+                          stat_numerical
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names
    use rodyn_deck, only: deck_read
@@ -21,6 +22,7 @@ program rodyn
    use rodyn_output, only: output_write_static, output_write_status
    use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
    use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
+   use rodyn_checkpoint, only: checkpoint_t, checkpoint_read
    use rodyn_kinds, only: wp
    implicit none
 
@@ -46,6 +48,7 @@ program rodyn
    type(run_summary_t) :: summary
    type(line_result_t), allocatable :: lines(:)
    type(state_t), target :: dstate
+   type(checkpoint_t) :: ck      ! --restart: the checkpoint continued
    real(wp), allocatable :: r0(:, :)
    character(len=:), allocatable :: missing, warnings
    logical :: static_runs, show_progress
@@ -90,17 +93,27 @@ program rodyn
       call finish(stat_ok)
    end if
 
+   ! --restart: the checkpoint is read and checked before anything is computed
+   if (opts%restart .and. .not. model%dynamic%requested) call set_error(err, stat_input, &
+      'rodyn: error: --restart: '//opts%deck//' has no *DYNAMIC: there is no run to continue')
+   if (opts%restart) call checkpoint_read(opts%outdir, model, state, ck, err)
+   if (has_error(err)) then
+      write (error_unit, '(a)') err%message
+      call finish(err%code)
+   end if
+
    missing = dynamic_not_available(model)
    if (len(missing) > 0) then
       write (error_unit, '(a)') opts%deck//': error: '//missing
       call finish(stat_input)
    end if
-   static_runs = .not. model%dynamic%requested .or. model%dynamic%start_static .or. &
-                 model%static%requested
+   static_runs = (.not. model%dynamic%requested .or. model%dynamic%start_static .or. &
+                  model%static%requested) .and. .not. opts%restart
    dstate = state        ! the defined start, kept for a START=DEFINED dynamic run
 
    ! the output folder is made and marked 'running' before any computing: an unwritable
    ! folder fails now, and a run killed midway leaves a status that says so
+   if (opts%restart) summary = ck%summary   ! the static run's counters, kept
    summary%status = 'running'
    ! one run per output folder: a second run into it is refused here (exit 3)
    call outdir_lock(opts%outdir, lock, err)
@@ -153,8 +166,16 @@ program rodyn
       deallocate (summary%status)
       show_progress = stderr_is_terminal()
       show_progress = (opts%progress .or. show_progress) .and. .not. opts%quiet
-      call run_dynamic(model, mesh, dstate, r0, opts%outdir, summary, err, log_unit, &
-                       show_progress)
+      if (opts%restart) then
+         if (.not. opts%quiet) write (output_unit, '(a,es10.3,a)') &
+            'continued from the checkpoint at t = ', ck%loop%t, ' s'
+         dstate = ck%start
+         call run_dynamic(model, mesh, dstate, r0, opts%outdir, summary, err, log_unit, &
+                          show_progress, ck)
+      else
+         call run_dynamic(model, mesh, dstate, r0, opts%outdir, summary, err, log_unit, &
+                          show_progress)
+      end if
       if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
       if (.not. opts%quiet .and. .not. has_error(err)) write (output_unit, &
          '(a,i0,a,i0,a,i0,a,i0,a)') 'dynamic solution: ', summary%steps, ' steps, ', &

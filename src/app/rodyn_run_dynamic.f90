@@ -9,14 +9,19 @@ module rodyn_run_dynamic
    use rodyn_error, only: error_t, has_error, set_error, clear_error
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t
+   use rodyn_state, only: state_t, state_copy
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
-   use rodyn_timeloop, only: timeloop_run
+   use rodyn_timeloop, only: timeloop_run, timeloop_state_t
+   use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
+                               checkpoint_program_id
+   use rodyn_outfile, only: remove_file, path_join
+   use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
                                    dynamic_output_frame, dynamic_output_step, &
-                                   dynamic_output_close
+                                   dynamic_output_close, dynamic_output_ends_step, &
+                                   dynamic_output_mark
    implicit none
    private
    public :: run_dynamic, dynamic_not_available, stderr_is_terminal
@@ -27,21 +32,33 @@ module rodyn_run_dynamic
          integer(c_int), value :: fd
          integer(c_int) :: r
       end function c_isatty
+      !> raise(3): the test hook's SIGKILL.
+      function c_raise(sig) result(r) bind(c, name='raise')
+         import :: c_int
+         integer(c_int), value :: sig
+         integer(c_int) :: r
+      end function c_raise
    end interface
 
    ! run context of one call of run_dynamic (read by the callbacks)
    type(dynamic_writer_t) :: writer
    type(line_result_t), allocatable :: frame_lines(:)
    type(model_t), pointer :: ctx_model => null()
+   type(run_summary_t), pointer :: ctx_summary => null()
+   character(len=:), allocatable :: ctx_dir       !< output folder (checkpoints)
+   character(len=:), allocatable :: program_id    !< checkpoint_program_id(), once a run
+   type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
+   integer :: kill_after = -1                     !< test hook: SIGKILL after this step
    real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
-   ! Support forces of a frame (see write_pending): the step forces R (the support
-   ! force averaged over a step, the step's residual at the held dofs) of the step that
-   ! ends at the frame (r_pend, length h_pend, frame time t_pend), of the step before it
-   ! (r_back, h_back), and of the last step converged (r_prev, h_prev). A frame waits,
-   ! pending, for the step after it.
-   real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_prev(:, :), r_frame(:, :)
-   real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, h_prev = 0.0_wp, t_pend = 0.0_wp
-   logical :: pending = .false., have_back = .false., have_prev = .false.
+   ! Support forces at the end of every step (see write_pending): the step forces R
+   ! (the support force averaged over a step, the step's residual at the held dofs) of
+   ! the last step converged (r_pend, length h_pend, ending at t_pend, step number
+   ! k_pend) and of the step before it (r_back, h_back). The last step waits, pending,
+   ! for the step after it; so does a frame at its end (frame_waiting).
+   real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_frame(:, :)
+   real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, t_pend = 0.0_wp
+   integer :: k_pend = 0
+   logical :: pending = .false., have_back = .false., frame_waiting = .false.
    logical :: show_progress = .false.
    integer(kind=8) :: clock0, clock_last, clock_rate
 
@@ -63,31 +80,56 @@ contains
 
    !> Run the dynamic analysis from state (the static solution or the defined start) and
    !> write its outputs into dir. r0: support forces of the start state (for frame 0).
-   subroutine run_dynamic(model, mesh, state, r0, dir, summary, err, log_unit, progress)
+   !> With resume (rodyn --restart), continue the run of that checkpoint instead: the
+   !> state is the checkpoint's start state, and the files in dir are continued.
+   !> The environment variable RODYN_TEST_KILL_AFTER_STEP=N (a test hook) makes the
+   !> program kill itself with SIGKILL once step N has been handed to the writer.
+   subroutine run_dynamic(model, mesh, state, r0, dir, summary, err, log_unit, progress, &
+                          resume)
       type(model_t), intent(in), target :: model     !< model
       type(mesh_t), intent(in), target :: mesh       !< mesh
       type(state_t), intent(inout), target :: state  !< start, then final state
       real(wp), intent(in) :: r0(:, :)               !< (6, nn) start support forces
       character(len=*), intent(in) :: dir            !< output folder
-      type(run_summary_t), intent(inout) :: summary  !< progress (dynamic fields)
+      type(run_summary_t), intent(inout), target :: summary !< progress (dynamic fields)
       type(error_t), intent(inout) :: err            !< status
       integer, intent(in) :: log_unit                !< Newton log (< 0: none)
       logical, intent(in) :: progress                !< show the progress line
+      type(checkpoint_t), intent(in), optional :: resume !< continue from this checkpoint
       type(dynamic_problem_t) :: prob
       type(error_t) :: werr
+      character(len=32) :: hook
+      integer :: stat
       ctx_model => model
+      ctx_summary => summary
+      ctx_dir = dir
+      program_id = ''
+      if (model%dynamic%checkpoint > 0.0_wp) program_id = checkpoint_program_id()
+      kill_after = -1
+      call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
+      if (stat == 0) read (hook, *, iostat=stat) kill_after
       r_start = r0
       pending = .false.
-      have_prev = .false.
-      if (allocated(r_pend)) deallocate (r_pend, r_back, r_prev, r_frame)
-      allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_prev(6, mesh%n_nodes), &
-                r_frame(6, mesh%n_nodes))
+      have_back = .false.
+      frame_waiting = .false.
+      k_pend = 0
+      if (allocated(r_pend)) deallocate (r_pend, r_back, r_frame)
+      allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_frame(6, mesh%n_nodes))
       show_progress = progress
-      if (.not. model%dynamic%start_static) call apply_initial_velocities(model, mesh, state)
+      if (.not. model%dynamic%start_static .and. .not. present(resume)) &
+         call apply_initial_velocities(model, mesh, state)
+      start_state = state
       call dynamics_setup(prob, model, mesh, state)
       call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
                          prob%water)
-      call dynamic_output_open(writer, dir, model, frame_lines, err)
+      if (present(resume)) then
+         call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark)
+         if (.not. has_error(err)) call restore(resume)
+      else
+         ! a checkpoint of an earlier run in this folder no longer fits its files
+         call remove_file(path_join(dir, checkpoint_file))
+         call dynamic_output_open(writer, dir, model, frame_lines, err)
+      end if
       if (has_error(err)) then
          ! status.txt says so (it must not keep the static run's complete = true)
          summary%dynamic = .true.
@@ -99,7 +141,13 @@ contains
       call system_clock(clock0, clock_rate)
       clock_last = clock0
       summary%dynamic = .true.
-      call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, after_step)
+      if (present(resume)) then
+         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
+                           after_step, on_checkpoint, resume%loop)
+      else
+         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
+                           after_step, on_checkpoint)
+      end if
       block
          integer(kind=8) :: clock_end
          call system_clock(clock_end)
@@ -108,8 +156,8 @@ contains
                              /real(clock_rate, wp)
       end block
       if (show_progress) write (error_unit, '(a)') ''
-      ! a frame still waiting for the step after it (the run stopped, or the step past
-      ! the end failed): extrapolated
+      ! the last step (and a frame at its end) still waiting for the step after it (the
+      ! run stopped, or the step past the end failed): extrapolated
       if (pending) then
          call clear_error(werr)
          call write_pending(prob, .false., werr)
@@ -125,35 +173,95 @@ contains
       end if
       call dynamic_output_close(writer, summary, werr)
       if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, werr%message)
+   contains
+      !> The problem and the pending support forces as the checkpoint holds them (the
+      !> problem set up from the start state; a frame waiting recovered again, with the
+      !> water at the last step's force time as then).
+      subroutine restore(ck)
+         type(checkpoint_t), intent(in) :: ck      !< the checkpoint
+         call state_copy(ck%now, prob%s1)
+         prob%r = ck%r
+         prob%dt = ck%dt
+         prob%t0 = ck%t0
+         prob%f_conv = ck%f_conv
+         prob%m_conv = ck%m_conv
+         prob%f_last = ck%f_last
+         prob%m_last = ck%m_last
+         prob%have_conv = ck%have_conv
+         r_pend = ck%r_pend
+         r_back = ck%r_back
+         h_pend = ck%h_pend
+         h_back = ck%h_back
+         t_pend = ck%t_pend
+         k_pend = ck%k_pend
+         pending = ck%pending
+         have_back = ck%have_back
+         frame_waiting = ck%frame_waiting
+         if (frame_waiting) then
+            if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
+                                                       .true.)
+            call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                               prob%sup%held, frame_lines, prob%water)
+         end if
+      end subroutine restore
    end subroutine run_dynamic
 
+   !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
+   !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).
+   subroutine on_checkpoint(ls, prob, err)
+      type(timeloop_state_t), intent(in) :: ls         !< the time loop's state
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
+      type(error_t), intent(inout) :: err              !< status
+      type(checkpoint_t) :: ck
+      ck%loop = ls
+      ck%summary = ctx_summary
+      ck%start = start_state
+      ck%now = prob%s1
+      ck%r = prob%r
+      ck%dt = prob%dt
+      ck%t0 = prob%t0
+      ck%f_conv = prob%f_conv
+      ck%m_conv = prob%m_conv
+      ck%f_last = prob%f_last
+      ck%m_last = prob%m_last
+      ck%have_conv = prob%have_conv
+      ck%r_pend = r_pend
+      ck%r_back = r_back
+      ck%h_pend = h_pend
+      ck%h_back = h_back
+      ck%t_pend = t_pend
+      ck%k_pend = k_pend
+      ck%pending = pending
+      ck%have_back = have_back
+      ck%frame_waiting = frame_waiting
+      call dynamic_output_mark(writer, ck%mark, err)
+      call checkpoint_write(ctx_dir, ctx_model, program_id, ck, err)
+   end subroutine on_checkpoint
+
    !> A frame: positions and section forces of the state at t; its support forces wait
-   !> for the next step (write_pending), but at t = 0 (the start state's). The last
+   !> with the step that ends at t for the next step (write_pending), but at t = 0 (the
+   !> start state's, also the first row of the support forces of every step). The last
    !> frame's next step is the time loop's step past the end.
    subroutine on_frame(t, prob, err)
       real(wp), intent(in) :: t                        !< time [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< converged state
       type(error_t), intent(inout) :: err              !< status
-      if (pending) call write_pending(prob, .true., err)   ! the frame before, if waiting
+      if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
       if (has_error(err)) return
       if (t > 0.0_wp) then
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, prob%sup%held, &
                             frame_lines, prob%water)
-         r_pend = prob%r
-         h_pend = prob%dt
-         t_pend = t
-         r_back = r_prev
-         h_back = h_prev
-         have_back = have_prev
-         pending = .true.
+         frame_waiting = .true.
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
                             frame_lines, prob%water)
+         call dynamic_output_ends_step(writer, 0, t, end_forces(prob, r_start), err)
          call dynamic_output_frame(writer, t, frame_lines, err)
       end if
    end subroutine on_frame
 
-   !> Write the pending frame with its support forces at the frame time t_k: the step
+   !> Write the support forces at the end t_k of the pending step k (and the frame
+   !> waiting there, with the same forces): the step
    !> force of step k belongs to its force point t_{k-1} + w h_k (w = 1/2, or 1 - alpha_f
    !> with SCHEME=ALPHA), so written at t_k it would lag by (1 - w) h_k (a first-order
    !> error in time: 7 % of the top tension's dynamic range on the paper's case 1 at
@@ -168,8 +276,8 @@ contains
       type(dynamic_problem_t), intent(in) :: prob !< problem (after the next step if next)
       logical, intent(in) :: next                 !< prob%r is the force of the next step
       type(error_t), intent(inout) :: err         !< status
-      real(wp) :: w
-      integer :: l, k, node
+      real(wp) :: w, reaction(6, 2, size(frame_lines))
+      integer :: l, k
       w = prob%wf
       if (next) then
          r_frame = r_pend + (prob%r - r_pend)*(1.0_wp - w)*h_pend &
@@ -180,16 +288,35 @@ contains
       else
          r_frame = r_pend
       end if
+      pending = .false.
+      reaction = end_forces(prob, r_frame)
+      call dynamic_output_ends_step(writer, k_pend, t_pend, reaction, err)
+      if (.not. frame_waiting) return
+      do l = 1, size(frame_lines)
+         do k = 1, 2
+            if (frame_lines(l)%end_held(k)) frame_lines(l)%reaction(:, k) = reaction(:, k, l)
+         end do
+      end do
+      frame_waiting = .false.
+      call dynamic_output_frame(writer, t_pend, frame_lines, err)
+   end subroutine write_pending
+
+   !> The support forces of the held line ends (zero at free ends) from the forces r
+   !> at the nodes: (6, 2, lines), force and moment at end A, end B of each line.
+   function end_forces(prob, r) result(reaction)
+      type(dynamic_problem_t), intent(in) :: prob      !< problem (mesh)
+      real(wp), intent(in) :: r(:, :)                  !< (6, nodes) [N, N m]
+      real(wp) :: reaction(6, 2, size(frame_lines))
+      integer :: l, k, node
+      reaction = 0.0_wp
       do l = 1, size(frame_lines)
          do k = 1, 2
             if (.not. frame_lines(l)%end_held(k)) cycle
             node = mesh_node(prob%mesh, l, merge(end_a, end_b, k == 1))
-            frame_lines(l)%reaction(:, k) = r_frame(:, node)
+            reaction(:, k, l) = r(:, node)
          end do
       end do
-      pending = .false.
-      call dynamic_output_frame(writer, t_pend, frame_lines, err)
-   end subroutine write_pending
+   end function end_forces
 
    subroutine on_step(log, err)
       type(step_log_t), intent(in) :: log   !< step
@@ -204,14 +331,27 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
       type(error_t), intent(inout) :: err              !< status
       integer(kind=8) :: now
+      integer(c_int) :: stat_kill
       real(wp) :: wall, frac, rate, left
-      ! after every step: a frame waiting for this step is written, and this step's
-      ! force is kept as the one before the next frame's step
+      ! after every step: the step before (and a frame at its end) waiting for this step
+      ! is written, and this step waits for the next (not the step past the end)
       if (pending .and. t > t_pend .and. .not. has_error(err)) &
          call write_pending(prob, .true., err)
-      r_prev = prob%r
-      h_prev = prob%dt
-      have_prev = .true.
+      if (writer%steps == kill_after .and. t <= ctx_model%dynamic%duration) then
+         stat_kill = c_raise(9_c_int)       ! the test hook: SIGKILL, as a killed job
+      end if
+      if (t <= ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) then
+         if (k_pend > 0 .or. pending) then
+            r_back = r_pend
+            h_back = h_pend
+            have_back = .true.
+         end if
+         r_pend = prob%r
+         h_pend = prob%dt
+         t_pend = t
+         k_pend = writer%steps
+         pending = .true.
+      end if
       if (.not. show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
       if (t > ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) return ! past the end
       call system_clock(now)

@@ -256,6 +256,7 @@ module rodyn_model
       real(wp) :: dt = 0.0_wp             !< time step [s]
       real(wp) :: duration = 0.0_wp       !< simulated time [s]
       real(wp) :: output_interval = 0.0_wp !< time between outputs [s]; 0: every step
+      real(wp) :: checkpoint = 0.0_wp     !< simulated time between checkpoints [s]; 0: none
       logical :: start_static = .true.    !< start from the static solution (else as defined)
       integer :: max_iterations = 20      !< Newton iterations per step
       integer :: max_cutbacks = 6         !< halvings of a step

@@ -30,6 +30,18 @@ module rodyn_timeloop
    implicit none
    private
    public :: timeloop_run, frame_callback, step_callback, strain_energy, step_energies
+   public :: timeloop_state_t, checkpoint_callback
+
+   !> What the time loop carries from one step to the next besides the problem (a
+   !> checkpoint holds it; timeloop_run continues from it).
+   type :: timeloop_state_t
+      real(wp) :: t = 0.0_wp               !< time reached [s]
+      real(wp) :: next_frame = 0.0_wp     !< time of the next output frame [s]
+      real(wp) :: next_checkpoint = 0.0_wp !< time of the next checkpoint [s]
+      integer :: level = 0                 !< halvings of DT in force
+      integer :: good = 0                  !< good sub-steps at this level
+      type(step_log_t) :: log              !< the last step's energies and works
+   end type timeloop_state_t
 
    abstract interface
       !> Called at t = 0 and at every output time with the converged state in prob.
@@ -45,6 +57,13 @@ module rodyn_timeloop
          type(step_log_t), intent(in) :: log
          type(error_t), intent(inout) :: err
       end subroutine step_callback
+      !> Called at a checkpoint, after a converged step, with what the loop carries.
+      subroutine checkpoint_callback(ls, prob, err)
+         import :: timeloop_state_t, dynamic_problem_t, error_t
+         type(timeloop_state_t), intent(in) :: ls
+         type(dynamic_problem_t), intent(inout) :: prob
+         type(error_t), intent(inout) :: err
+      end subroutine checkpoint_callback
    end interface
 
 contains
@@ -136,8 +155,14 @@ contains
       end do
    end subroutine step_work
 
-   !> Run the dynamic analysis from the state in prob (time 0) to model%dynamic%duration.
-   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, after_step)
+   !> Run the dynamic analysis from the state in prob (time 0, or the checkpoint's with
+   !> resume) to model%dynamic%duration. With CHECKPOINT=c of *DYNAMIC, on_checkpoint is
+   !> called after the first step that reaches each multiple of c (before the end), and
+   !> the step after it forms a new tangent: a run continued from the checkpoint holds
+   !> no factorised tangent, so both runs take the same iterates (tangent reuse makes
+   !> the iterate depend on the tangent held).
+   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
+                           after_step, on_checkpoint, resume)
       type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
       type(model_t), intent(in) :: model              !< model (dynamic options)
       type(run_summary_t), intent(inout) :: summary   !< progress
@@ -146,12 +171,15 @@ contains
       procedure(frame_callback) :: on_frame           !< output of a frame
       procedure(step_callback) :: on_step             !< output of a step log
       procedure(frame_callback), optional :: after_step !< called after every step
+      procedure(checkpoint_callback), optional :: on_checkpoint !< called at checkpoints
+      type(timeloop_state_t), intent(in), optional :: resume !< continue from a checkpoint
+      type(timeloop_state_t) :: ls
       type(newton_options_t) :: opts
       type(newton_stats_t) :: stats
       type(error_t) :: nerr
       type(step_log_t) :: log, trial
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
-      real(wp) :: w_hydro, w_seabed
+      real(wp) :: w_hydro, w_seabed, next_checkpoint
       integer :: level, good, step_cuts
       logical :: retried, accepted, nonfinite
       character(len=240) :: msg
@@ -168,20 +196,32 @@ contains
       ! EMC's energy identity, checked on every converged step (see energy_identity_holds)
       e_tol = min(0.1_wp, 1.0e4_wp*max(opts%force_tol, opts%disp_tol))
       summary%dynamic = .true.
-      t = 0.0_wp
-      next_frame = interval
-      ! an output time less than half a step before the end is replaced by the end (no
-      ! sliver of a step between the two)
-      if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
-      call step_energies(prob, log)
-      log%external_work = 0.0_wp
-      log%damping_work = 0.0_wp
-      log%hydro_work = 0.0_wp
-      log%seabed_work = 0.0_wp
-      call on_frame(t, prob, err)
-      if (has_error(err)) return
-      level = 0
-      good = 0
+      next_checkpoint = huge(1.0_wp)
+      if (model%dynamic%checkpoint > 0.0_wp) next_checkpoint = model%dynamic%checkpoint
+      if (present(resume)) then
+         t = resume%t
+         next_frame = resume%next_frame
+         next_checkpoint = resume%next_checkpoint
+         level = resume%level
+         good = resume%good
+         log = resume%log
+         prob%factors_ok = .false.
+      else
+         t = 0.0_wp
+         next_frame = interval
+         ! an output time less than half a step before the end is replaced by the end
+         ! (no sliver of a step between the two)
+         if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
+         call step_energies(prob, log)
+         log%external_work = 0.0_wp
+         log%damping_work = 0.0_wp
+         log%hydro_work = 0.0_wp
+         log%seabed_work = 0.0_wp
+         call on_frame(t, prob, err)
+         if (has_error(err)) return
+         level = 0
+         good = 0
+      end if
       step_cuts = 0
       retried = .false.
       do while (t < t_end - tol_t)
@@ -233,6 +273,16 @@ contains
                   level = level - 1
                   good = 0
                end if
+            end if
+            if (t >= next_checkpoint - tol_t .and. t < t_end - tol_t .and. &
+                present(on_checkpoint) .and. .not. has_error(err)) then
+               do while (next_checkpoint <= t + tol_t)
+                  next_checkpoint = next_checkpoint + model%dynamic%checkpoint
+               end do
+               ls = timeloop_state_t(t, next_frame, next_checkpoint, level, good, log)
+               call on_checkpoint(ls, prob, err)
+               if (has_error(err)) return
+               prob%factors_ok = .false.   ! as in a run continued from here
             end if
             cycle
          end if

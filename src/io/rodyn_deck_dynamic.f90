@@ -43,9 +43,10 @@ contains
    ! ================================================================ card readers
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
-   !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=]: time step, duration, scheme (formulation
-   !> note, sections 3 and 4) and Newton controls. No data lines; at most one. RHO INF only
-   !> with SCHEME=ALPHA, where it defaults to 0.8 (1 otherwise: no numerical damping).
+   !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme
+   !> (formulation note, sections 3 and 4), Newton controls and the checkpoint interval.
+   !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8
+   !> (1 otherwise: no numerical damping).
    subroutine read_dynamic_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *DYNAMIC card
@@ -61,7 +62,8 @@ contains
          if (has_error(err)) return
          call card_check_params(card, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
                                 'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
-                                'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT'], err)
+                                'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', &
+                                'CHECKPOINT'], err)
          if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
@@ -101,6 +103,16 @@ contains
             call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be 0 (every'// &
                             ' step) or >= DT ('//real_str(dy%dt)//'), got '// &
                             real_str(dy%output_interval), err)
+            return
+         end if
+
+         call card_get_real(card, 'CHECKPOINT', dy%checkpoint, err)
+         if (has_error(err)) return
+         if (.not. (dy%checkpoint == 0.0_wp .or. (dy%checkpoint >= dy%dt .and. &
+                                                  dy%checkpoint <= dy%duration))) then
+            call param_fail(card, 'CHECKPOINT', 'CHECKPOINT must be 0 (none) or between'// &
+                            ' DT ('//real_str(dy%dt)//') and TIME ('// &
+                            real_str(dy%duration)//'), got '//real_str(dy%checkpoint), err)
             return
          end if
 

@@ -54,6 +54,7 @@ module rodyn_hdf5
    public :: hdf5_create_series, hdf5_append_column
    public :: hdf5_series_t, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series
    public :: hdf5_append_steps, hdf5_series_hold, hdf5_series_write_held
+   public :: hdf5_series_truncate
 
    !> An open HDF5 file.
    type :: hdf5_file_t
@@ -536,6 +537,32 @@ contains
       series%n_held = 0
       call write_real(series, series%held(1:n), err)
    end subroutine hdf5_series_write_held
+
+   !> Cut an open series back to its first n_steps steps (a restarted run continues
+   !> from its checkpoint; nothing may be held). Refused when it has fewer.
+   subroutine hdf5_series_truncate(series, n_steps, err)
+      type(hdf5_series_t), intent(inout) :: series !< open series, nothing held
+      integer, intent(in) :: n_steps               !< steps kept [-]
+      type(error_t), intent(inout) :: err          !< status
+      character(len=*), parameter :: where = 'hdf5_series_truncate'
+      integer(hsize_t) :: dims(2)
+      integer :: stat
+      if (has_error(err)) return
+      if (series%id < 0 .or. series%n_held > 0) then
+         call set_error(err, stat_io, where//': series '''//text_or(series%path)// &
+            ''' is not open or holds steps')
+         return
+      end if
+      if (int(n_steps, hsize_t) > series%n_steps) then
+         call set_error(err, stat_io, where//': '''//series%path//''' in '''// &
+            file_name(series%file)//''' has fewer steps than the checkpoint''s')
+         return
+      end if
+      dims = [series%n_cols, int(n_steps, hsize_t)]
+      call h5dset_extent_f(series%id, dims(3 - series%rank:), stat)
+      if (failed(stat, 'cut back dataset', where, series%file, series%path, err)) return
+      series%n_steps = int(n_steps, hsize_t)
+   end subroutine hdf5_series_truncate
 
    !> Close a series opened by hdf5_open_series, writing the steps it holds first. Acts
    !> even when err already holds an error (then the steps held are dropped); does

@@ -20,7 +20,8 @@ module rodyn_outdir
    !> Files written whole through a temporary '.<name>.tmp' (cleaned by outdir_lock).
    character(len=*), parameter :: temp_files(*) = [character(len=20) :: 'status.txt', &
       'static_nodes.csv', 'static_elements.csv', 'static_reactions.csv', &
-      'static_lines.csv', 'environment.csv', 'results.h5', 'dynamic.h5', lock_name]
+      'static_lines.csv', 'environment.csv', 'results.h5', 'dynamic.h5', &
+      'checkpoint.h5', lock_name]
    integer(c_int), parameter :: esrch = 3   !< errno: no such process (Linux)
 
    !> A lock held on an output folder (path allocated while held).

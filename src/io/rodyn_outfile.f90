@@ -28,6 +28,7 @@ module rodyn_outfile
    private
    public :: out_file_t, outfile_create, outfile_put, outfile_flush, outfile_mark
    public :: outfile_commit, outfile_close, outfile_abort, outfile_pending
+   public :: outfile_reopen, outfile_size
    public :: temp_name, commit_rename, remove_file, system_error, path_join
 
    integer, parameter :: chunk = 65536   !< buffer of a whole file, written when full
@@ -63,6 +64,21 @@ module rodyn_outfile
          integer(c_long) :: r                          !< bytes written, or -1
       end function c_write
       !> POSIX close(2).
+      !> open(2) without a mode (no O_CREAT).
+      function c_open(path, flags) bind(c, name='open') result(fd)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*) !< NUL-terminated path
+         integer(c_int), value :: flags                !< O_* flags
+         integer(c_int) :: fd                          !< descriptor, or -1
+      end function c_open
+      !> lseek(2).
+      function c_lseek(fd, offset, whence) bind(c, name='lseek') result(r)
+         import :: c_int, c_long
+         integer(c_int), value :: fd                   !< descriptor
+         integer(c_long), value :: offset              !< offset [bytes]
+         integer(c_int), value :: whence               !< SEEK_SET (0), ...
+         integer(c_long) :: r                          !< new offset, or -1
+      end function c_lseek
       function c_close(fd) bind(c, name='close') result(r)
          import :: c_int
          integer(c_int), value :: fd                   !< descriptor
@@ -134,6 +150,49 @@ contains
          call set_error(err, stat_io, f%why)
       end if
    end subroutine outfile_create
+
+   !> Open the live file '<dir>/<name>' of an interrupted run again, cut back to its
+   !> first `bytes` bytes (the rows of a checkpoint), to append to it. On failure (no
+   !> such file, or a shorter one) f%fd < 0 and err names the file.
+   subroutine outfile_reopen(f, dir, name, bytes, err)
+      type(out_file_t), intent(out) :: f          !< the file
+      character(len=*), intent(in) :: dir         !< output folder
+      character(len=*), intent(in) :: name        !< file name
+      integer(i8), intent(in) :: bytes            !< length kept [bytes]
+      type(error_t), intent(inout) :: err         !< status
+      integer(c_int), parameter :: o_wronly = 1_c_int   ! Linux <fcntl.h>
+      f%live = .true.
+      f%final = path_join(dir, name)
+      f%path = f%final
+      allocate (character(len=chunk) :: f%buf)
+      if (outfile_size(f%path) < bytes) then
+         call fail(f, 'cannot continue '''//f%path//''': missing, or shorter than at '// &
+            'the checkpoint')
+      else
+         f%fd = c_open(f%path//c_null_char, o_wronly)
+         if (f%fd < 0) then
+            call fail(f, 'cannot open '''//f%path//''': '//system_error())
+         else if (c_ftruncate(f%fd, int(bytes, c_long)) /= 0 .or. &
+                  c_lseek(f%fd, int(bytes, c_long), 0_c_int) /= int(bytes, c_long)) then
+            call fail(f, 'cannot cut back '''//f%path//''': '//system_error())
+         end if
+      end if
+      if (f%failed) then
+         call set_error(err, stat_io, f%why)
+         return
+      end if
+      f%written = bytes
+      f%good = bytes
+   end subroutine outfile_reopen
+
+   !> Size of a file [bytes]; -1 when it does not exist.
+   function outfile_size(path) result(bytes)
+      character(len=*), intent(in) :: path   !< file path
+      integer(i8) :: bytes
+      logical :: there
+      inquire (file=path, exist=there, size=bytes)
+      if (.not. there) bytes = -1_i8
+   end function outfile_size
 
    !> Append one line (text and a line feed). A whole file's buffer is written when
    !> full; a live file's grows until outfile_flush. Failures are kept in f.

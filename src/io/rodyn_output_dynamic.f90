@@ -43,12 +43,12 @@ module rodyn_output_dynamic
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
       hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
-      hdf5_series_hold, hdf5_series_write_held, &
+      hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, temp_name, &
-      commit_rename, remove_file
+      commit_rename, remove_file, outfile_reopen
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
@@ -57,11 +57,13 @@ module rodyn_output_dynamic
    private
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
+   public :: dynamic_output_ends_step, dynamic_output_mark, dynamic_output_mark_t
    public :: dynamic_output_close
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
    character(len=*), parameter :: ends_csv = 'dynamic_ends.csv'
+   character(len=*), parameter :: ends_step_csv = 'dynamic_ends_step.csv'
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
@@ -73,6 +75,8 @@ module rodyn_output_dynamic
    character(len=*), parameter :: lines_head = 'time_s,line,touchdown_s_m'
    character(len=*), parameter :: ends_head = &
       'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
+   character(len=*), parameter :: ends_step_head = &
+      'step,time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
    character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
       'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,hydro_work_J,'// &
       'seabed_work_J,total_J,px,py,pz,Lx,Ly,Lz'
@@ -128,6 +132,20 @@ module rodyn_output_dynamic
       character(len=:), allocatable :: s !< the text
    end type text_t
 
+   !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
+   !> files hold, and the writer's counters; dynamic_output_open continues from it.
+   type :: dynamic_output_mark_t
+      integer(i8) :: csv_bytes(6) = 0_i8  !< bytes of dynamic_nodes, _elements, _ends,
+                                          !< _log, _lines, _ends_step.csv
+      integer :: frames = 0               !< frames written
+      integer :: steps = 0                !< step rows written
+      integer :: end_rows = 0             !< rows of support forces of every step
+      real(wp) :: last_time = 0.0_wp      !< time of the last frame [s]
+      integer :: step_iterations = 0      !< Newton iterations so far
+      integer :: step_tangents = 0        !< tangents so far
+      integer :: step_cutbacks = 0        !< halvings so far
+   end type dynamic_output_mark_t
+
    !> One line: its sizes, the fixed start of its CSV rows and its open HDF5 series.
    type :: line_out_t
       integer :: nn = 0                              !< nodes
@@ -138,6 +156,9 @@ module rodyn_output_dynamic
       type(text_t) :: end_head(2)                    !< ',LINE,A' and ',LINE,B'
       type(text_t) :: line_head                      !< ',LINE'
       type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
+      type(hdf5_series_t) :: step_reactions          !< support forces, row per step
+      type(hdf5_series_t) :: step_end_tension        !< their magnitudes, row per step
+      type(hdf5_series_t) :: step_time               !< their times, row per step
    end type line_out_t
 
    !> The open output of a dynamic run: file units, the HDF5 file and its open datasets,
@@ -155,6 +176,7 @@ module rodyn_output_dynamic
       type(out_file_t) :: f_elements                 !< dynamic_elements.csv
       type(out_file_t) :: f_ends                     !< dynamic_ends.csv
       type(out_file_t) :: f_log                      !< dynamic_log.csv
+      type(out_file_t) :: f_ends_step                !< dynamic_ends_step.csv
       type(out_file_t) :: f_lines                    !< dynamic_lines.csv
       logical :: failed = .false.                    !< a write failed: nothing more written
       logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
@@ -176,6 +198,7 @@ module rodyn_output_dynamic
       integer(i8) :: clock_status = 0_i8             !< count at the last status.txt
       integer, public :: frames = 0                  !< frames written
       integer, public :: steps = 0                   !< step rows written
+      integer, public :: end_rows = 0                !< rows of support forces written
       real(wp), public :: flush_time = 0.0_wp        !< wall time spent flushing [s]
    end type dynamic_writer_t
 
@@ -188,7 +211,7 @@ contains
    !> status.txt saying the run is in progress. No frame is written: call
    !> dynamic_output_frame for the initial state if it is wanted. On failure everything
    !> opened is closed again (dynamic_output_close may still be called).
-   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary)
+   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume)
       type(dynamic_writer_t), intent(inout) :: w        !< the writer (not open)
       character(len=*), intent(in) :: dir               !< output folder
       type(model_t), intent(in) :: model                !< model (title, deck, options)
@@ -196,6 +219,8 @@ contains
       type(error_t), intent(inout) :: err               !< status
       type(run_summary_t), intent(in), optional :: static_summary !< the static run,
                                                         !< kept in status.txt meanwhile
+      type(dynamic_output_mark_t), intent(in), optional :: resume !< continue the files
+                                                        !< of a run from this checkpoint
       character(len=*), parameter :: where = 'dynamic_output_open'
       type(error_t) :: e
       integer :: i
@@ -211,6 +236,7 @@ contains
       w%hdf5 = model%output%hdf5
       w%frames = 0
       w%steps = 0
+      w%end_rows = 0
       w%n_pending = 0
       w%frames_held = 0
       w%steps_held = 0
@@ -228,6 +254,17 @@ contains
       w%progress%step_iterations = 0
       w%progress%step_tangents = 0
       w%progress%step_cutbacks = 0
+      if (present(resume)) then
+         w%frames = resume%frames
+         w%steps = resume%steps
+         w%end_rows = resume%end_rows
+         w%last_time = resume%last_time
+         w%progress%time_reached = resume%last_time
+         w%progress%steps = resume%steps
+         w%progress%step_iterations = resume%step_iterations
+         w%progress%step_tangents = resume%step_tangents
+         w%progress%step_cutbacks = resume%step_cutbacks
+      end if
       w%synced = w%progress
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
@@ -244,16 +281,28 @@ contains
       do i = 1, size(lines)
          call set_up_line(w%line(i), lines(i))
       end do
-      if (w%csv) then
+      if (w%csv .and. present(resume)) then
+         call reopen_csv(nodes_csv, w%f_nodes, 1)
+         call reopen_csv(elements_csv, w%f_elements, 2)
+         call reopen_csv(ends_csv, w%f_ends, 3)
+         call reopen_csv(log_csv, w%f_log, 4)
+         call reopen_csv(lines_csv, w%f_lines, 5)
+         call reopen_csv(ends_step_csv, w%f_ends_step, 6)
+      else if (w%csv) then
          call open_csv(w, nodes_csv, nodes_head, w%f_nodes, e)
          call open_csv(w, elements_csv, elements_head, w%f_elements, e)
          call open_csv(w, ends_csv, ends_head, w%f_ends, e)
          call open_csv(w, log_csv, log_head, w%f_log, e)
+         call open_csv(w, ends_step_csv, ends_step_head, w%f_ends_step, e)
          call open_csv(w, lines_csv, lines_head, w%f_lines, e)
-         call output_write_environment(dir, model, e)
       end if
+      if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
-         call create_h5(w, model, lines, e)
+         if (present(resume)) then
+            call reopen_h5(w, lines, resume, e)
+         else
+            call create_h5(w, model, lines, e)
+         end if
          if (has_error(e)) w%h5_failed = .true.
       end if
       if (has_error(e)) then
@@ -263,7 +312,45 @@ contains
          return
       end if
       w%is_open = .true.
+   contains
+      !> A CSV table of the interrupted run, cut back to the checkpoint's bytes.
+      subroutine reopen_csv(name, f, k)
+         character(len=*), intent(in) :: name       !< file name
+         type(out_file_t), intent(inout) :: f       !< the table
+         integer, intent(in) :: k                   !< its index in csv_bytes
+         if (has_error(e)) return
+         call outfile_reopen(f, dir, name, resume%csv_bytes(k), e)
+      end subroutine reopen_csv
    end subroutine dynamic_output_open
+
+   !> A checkpoint of the output: write everything held (a sync, status.txt too) and
+   !> return what the files then hold and the writer's counters.
+   subroutine dynamic_output_mark(w, mark, err)
+      type(dynamic_writer_t), intent(inout) :: w          !< open writer
+      type(dynamic_output_mark_t), intent(out) :: mark    !< where the output stands
+      type(error_t), intent(inout) :: err                 !< status
+      type(error_t) :: e
+      if (has_error(err)) return
+      if (.not. w%is_open .or. w%failed) then
+         call set_error(err, stat_io, 'dynamic_output_mark: the writer is not open')
+         return
+      end if
+      call sync(w, e)
+      if (has_error(e)) then
+         call note_failure(w, e)
+         call set_error(err, e%code, e%message)
+         return
+      end if
+      mark%csv_bytes = [w%f_nodes%written, w%f_elements%written, w%f_ends%written, &
+                        w%f_log%written, w%f_lines%written, w%f_ends_step%written]
+      mark%frames = w%frames
+      mark%steps = w%steps
+      mark%end_rows = w%end_rows
+      mark%last_time = w%last_time
+      mark%step_iterations = w%progress%step_iterations
+      mark%step_tangents = w%progress%step_tangents
+      mark%step_cutbacks = w%progress%step_cutbacks
+   end subroutine dynamic_output_mark
 
    !> Append one output frame at time `time`: every line's nodes, integration points
    !> and held ends, to the CSV tables and dynamic.h5 (with the step rows still held),
@@ -362,6 +449,56 @@ contains
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_step
 
+   !> Append the support forces at the end of step `step` (0: the start state), at time
+   !> `time`: one row per held end to dynamic_ends_step.csv, one row to each line's
+   !> step_time, step_reactions and step_end_tension in dynamic.h5 (held until the next
+   !> sync). reaction(:, k, l): force and moment of the
+   !> support on line l at end k (A, B), as the frames' reactions (docs/output.md).
+   subroutine dynamic_output_ends_step(w, step, time, reaction, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      integer, intent(in) :: step                   !< step number (0: start) [-]
+      real(wp), intent(in) :: time                  !< time at the end of the step [s]
+      real(wp), intent(in) :: reaction(:, :, :)     !< (6, 2, lines) [N, N m]
+      type(error_t), intent(inout) :: err           !< status
+      character(len=row_len) :: row
+      type(error_t) :: e
+      integer :: i, j, n
+      if (has_error(err)) return
+      if (.not. w%is_open) then
+         call set_error(err, stat_io, 'dynamic_output_ends_step: the writer is not open')
+         return
+      end if
+      if (w%failed) then
+         call set_error(err, stat_io, w%why)
+         return
+      end if
+      do i = 1, size(w%line)
+         associate (lo => w%line(i))
+            if (w%csv) then
+               do j = 1, 2
+                  if (.not. lo%end_held(j)) cycle
+                  n = 0
+                  call put_int(row, n, step)
+                  call put_real(row, n, time)
+                  call put_text(row, n, lo%end_head(j)%s)
+                  call put_reals(row, n, [reaction(:, j, i), norm2(reaction(1:3, j, i))])
+                  call outfile_put(w%f_ends_step, row(:n))
+               end do
+            end if
+            if (w%hdf5) then
+               call hdf5_append_steps(lo%step_time, [time], e)
+               call hdf5_append_steps(lo%step_reactions, reshape(reaction(:, :, i), [12]), e)
+               call hdf5_append_steps(lo%step_end_tension, [norm2(reaction(1:3, 1, i)), &
+                                                            norm2(reaction(1:3, 2, i))], e)
+            end if
+         end associate
+      end do
+      if (has_error(e)) w%h5_failed = .true.
+      if (.not. has_error(e)) w%end_rows = w%end_rows + 1
+      if (has_error(e)) call note_failure(w, e)
+      if (has_error(e)) call set_error(err, e%code, e%message)
+   end subroutine dynamic_output_ends_step
+
    !> Finish the run's output: write everything still held (a last sync), the final
    !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
    !> file and rewrite status.txt from `summary` with the dynamic keys. Acts even when err
@@ -453,8 +590,7 @@ contains
       type(model_t), intent(in) :: model           !< model
       type(line_result_t), intent(in) :: lines(:)  !< initial state
       type(error_t), intent(inout) :: err          !< status
-      character(len=:), allocatable :: g
-      integer :: i, k, nv
+      integer :: i
       if (has_error(err)) return
       ! under a temporary name until the header and the empty datasets are on disk
       call hdf5_create_file(w%h5, temp_name(w%dir, dynamic_h5), err)
@@ -480,43 +616,88 @@ contains
          call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
          call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
-         call hdf5_open_series(h5, '/dynamic/time', w%time, err)
          do i = 1, size(lines)
-            g = '/dynamic/'//group_name(lines(i)%name, i)
-            call create_h5_line(h5, g, lines(i), err)
-            do k = 1, n_line_series
-               call hdf5_open_series(h5, g//'/'//trim(line_series_name(k)), &
-                  w%line(i)%series(k), err)
-            end do
+            call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
          end do
          call create_h5_log(h5, err)
-         do k = 1, n_log_series
-            call hdf5_open_series(h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
-               err)
-         end do
       end associate
-      ! frames held in memory and written in blocks (see the flush policy above)
-      if (.not. has_error(err)) then
-         nv = 1
-         do i = 1, size(lines)
-            do k = 1, n_line_series
-               nv = nv + int(w%line(i)%series(k)%n_cols)
-            end do
-         end do
-         w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
-         call hdf5_series_hold(w%time, w%hold_frames)
-         do i = 1, size(lines)
-            do k = 1, n_line_series
-               call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
-            end do
-         end do
-      end if
+      call open_h5_series(w, lines, err)
       call flush_h5(w, err)
       if (.not. has_error(err)) then
          call commit_rename(temp_name(w%dir, dynamic_h5), path_join(w%dir, dynamic_h5), err)
          if (.not. has_error(err)) w%h5%path = path_join(w%dir, dynamic_h5)
       end if
    end subroutine create_h5
+
+   !> Open every time history of dynamic.h5 (w%h5 open) for appending, and hold the
+   !> frames and the support forces of every step in memory (see the flush policy).
+   subroutine open_h5_series(w, lines, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer, w%h5 open
+      type(line_result_t), intent(in) :: lines(:)  !< the lines (names)
+      type(error_t), intent(inout) :: err          !< status
+      character(len=:), allocatable :: g
+      integer :: i, k, nv
+      call hdf5_open_series(w%h5, '/dynamic/time', w%time, err)
+      do i = 1, size(lines)
+         g = '/dynamic/'//group_name(lines(i)%name, i)
+         do k = 1, n_line_series
+            call hdf5_open_series(w%h5, g//'/'//trim(line_series_name(k)), &
+               w%line(i)%series(k), err)
+         end do
+         call hdf5_open_series(w%h5, g//'/step_reactions', w%line(i)%step_reactions, err)
+         call hdf5_open_series(w%h5, g//'/step_end_tension', w%line(i)%step_end_tension, err)
+         call hdf5_open_series(w%h5, g//'/step_time', w%line(i)%step_time, err)
+      end do
+      do k = 1, n_log_series
+         call hdf5_open_series(w%h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
+            err)
+      end do
+      if (has_error(err)) return
+      nv = 1
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            nv = nv + int(w%line(i)%series(k)%n_cols)
+         end do
+      end do
+      w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
+      call hdf5_series_hold(w%time, w%hold_frames)
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
+         end do
+         call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
+         call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
+         call hdf5_series_hold(w%line(i)%step_time, log_block + 2)
+      end do
+   end subroutine open_h5_series
+
+   !> Open the dynamic.h5 of an interrupted run again and cut every time history back
+   !> to the rows of the checkpoint `mark` (frames, steps, rows of support forces).
+   subroutine reopen_h5(w, lines, mark, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer
+      type(line_result_t), intent(in) :: lines(:)  !< the lines (names)
+      type(dynamic_output_mark_t), intent(in) :: mark !< rows kept
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i, k
+      if (has_error(err)) return
+      call hdf5_open_file(w%h5, path_join(w%dir, dynamic_h5), err, writable=.true.)
+      call hdf5_write_attribute(w%h5, '/', 'complete', 0, err)
+      call hdf5_write_attribute(w%h5, '/', 'status', running, err)
+      call open_h5_series(w, lines, err)
+      call hdf5_series_truncate(w%time, mark%frames, err)
+      do i = 1, size(lines)
+         do k = 1, n_line_series
+            call hdf5_series_truncate(w%line(i)%series(k), mark%frames, err)
+         end do
+         call hdf5_series_truncate(w%line(i)%step_reactions, mark%end_rows, err)
+         call hdf5_series_truncate(w%line(i)%step_end_tension, mark%end_rows, err)
+         call hdf5_series_truncate(w%line(i)%step_time, mark%end_rows, err)
+      end do
+      do k = 1, n_log_series
+         call hdf5_series_truncate(w%log(k), mark%steps, err)
+      end do
+      call flush_h5(w, err)
+   end subroutine reopen_h5
 
    !> One line's group: its static datasets and its empty time histories.
    subroutine create_h5_line(h5, g, r, err)
@@ -563,6 +744,18 @@ contains
          'seabed normal contact force per unit length at the nodes; row per frame')
       call history(g//'/seabed_friction', nn, 'N/m', &
          'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call hdf5_create_series_1d(h5, g//'/step_time', err, chunk_steps=log_chunk)
+      call describe(h5, g//'/step_time', 's', 'time of each row of step_reactions and '// &
+         'step_end_tension: 0, then the end of each step', err)
+      call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
+      call describe(h5, g//'/step_reactions', 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
+         'force and moment of the support on the line, global axes, at the times of '// &
+         'step_time (every step); columns as reactions', err)
+      call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
+         merge(1, 0, r%end_held), err)
+      call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
+      call describe(h5, g//'/step_end_tension', 'N', 'magnitude of the support force at '// &
+         'the times of step_time (every step); columns end A, end B', err)
       call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
       call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
          'seabed, -1 when none; one value per frame', err)
@@ -734,6 +927,7 @@ contains
          call outfile_flush(w%f_ends, err)
          call outfile_flush(w%f_lines, err)
          call outfile_flush(w%f_log, err)
+         call outfile_flush(w%f_ends_step, err)
          w%flush_time = w%flush_time + seconds_since(c0)
          if (has_error(err)) return
       end if
@@ -743,6 +937,9 @@ contains
             do k = 1, n_line_series
                call hdf5_series_write_held(w%line(i)%series(k), eh)
             end do
+            call hdf5_series_write_held(w%line(i)%step_reactions, eh)
+            call hdf5_series_write_held(w%line(i)%step_end_tension, eh)
+            call hdf5_series_write_held(w%line(i)%step_time, eh)
          end do
          call write_pending_log(w, eh)
          call flush_h5(w, eh)
@@ -758,6 +955,7 @@ contains
          call outfile_mark(w%f_ends)
          call outfile_mark(w%f_lines)
          call outfile_mark(w%f_log)
+         call outfile_mark(w%f_ends_step)
       end if
       w%frames_held = 0
       w%steps_held = 0
@@ -776,7 +974,8 @@ contains
    pure integer function csv_held(w)
       type(dynamic_writer_t), intent(in) :: w   !< writer
       csv_held = outfile_pending(w%f_nodes) + outfile_pending(w%f_elements) + &
-         outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log)
+         outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log) &
+         + outfile_pending(w%f_ends_step)
    end function csv_held
 
    !> Record a write failure: nothing more is written.
@@ -872,12 +1071,14 @@ contains
          call outfile_abort(w%f_elements)
          call outfile_abort(w%f_ends)
          call outfile_abort(w%f_log)
+         call outfile_abort(w%f_ends_step)
          call outfile_abort(w%f_lines)
       else
          call outfile_close(w%f_nodes, err)
          call outfile_close(w%f_elements, err)
          call outfile_close(w%f_ends, err)
          call outfile_close(w%f_log, err)
+         call outfile_close(w%f_ends_step, err)
          call outfile_close(w%f_lines, err)
       end if
       ! after a failure the held steps are dropped (the series see an error)
@@ -891,6 +1092,9 @@ contains
             do k = 1, n_line_series
                call hdf5_close_series(w%line(i)%series(k), eh)
             end do
+            call hdf5_close_series(w%line(i)%step_reactions, eh)
+            call hdf5_close_series(w%line(i)%step_end_tension, eh)
+            call hdf5_close_series(w%line(i)%step_time, eh)
          end do
          deallocate (w%line)
       end if

@@ -1,0 +1,383 @@
+!> Checkpoints of a dynamic run (`*DYNAMIC, CHECKPOINT=c`; docs/dynamics.md "Checkpoint
+!> and restart"): everything the time loop, the support-force interpolation and the
+!> output writer carry from one step to the next, in `checkpoint.h5` in the output
+!> folder, so that `rodyn DECK --restart DIR` continues a killed run and writes the
+!> same bits as a run never interrupted.
+!>
+!> The file is written atomically: '.checkpoint.h5.tmp', flushed and closed, then
+!> renamed over the last one. It holds the start state (t = 0: dynamics_setup derives
+!> the supports and the prescribed positions from it), the state at t_n (positions,
+!> directors, their velocities and, for generalized-alpha, accelerations), the
+!> problem's residual, step and Newton reference forces, the time loop's state
+!> (timeloop_state_t), the pending support forces of run_dynamic, the run summary and
+!> where the output files stand (dynamic_output_mark_t). No factorised tangent: the
+!> step after a checkpoint forms a new one in both runs (rodyn_timeloop).
+!>
+!> A checkpoint is refused (stat_input, exit 1) when it was written by another build
+!> of rodyn (the version and a hash of the executable differ) or for another deck (the
+!> deck text with its includes expanded, and the parameters used, are compared as text,
+!> which is stricter than a hash of them).
+module rodyn_checkpoint
+   use, intrinsic :: iso_fortran_env, only: int64
+   use rodyn_kinds, only: wp, i8, rodyn_version
+   use rodyn_error, only: error_t, set_error, has_error, stat_io, stat_input
+   use rodyn_model, only: model_t
+   use rodyn_state, only: state_t
+   use rodyn_results, only: run_summary_t, step_log_t
+   use rodyn_timeloop, only: timeloop_state_t
+   use rodyn_output_dynamic, only: dynamic_output_mark_t
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_open_file, hdf5_close_file, &
+                         hdf5_write_dataset, hdf5_read_dataset
+   use rodyn_outfile, only: temp_name, commit_rename, remove_file, path_join, outfile_size
+   implicit none
+   private
+   public :: checkpoint_t, checkpoint_write, checkpoint_read, checkpoint_file
+   public :: checkpoint_program_id
+
+   character(len=*), parameter :: checkpoint_file = 'checkpoint.h5' !< name in the folder
+   integer, parameter :: n_reals = 33  !< scalars in /reals (see pack_reals)
+   integer, parameter :: n_ints = 24   !< scalars in /integers (see pack_ints)
+
+   !> Everything a dynamic run carries from one step to the next.
+   type :: checkpoint_t
+      type(timeloop_state_t) :: loop            !< the time loop's state
+      type(run_summary_t) :: summary            !< counters of the run (static and dynamic)
+      type(state_t) :: start                    !< state at t = 0
+      type(state_t) :: now                      !< state at t_n
+      real(wp), allocatable :: r(:, :)          !< (6, nn) residual of the last step [N, N m]
+      real(wp) :: dt = 0.0_wp                   !< length of the last step [s]
+      real(wp) :: t0 = 0.0_wp                   !< its start [s]
+      real(wp) :: f_conv = 0.0_wp, m_conv = 0.0_wp !< Newton reference force, moment
+      real(wp) :: f_last = 0.0_wp, m_last = 0.0_wp !< the same of the last iterate
+      logical :: have_conv = .false.            !< a step has converged
+      real(wp), allocatable :: r_pend(:, :)     !< (6, nn) force of the pending step
+      real(wp), allocatable :: r_back(:, :)     !< (6, nn) force of the step before it
+      real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp !< their lengths [s]
+      real(wp) :: t_pend = 0.0_wp               !< end of the pending step [s]
+      integer :: k_pend = 0                     !< its number
+      logical :: pending = .false.              !< a step waits for its support forces
+      logical :: have_back = .false.            !< r_back is set
+      logical :: frame_waiting = .false.        !< a frame waits with it
+      type(dynamic_output_mark_t) :: mark       !< where the output files stand
+   end type checkpoint_t
+
+contains
+
+   !> Write ck as dir/checkpoint.h5: to a temporary, closed, then renamed over the old.
+   subroutine checkpoint_write(dir, model, program_id, ck, err)
+      character(len=*), intent(in) :: dir         !< output folder
+      type(model_t), intent(in) :: model          !< model (deck text, parameters)
+      character(len=*), intent(in) :: program_id  !< checkpoint_program_id(), once a run
+      type(checkpoint_t), intent(in) :: ck        !< what to keep
+      type(error_t), intent(inout) :: err         !< status
+      type(hdf5_file_t) :: h5
+      type(error_t) :: e
+      character(len=:), allocatable :: tmp
+      if (has_error(err)) return
+      tmp = temp_name(dir, checkpoint_file)
+      call hdf5_create_file(h5, tmp, e)
+      call hdf5_write_dataset(h5, '/program', program_id, e)
+      call hdf5_write_dataset(h5, '/deck', deck_identity(model), e)
+      call hdf5_write_dataset(h5, '/reals', pack_reals(ck), e)
+      call hdf5_write_dataset(h5, '/integers', pack_ints(ck), e)
+      call hdf5_write_dataset(h5, '/csv_bytes', real(ck%mark%csv_bytes, wp), e)
+      call hdf5_write_dataset(h5, '/r', ck%r, e)
+      call hdf5_write_dataset(h5, '/r_pend', ck%r_pend, e)
+      call hdf5_write_dataset(h5, '/r_back', ck%r_back, e)
+      call write_state('/start_', ck%start)
+      call write_state('/now_', ck%now)
+      call hdf5_close_file(h5, e)
+      if (.not. has_error(e)) call commit_rename(tmp, path_join(dir, checkpoint_file), e)
+      if (has_error(e)) then
+         call remove_file(tmp)
+         call set_error(err, stat_io, 'cannot write the checkpoint '''// &
+                        path_join(dir, checkpoint_file)//''': '//e%message)
+      end if
+   contains
+      !> One state as datasets <prefix>x, d, v, dd (and a, ad when allocated for nodes).
+      subroutine write_state(prefix, s)
+         character(len=*), intent(in) :: prefix   !< dataset name prefix
+         type(state_t), intent(in) :: s           !< state
+         call hdf5_write_dataset(h5, prefix//'x', s%x, e)
+         call hdf5_write_dataset(h5, prefix//'d', reshape(s%d, [9, size(s%d, 3)]), e)
+         call hdf5_write_dataset(h5, prefix//'v', s%v, e)
+         call hdf5_write_dataset(h5, prefix//'dd', reshape(s%dd, [9, size(s%dd, 3)]), e)
+         if (size(s%a, 2) == 0) return
+         call hdf5_write_dataset(h5, prefix//'a', s%a, e)
+         call hdf5_write_dataset(h5, prefix//'ad', reshape(s%ad, [9, size(s%ad, 3)]), e)
+      end subroutine write_state
+   end subroutine checkpoint_write
+
+   !> Read dir/checkpoint.h5 into ck (its states allocated as `like`, nn nodes). Refused
+   !> with stat_input when there is none, or it is of another build or another deck.
+   subroutine checkpoint_read(dir, model, like, ck, err)
+      character(len=*), intent(in) :: dir          !< output folder of the run
+      type(model_t), intent(in) :: model           !< model (deck text, parameters)
+      type(state_t), intent(in) :: like            !< a state of the run's sizes
+      type(checkpoint_t), intent(out) :: ck        !< what the checkpoint holds
+      type(error_t), intent(inout) :: err          !< status
+      type(hdf5_file_t) :: h5
+      type(error_t) :: e
+      character(len=:), allocatable :: path, text
+      real(wp), allocatable :: reals(:), bytes(:)
+      integer, allocatable :: ints(:)
+      if (has_error(err)) return
+      path = path_join(dir, checkpoint_file)
+      if (outfile_size(path) < 0) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': no checkpoint ('''// &
+                        path//''' is missing): the run wrote none (no CHECKPOINT on '// &
+                        '*DYNAMIC, or killed before the first); run it again without --restart')
+         return
+      end if
+      call hdf5_open_file(h5, path, e)
+      call hdf5_read_dataset(h5, '/program', text, e)
+      if (has_error(e)) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': '''//path// &
+                        ''' is not a readable checkpoint: '//e%message)
+         call hdf5_close_file(h5, e)
+         return
+      end if
+      if (text /= checkpoint_program_id()) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
+                        'checkpoint was written by another build of rodyn ('//text// &
+                        '; this is '//checkpoint_program_id()//'): continue it with that '// &
+                        'program, or run the deck again without --restart')
+         call hdf5_close_file(h5, e)
+         return
+      end if
+      call hdf5_read_dataset(h5, '/deck', text, e)
+      if (.not. has_error(e) .and. text /= deck_identity(model)) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
+                        'checkpoint belongs to another deck (its text, an included file or'// &
+                        ' a parameter differs from those of the run in '''//dir// &
+                        '''): restart with the same deck and --set values')
+         call hdf5_close_file(h5, e)
+         return
+      end if
+      call hdf5_read_dataset(h5, '/reals', reals, e)
+      call hdf5_read_dataset(h5, '/integers', ints, e)
+      call hdf5_read_dataset(h5, '/csv_bytes', bytes, e)
+      call hdf5_read_dataset(h5, '/r', ck%r, e)
+      call hdf5_read_dataset(h5, '/r_pend', ck%r_pend, e)
+      call hdf5_read_dataset(h5, '/r_back', ck%r_back, e)
+      ck%start = like
+      ck%now = like
+      call read_state('/start_', ck%start)
+      call read_state('/now_', ck%now)
+      call hdf5_close_file(h5, e)
+      if (.not. has_error(e)) then
+         if (size(reals) /= n_reals .or. size(ints) /= n_ints .or. size(bytes) /= 6) &
+            call set_error(e, stat_io, 'wrong sizes')
+      end if
+      if (has_error(e)) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': '''//path// &
+                        ''' is not a whole checkpoint of this run: '//e%message)
+         return
+      end if
+      call unpack_reals(reals, ck)
+      call unpack_ints(ints, ck)
+      ck%mark%csv_bytes = int(bytes, i8)
+   contains
+      !> One state from <prefix>x, d, ... into s (allocated for the run's nodes).
+      subroutine read_state(prefix, s)
+         character(len=*), intent(in) :: prefix   !< dataset name prefix
+         type(state_t), intent(inout) :: s        !< state read
+         real(wp), allocatable :: a2(:, :)
+         call get2(prefix//'x', s%x)
+         call get2(prefix//'v', s%v)
+         call hdf5_read_dataset(h5, prefix//'d', a2, e)
+         if (.not. has_error(e)) call fit(a2, size(s%d), s%d)
+         call hdf5_read_dataset(h5, prefix//'dd', a2, e)
+         if (.not. has_error(e)) call fit(a2, size(s%dd), s%dd)
+         if (size(s%a, 2) == 0) return
+         call get2(prefix//'a', s%a)
+         call hdf5_read_dataset(h5, prefix//'ad', a2, e)
+         if (.not. has_error(e)) call fit(a2, size(s%ad), s%ad)
+      end subroutine read_state
+      !> A (3, nn) array of the same shape as x.
+      subroutine get2(name, x)
+         character(len=*), intent(in) :: name      !< dataset
+         real(wp), intent(inout) :: x(:, :)        !< array read
+         real(wp), allocatable :: a2(:, :)
+         call hdf5_read_dataset(h5, name, a2, e)
+         if (has_error(e)) return
+         if (any(shape(a2) /= shape(x))) then
+            call set_error(e, stat_io, name//' has another size (another mesh)')
+            return
+         end if
+         x = a2
+      end subroutine get2
+      !> A (9, nn) array into a (3, 3, nn) one of n values.
+      subroutine fit(a2, n, x)
+         real(wp), intent(in) :: a2(:, :)          !< values read
+         integer, intent(in) :: n                  !< size expected
+         real(wp), intent(inout) :: x(:, :, :)     !< array set
+         if (size(a2) /= n) then
+            call set_error(e, stat_io, 'directors of another size (another mesh)')
+            return
+         end if
+         x = reshape(a2, shape(x))
+      end subroutine fit
+   end subroutine checkpoint_read
+
+   !> The scalars of a checkpoint, in this order: loop t, next_frame, next_checkpoint;
+   !> the step log's 17 reals; dt, t0, f_conv, m_conv, f_last, m_last; h_pend, h_back,
+   !> t_pend; mark last_time; summary load_factor, wall_time, time_reached.
+   function pack_reals(ck) result(x)
+      type(checkpoint_t), intent(in) :: ck   !< checkpoint
+      real(wp) :: x(n_reals)
+      associate (l => ck%loop%log, s => ck%summary)
+         x = [ck%loop%t, ck%loop%next_frame, ck%loop%next_checkpoint, &
+              l%time, l%dt, l%kinetic, l%strain, l%strain_scale, l%gravity, &
+              l%external_work, l%damping_work, l%hydro_work, l%seabed_work, l%total, &
+              l%momentum, l%angular_momentum, &
+              ck%dt, ck%t0, ck%f_conv, ck%m_conv, ck%f_last, ck%m_last, &
+              ck%h_pend, ck%h_back, ck%t_pend, ck%mark%last_time, &
+              s%load_factor, s%wall_time, s%time_reached]
+      end associate
+   end function pack_reals
+
+   !> The reals of pack_reals back into ck.
+   subroutine unpack_reals(x, ck)
+      real(wp), intent(in) :: x(:)             !< (n_reals) values
+      type(checkpoint_t), intent(inout) :: ck  !< checkpoint
+      associate (l => ck%loop%log, s => ck%summary)
+         ck%loop%t = x(1)
+         ck%loop%next_frame = x(2)
+         ck%loop%next_checkpoint = x(3)
+         l%time = x(4)
+         l%dt = x(5)
+         l%kinetic = x(6)
+         l%strain = x(7)
+         l%strain_scale = x(8)
+         l%gravity = x(9)
+         l%external_work = x(10)
+         l%damping_work = x(11)
+         l%hydro_work = x(12)
+         l%seabed_work = x(13)
+         l%total = x(14)
+         l%momentum = x(15:17)
+         l%angular_momentum = x(18:20)
+         ck%dt = x(21)
+         ck%t0 = x(22)
+         ck%f_conv = x(23)
+         ck%m_conv = x(24)
+         ck%f_last = x(25)
+         ck%m_last = x(26)
+         ck%h_pend = x(27)
+         ck%h_back = x(28)
+         ck%t_pend = x(29)
+         ck%mark%last_time = x(30)
+         s%load_factor = x(31)
+         s%wall_time = x(32)
+         s%time_reached = x(33)
+      end associate
+   end subroutine unpack_reals
+
+   !> The integers of a checkpoint, in this order: loop level, good; the step log's
+   !> step, iterations, tangents, cutbacks; have_conv, k_pend, pending, have_back,
+   !> frame_waiting; mark frames, steps, end_rows, step_iterations, step_tangents,
+   !> step_cutbacks; summary increments, iterations, cutbacks, steps, step_iterations,
+   !> step_tangents, step_cutbacks (over every attempt, failed ones too).
+   function pack_ints(ck) result(k)
+      type(checkpoint_t), intent(in) :: ck   !< checkpoint
+      integer :: k(n_ints)
+      associate (l => ck%loop%log, m => ck%mark, s => ck%summary)
+         k = [ck%loop%level, ck%loop%good, l%step, l%iterations, l%tangents, l%cutbacks, &
+              merge(1, 0, ck%have_conv), ck%k_pend, merge(1, 0, ck%pending), &
+              merge(1, 0, ck%have_back), merge(1, 0, ck%frame_waiting), m%frames, m%steps, &
+              m%end_rows, m%step_iterations, m%step_tangents, m%step_cutbacks, &
+              s%increments, s%iterations, s%cutbacks, s%steps, s%step_iterations, &
+              s%step_tangents, s%step_cutbacks]
+      end associate
+   end function pack_ints
+
+   !> The integers of pack_ints back into ck.
+   subroutine unpack_ints(k, ck)
+      integer, intent(in) :: k(:)              !< (n_ints) values
+      type(checkpoint_t), intent(inout) :: ck  !< checkpoint
+      associate (l => ck%loop%log, m => ck%mark, s => ck%summary)
+         ck%loop%level = k(1)
+         ck%loop%good = k(2)
+         l%step = k(3)
+         l%iterations = k(4)
+         l%tangents = k(5)
+         l%cutbacks = k(6)
+         ck%have_conv = k(7) == 1
+         ck%k_pend = k(8)
+         ck%pending = k(9) == 1
+         ck%have_back = k(10) == 1
+         ck%frame_waiting = k(11) == 1
+         m%frames = k(12)
+         m%steps = k(13)
+         m%end_rows = k(14)
+         m%step_iterations = k(15)
+         m%step_tangents = k(16)
+         m%step_cutbacks = k(17)
+         s%increments = k(18)
+         s%iterations = k(19)
+         s%cutbacks = k(20)
+         s%steps = k(21)
+         s%step_iterations = k(22)
+         s%step_tangents = k(23)
+         s%step_cutbacks = k(24)
+      end associate
+   end subroutine unpack_ints
+
+   !> The deck as a checkpoint identifies it: its full text (includes expanded) and the
+   !> parameters used (after --set), one 'NAME = text' line each.
+   function deck_identity(model) result(text)
+      type(model_t), intent(in) :: model      !< model
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ''
+      if (allocated(model%deck_text)) text = model%deck_text
+      if (.not. allocated(model%parameters)) return
+      do k = 1, size(model%parameters)
+         text = text//new_line('a')//'parameter '//model%parameters(k)%name//' = '// &
+                model%parameters(k)%text
+      end do
+   end function deck_identity
+
+   !> The build of rodyn: its version and a 64-bit FNV-1a hash of the executable
+   !> (/proc/self/exe), so that a rebuilt program, which may round differently, does
+   !> not continue another build's run. 'unknown' in place of the hash when the
+   !> executable cannot be read.
+   function checkpoint_program_id() result(id)
+      character(len=:), allocatable :: id
+      integer, parameter :: block_len = 1048576
+      character(len=:), allocatable :: buf
+      character(len=16) :: hex
+      integer(int64) :: size_bytes, pos, h_lo, h_hi
+      integer :: unit, stat, n, k
+      id = 'rodyn '//rodyn_version//' build unknown'
+      open (newunit=unit, file='/proc/self/exe', access='stream', form='unformatted', &
+            action='read', status='old', iostat=stat)
+      if (stat /= 0) return
+      inquire (unit=unit, size=size_bytes)
+      ! FNV-1a as two 32-bit halves (offset bases of FNV-32 and a second one), each kept
+      ! below 2**32 so that the 64-bit products never overflow
+      h_lo = 2166136261_int64
+      h_hi = 3735928559_int64
+      allocate (character(len=block_len) :: buf)
+      pos = 1
+      do while (pos <= size_bytes)
+         n = int(min(int(block_len, int64), size_bytes - pos + 1))
+         read (unit, pos=pos, iostat=stat) buf(1:n)
+         if (stat /= 0) then
+            close (unit)
+            return
+         end if
+         do k = 1, n
+            h_lo = iand(ieor(h_lo, int(iachar(buf(k:k)), int64))*16777619_int64, &
+                        4294967295_int64)
+            h_hi = iand(ieor(h_hi, int(iachar(buf(k:k)), int64))*16777619_int64 + 1_int64, &
+                        4294967295_int64)
+         end do
+         pos = pos + n
+      end do
+      close (unit)
+      write (hex, '(z8.8,z8.8)') h_hi, h_lo
+      id = 'rodyn '//rodyn_version//' build '//hex
+   end function checkpoint_program_id
+end module rodyn_checkpoint
