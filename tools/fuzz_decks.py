@@ -795,7 +795,10 @@ def main():
     made_work = args.work is None
     args.work = os.path.abspath(args.work or tempfile.mkdtemp(prefix="rodyn_fuzz_"))
     os.makedirs(args.work, exist_ok=True)
-    args.save = os.path.abspath(args.save or os.path.join(args.work, "failures"))
+    if args.save is None:        # WORK/failures holds this run's failures only
+        args.save = os.path.join(args.work, "failures")
+        shutil.rmtree(args.save, ignore_errors=True)
+    args.save = os.path.abspath(args.save)
     seeds = seed_decks(args.root)
     t0 = time.monotonic()
     cases = range(args.first, args.first + args.count)
