@@ -9,6 +9,8 @@ module rodyn_model
    public :: output_options_t, model_t, parameter_value_t
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
    public :: water_t, seabed_t, attachment_t, rho_water_default
+   public :: waves_t, stretch_wheeler, stretch_vertical, stretch_extrapolation, stretch_none
+   public :: stretch_names
    public :: element_rod, element_cable, element_names
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table
@@ -142,6 +144,29 @@ module rodyn_model
       real(wp) :: v_mob = 0.01_wp      !< friction mobilisation velocity [m/s]
    end type seabed_t
 
+   ! Kinematics above the mean surface (*WAVE, STRETCHING=); docs/waves.md
+   integer, parameter :: stretch_wheeler = 1       !< Wheeler: z mapped onto [-d, 0]
+   integer, parameter :: stretch_vertical = 2      !< the values at z = 0 carried up
+   integer, parameter :: stretch_extrapolation = 3 !< linear extrapolation from z = 0
+   integer, parameter :: stretch_none = 4          !< linear theory's profile carried up
+   character(len=13), parameter :: stretch_names(4) = [character(len=13) :: 'WHEELER', &
+                                                       'VERTICAL', 'EXTRAPOLATION', 'NONE']
+
+   !> The sea state (*WAVE): a sum of Airy components, the elevation above the still
+   !> water level eta = sum_i (H_i/2) cos(k_i (x cos beta_i + y sin beta_i) - omega_i t
+   !> + phi_i), k_i from the finite-depth dispersion relation at the water depth; all
+   !> multiplied by the ramp-in (1 - cos(pi t/T))/2 in dynamics, absent in statics.
+   type :: waves_t
+      logical :: present = .false.       !< the deck has *WAVE
+      integer :: stretching = stretch_wheeler !< stretch_* constant
+      real(wp) :: ramp = 0.0_wp          !< ramp-in duration [s]; 0: none
+      real(wp), allocatable :: height(:)  !< (nw) wave height H = 2 x amplitude [m]
+      real(wp), allocatable :: period(:)  !< (nw) period [s]
+      real(wp), allocatable :: heading(:) !< (nw) direction of travel, from +x towards +y
+                                          !< [rad] (deg in the deck)
+      real(wp), allocatable :: phase(:)   !< (nw) phase phi [rad] (deg in the deck)
+   end type waves_t
+
    !> A node constraint (*BOUNDARY).
    type :: constraint_t
       integer :: line = 0           !< index into model%lines
@@ -257,6 +282,7 @@ module rodyn_model
       type(attachment_t), allocatable :: attachments(:)
       type(water_t) :: water
       type(seabed_t) :: seabed
+      type(waves_t) :: waves
       type(static_options_t) :: static
       type(dynamic_options_t) :: dynamic
       type(output_options_t) :: output

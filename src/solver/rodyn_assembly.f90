@@ -308,9 +308,16 @@ contains
                ve(:, a) = vf(:, nodes(a))
                ae(:, a) = af(:, nodes(a))
             end do
-            call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
-                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k)
+            if (wl%wave_on) then
+               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
+                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                                  wl%wkin(:, nodes))
+            else
+               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
+                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k)
+            end if
             do a = 1, nen
                fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
@@ -324,8 +331,14 @@ contains
       end do
       do i = 1, size(wl%att_node)
          node = wl%att_node(i)
-         call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), vf(:, node), &
-                               cx, cv, f, k, want_k)
+         if (wl%wave_on) then
+            call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
+                                  vf(:, node), cx, cv, f, k, want_k, wl%wkin(:, node), &
+                                  wl%att_ca(i))
+         else
+            call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
+                                  vf(:, node), cx, cv, f, k, want_k)
+         end if
          fint(1:3, node) = fint(1:3, node) - f
          wl%fh(:, node) = wl%fh(:, node) + f
          if (want_k) call banded_add(bm, [(sup%first(node) + j - 1, j=1, 3)], -k)

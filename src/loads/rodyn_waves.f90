@@ -1,0 +1,232 @@
+!> Linear (Airy) wave kinematics (docs/waves.md): a sea of components i, each of
+!> amplitude A_i = H_i/2, angular frequency omega_i, heading beta_i and phase phi_i, on
+!> water of constant depth d below the still water level z_s. With z' = z - z_s and
+!>   theta_i = k_i (x cos beta_i + y sin beta_i) - omega_i t + phi_i,
+!> the elevation, horizontal (along beta_i) and vertical velocity and acceleration are
+!> (Dean & Dalrymple, "Water Wave Mechanics for Engineers and Scientists", 1991, ch. 4;
+!> DNV-RP-C205, 2021, section 3.2, table 3-1)
+!>   eta = sum A_i cos theta_i
+!>   u_h = sum A_i omega_i C_i(s) cos theta_i,    w = sum A_i omega_i S_i(s) sin theta_i
+!>   a_h = sum A_i omega_i^2 C_i(s) sin theta_i,  a_z = -sum A_i omega_i^2 S_i(s) cos theta_i
+!>   C_i(s) = cosh(k_i (s + d))/sinh(k_i d),      S_i(s) = sinh(k_i (s + d))/sinh(k_i d)
+!> with k_i from the dispersion relation omega^2 = g k tanh(k d) (wave_number) and s the
+!> level the profile is evaluated at. Below the mean surface s = z'; above it, up to eta,
+!> the stretching named in the deck (DNV-RP-C205 section 3.2.3):
+!>   WHEELER        s = (z' - eta) d/(d + eta), for every z' (eta maps to 0, -d to -d)
+!>   VERTICAL       s = min(z', 0): the values at the mean surface carried up
+!>   EXTRAPOLATION  C(z') = C(0) + z' k S(0), S(z') = S(0) + z' k C(0) for z' > 0
+!>   NONE           s = z': the linear profile carried up as it is
+!> Above eta the water has no velocity. A ramp r(t) = (1 - cos(pi t/T))/2 multiplies the
+!> elevation and the velocity; the acceleration is r a + r' u. The acceleration is the
+!> local one of linear theory at the stretched level (the stretch's own rate is not
+!> differentiated, as is usual). The per-component factors (k cos beta, k sin beta,
+!> A omega, A omega^2, the depth terms) are formed once by waves_build.
+module rodyn_waves
+   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_model, only: waves_t, stretch_wheeler, stretch_vertical, &
+                          stretch_extrapolation, stretch_none
+   implicit none
+   private
+   public :: wave_field_t, wave_number, waves_build, wave_elevation, wave_kinematics
+   public :: wave_ramp
+
+   real(wp), parameter :: kd_exp = 20.0_wp !< above k d the depth terms use exponentials
+
+   !> The sea of a run, ready for evaluation (fixed after waves_build).
+   type :: wave_field_t
+      integer :: n = 0                        !< components
+      integer :: stretching = stretch_wheeler !< stretch_* constant
+      real(wp) :: depth = 0.0_wp              !< d [m]
+      real(wp) :: surface = 0.0_wp            !< z_s [m]
+      real(wp) :: ramp = 0.0_wp               !< ramp-in duration [s]
+      real(wp), allocatable :: amp(:)    !< (n) A [m]
+      real(wp), allocatable :: omega(:)  !< (n) [rad/s]
+      real(wp), allocatable :: k(:)      !< (n) wave number [1/m]
+      real(wp), allocatable :: kx(:)     !< (n) k cos beta [1/m]
+      real(wp), allocatable :: ky(:)     !< (n) k sin beta [1/m]
+      real(wp), allocatable :: cb(:)     !< (n) cos beta [-]
+      real(wp), allocatable :: sb(:)     !< (n) sin beta [-]
+      real(wp), allocatable :: phase(:)  !< (n) phi [rad]
+      real(wp), allocatable :: aw(:)     !< (n) A omega [m/s]
+      real(wp), allocatable :: aw2(:)    !< (n) A omega^2 [m/s2]
+      real(wp), allocatable :: rsh(:)    !< (n) 1/sinh(k d) (k d < kd_exp) [-]
+      logical, allocatable :: deep(:)    !< (n) k d >= kd_exp: exponential forms
+   end type wave_field_t
+
+contains
+
+   !> Wave number k of angular frequency omega in water of depth d: the root of the
+   !> dispersion relation omega^2 = g k tanh(k d), written y tanh y = x with y = k d,
+   !> x = omega^2 d/g, by Newton's method from Eckart's approximation
+   !> y0 = x/sqrt(tanh x) (Eckart 1952; within 5 %), to round-off (the step below
+   !> 2 eps y). Deep water (x large): y = x, k = omega^2/g; shallow (x small):
+   !> y = sqrt(x), k = omega/sqrt(g d).
+   pure real(wp) function wave_number(omega, depth, g) result(k)
+      real(wp), intent(in) :: omega  !< angular frequency [rad/s], > 0
+      real(wp), intent(in) :: depth  !< water depth [m], > 0
+      real(wp), intent(in) :: g      !< gravity [m/s2], > 0
+      real(wp) :: x, y, th, dy
+      integer :: it
+      x = omega**2*depth/g
+      y = x/sqrt(tanh(x))
+      do it = 1, 60
+         th = tanh(y)
+         dy = (y*th - x)/(th + y*(1.0_wp - th**2))
+         y = y - dy
+         if (abs(dy) <= 2.0_wp*epsilon(1.0_wp)*y) exit
+      end do
+      k = y/depth
+   end function wave_number
+
+   !> The field of the deck's sea: per component k (wave_number), k cos beta,
+   !> k sin beta, A omega, A omega^2 and 1/sinh(k d) (module header).
+   pure subroutine waves_build(waves, depth, surface, g, field)
+      type(waves_t), intent(in) :: waves        !< the deck's waves
+      real(wp), intent(in) :: depth             !< water depth d [m]
+      real(wp), intent(in) :: surface           !< still water level z_s [m]
+      real(wp), intent(in) :: g                 !< |gravity| [m/s2]
+      type(wave_field_t), intent(out) :: field  !< the field
+      integer :: i, n
+      n = 0
+      if (waves%present) n = size(waves%height)
+      field%n = n
+      field%stretching = waves%stretching
+      field%depth = depth
+      field%surface = surface
+      field%ramp = waves%ramp
+      allocate (field%amp(n), field%omega(n), field%k(n), field%kx(n), field%ky(n), &
+                field%cb(n), field%sb(n), field%phase(n), field%aw(n), field%aw2(n), &
+                field%rsh(n), field%deep(n))
+      do i = 1, n
+         field%amp(i) = 0.5_wp*waves%height(i)
+         field%omega(i) = two_pi/waves%period(i)
+         field%k(i) = wave_number(field%omega(i), depth, g)
+         field%cb(i) = cos(waves%heading(i))
+         field%sb(i) = sin(waves%heading(i))
+         field%kx(i) = field%k(i)*field%cb(i)
+         field%ky(i) = field%k(i)*field%sb(i)
+         field%phase(i) = waves%phase(i)
+         field%aw(i) = field%amp(i)*field%omega(i)
+         field%aw2(i) = field%aw(i)*field%omega(i)
+         field%deep(i) = field%k(i)*depth >= kd_exp
+         field%rsh(i) = 0.0_wp
+         if (.not. field%deep(i)) field%rsh(i) = 1.0_wp/sinh(field%k(i)*depth)
+      end do
+   end subroutine waves_build
+
+   !> Ramp factor r(t) = (1 - cos(pi t/T))/2 for 0 < t < T (0 before, 1 after; 1 when
+   !> T = 0) and its rate r'(t) = pi/(2T) sin(pi t/T).
+   pure subroutine wave_ramp(ramp, t, r, dr)
+      real(wp), intent(in) :: ramp  !< T [s]
+      real(wp), intent(in) :: t     !< time [s]
+      real(wp), intent(out) :: r    !< r(t) [-]
+      real(wp), intent(out) :: dr   !< r'(t) [1/s]
+      r = 1.0_wp
+      dr = 0.0_wp
+      if (ramp <= 0.0_wp .or. t >= ramp) return
+      if (t <= 0.0_wp) then
+         r = 0.0_wp
+         return
+      end if
+      r = 0.5_wp*(1.0_wp - cos(pi*t/ramp))
+      dr = 0.5_wp*pi/ramp*sin(pi*t/ramp)
+   end subroutine wave_ramp
+
+   !> Elevation eta of the surface above the still water level at (x, y), time t, ramp
+   !> included [m] (module header).
+   pure real(wp) function wave_elevation(field, x, y, t) result(eta)
+      type(wave_field_t), intent(in) :: field !< the sea
+      real(wp), intent(in) :: x               !< [m]
+      real(wp), intent(in) :: y               !< [m]
+      real(wp), intent(in) :: t               !< time [s]
+      real(wp) :: r, dr
+      integer :: i
+      eta = 0.0_wp
+      do i = 1, field%n
+         eta = eta + field%amp(i)*cos(field%kx(i)*x + field%ky(i)*y - field%omega(i)*t &
+                                      + field%phase(i))
+      end do
+      call wave_ramp(field%ramp, t, r, dr)
+      eta = r*eta
+   end function wave_elevation
+
+   !> Elevation eta above (x, y), water velocity u and acceleration a at point x and
+   !> time t (module header: linear theory, the stretching above the mean surface, ramp
+   !> included; zero above the surface).
+   pure subroutine wave_kinematics(field, x, t, eta, u, a)
+      type(wave_field_t), intent(in) :: field !< the sea
+      real(wp), intent(in) :: x(3)            !< point [m]
+      real(wp), intent(in) :: t               !< time [s]
+      real(wp), intent(out) :: eta            !< surface elevation above z_s [m]
+      real(wp), intent(out) :: u(3)           !< water velocity [m/s]
+      real(wp), intent(out) :: a(3)           !< water acceleration [m/s2]
+      real(wp) :: r, dr, zp, s, ch, sh, c, sn, uh, ah, w, az, d, ext
+      integer :: i
+      u = 0.0_wp
+      a = 0.0_wp
+      eta = wave_elevation(field, x(1), x(2), t)
+      if (field%n == 0) return
+      zp = x(3) - field%surface
+      if (zp > eta) return
+      call wave_ramp(field%ramp, t, r, dr)
+      if (r == 0.0_wp) return
+      d = field%depth
+      ext = 0.0_wp
+      select case (field%stretching)
+      case (stretch_wheeler)
+         s = (zp - eta)*d/(d + eta)
+      case (stretch_vertical)
+         s = min(zp, 0.0_wp)
+      case (stretch_extrapolation)
+         s = min(zp, 0.0_wp)
+         ext = max(zp, 0.0_wp)
+      case default
+         s = zp
+      end select
+      do i = 1, field%n
+         call depth_terms(field, i, s, ch, sh)
+         if (ext > 0.0_wp) then
+            ! C(z') = C(0) + z' k S(0), S(z') = S(0) + z' k C(0)
+            c = ch
+            ch = ch + ext*field%k(i)*sh
+            sh = sh + ext*field%k(i)*c
+         end if
+         c = cos(field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i))
+         sn = sin(field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i))
+         uh = field%aw(i)*ch*c
+         w = field%aw(i)*sh*sn
+         ah = field%aw2(i)*ch*sn
+         az = -field%aw2(i)*sh*c
+         u(1) = u(1) + uh*field%cb(i)
+         u(2) = u(2) + uh*field%sb(i)
+         u(3) = u(3) + w
+         a(1) = a(1) + ah*field%cb(i)
+         a(2) = a(2) + ah*field%sb(i)
+         a(3) = a(3) + az
+      end do
+      a = r*a + dr*u
+      u = r*u
+   end subroutine wave_kinematics
+
+   !> C = cosh(k (s + d))/sinh(k d) and S = sinh(k (s + d))/sinh(k d) of component i;
+   !> for k d >= kd_exp in exponentials, (e^{k s} +- e^{-k (s + 2 d)})/(1 - e^{-2 k d}),
+   !> which neither overflows nor loses digits in deep water.
+   pure subroutine depth_terms(field, i, s, ch, sh)
+      type(wave_field_t), intent(in) :: field !< the sea
+      integer, intent(in) :: i                !< component
+      real(wp), intent(in) :: s               !< level below the mean surface [m]
+      real(wp), intent(out) :: ch             !< C [-]
+      real(wp), intent(out) :: sh             !< S [-]
+      real(wp) :: e1, e2, q
+      if (field%deep(i)) then
+         e1 = exp(field%k(i)*s)
+         e2 = exp(-field%k(i)*(s + 2.0_wp*field%depth))
+         q = 1.0_wp/(1.0_wp - exp(-2.0_wp*field%k(i)*field%depth))
+         ch = (e1 + e2)*q
+         sh = (e1 - e2)*q
+      else
+         ch = cosh(field%k(i)*(s + field%depth))*field%rsh(i)
+         sh = sinh(field%k(i)*(s + field%depth))*field%rsh(i)
+      end if
+   end subroutine depth_terms
+end module rodyn_waves
