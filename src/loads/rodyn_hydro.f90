@@ -14,8 +14,8 @@
 !>                acceleration a_w (normal: the pressure on the lateral surface) and the
 !>                added mass on the relative acceleration a_w - a (a steady current has
 !>                a_w = 0)
-!> In a wave (optional argument wk) the water velocity and acceleration of the wave are
-!> added to the current's and the surface is the instantaneous one, z_s + eta: both are
+!> In a wave (env%wave and the argument wk) the water velocity and acceleration of the wave are added
+!> to the current's and the surface is the instantaneous one, z_s + eta: both are
 !> given per point, interpolated from the nodes where they were evaluated once per step
 !> (rodyn_water), and held fixed within the step (no derivative in x).
 !>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
@@ -64,6 +64,7 @@ module rodyn_hydro
       real(wp) :: mu_ax = 0.0_wp         !< axial friction coefficient [-]
       real(wp) :: mu_lat = 0.0_wp        !< lateral friction coefficient [-]
       real(wp) :: v_mob = 0.01_wp        !< mobilisation velocity [m/s]
+      logical :: wave = .false.          !< the step has waves: wk of water_point_load used
    end type water_env_t
 
 contains
@@ -110,6 +111,8 @@ contains
       integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
       real(wp), intent(in), optional :: wk(7)   !< wave velocity [m/s], acceleration
                                                 !< [m/s2] and elevation eta [m]
+      logical :: wave
+      real(wp) :: h
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
       real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, gap, vn, nf, m(3, 3)
       real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
@@ -124,6 +127,8 @@ contains
          kv = 0.0_wp
          ka = 0.0_wp
       end if
+      wave = .false.
+      if (present(wk)) wave = env%wave
       lam = norm2(xp)
       t = xp/lam
       do i = 1, 3
@@ -132,11 +137,9 @@ contains
       end do
       if (iand(parts, part_water) /= 0) then
          ! buoyancy; drag and inertia act on the submerged fraction too
-         if (present(wk)) then
-            call submerged_fraction(env%water%surface + wk(7) - x(3), ws%rb, phi, dphi)
-         else
-            call submerged_fraction(env%water%surface - x(3), ws%rb, phi, dphi)
-         end if
+         h = env%water%surface - x(3)
+         if (wave) h = h + wk(7)
+         call submerged_fraction(h, ws%rb, phi, dphi)
          if (ws%fb > 0.0_wp) then
             fh(3) = ws%fb*phi
             if (want_k) kx(3, 3) = -ws%fb*dphi
@@ -151,7 +154,7 @@ contains
             end if
             if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
                call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
-               if (present(wk)) u = u + wk(1:3)
+               if (wave) u = u + wk(1:3)
                ur = u - v
                s = dot_product(ur, t)
                un = ur - s*t
@@ -181,7 +184,7 @@ contains
                   kxpd = kxpd - (ws%maa - ws%man)*mm3(m, pm)/lam
                end if
             end if
-            if (present(wk)) then
+            if (wave) then
                ! rho A [(1 + C_an) P + C_aa t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
                ta = dot_product(t, wk(4:6))
                fd = fd + (ws%mw + ws%man)*wk(4:6) + (ws%maa - ws%mw - ws%man)*ta*t

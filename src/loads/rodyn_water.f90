@@ -147,6 +147,7 @@ contains
       wl%env%r_current = current_factor(wl%env%water, t)
       wl%env%dynamic = dynamic
       wl%wave_on = wl%field%n > 0 .and. present(x) .and. present(v) .and. present(h)
+      wl%env%wave = wl%wave_on
       if (.not. wl%wave_on) return
       do node = 1, size(wl%wkin, 2)
          call wave_kinematics(wl%field, x(:, node) + h*v(:, node), t, wl%wkin(7, node), &
@@ -171,7 +172,8 @@ contains
       real(wp), intent(out) :: fs(:, :)        !< (3, p+1) seabed forces [N]
       real(wp), intent(out) :: ke(:, :)        !< (3(p+1), 3(p+1)) d(fh + fs)/dx^{n+1} [N/m]
       logical, intent(in) :: want_k            !< form ke
-      real(wp), intent(in), optional :: we(:, :) !< (7, p+1) nodal wave kinematics (wkin)
+      real(wp), intent(in), optional :: we(:, :) !< (7, p+1) nodal wave kinematics (wkin);
+                                                 !< needed, and read, when wl%wave_on
       real(wp) :: wj, nn(max_nen), ds(max_nen), gapn(max_nen), gcon(max_nen), bc(max_nen)
       real(wp) :: lo(max_order + 1), hi(max_order + 1), xi
       integer :: g, a, nen, nparts, k
@@ -263,7 +265,8 @@ contains
       real(wp), intent(inout) :: fs(:, :)      !< (3, nen) seabed forces [N]
       real(wp), intent(inout) :: ke(:, :)      !< (3 nen, 3 nen) tangent [N/m]
       logical, intent(in) :: want_k            !< form the tangent
-      real(wp), intent(in), optional :: we(:, :) !< (7, nen) nodal wave kinematics
+      real(wp), intent(in), optional :: we(:, :) !< (7, nen) nodal wave kinematics (read
+                                                 !< when wl%wave_on)
       real(wp) :: wk(7)
       real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
       real(wp) :: ka(3, 3), kn(3, 3), kd(3, 3), kb(3, 3), c
@@ -279,17 +282,17 @@ contains
          v = v + nn(a)*vf(:, a)
          acc = acc + nn(a)*af(:, a)
       end do
-      if (present(we) .and. iand(parts, part_water) /= 0) then
+      ! (one call: with a second one, for waves, this routine and water_element were no
+      ! longer inlined into assemble_water, and a run without waves took 5 % more
+      ! instructions; wk is read only when env%wave)
+      if (wl%env%wave) then
          wk = 0.0_wp
          do a = 1, nen
             wk = wk + nn(a)*we(:, a)
          end do
-         call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, &
-                               parts, wk)
-      else
-         call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, &
-                               parts)
       end if
+      call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, &
+                            parts, wk)
       do i = 1, nen
          if (iand(parts, part_water) /= 0) fh(:, i) = fh(:, i) + wj*nn(i)*gh
          if (iand(parts, part_seabed) /= 0) fs(:, i) = fs(:, i) + wj*nn(i)*gs

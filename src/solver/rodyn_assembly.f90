@@ -295,7 +295,7 @@ contains
       type(banded_t), intent(inout) :: bm      !< tangent
       logical, intent(in) :: want_k            !< add the tangent
       real(wp) :: fh(3, max_nen), fs(3, max_nen), ke(3*max_nen, 3*max_nen), f(3), k(3, 3)
-      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen)
+      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen), we(7, max_nen)
       integer :: e, p, nen, a, j, node, dofs(3*max_nen), i
       wl%fh = 0.0_wp
       wl%fs = 0.0_wp
@@ -309,15 +309,14 @@ contains
                ae(:, a) = af(:, nodes(a))
             end do
             if (wl%wave_on) then
-               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
-                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
-                                  wl%wkin(:, nodes))
-            else
-               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
-                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k)
+               do a = 1, nen
+                  we(:, a) = wl%wkin(:, nodes(a))
+               end do
             end if
+            call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
+                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                               we(:, 1:nen))
             do a = 1, nen
                fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
