@@ -14,14 +14,14 @@
 !>                acceleration a_w (normal: the pressure on the lateral surface) and the
 !>                added mass on the relative acceleration a_w - a (a steady current has
 !>                a_w = 0)
-!> In a wave (env%wave and the argument wk) the water velocity and acceleration of the wave are added
-!> to the current's and the surface is the instantaneous one, z_s + eta: both are
-!> given per point, interpolated from the nodes where they were evaluated once per step
-!> (rodyn_water), and held fixed within the step (no derivative in x).
 !>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
 !>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
 !>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
 !>                velocity in the seabed plane (dynamics only)
+!> In a wave (env%wave, and the argument wk) the wave's water velocity and acceleration
+!> are added to the current's and the surface is the instantaneous one, z_s + eta: all
+!> given per point, interpolated from the nodes where they were evaluated once per step
+!> (rodyn_water), and held fixed within the step (no derivative in x).
 !> A_b = pi D_b^2/4. Buoyancy and added mass act per unstretched length (the volume of
 !> the line is taken as conserved when it stretches).
 module rodyn_hydro
