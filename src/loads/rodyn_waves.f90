@@ -21,14 +21,30 @@
 !> local one of linear theory at the stretched level (the stretch's own rate is not
 !> differentiated, as is usual). The per-component factors (k cos beta, k sin beta,
 !> A omega, A omega^2, the depth terms) are formed once by waves_build.
+!>
+!> Irregular seas (sea_components): the spectrum S(omega) between omega_min and
+!> omega_max is cut into N bins of equal width d omega; component i takes a frequency
+!> drawn uniformly within bin i, the amplitude A_i = sqrt(2 S(omega_i) d omega) and a
+!> phase drawn uniformly in [0, 2 pi), from the seed by L'Ecuyer's combined generator
+!> (Commun. ACM 31, 1988, 742-751), so that a seed gives the same sea bit for bit on
+!> any machine. The random frequencies are incommensurate: the sea does not repeat
+!> (components on a regular grid of spacing d omega would repeat after 2 pi/d omega).
+!> Spectra (DNV-RP-C205, 2021, section 3.5.5), omega_p = 2 pi/T_p:
+!>   Pierson-Moskowitz  S_PM = 5/16 Hs^2 omega_p^4 omega^-5 exp(-5/4 (omega/omega_p)^-4)
+!>   JONSWAP            S_J = (1 - 0.287 ln gamma) S_PM gamma^exp(-(omega - omega_p)^2
+!>                      /(2 sigma^2 omega_p^2)), sigma = 0.07 (omega <= omega_p), 0.09
+!>   default gamma      5 for T_p/sqrt(Hs) <= 3.6, exp(5.75 - 1.15 T_p/sqrt(Hs)) below 5,
+!>                      1 from 5 (T_p in s, Hs in m)
+!>   table              linear between the points of the table, 0 outside it.
 module rodyn_waves
-   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_kinds, only: wp, i8, pi, two_pi
    use rodyn_model, only: waves_t, stretch_wheeler, stretch_vertical, &
-                          stretch_extrapolation, stretch_none
+                          stretch_extrapolation, stretch_none, sea_airy, sea_jonswap, &
+                          sea_pm, sea_table
    implicit none
    private
    public :: wave_field_t, wave_number, waves_build, wave_elevation, wave_kinematics
-   public :: wave_ramp
+   public :: wave_ramp, wave_spectrum, jonswap_gamma, sea_components
 
    real(wp), parameter :: kd_exp = 20.0_wp !< above k d the depth terms use exponentials
 
@@ -229,4 +245,98 @@ contains
          sh = sinh(field%k(i)*(s + field%depth))*field%rsh(i)
       end if
    end subroutine depth_terms
+
+   !> DNV-RP-C205's default JONSWAP peak enhancement gamma for Hs and T_p (header).
+   pure real(wp) function jonswap_gamma(hs, tp) result(gamma)
+      real(wp), intent(in) :: hs  !< significant wave height [m]
+      real(wp), intent(in) :: tp  !< peak period [s]
+      real(wp) :: r
+      r = tp/sqrt(hs)
+      if (r <= 3.6_wp) then
+         gamma = 5.0_wp
+      else if (r < 5.0_wp) then
+         gamma = exp(5.75_wp - 1.15_wp*r)
+      else
+         gamma = 1.0_wp
+      end if
+   end function jonswap_gamma
+
+   !> Spectral density S(omega) of the sea (module header) [m2 s/rad].
+   pure real(wp) function wave_spectrum(waves, omega) result(s)
+      type(waves_t), intent(in) :: waves  !< the sea (kind, Hs, Tp, gamma or table)
+      real(wp), intent(in) :: omega       !< frequency [rad/s], > 0
+      real(wp) :: wpk, sigma, f
+      integer :: j, n
+      s = 0.0_wp
+      select case (waves%kind)
+      case (sea_jonswap, sea_pm)
+         wpk = two_pi/waves%tp
+         s = 5.0_wp/16.0_wp*waves%hs**2*wpk**4/omega**5*exp(-1.25_wp*(wpk/omega)**4)
+         if (waves%kind == sea_jonswap .and. waves%gamma /= 1.0_wp) then
+            sigma = 0.09_wp
+            if (omega <= wpk) sigma = 0.07_wp
+            s = s*(1.0_wp - 0.287_wp*log(waves%gamma)) &
+                *waves%gamma**exp(-0.5_wp*((omega - wpk)/(sigma*wpk))**2)
+         end if
+      case (sea_table)
+         n = size(waves%tab_omega)
+         if (omega < waves%tab_omega(1) .or. omega > waves%tab_omega(n)) return
+         do j = 1, n - 1
+            if (omega <= waves%tab_omega(j + 1)) exit
+         end do
+         j = min(j, n - 1)
+         f = (omega - waves%tab_omega(j))/(waves%tab_omega(j + 1) - waves%tab_omega(j))
+         s = waves%tab_s(j) + f*(waves%tab_s(j + 1) - waves%tab_s(j))
+      end select
+   end function wave_spectrum
+
+   !> The components of an irregular sea (module header): height H_i = 2 A_i, period,
+   !> phase and the sea's heading, into waves%height, period, phase, heading (n =
+   !> waves%components). A regular wave (sea_airy) is left as it is.
+   pure subroutine sea_components(waves)
+      type(waves_t), intent(inout) :: waves !< the sea; its components set
+      integer(i8) :: s1, s2
+      real(wp) :: dw, om, beta, u
+      integer :: i, n
+      if (waves%kind == sea_airy) return
+      n = waves%components
+      beta = 0.0_wp
+      if (allocated(waves%heading)) then
+         if (size(waves%heading) > 0) beta = waves%heading(1)
+      end if
+      ! the generator's two states from the seed (L'Ecuyer's ranges 1..m - 1)
+      s1 = 1_i8 + modulo(int(waves%seed, i8), 2147483562_i8)
+      s2 = 1_i8 + modulo(int(waves%seed, i8)*7919_i8 + 12345_i8, 2147483398_i8)
+      dw = (waves%omega_max - waves%omega_min)/real(n, wp)
+      if (allocated(waves%height)) deallocate (waves%height)
+      if (allocated(waves%period)) deallocate (waves%period)
+      if (allocated(waves%phase)) deallocate (waves%phase)
+      if (allocated(waves%heading)) deallocate (waves%heading)
+      allocate (waves%height(n), waves%period(n), waves%phase(n), waves%heading(n))
+      do i = 1, n
+         call lecuyer_next(s1, s2, u)
+         om = waves%omega_min + dw*(real(i - 1, wp) + u)
+         waves%period(i) = two_pi/om
+         waves%height(i) = 2.0_wp*sqrt(2.0_wp*wave_spectrum(waves, om)*dw)
+         call lecuyer_next(s1, s2, u)
+         waves%phase(i) = two_pi*u
+         waves%heading(i) = beta
+      end do
+   end subroutine sea_components
+
+   !> Next number u in (0, 1) of L'Ecuyer's combined generator (1988): two
+   !> multiplicative congruential generators, s1 = 40014 s1 mod 2147483563,
+   !> s2 = 40692 s2 mod 2147483399, z = (s1 - s2) mod 2147483562; products below 2^47,
+   !> exact in 64-bit integers.
+   pure subroutine lecuyer_next(s1, s2, u)
+      integer(i8), intent(inout) :: s1 !< state of the first generator
+      integer(i8), intent(inout) :: s2 !< state of the second generator
+      real(wp), intent(out) :: u       !< the number [-]
+      integer(i8) :: z
+      s1 = modulo(40014_i8*s1, 2147483563_i8)
+      s2 = modulo(40692_i8*s2, 2147483399_i8)
+      z = modulo(s1 - s2, 2147483562_i8)
+      if (z == 0_i8) z = 2147483562_i8
+      u = real(z, wp)/2147483563.0_wp
+   end subroutine lecuyer_next
 end module rodyn_waves
