@@ -284,8 +284,8 @@ contains
       end do
       ! (one call: with a second one, for waves, this routine and water_element were no
       ! longer inlined into assemble_water, and a run without waves took 5 % more
-      ! instructions; wk is read only when env%wave)
-      if (wl%env%wave) then
+      ! instructions; wk is read only when env%wave, and only by the water's part)
+      if (wl%env%wave .and. iand(parts, part_water) /= 0) then
          wk = 0.0_wp
          do a = 1, nen
             wk = wk + nn(a)*we(:, a)
