@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""An irregular sea is reproducible: run a deck with *WAVE, TYPE=JONSWAP (and a parameter
-SEED) twice, and once with --set SEED=<another>; the two runs with the same seed must
-write the same dynamic results byte for byte (dynamic_nodes.csv, dynamic_ends.csv,
-dynamic_log.csv), the run with another seed other ones.
+"""An irregular sea is reproducible: run a deck with *WAVE, TYPE=JONSWAP (and parameters
+SEED and T_END, run for 4 s here) twice, and once with --set SEED=<another>; the two
+runs with the same seed must write the same dynamic results byte for byte
+(dynamic_nodes.csv, dynamic_ends.csv, dynamic_log.csv), the run with another seed
+other ones.
 
 Usage: check_same_sea.py RODYN DECK OUT_DIR. Exit 0 on success."""
 import filecmp
@@ -17,8 +18,8 @@ FILES = ("dynamic_nodes.csv", "dynamic_ends.csv", "dynamic_log.csv")
 def run(rodyn, deck, out, *extra):
     """Run rodyn into a fresh folder out; stop the check if it fails."""
     shutil.rmtree(out, ignore_errors=True)
-    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet", *extra],
-                          capture_output=True, text=True)
+    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet", "--set", "T_END=4",
+                           *extra], capture_output=True, text=True)
     if proc.returncode != 0:
         sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
 
