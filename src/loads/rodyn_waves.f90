@@ -66,6 +66,7 @@ module rodyn_waves
       real(wp), allocatable :: aw(:)     !< (n) A omega [m/s]
       real(wp), allocatable :: aw2(:)    !< (n) A omega^2 [m/s2]
       real(wp), allocatable :: rsh(:)    !< (n) 1/sinh(k d) (k d < kd_exp) [-]
+      real(wp), allocatable :: qd(:)     !< (n) 1/(1 - e^{-2 k d}) (k d >= kd_exp) [-]
       logical, allocatable :: deep(:)    !< (n) k d >= kd_exp: exponential forms
    end type wave_field_t
 
@@ -112,7 +113,7 @@ contains
       field%ramp = waves%ramp
       allocate (field%amp(n), field%omega(n), field%k(n), field%kx(n), field%ky(n), &
                 field%cb(n), field%sb(n), field%phase(n), field%aw(n), field%aw2(n), &
-                field%rsh(n), field%deep(n))
+                field%rsh(n), field%qd(n), field%deep(n))
       do i = 1, n
          field%amp(i) = 0.5_wp*waves%height(i)
          field%omega(i) = two_pi/waves%period(i)
@@ -127,6 +128,7 @@ contains
          field%deep(i) = field%k(i)*depth >= kd_exp
          field%rsh(i) = 0.0_wp
          if (.not. field%deep(i)) field%rsh(i) = 1.0_wp/sinh(field%k(i)*depth)
+         field%qd(i) = 1.0_wp/(1.0_wp - exp(-2.0_wp*field%k(i)*depth))
       end do
    end subroutine waves_build
 
@@ -176,15 +178,24 @@ contains
       real(wp), intent(out) :: eta            !< surface elevation above z_s [m]
       real(wp), intent(out) :: u(3)           !< water velocity [m/s]
       real(wp), intent(out) :: a(3)           !< water acceleration [m/s2]
-      real(wp) :: r, dr, zp, s, ch, sh, c, sn, uh, ah, w, az, d, ext
+      real(wp) :: r, dr, zp, s, ch, sh, c, uh, ah, w, az, d, ext, th
+      real(wp) :: cs(field%n), sn(field%n)
       integer :: i
       u = 0.0_wp
       a = 0.0_wp
-      eta = wave_elevation(field, x(1), x(2), t)
+      ! the phases once: their cosines make eta, and serve the kinematics below
+      eta = 0.0_wp
+      do i = 1, field%n
+         th = field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i)
+         cs(i) = cos(th)
+         sn(i) = sin(th)
+         eta = eta + field%amp(i)*cs(i)
+      end do
+      call wave_ramp(field%ramp, t, r, dr)
+      eta = r*eta
       if (field%n == 0) return
       zp = x(3) - field%surface
       if (zp > eta) return
-      call wave_ramp(field%ramp, t, r, dr)
       if (r == 0.0_wp) return
       d = field%depth
       ext = 0.0_wp
@@ -207,12 +218,10 @@ contains
             ch = ch + ext*field%k(i)*sh
             sh = sh + ext*field%k(i)*c
          end if
-         c = cos(field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i))
-         sn = sin(field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i))
-         uh = field%aw(i)*ch*c
-         w = field%aw(i)*sh*sn
-         ah = field%aw2(i)*ch*sn
-         az = -field%aw2(i)*sh*c
+         uh = field%aw(i)*ch*cs(i)
+         w = field%aw(i)*sh*sn(i)
+         ah = field%aw2(i)*ch*sn(i)
+         az = -field%aw2(i)*sh*cs(i)
          u(1) = u(1) + uh*field%cb(i)
          u(2) = u(2) + uh*field%sb(i)
          u(3) = u(3) + w
@@ -224,25 +233,27 @@ contains
       u = r*u
    end subroutine wave_kinematics
 
-   !> C = cosh(k (s + d))/sinh(k d) and S = sinh(k (s + d))/sinh(k d) of component i;
-   !> for k d >= kd_exp in exponentials, (e^{k s} +- e^{-k (s + 2 d)})/(1 - e^{-2 k d}),
-   !> which neither overflows nor loses digits in deep water.
+   !> C = cosh(k (s + d))/sinh(k d) and S = sinh(k (s + d))/sinh(k d) of component i,
+   !> from one exponential E = e^{k (s + d)}: (E +- 1/E)/(2 sinh(k d)); for k d >= kd_exp
+   !> (e^{k s} +- e^{-k (s + 2 d)})/(1 - e^{-2 k d}), which neither overflows nor loses
+   !> digits in deep water.
    pure subroutine depth_terms(field, i, s, ch, sh)
       type(wave_field_t), intent(in) :: field !< the sea
       integer, intent(in) :: i                !< component
       real(wp), intent(in) :: s               !< level below the mean surface [m]
       real(wp), intent(out) :: ch             !< C [-]
       real(wp), intent(out) :: sh             !< S [-]
-      real(wp) :: e1, e2, q
+      real(wp) :: e1, e2
       if (field%deep(i)) then
          e1 = exp(field%k(i)*s)
          e2 = exp(-field%k(i)*(s + 2.0_wp*field%depth))
-         q = 1.0_wp/(1.0_wp - exp(-2.0_wp*field%k(i)*field%depth))
-         ch = (e1 + e2)*q
-         sh = (e1 - e2)*q
+         ch = (e1 + e2)*field%qd(i)
+         sh = (e1 - e2)*field%qd(i)
       else
-         ch = cosh(field%k(i)*(s + field%depth))*field%rsh(i)
-         sh = sinh(field%k(i)*(s + field%depth))*field%rsh(i)
+         e1 = exp(field%k(i)*(s + field%depth))
+         e2 = 1.0_wp/e1
+         ch = 0.5_wp*(e1 + e2)*field%rsh(i)
+         sh = 0.5_wp*(e1 - e2)*field%rsh(i)
       end if
    end subroutine depth_terms
 
