@@ -9,6 +9,8 @@ module rodyn_model
    public :: output_options_t, model_t, parameter_value_t
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
    public :: water_t, seabed_t, attachment_t, rho_water_default
+   public :: waves_t, stretch_wheeler, stretch_vertical, stretch_extrapolation, stretch_none
+   public :: stretch_names, sea_airy, sea_jonswap, sea_pm, sea_table, sea_names
    public :: element_rod, element_cable, element_names
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table, motion_vessel
@@ -151,6 +153,49 @@ module rodyn_model
       real(wp) :: mu_lateral = 0.0_wp  !< lateral friction coefficient [-]
       real(wp) :: v_mob = 0.01_wp      !< friction mobilisation velocity [m/s]
    end type seabed_t
+
+   ! Kinematics above the mean surface (*WAVE, STRETCHING=); docs/waves.md
+   integer, parameter :: stretch_wheeler = 1       !< Wheeler: z mapped onto [-d, 0]
+   integer, parameter :: stretch_vertical = 2      !< the values at z = 0 carried up
+   integer, parameter :: stretch_extrapolation = 3 !< linear extrapolation from z = 0
+   integer, parameter :: stretch_none = 4          !< linear theory's profile carried up
+   character(len=13), parameter :: stretch_names(4) = [character(len=13) :: 'WHEELER', &
+                                                       'VERTICAL', 'EXTRAPOLATION', 'NONE']
+
+   ! Kinds of sea (*WAVE, TYPE=); docs/waves.md
+   integer, parameter :: sea_airy = 1      !< one regular wave
+   integer, parameter :: sea_jonswap = 2   !< JONSWAP spectrum (Hs, Tp, gamma)
+   integer, parameter :: sea_pm = 3        !< Pierson-Moskowitz spectrum (Hs, Tp)
+   integer, parameter :: sea_table = 4     !< a spectrum given as a table
+   character(len=8), parameter :: sea_names(4) = [character(len=8) :: 'AIRY', 'JONSWAP', &
+                                                  'PM', 'SPECTRUM']
+
+   !> The sea state (*WAVE): a sum of Airy components, the elevation above the still
+   !> water level eta = sum_i (H_i/2) cos(k_i (x cos beta_i + y sin beta_i) - omega_i t
+   !> + phi_i), k_i from the finite-depth dispersion relation at the water depth; all
+   !> multiplied by the ramp-in (1 - cos(pi t/T))/2 in dynamics, absent in statics. An
+   !> irregular sea is the spectrum's components drawn from the seed (rodyn_waves,
+   !> sea_components) into height, period and phase when the deck is read.
+   type :: waves_t
+      logical :: present = .false.       !< the deck has *WAVE
+      integer :: kind = sea_airy         !< sea_* constant
+      real(wp) :: hs = 0.0_wp            !< significant wave height [m] (spectra)
+      real(wp) :: tp = 0.0_wp            !< peak period [s] (JONSWAP, PM)
+      real(wp) :: gamma = 0.0_wp         !< JONSWAP peak enhancement [-]
+      integer :: components = 200        !< number of components (spectra)
+      integer :: seed = 1                !< seed of the frequencies and phases
+      real(wp) :: omega_min = 0.0_wp     !< lowest frequency of the components [rad/s]
+      real(wp) :: omega_max = 0.0_wp     !< highest [rad/s]
+      real(wp), allocatable :: tab_omega(:) !< (nt) SPECTRUM table: frequencies [rad/s]
+      real(wp), allocatable :: tab_s(:)     !< (nt) spectral density [m2 s/rad]
+      integer :: stretching = stretch_wheeler !< stretch_* constant
+      real(wp) :: ramp = 0.0_wp          !< ramp-in duration [s]; 0: none
+      real(wp), allocatable :: height(:)  !< (nw) wave height H = 2 x amplitude [m]
+      real(wp), allocatable :: period(:)  !< (nw) period [s]
+      real(wp), allocatable :: heading(:) !< (nw) direction of travel, from +x towards +y
+                                          !< [rad] (deg in the deck)
+      real(wp), allocatable :: phase(:)   !< (nw) phase phi [rad] (deg in the deck)
+   end type waves_t
 
    !> A node constraint (*BOUNDARY).
    type :: constraint_t
@@ -298,6 +343,7 @@ module rodyn_model
       type(attachment_t), allocatable :: attachments(:)
       type(water_t) :: water
       type(seabed_t) :: seabed
+      type(waves_t) :: waves
       type(static_options_t) :: static
       type(dynamic_options_t) :: dynamic
       type(output_options_t) :: output

@@ -196,7 +196,8 @@ contains
       ! external forces at the force point: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
-      if (prob%water%active) call water_set_time(prob%water, tm, .true.)
+      if (prob%water%active) call water_set_time(prob%water, tm, .true., prob%s0%x, &
+                                                 prob%s0%v, prob%wf*dt)
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)

@@ -40,6 +40,7 @@ module rodyn_deck
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
+   use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings
    implicit none
    private
    public :: deck_read
@@ -126,7 +127,7 @@ contains
       end do
       call validate_model(deck, pend, model, err)
       if (present(warnings) .and. .not. has_error(err)) &
-         warnings = warnings//dynamic_warnings(deck, model)
+         warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)
    end subroutine deck_read
 
    !> Number of cards with the given keyword.
@@ -203,6 +204,8 @@ contains
             call read_attachment_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
+         case ('WAVE')
+            call read_wave_card(deck, ic, model, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -722,6 +725,8 @@ contains
       call validate_vessels(deck, pend, model, err)
       if (has_error(err)) return
       call validate_water(deck, pend, model, err)
+      if (has_error(err)) return
+      call validate_waves(deck, model, err)
       if (has_error(err)) return
 
       call resolve_section_defaults(model)

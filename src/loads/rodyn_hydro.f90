@@ -9,13 +9,19 @@
 !>   drag         f_d = 1/2 rho_w C_dn D_d lambda |u_n| u_n + 1/2 rho_w C_da pi D_d lambda
 !>                |u_t| u_t,   u_t = (u_r.t) t, u_n = u_r - u_t  (drag on the stretched
 !>                length; the axial coefficient acts on the surface, pi D_d, as in MoorDyn)
-!>   inertia      f_a = -rho_w A_b [C_an P + C_aa t t] a,   P = I - t t  (added mass; the
-!>                Froude-Krylov and added-mass forces of the water's own acceleration a_w
-!>                come with waves, issue 13: a steady current has a_w = 0)
+!>   inertia      f_a = rho_w A_b [(1 + C_an) P + C_aa t t] a_w - rho_w A_b [C_an P
+!>                + C_aa t t] a,   P = I - t t: the Froude-Krylov force of the water's
+!>                acceleration a_w (normal: the pressure on the lateral surface) and the
+!>                added mass on the relative acceleration a_w - a (a steady current has
+!>                a_w = 0)
 !>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
 !>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
 !>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
 !>                velocity in the seabed plane (dynamics only)
+!> In a wave (env%wave, and the argument wk) the wave's water velocity and acceleration
+!> are added to the current's and the surface is the instantaneous one, z_s + eta: all
+!> given per point, interpolated from the nodes where they were evaluated once per step
+!> (rodyn_water), and held fixed within the step (no derivative in x).
 !> A_b = pi D_b^2/4. Buoyancy and added mass act per unstretched length (the volume of
 !> the line is taken as conserved when it stretches).
 module rodyn_hydro
@@ -40,6 +46,7 @@ module rodyn_hydro
       real(wp) :: ct = 0.0_wp   !< 1/2 rho_w C_da pi D_d [kg/m2]
       real(wp) :: man = 0.0_wp  !< rho_w A_b C_an [kg/m]
       real(wp) :: maa = 0.0_wp  !< rho_w A_b C_aa [kg/m]
+      real(wp) :: mw = 0.0_wp   !< rho_w A_b [kg/m]
       real(wp) :: dc = 0.0_wp   !< contact width D_b [m]
    end type water_section_t
 
@@ -57,6 +64,7 @@ module rodyn_hydro
       real(wp) :: mu_ax = 0.0_wp         !< axial friction coefficient [-]
       real(wp) :: mu_lat = 0.0_wp        !< lateral friction coefficient [-]
       real(wp) :: v_mob = 0.01_wp        !< mobilisation velocity [m/s]
+      logical :: wave = .false.          !< the step has waves: wk of water_point_load used
    end type water_env_t
 
 contains
@@ -86,7 +94,7 @@ contains
    !> the water, fs from the seabed; with want_k their derivatives with respect to the
    !> position x, the tangent x', the velocity v and the acceleration a of the line.
    pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k, &
-                                    parts)
+                                    parts, wk)
       type(water_env_t), intent(in) :: env      !< environment
       type(water_section_t), intent(in) :: ws   !< section constants
       real(wp), intent(in) :: x(3)              !< position [m]
@@ -101,6 +109,10 @@ contains
       real(wp), intent(out) :: ka(3, 3)         !< d(fh + fs)/da [kg/m]
       logical, intent(in) :: want_k             !< form the derivatives
       integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
+      real(wp), intent(in), optional :: wk(7)   !< wave velocity [m/s], acceleration
+                                                !< [m/s2] and elevation eta [m]
+      logical :: wave
+      real(wp) :: h
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
       real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, gap, vn, nf, m(3, 3)
       real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
@@ -115,6 +127,8 @@ contains
          kv = 0.0_wp
          ka = 0.0_wp
       end if
+      wave = .false.
+      if (present(wk)) wave = env%wave
       lam = norm2(xp)
       t = xp/lam
       do i = 1, 3
@@ -123,7 +137,9 @@ contains
       end do
       if (iand(parts, part_water) /= 0) then
          ! buoyancy; drag and inertia act on the submerged fraction too
-         call submerged_fraction(env%water%surface - x(3), ws%rb, phi, dphi)
+         h = env%water%surface - x(3)
+         if (wave) h = h + wk(7)
+         call submerged_fraction(h, ws%rb, phi, dphi)
          if (ws%fb > 0.0_wp) then
             fh(3) = ws%fb*phi
             if (want_k) kx(3, 3) = -ws%fb*dphi
@@ -138,6 +154,7 @@ contains
             end if
             if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
                call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
+               if (wave) u = u + wk(1:3)
                ur = u - v
                s = dot_product(ur, t)
                un = ur - s*t
@@ -165,6 +182,15 @@ contains
                   ta = dot_product(t, acc)
                   m = outer(t, acc) + ta*eye     ! (a local: no heap temporary)
                   kxpd = kxpd - (ws%maa - ws%man)*mm3(m, pm)/lam
+               end if
+            end if
+            if (wave) then
+               ! rho A [(1 + C_an) P + C_aa t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
+               ta = dot_product(t, wk(4:6))
+               fd = fd + (ws%mw + ws%man)*wk(4:6) + (ws%maa - ws%mw - ws%man)*ta*t
+               if (want_k) then
+                  m = outer(t, wk(4:6)) + ta*eye
+                  kxpd = kxpd + (ws%maa - ws%mw - ws%man)*mm3(m, pm)/lam
                end if
             end if
             fh = fh + phi*fd

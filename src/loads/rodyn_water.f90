@@ -15,6 +15,11 @@
 !> on the mooring leg with 40 quadratic elements, fairlead tension 1.0e-4 off against
 !> 1.1e-5). N vanishes at the roots, so their motion adds nothing to the tangent.
 !> Only translational unknowns are loaded. A scene without *WATER builds nothing here.
+!> Waves (rodyn_waves, docs/waves.md): at the start of each time step the wave's
+!> elevation, velocity and acceleration are evaluated once per node, at the node's
+!> predicted force point x^n + w dt v^n and the force time (water_set_time), and
+!> interpolated with the shape functions to the load points; within the step they are
+!> held fixed (the tangent has no derivative of them). Statics has no waves.
 module rodyn_water
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: model_t
@@ -23,6 +28,7 @@ module rodyn_water
    use rodyn_environment, only: seabed_normal, seabed_z, fluid_kinematics, current_factor
    use rodyn_hydro, only: water_section_t, water_env_t, water_point_load, submerged_fraction, &
                           part_water, part_seabed
+   use rodyn_waves, only: wave_field_t, waves_build, wave_kinematics
    implicit none
    private
    public :: water_loads_t, water_loads_build, water_element, water_attachment
@@ -48,6 +54,11 @@ module rodyn_water
       integer, allocatable :: att_node(:)          !< (na) node of each attachment
       real(wp), allocatable :: att_volume(:)       !< (na) displaced volume [m3]
       real(wp), allocatable :: att_cda(:)          !< (na) drag coefficient x area [m2]
+      real(wp), allocatable :: att_ca(:)           !< (na) added-mass coefficient [-]
+      type(wave_field_t) :: field                  !< the waves (field%n = 0: none)
+      logical :: wave_on = .false.                 !< wkin holds this step's kinematics
+      real(wp), allocatable :: wkin(:, :)          !< (7, nn) per node: wave velocity
+                                                   !< [m/s], acceleration [m/s2], eta [m]
       real(wp), allocatable :: fh(:, :)            !< (3, nn) water force on the nodes [N]
       real(wp), allocatable :: fs(:, :)            !< (3, nn) seabed force on the nodes [N]
    end type water_loads_t
@@ -89,6 +100,7 @@ contains
             ws%ct = 0.5_wp*rho*s%cda*pi*dd
             ws%man = rho*ab*s%can
             ws%maa = rho*ab*s%caa
+            ws%mw = rho*ab
             ws%dc = max(s%db, 0.0_wp)
          end associate
       end do
@@ -103,11 +115,17 @@ contains
             call shape_lagrange(p, wl%xs4(g), wl%ns4(1:p + 1, g, p), wl%dns4(1:p + 1, g, p))
          end do
       end do
-      allocate (wl%att_node(0), wl%att_volume(0), wl%att_cda(0))
+      allocate (wl%att_node(0), wl%att_volume(0), wl%att_cda(0), wl%att_ca(0))
       if (allocated(model%attachments)) then
          wl%att_node = mesh%att_node
          wl%att_volume = model%attachments%volume
          wl%att_cda = model%attachments%cda_area
+         wl%att_ca = model%attachments%ca
+      end if
+      call waves_build(model%waves, model%water%depth, model%water%surface, gmag, wl%field)
+      if (wl%field%n > 0) then
+         allocate (wl%wkin(7, mesh%n_nodes))
+         wl%wkin = 0.0_wp
       end if
       allocate (wl%fh(3, mesh%n_nodes), wl%fs(3, mesh%n_nodes))
       wl%fh = 0.0_wp
@@ -115,18 +133,31 @@ contains
    end subroutine water_loads_build
 
    !> The state of the water at the force time of a step: current ramp; seabed damping
-   !> and friction on in dynamics.
-   subroutine water_set_time(wl, t, dynamic)
-      type(water_loads_t), intent(inout) :: wl !< loads
-      real(wp), intent(in) :: t                !< force time [s]
-      logical, intent(in) :: dynamic           !< a time step (not statics)
+   !> and friction on in dynamics; with waves and the nodes' x and v at the start of the
+   !> step, the wave kinematics at each node's predicted force point x + h v (module
+   !> header), once per node and step.
+   subroutine water_set_time(wl, t, dynamic, x, v, h)
+      type(water_loads_t), intent(inout) :: wl   !< loads
+      real(wp), intent(in) :: t                  !< force time [s]
+      logical, intent(in) :: dynamic             !< a time step (not statics)
+      real(wp), intent(in), optional :: x(:, :)  !< (3, nn) positions at t_n [m]
+      real(wp), intent(in), optional :: v(:, :)  !< (3, nn) velocities at t_n [m/s]
+      real(wp), intent(in), optional :: h        !< time from t_n to the force point [s]
+      integer :: node
       wl%env%r_current = current_factor(wl%env%water, t)
       wl%env%dynamic = dynamic
+      wl%wave_on = wl%field%n > 0 .and. present(x) .and. present(v) .and. present(h)
+      wl%env%wave = wl%wave_on
+      if (.not. wl%wave_on) return
+      do node = 1, size(wl%wkin, 2)
+         call wave_kinematics(wl%field, x(:, node) + h*v(:, node), t, wl%wkin(7, node), &
+                              wl%wkin(1:3, node), wl%wkin(4:6, node))
+      end do
    end subroutine water_set_time
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
    !> tangent of their sum with respect to x^{n+1} (module header).
-   pure subroutine water_element(wl, ws, p, le, xf, vf, af, cx, cv, ca, fh, fs, ke, want_k)
+   pure subroutine water_element(wl, ws, p, le, xf, vf, af, cx, cv, ca, fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
       integer, intent(in) :: p                 !< element order
@@ -141,6 +172,8 @@ contains
       real(wp), intent(out) :: fs(:, :)        !< (3, p+1) seabed forces [N]
       real(wp), intent(out) :: ke(:, :)        !< (3(p+1), 3(p+1)) d(fh + fs)/dx^{n+1} [N/m]
       logical, intent(in) :: want_k            !< form ke
+      real(wp), intent(in), optional :: we(:, :) !< (7, p+1) nodal wave kinematics (wkin);
+                                                 !< needed, and read, when wl%wave_on
       real(wp) :: wj, nn(max_nen), ds(max_nen), gapn(max_nen), gcon(max_nen), bc(max_nen)
       real(wp) :: lo(max_order + 1), hi(max_order + 1), xi
       integer :: g, a, nen, nparts, k
@@ -184,7 +217,7 @@ contains
             ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
             wj = wl%w(g, p)*0.5_wp*le
             call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, &
-                                 ior(part_water, part_seabed), fh, fs, ke, want_k)
+                                 ior(part_water, part_seabed), fh, fs, ke, want_k, we)
          end do
          return
       end if
@@ -193,7 +226,7 @@ contains
          ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
          wj = wl%w(g, p)*0.5_wp*le
          call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, part_water, &
-                              fh, fs, ke, want_k)
+                              fh, fs, ke, want_k, we)
       end do
       do k = 1, nparts
          do g = 1, 4
@@ -216,7 +249,7 @@ contains
    !> Add the load at one point (shape functions nn, their S-derivatives ds, weight wj)
    !> to the element vectors and matrix (module header).
    pure subroutine water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, parts, &
-                                   fh, fs, ke, want_k)
+                                   fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
       integer, intent(in) :: nen               !< nodes of the element
@@ -232,6 +265,9 @@ contains
       real(wp), intent(inout) :: fs(:, :)      !< (3, nen) seabed forces [N]
       real(wp), intent(inout) :: ke(:, :)      !< (3 nen, 3 nen) tangent [N/m]
       logical, intent(in) :: want_k            !< form the tangent
+      real(wp), intent(in), optional :: we(:, :) !< (7, nen) nodal wave kinematics (read
+                                                 !< when wl%wave_on)
+      real(wp) :: wk(7)
       real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
       real(wp) :: ka(3, 3), kn(3, 3), kd(3, 3), kb(3, 3), c
       integer :: i, j, a
@@ -246,7 +282,17 @@ contains
          v = v + nn(a)*vf(:, a)
          acc = acc + nn(a)*af(:, a)
       end do
-      call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, parts)
+      ! (one call: with a second one, for waves, this routine and water_element were no
+      ! longer inlined into assemble_water, and a run without waves took 5 % more
+      ! instructions; wk is read only when env%wave, and only by the water's part)
+      if (wl%env%wave .and. iand(parts, part_water) /= 0) then
+         wk = 0.0_wp
+         do a = 1, nen
+            wk = wk + nn(a)*we(:, a)
+         end do
+      end if
+      call water_point_load(wl%env, ws, x, xp, v, acc, gh, gs, kx, kxp, kv, ka, want_k, &
+                            parts, wk)
       do i = 1, nen
          if (iand(parts, part_water) /= 0) fh(:, i) = fh(:, i) + wj*nn(i)*gh
          if (iand(parts, part_seabed) /= 0) fs(:, i) = fs(:, i) + wj*nn(i)*gs
@@ -356,8 +402,10 @@ contains
    !> Water force on a point attachment (*ATTACHMENT): buoyancy rho_w g V of the
    !> submerged fraction of a sphere of that volume, drag 1/2 rho_w Cd A |u_r| u_r; and
    !> with want_k its derivative with respect to x^{n+1} (c_x, c_v as in water_element).
-   !> Its weight is in the gravity loads and its added mass in the inertia.
-   pure subroutine water_attachment(wl, volume, cda_area, x, v, cx, cv, f, k, want_k)
+   !> Its weight is in the gravity loads and its added mass in the inertia. In a wave
+   !> (we: the node's wkin) the wave's velocity is added to the current's, the surface
+   !> is z_s + eta, and the water's acceleration a_w adds (1 + C_a) rho_w V a_w.
+   pure subroutine water_attachment(wl, volume, cda_area, x, v, cx, cv, f, k, want_k, we, ca)
       type(water_loads_t), intent(in) :: wl !< loads
       real(wp), intent(in) :: volume        !< displaced volume [m3]
       real(wp), intent(in) :: cda_area      !< Cd A [m2]
@@ -368,18 +416,29 @@ contains
       real(wp), intent(out) :: f(3)         !< force [N]
       real(wp), intent(out) :: k(3, 3)      !< df/dx^{n+1} [N/m]
       logical, intent(in) :: want_k         !< form k
+      real(wp), intent(in), optional :: we(7) !< the node's wave kinematics (wkin)
+      real(wp), intent(in), optional :: ca    !< added-mass coefficient, with we [-]
       real(wp) :: rho, gmag, r, phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), urm, g(3, 3)
       integer :: i
       rho = wl%env%water%density
       gmag = wl%env%gmag
       r = 0.5_wp*(6.0_wp*volume/pi)**(1.0_wp/3.0_wp)
-      call submerged_fraction(wl%env%water%surface - x(3), r, phi, dphi)
+      if (present(we)) then
+         call submerged_fraction(wl%env%water%surface + we(7) - x(3), r, phi, dphi)
+      else
+         call submerged_fraction(wl%env%water%surface - x(3), r, phi, dphi)
+      end if
       f = 0.0_wp
       k = 0.0_wp
       f(3) = rho*gmag*volume*phi
       if (want_k) k(3, 3) = -cx*rho*gmag*volume*dphi
+      if (present(we) .and. present(ca)) then
+         f = f + phi*(1.0_wp + ca)*rho*volume*we(4:6)
+         if (want_k) k(:, 3) = k(:, 3) - cx*dphi*(1.0_wp + ca)*rho*volume*we(4:6)
+      end if
       if (cda_area <= 0.0_wp .or. phi <= 0.0_wp) return
       call fluid_kinematics(wl%env%water, wl%env%r_current, x, u, dudx, aw)
+      if (present(we)) u = u + we(1:3)
       ur = u - v
       urm = norm2(ur)
       f = f + phi*0.5_wp*rho*cda_area*urm*ur

@@ -295,7 +295,7 @@ contains
       type(banded_t), intent(inout) :: bm      !< tangent
       logical, intent(in) :: want_k            !< add the tangent
       real(wp) :: fh(3, max_nen), fs(3, max_nen), ke(3*max_nen, 3*max_nen), f(3), k(3, 3)
-      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen)
+      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen), we(7, max_nen)
       integer :: e, p, nen, a, j, node, dofs(3*max_nen), i
       wl%fh = 0.0_wp
       wl%fs = 0.0_wp
@@ -308,9 +308,15 @@ contains
                ve(:, a) = vf(:, nodes(a))
                ae(:, a) = af(:, nodes(a))
             end do
+            if (wl%wave_on) then
+               do a = 1, nen
+                  we(:, a) = wl%wkin(:, nodes(a))
+               end do
+            end if
             call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
                                xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k)
+                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                               we(:, 1:nen))
             do a = 1, nen
                fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
@@ -324,8 +330,14 @@ contains
       end do
       do i = 1, size(wl%att_node)
          node = wl%att_node(i)
-         call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), vf(:, node), &
-                               cx, cv, f, k, want_k)
+         if (wl%wave_on) then
+            call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
+                                  vf(:, node), cx, cv, f, k, want_k, wl%wkin(:, node), &
+                                  wl%att_ca(i))
+         else
+            call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
+                                  vf(:, node), cx, cv, f, k, want_k)
+         end if
          fint(1:3, node) = fint(1:3, node) - f
          wl%fh(:, node) = wl%fh(:, node) + f
          if (want_k) call banded_add(bm, [(sup%first(node) + j - 1, j=1, 3)], -k)

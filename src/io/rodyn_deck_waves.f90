@@ -1,0 +1,277 @@
+!> Deck reader, the waves: *WAVE (read_wave_card), its whole-deck check (validate_waves:
+!> the deck has *WATER, whose depth the dispersion relation uses) and its warning
+!> (wave_warnings: a wave steeper than the breaking limit). docs/deck.md describes the
+!> keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to these readers.
+module rodyn_deck_waves
+   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
+                          sea_jonswap, sea_table
+   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
+                               card_get_real, card_get_int, card_get_choice, &
+                               card_check_data, card_data_table, card_data_error, &
+                               card_find_param, real_str, int_str, param_len
+   use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
+   use rodyn_waves, only: wave_number, jonswap_gamma, sea_components
+   implicit none
+   private
+   public :: read_wave_card, validate_waves, wave_warnings
+
+   real(wp), parameter :: deg = pi/180.0_wp        !< one degree [rad]
+   real(wp), parameter :: steep_deep = 1.0_wp/7.0_wp !< breaking limit of H/L [-]
+   real(wp), parameter :: steep_depth = 0.78_wp    !< breaking limit of H/d [-]
+   real(wp), parameter :: max_gamma = 20.0_wp      !< largest JONSWAP GAMMA [-]
+   integer, parameter :: max_components = 100000   !< most components of a sea
+   character(len=1), parameter :: lf = achar(10)
+
+contains
+
+   !> *WAVE [, TYPE=AIRY], HEIGHT=, PERIOD= [, PHASE=]: a regular Airy wave of height H
+   !> [m] and period T [s], eta = H/2 cos(k (x cos beta + y sin beta) - 2 pi t/T +
+   !> PHASE) [deg]. *WAVE, TYPE=JONSWAP|PM, HS=, TP= [, GAMMA=] or TYPE=SPECTRUM with data
+   !> lines omega [rad/s], S [m2 s/rad]: an irregular sea of COMPONENTS (200) components
+   !> between OMEGA MIN and OMEGA MAX [rad/s] (0.5 and 4 omega_p; the table's ends),
+   !> drawn from SEED (1) by sea_components. All: HEADING [deg, from +x towards +y],
+   !> STRETCHING=WHEELER (default), VERTICAL, EXTRAPOLATION or NONE, RAMP [s] (0).
+   !> At most one.
+   subroutine read_wave_card(deck, ic, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *WAVE card
+      type(model_t), intent(inout) :: model   !< model: waves set
+      type(error_t), intent(inout) :: err     !< status
+      real(wp) :: h, t, heading, phase
+      integer :: k, j
+
+      associate (card => deck%cards(ic), wv => model%waves)
+         do j = 1, ic - 1
+            if (deck%cards(j)%keyword /= 'WAVE') cycle
+            call card_error(card, 'given twice (first at '//location(deck, j)//')', err)
+            return
+         end do
+         call card_check_params(card, [character(len=param_len) :: 'TYPE', 'HEIGHT', &
+                                'PERIOD', 'HEADING', 'PHASE', 'STRETCHING', 'RAMP', 'HS', &
+                                'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', &
+                                'OMEGA MAX'], err)
+         if (has_error(err)) return
+         k = sea_airy
+         call card_get_choice(card, 'TYPE', sea_names, k, err)
+         if (has_error(err)) return
+         wv%kind = k
+         heading = 0.0_wp
+         call card_get_real(card, 'HEADING', heading, err)
+         if (has_error(err)) return
+         k = wv%stretching
+         call card_get_choice(card, 'STRETCHING', stretch_names, k, err)
+         if (has_error(err)) return
+         wv%stretching = k
+         call get_bounded(card, 'RAMP', wv%ramp, .false., err)
+         if (has_error(err)) return
+         if (wv%kind /= sea_airy) then
+            call read_sea(card, wv, err)
+            if (has_error(err)) return
+            wv%heading = [heading*deg]
+            call sea_components(wv)
+            wv%present = .true.
+            return
+         end if
+         call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
+                     'SEED', 'OMEGA MIN', 'OMEGA MAX'], 'AIRY', err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         h = 0.0_wp
+         call card_get_real(card, 'HEIGHT', h, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. h > 0.0_wp) then
+            call param_fail(card, 'HEIGHT', 'HEIGHT must be > 0, got '//real_str(h), err)
+            return
+         end if
+         t = 0.0_wp
+         call card_get_real(card, 'PERIOD', t, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. t > 0.0_wp) then
+            call param_fail(card, 'PERIOD', 'PERIOD must be > 0, got '//real_str(t), err)
+            return
+         end if
+         phase = 0.0_wp
+         call card_get_real(card, 'PHASE', phase, err)
+         if (has_error(err)) return
+         wv%height = [h]
+         wv%period = [t]
+         wv%heading = [heading*deg]
+         wv%phase = [phase*deg]
+         wv%present = .true.
+      end associate
+   end subroutine read_wave_card
+
+   !> The spectrum of an irregular sea (TYPE=JONSWAP, PM or SPECTRUM): HS, TP, GAMMA
+   !> (JONSWAP only; default jonswap_gamma), or the table; COMPONENTS, SEED, OMEGA MIN,
+   !> OMEGA MAX.
+   subroutine read_sea(card, wv, err)
+      type(card_t), intent(in) :: card      !< the *WAVE card
+      type(waves_t), intent(inout) :: wv    !< the sea
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: what = 'omega, S'
+      type(table_t) :: table
+      real(wp) :: m0
+      integer :: k, n
+      logical :: found
+
+      call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE'], &
+                  trim(sea_names(wv%kind)), err)
+      if (wv%kind /= sea_jonswap) call refuse(card, [character(len=param_len) :: 'GAMMA'], &
+                                              trim(sea_names(wv%kind)), err)
+      if (has_error(err)) return
+      if (wv%kind == sea_table) then
+         call refuse(card, [character(len=param_len) :: 'HS', 'TP'], 'SPECTRUM', err)
+         if (has_error(err)) return
+         call card_check_data(card, 2, -1, err, what)
+         if (has_error(err)) return
+         call card_data_table(card, 2, what, table, err)
+         if (has_error(err)) return
+         n = table%n_rows
+         do k = 1, n
+            call data_check(card, k, 'omega', table%values(1, k), .true., err)
+            call data_check(card, k, 'S', table%values(2, k), .false., err)
+            if (has_error(err)) return
+            if (k == 1) cycle
+            if (.not. table%values(1, k) > table%values(1, k - 1)) then
+               call card_data_error(card, k, 'the frequencies must increase: omega = '// &
+                                    real_str(table%values(1, k))//' after '// &
+                                    real_str(table%values(1, k - 1)), err)
+               return
+            end if
+         end do
+         wv%tab_omega = table%values(1, 1:n)
+         wv%tab_s = table%values(2, 1:n)
+         m0 = 0.5_wp*sum((wv%tab_s(2:) + wv%tab_s(:n - 1))*(wv%tab_omega(2:) &
+                                                             - wv%tab_omega(:n - 1)))
+         if (.not. m0 > 0.0_wp) then
+            call card_error(card, 'the spectrum is zero everywhere', err)
+            return
+         end if
+         wv%hs = 4.0_wp*sqrt(m0)
+         wv%omega_min = wv%tab_omega(1)
+         wv%omega_max = wv%tab_omega(n)
+      else
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         call card_get_real(card, 'HS', wv%hs, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. wv%hs > 0.0_wp) then
+            call param_fail(card, 'HS', 'HS must be > 0, got '//real_str(wv%hs), err)
+            return
+         end if
+         call card_get_real(card, 'TP', wv%tp, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. wv%tp > 0.0_wp) then
+            call param_fail(card, 'TP', 'TP must be > 0, got '//real_str(wv%tp), err)
+            return
+         end if
+         wv%gamma = 1.0_wp
+         if (wv%kind == sea_jonswap) wv%gamma = jonswap_gamma(wv%hs, wv%tp)
+         call card_get_real(card, 'GAMMA', wv%gamma, err, found)
+         if (has_error(err)) return
+         if (found .and. .not. (wv%gamma >= 1.0_wp .and. wv%gamma <= max_gamma)) then
+            call param_fail(card, 'GAMMA', 'GAMMA must be >= 1 and <= 20, got '// &
+                            real_str(wv%gamma), err)
+            return
+         end if
+         wv%omega_min = 0.5_wp*two_pi/wv%tp
+         wv%omega_max = 4.0_wp*two_pi/wv%tp
+      end if
+      call card_get_int(card, 'COMPONENTS', wv%components, err)
+      if (has_error(err)) return
+      if (wv%components < 1 .or. wv%components > max_components) then
+         call param_fail(card, 'COMPONENTS', 'COMPONENTS must be >= 1 and <= 100000, got '// &
+                         int_str(wv%components), err)
+         return
+      end if
+      call card_get_int(card, 'SEED', wv%seed, err)
+      call get_bounded(card, 'OMEGA MIN', wv%omega_min, .true., err)
+      call get_bounded(card, 'OMEGA MAX', wv%omega_max, .true., err)
+      if (has_error(err)) return
+      if (.not. wv%omega_max > wv%omega_min) then
+         call param_fail(card, 'OMEGA MAX', 'OMEGA MAX must be > OMEGA MIN ('// &
+                         real_str(wv%omega_min)//' rad/s), got '//real_str(wv%omega_max), err)
+         return
+      end if
+   end subroutine read_sea
+
+   !> An error at the first of `names` given on the card: not a parameter of this TYPE.
+   subroutine refuse(card, names, kind, err)
+      type(card_t), intent(in) :: card          !< the *WAVE card
+      character(len=*), intent(in) :: names(:)  !< parameters the TYPE does not take
+      character(len=*), intent(in) :: kind      !< the TYPE
+      type(error_t), intent(inout) :: err       !< status
+      integer :: j
+      if (has_error(err)) return
+      do j = 1, size(names)
+         if (card_find_param(card, trim(names(j))) == 0) cycle
+         call param_fail(card, trim(names(j)), trim(names(j))//' is not a parameter of '// &
+                         'TYPE='//kind, err)
+         return
+      end do
+   end subroutine refuse
+
+   !> Whole-deck check: waves need *WATER (its DEPTH enters the dispersion relation;
+   !> validate_water has made gravity point along -z).
+   subroutine validate_waves(deck, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(model_t), intent(in) :: model      !< the model read
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ic
+      if (.not. model%waves%present .or. model%water%present) return
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword /= 'WAVE') cycle
+         if (.not. model%water%present) &
+            call card_error(deck%cards(ic), 'waves need *WATER: its DEPTH and SURFACE '// &
+                            'set the dispersion relation and the mean surface (no *WATER '// &
+                            'in the deck)', err)
+         return
+      end do
+   end subroutine validate_waves
+
+   !> 'FILE:LINE: warning: *WAVE: ...' when a regular wave is steeper than the breaking limit,
+   !> H/L > 1/7 (L = 2 pi/k at the water depth) or H/d > 0.78 (DNV-RP-C205, 2021,
+   !> section 3.4.6): linear theory describes such a wave badly. '' otherwise.
+   function wave_warnings(deck, model) result(text)
+      type(deck_t), intent(in) :: deck      !< all cards
+      type(model_t), intent(in) :: model    !< the validated model
+      character(len=:), allocatable :: text !< the warning lines
+      real(wp) :: h, d, el
+      integer :: ic, i
+      text = ''
+      if (.not. model%waves%present .or. .not. model%water%present) return
+      if (model%waves%kind /= sea_airy) return
+      ic = 0
+      do i = 1, deck%n_cards
+         if (deck%cards(i)%keyword == 'WAVE') ic = i
+      end do
+      if (ic == 0) return
+      d = model%water%depth
+      do i = 1, size(model%waves%height)
+         h = model%waves%height(i)
+         el = two_pi/wave_number(two_pi/model%waves%period(i), d, norm2(model%gravity))
+         if (h/el > steep_deep) then
+            text = text//location(deck, ic)//': warning: *WAVE: the wave of HEIGHT='// &
+                   real_str(h)//' m and PERIOD='//real_str(model%waves%period(i))// &
+                   ' s is steeper than the breaking limit: H/L = '//real_str(rounded(h/el))// &
+                   ' > 1/7 (L = '//real_str(rounded(el))//' m at DEPTH='//real_str(d)// &
+                   ' m); linear theory describes it badly'//lf
+         else if (h/d > steep_depth) then
+            text = text//location(deck, ic)//': warning: *WAVE: the wave of HEIGHT='// &
+                   real_str(h)//' m is higher than the breaking limit in DEPTH='// &
+                   real_str(d)//' m: H/d = '//real_str(rounded(h/d))//' > 0.78'//lf
+         end if
+      end do
+   contains
+      !> x to 4 significant digits, for the message.
+      pure real(wp) function rounded(x)
+         real(wp), intent(in) :: x !< a positive number
+         real(wp) :: sc
+         sc = 10.0_wp**(3 - floor(log10(x)))
+         rounded = anint(x*sc)/sc
+      end function rounded
+   end function wave_warnings
+end module rodyn_deck_waves

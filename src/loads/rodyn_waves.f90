@@ -1,0 +1,353 @@
+!> Linear (Airy) wave kinematics (docs/waves.md): a sea of components i, each of
+!> amplitude A_i = H_i/2, angular frequency omega_i, heading beta_i and phase phi_i, on
+!> water of constant depth d below the still water level z_s. With z' = z - z_s and
+!>   theta_i = k_i (x cos beta_i + y sin beta_i) - omega_i t + phi_i,
+!> the elevation, horizontal (along beta_i) and vertical velocity and acceleration are
+!> (Dean & Dalrymple, "Water Wave Mechanics for Engineers and Scientists", 1991, ch. 4;
+!> DNV-RP-C205, 2021, section 3.2, table 3-1)
+!>   eta = sum A_i cos theta_i
+!>   u_h = sum A_i omega_i C_i(s) cos theta_i,    w = sum A_i omega_i S_i(s) sin theta_i
+!>   a_h = sum A_i omega_i^2 C_i(s) sin theta_i,  a_z = -sum A_i omega_i^2 S_i(s) cos theta_i
+!>   C_i(s) = cosh(k_i (s + d))/sinh(k_i d),      S_i(s) = sinh(k_i (s + d))/sinh(k_i d)
+!> with k_i from the dispersion relation omega^2 = g k tanh(k d) (wave_number) and s the
+!> level the profile is evaluated at. Below the mean surface s = z'; above it, up to eta,
+!> the stretching named in the deck (DNV-RP-C205 section 3.2.3):
+!>   WHEELER        s = (z' - eta) d/(d + eta), for every z' (eta maps to 0, -d to -d)
+!>   VERTICAL       s = min(z', 0): the values at the mean surface carried up
+!>   EXTRAPOLATION  C(z') = C(0) + z' k S(0), S(z') = S(0) + z' k C(0) for z' > 0
+!>   NONE           s = z': the linear profile carried up as it is
+!> Above eta the water has no velocity. A ramp r(t) = (1 - cos(pi t/T))/2 multiplies the
+!> elevation and the velocity; the acceleration is r a + r' u. The acceleration is the
+!> local one of linear theory at the stretched level (the stretch's own rate is not
+!> differentiated, as is usual). The per-component factors (k cos beta, k sin beta,
+!> A omega, A omega^2, the depth terms) are formed once by waves_build.
+!>
+!> Irregular seas (sea_components): the spectrum S(omega) between omega_min and
+!> omega_max is cut into N bins of equal width d omega; component i takes a frequency
+!> drawn uniformly within bin i, the amplitude A_i = sqrt(2 S(omega_i) d omega) and a
+!> phase drawn uniformly in [0, 2 pi), from the seed by L'Ecuyer's combined generator
+!> (Commun. ACM 31, 1988, 742-751), so that a seed gives the same sea bit for bit on
+!> any machine. The random frequencies are incommensurate: the sea does not repeat
+!> (components on a regular grid of spacing d omega would repeat after 2 pi/d omega).
+!> Spectra (DNV-RP-C205, 2021, section 3.5.5), omega_p = 2 pi/T_p:
+!>   Pierson-Moskowitz  S_PM = 5/16 Hs^2 omega_p^4 omega^-5 exp(-5/4 (omega/omega_p)^-4)
+!>   JONSWAP            S_J = (1 - 0.287 ln gamma) S_PM gamma^exp(-(omega - omega_p)^2
+!>                      /(2 sigma^2 omega_p^2)), sigma = 0.07 (omega <= omega_p), 0.09
+!>   default gamma      5 for T_p/sqrt(Hs) <= 3.6, exp(5.75 - 1.15 T_p/sqrt(Hs)) below 5,
+!>                      1 from 5 (T_p in s, Hs in m)
+!>   table              linear between the points of the table, 0 outside it.
+module rodyn_waves
+   use rodyn_kinds, only: wp, i8, pi, two_pi
+   use rodyn_model, only: waves_t, stretch_wheeler, stretch_vertical, &
+                          stretch_extrapolation, stretch_none, sea_airy, sea_jonswap, &
+                          sea_pm, sea_table
+   implicit none
+   private
+   public :: wave_field_t, wave_number, waves_build, wave_elevation, wave_kinematics
+   public :: wave_ramp, wave_spectrum, jonswap_gamma, sea_components
+
+   real(wp), parameter :: kd_exp = 20.0_wp !< above k d the depth terms use exponentials
+
+   !> The sea of a run, ready for evaluation (fixed after waves_build).
+   type :: wave_field_t
+      integer :: n = 0                        !< components
+      integer :: stretching = stretch_wheeler !< stretch_* constant
+      real(wp) :: depth = 0.0_wp              !< d [m]
+      real(wp) :: surface = 0.0_wp            !< z_s [m]
+      real(wp) :: ramp = 0.0_wp               !< ramp-in duration [s]
+      real(wp), allocatable :: amp(:)    !< (n) A [m]
+      real(wp), allocatable :: omega(:)  !< (n) [rad/s]
+      real(wp), allocatable :: k(:)      !< (n) wave number [1/m]
+      real(wp), allocatable :: kx(:)     !< (n) k cos beta [1/m]
+      real(wp), allocatable :: ky(:)     !< (n) k sin beta [1/m]
+      real(wp), allocatable :: cb(:)     !< (n) cos beta [-]
+      real(wp), allocatable :: sb(:)     !< (n) sin beta [-]
+      real(wp), allocatable :: phase(:)  !< (n) phi [rad]
+      real(wp), allocatable :: aw(:)     !< (n) A omega [m/s]
+      real(wp), allocatable :: aw2(:)    !< (n) A omega^2 [m/s2]
+      real(wp), allocatable :: rsh(:)    !< (n) 1/sinh(k d) (k d < kd_exp) [-]
+      real(wp), allocatable :: qd(:)     !< (n) 1/(1 - e^{-2 k d}) (k d >= kd_exp) [-]
+      logical, allocatable :: deep(:)    !< (n) k d >= kd_exp: exponential forms
+   end type wave_field_t
+
+contains
+
+   !> Wave number k of angular frequency omega in water of depth d: the root of the
+   !> dispersion relation omega^2 = g k tanh(k d), written y tanh y = x with y = k d,
+   !> x = omega^2 d/g, by Newton's method from Eckart's approximation
+   !> y0 = x/sqrt(tanh x) (Eckart 1952; within 5 %), to round-off (the step below
+   !> 2 eps y). Deep water (x large): y = x, k = omega^2/g; shallow (x small):
+   !> y = sqrt(x), k = omega/sqrt(g d).
+   pure real(wp) function wave_number(omega, depth, g) result(k)
+      real(wp), intent(in) :: omega  !< angular frequency [rad/s], > 0
+      real(wp), intent(in) :: depth  !< water depth [m], > 0
+      real(wp), intent(in) :: g      !< gravity [m/s2], > 0
+      real(wp) :: x, y, th, dy
+      integer :: it
+      x = omega**2*depth/g
+      y = x/sqrt(tanh(x))
+      do it = 1, 60
+         th = tanh(y)
+         dy = (y*th - x)/(th + y*(1.0_wp - th**2))
+         y = y - dy
+         if (abs(dy) <= 2.0_wp*epsilon(1.0_wp)*y) exit
+      end do
+      k = y/depth
+   end function wave_number
+
+   !> The field of the deck's sea: per component k (wave_number), k cos beta,
+   !> k sin beta, A omega, A omega^2 and 1/sinh(k d) (module header).
+   pure subroutine waves_build(waves, depth, surface, g, field)
+      type(waves_t), intent(in) :: waves        !< the deck's waves
+      real(wp), intent(in) :: depth             !< water depth d [m]
+      real(wp), intent(in) :: surface           !< still water level z_s [m]
+      real(wp), intent(in) :: g                 !< |gravity| [m/s2]
+      type(wave_field_t), intent(out) :: field  !< the field
+      integer :: i, n
+      n = 0
+      if (waves%present) n = size(waves%height)
+      field%n = n
+      field%stretching = waves%stretching
+      field%depth = depth
+      field%surface = surface
+      field%ramp = waves%ramp
+      allocate (field%amp(n), field%omega(n), field%k(n), field%kx(n), field%ky(n), &
+                field%cb(n), field%sb(n), field%phase(n), field%aw(n), field%aw2(n), &
+                field%rsh(n), field%qd(n), field%deep(n))
+      do i = 1, n
+         field%amp(i) = 0.5_wp*waves%height(i)
+         field%omega(i) = two_pi/waves%period(i)
+         field%k(i) = wave_number(field%omega(i), depth, g)
+         field%cb(i) = cos(waves%heading(i))
+         field%sb(i) = sin(waves%heading(i))
+         field%kx(i) = field%k(i)*field%cb(i)
+         field%ky(i) = field%k(i)*field%sb(i)
+         field%phase(i) = waves%phase(i)
+         field%aw(i) = field%amp(i)*field%omega(i)
+         field%aw2(i) = field%aw(i)*field%omega(i)
+         field%deep(i) = field%k(i)*depth >= kd_exp
+         field%rsh(i) = 0.0_wp
+         if (.not. field%deep(i)) field%rsh(i) = 1.0_wp/sinh(field%k(i)*depth)
+         field%qd(i) = 1.0_wp/(1.0_wp - exp(-2.0_wp*field%k(i)*depth))
+      end do
+   end subroutine waves_build
+
+   !> Ramp factor r(t) = (1 - cos(pi t/T))/2 for 0 < t < T (0 before, 1 after; 1 when
+   !> T = 0) and its rate r'(t) = pi/(2T) sin(pi t/T).
+   pure subroutine wave_ramp(ramp, t, r, dr)
+      real(wp), intent(in) :: ramp  !< T [s]
+      real(wp), intent(in) :: t     !< time [s]
+      real(wp), intent(out) :: r    !< r(t) [-]
+      real(wp), intent(out) :: dr   !< r'(t) [1/s]
+      r = 1.0_wp
+      dr = 0.0_wp
+      if (ramp <= 0.0_wp .or. t >= ramp) return
+      if (t <= 0.0_wp) then
+         r = 0.0_wp
+         return
+      end if
+      r = 0.5_wp*(1.0_wp - cos(pi*t/ramp))
+      dr = 0.5_wp*pi/ramp*sin(pi*t/ramp)
+   end subroutine wave_ramp
+
+   !> Elevation eta of the surface above the still water level at (x, y), time t, ramp
+   !> included [m] (module header).
+   pure real(wp) function wave_elevation(field, x, y, t) result(eta)
+      type(wave_field_t), intent(in) :: field !< the sea
+      real(wp), intent(in) :: x               !< [m]
+      real(wp), intent(in) :: y               !< [m]
+      real(wp), intent(in) :: t               !< time [s]
+      real(wp) :: r, dr
+      integer :: i
+      eta = 0.0_wp
+      do i = 1, field%n
+         eta = eta + field%amp(i)*cos(field%kx(i)*x + field%ky(i)*y - field%omega(i)*t &
+                                      + field%phase(i))
+      end do
+      call wave_ramp(field%ramp, t, r, dr)
+      eta = r*eta
+   end function wave_elevation
+
+   !> Elevation eta above (x, y), water velocity u and acceleration a at point x and
+   !> time t (module header: linear theory, the stretching above the mean surface, ramp
+   !> included; zero above the surface).
+   pure subroutine wave_kinematics(field, x, t, eta, u, a)
+      type(wave_field_t), intent(in) :: field !< the sea
+      real(wp), intent(in) :: x(3)            !< point [m]
+      real(wp), intent(in) :: t               !< time [s]
+      real(wp), intent(out) :: eta            !< surface elevation above z_s [m]
+      real(wp), intent(out) :: u(3)           !< water velocity [m/s]
+      real(wp), intent(out) :: a(3)           !< water acceleration [m/s2]
+      real(wp) :: r, dr, zp, s, ch, sh, c, uh, ah, w, az, d, ext, th
+      real(wp) :: cs(field%n), sn(field%n)
+      integer :: i
+      u = 0.0_wp
+      a = 0.0_wp
+      ! the phases once: their cosines make eta, and serve the kinematics below
+      eta = 0.0_wp
+      do i = 1, field%n
+         th = field%kx(i)*x(1) + field%ky(i)*x(2) - field%omega(i)*t + field%phase(i)
+         cs(i) = cos(th)
+         sn(i) = sin(th)
+         eta = eta + field%amp(i)*cs(i)
+      end do
+      call wave_ramp(field%ramp, t, r, dr)
+      eta = r*eta
+      if (field%n == 0) return
+      zp = x(3) - field%surface
+      if (zp > eta) return
+      if (r == 0.0_wp) return
+      d = field%depth
+      ext = 0.0_wp
+      select case (field%stretching)
+      case (stretch_wheeler)
+         s = (zp - eta)*d/(d + eta)
+      case (stretch_vertical)
+         s = min(zp, 0.0_wp)
+      case (stretch_extrapolation)
+         s = min(zp, 0.0_wp)
+         ext = max(zp, 0.0_wp)
+      case default
+         s = zp
+      end select
+      do i = 1, field%n
+         call depth_terms(field, i, s, ch, sh)
+         if (ext > 0.0_wp) then
+            ! C(z') = C(0) + z' k S(0), S(z') = S(0) + z' k C(0)
+            c = ch
+            ch = ch + ext*field%k(i)*sh
+            sh = sh + ext*field%k(i)*c
+         end if
+         uh = field%aw(i)*ch*cs(i)
+         w = field%aw(i)*sh*sn(i)
+         ah = field%aw2(i)*ch*sn(i)
+         az = -field%aw2(i)*sh*cs(i)
+         u(1) = u(1) + uh*field%cb(i)
+         u(2) = u(2) + uh*field%sb(i)
+         u(3) = u(3) + w
+         a(1) = a(1) + ah*field%cb(i)
+         a(2) = a(2) + ah*field%sb(i)
+         a(3) = a(3) + az
+      end do
+      a = r*a + dr*u
+      u = r*u
+   end subroutine wave_kinematics
+
+   !> C = cosh(k (s + d))/sinh(k d) and S = sinh(k (s + d))/sinh(k d) of component i,
+   !> from one exponential E = e^{k (s + d)}: (E +- 1/E)/(2 sinh(k d)); for k d >= kd_exp
+   !> (e^{k s} +- e^{-k (s + 2 d)})/(1 - e^{-2 k d}), which neither overflows nor loses
+   !> digits in deep water.
+   pure subroutine depth_terms(field, i, s, ch, sh)
+      type(wave_field_t), intent(in) :: field !< the sea
+      integer, intent(in) :: i                !< component
+      real(wp), intent(in) :: s               !< level below the mean surface [m]
+      real(wp), intent(out) :: ch             !< C [-]
+      real(wp), intent(out) :: sh             !< S [-]
+      real(wp) :: e1, e2
+      if (field%deep(i)) then
+         e1 = exp(field%k(i)*s)
+         e2 = exp(-field%k(i)*(s + 2.0_wp*field%depth))
+         ch = (e1 + e2)*field%qd(i)
+         sh = (e1 - e2)*field%qd(i)
+      else
+         e1 = exp(field%k(i)*(s + field%depth))
+         e2 = 1.0_wp/e1
+         ch = 0.5_wp*(e1 + e2)*field%rsh(i)
+         sh = 0.5_wp*(e1 - e2)*field%rsh(i)
+      end if
+   end subroutine depth_terms
+
+   !> DNV-RP-C205's default JONSWAP peak enhancement gamma for Hs and T_p (header).
+   pure real(wp) function jonswap_gamma(hs, tp) result(gamma)
+      real(wp), intent(in) :: hs  !< significant wave height [m]
+      real(wp), intent(in) :: tp  !< peak period [s]
+      real(wp) :: r
+      r = tp/sqrt(hs)
+      if (r <= 3.6_wp) then
+         gamma = 5.0_wp
+      else if (r < 5.0_wp) then
+         gamma = exp(5.75_wp - 1.15_wp*r)
+      else
+         gamma = 1.0_wp
+      end if
+   end function jonswap_gamma
+
+   !> Spectral density S(omega) of the sea (module header) [m2 s/rad].
+   pure real(wp) function wave_spectrum(waves, omega) result(s)
+      type(waves_t), intent(in) :: waves  !< the sea (kind, Hs, Tp, gamma or table)
+      real(wp), intent(in) :: omega       !< frequency [rad/s], > 0
+      real(wp) :: wpk, sigma, f
+      integer :: j, n
+      s = 0.0_wp
+      select case (waves%kind)
+      case (sea_jonswap, sea_pm)
+         wpk = two_pi/waves%tp
+         s = 5.0_wp/16.0_wp*waves%hs**2*wpk**4/omega**5*exp(-1.25_wp*(wpk/omega)**4)
+         if (waves%kind == sea_jonswap .and. waves%gamma /= 1.0_wp) then
+            sigma = 0.09_wp
+            if (omega <= wpk) sigma = 0.07_wp
+            s = s*(1.0_wp - 0.287_wp*log(waves%gamma)) &
+                *waves%gamma**exp(-0.5_wp*((omega - wpk)/(sigma*wpk))**2)
+         end if
+      case (sea_table)
+         n = size(waves%tab_omega)
+         if (omega < waves%tab_omega(1) .or. omega > waves%tab_omega(n)) return
+         do j = 1, n - 1
+            if (omega <= waves%tab_omega(j + 1)) exit
+         end do
+         j = min(j, n - 1)
+         f = (omega - waves%tab_omega(j))/(waves%tab_omega(j + 1) - waves%tab_omega(j))
+         s = waves%tab_s(j) + f*(waves%tab_s(j + 1) - waves%tab_s(j))
+      end select
+   end function wave_spectrum
+
+   !> The components of an irregular sea (module header): height H_i = 2 A_i, period,
+   !> phase and the sea's heading, into waves%height, period, phase, heading (n =
+   !> waves%components). A regular wave (sea_airy) is left as it is.
+   pure subroutine sea_components(waves)
+      type(waves_t), intent(inout) :: waves !< the sea; its components set
+      integer(i8) :: s1, s2
+      real(wp) :: dw, om, beta, u
+      integer :: i, n
+      if (waves%kind == sea_airy) return
+      n = waves%components
+      beta = 0.0_wp
+      if (allocated(waves%heading)) then
+         if (size(waves%heading) > 0) beta = waves%heading(1)
+      end if
+      ! the generator's two states from the seed (L'Ecuyer's ranges 1..m - 1)
+      s1 = 1_i8 + modulo(int(waves%seed, i8), 2147483562_i8)
+      s2 = 1_i8 + modulo(int(waves%seed, i8)*7919_i8 + 12345_i8, 2147483398_i8)
+      dw = (waves%omega_max - waves%omega_min)/real(n, wp)
+      if (allocated(waves%height)) deallocate (waves%height)
+      if (allocated(waves%period)) deallocate (waves%period)
+      if (allocated(waves%phase)) deallocate (waves%phase)
+      if (allocated(waves%heading)) deallocate (waves%heading)
+      allocate (waves%height(n), waves%period(n), waves%phase(n), waves%heading(n))
+      do i = 1, n
+         call lecuyer_next(s1, s2, u)
+         om = waves%omega_min + dw*(real(i - 1, wp) + u)
+         waves%period(i) = two_pi/om
+         waves%height(i) = 2.0_wp*sqrt(2.0_wp*wave_spectrum(waves, om)*dw)
+         call lecuyer_next(s1, s2, u)
+         waves%phase(i) = two_pi*u
+         waves%heading(i) = beta
+      end do
+   end subroutine sea_components
+
+   !> Next number u in (0, 1) of L'Ecuyer's combined generator (1988): two
+   !> multiplicative congruential generators, s1 = 40014 s1 mod 2147483563,
+   !> s2 = 40692 s2 mod 2147483399, z = (s1 - s2) mod 2147483562; products below 2^47,
+   !> exact in 64-bit integers.
+   pure subroutine lecuyer_next(s1, s2, u)
+      integer(i8), intent(inout) :: s1 !< state of the first generator
+      integer(i8), intent(inout) :: s2 !< state of the second generator
+      real(wp), intent(out) :: u       !< the number [-]
+      integer(i8) :: z
+      s1 = modulo(40014_i8*s1, 2147483563_i8)
+      s2 = modulo(40692_i8*s2, 2147483399_i8)
+      z = modulo(s1 - s2, 2147483562_i8)
+      if (z == 0_i8) z = 2147483562_i8
+      u = real(z, wp)/2147483563.0_wp
+   end subroutine lecuyer_next
+end module rodyn_waves
