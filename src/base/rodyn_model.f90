@@ -260,6 +260,7 @@ module rodyn_model
       !> vessel_coefficients), set up before the dynamic analysis
       complex(wp), allocatable :: coef(:, :)  !< (6, nc) complex response factors
       real(wp), allocatable :: omega(:)       !< (nc) angular frequencies [rad/s]
+      real(wp) :: sea_ramp = 0.0_wp           !< ramp-in of the sea [s] (0: none)
    end type vessel_t
 
    !> Prescribed motion of a held node (*MOTION): a displacement added to the position

@@ -722,11 +722,11 @@ contains
       end do
       call validate_dynamics(deck, pend, model, err)
       if (has_error(err)) return
-      call validate_vessels(deck, pend, model, err)
-      if (has_error(err)) return
       call validate_water(deck, pend, model, err)
       if (has_error(err)) return
       call validate_waves(deck, model, err)
+      if (has_error(err)) return
+      call validate_vessels(deck, pend, model, err)
       if (has_error(err)) return
 
       call resolve_section_defaults(model)

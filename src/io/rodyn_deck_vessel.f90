@@ -2,7 +2,7 @@
 !> rest, its heading, and its motion, from displacement RAOs (TYPE=RAO) or from a 6-DOF
 !> time series (TYPE=TABLE), both read from INPUT=file; and the whole-deck checks of
 !> vessels (validate_vessels: unique names, the VESSEL= of *MOTION, no clamped end on a
-!> vessel, a sea for RAOs).
+!> vessel, a sea for RAOs, and the RAO vessels' response factors in that sea).
 module rodyn_deck_vessel
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_error, only: error_t, has_error
@@ -15,6 +15,8 @@ module rodyn_deck_vessel
                                int_str, param_len
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
+   use rodyn_waves, only: wave_field_t, waves_build
+   use rodyn_vessel, only: vessel_coefficients
    implicit none
    private
    public :: read_vessel_card, validate_vessels
@@ -237,7 +239,8 @@ contains
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
    !> (its index set); its node is not clamped (the end's rotation would not follow the
-   !> vessel); a vessel moved by RAOs needs a sea.
+   !> vessel); a vessel moved by RAOs needs a sea (*WAVE), and gets its response factors
+   !> in it (vessel_in_sea).
    subroutine validate_vessels(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
@@ -253,10 +256,12 @@ contains
             return
          end do
          if (model%vessels(i)%kind == vessel_from_rao) then
-            call card_error(deck%cards(pend%vessel_card(i)), 'TYPE=RAO moves the vessel in'// &
-                            ' the waves of the deck, and this version reads no waves yet:'// &
-                            ' give its motion as TYPE=TABLE', err)
-            return
+            if (.not. model%waves%present) then
+               call card_error(deck%cards(pend%vessel_card(i)), 'TYPE=RAO moves the'// &
+                               ' vessel in the waves of the deck, and it has no *WAVE', err)
+               return
+            end if
+            call vessel_in_sea(model, model%vessels(i))
          end if
       end do
       do k = 1, size(model%motions)
@@ -289,4 +294,26 @@ contains
          end associate
       end do
    end subroutine validate_vessels
+
+   !> The response factors of an RAO vessel in the deck's sea (rodyn_vessel's
+   !> vessel_coefficients): component j of the sea, eta_j = a_j cos(k_j.x - omega_j t
+   !> + phase_j) (rodyn_waves), has at the reference point O the elevation
+   !> a_j cos(omega_j t + phi_j) with phi_j = -(k_j.O) - phase_j. The sea's ramp is the
+   !> vessel's too (vessel_motion).
+   subroutine vessel_in_sea(model, ve)
+      type(model_t), intent(in) :: model     !< model with its waves and water
+      type(vessel_t), intent(inout) :: ve    !< coef, omega and ramp set
+      type(wave_field_t) :: field
+      real(wp), allocatable :: phi(:), beta(:)
+      call waves_build(model%waves, model%water%depth, model%water%surface, &
+                       norm2(model%gravity), field)
+      phi = -(field%kx*ve%origin(1) + field%ky*ve%origin(2)) - field%phase
+      beta = atan2(field%sb, field%cb)
+      if (allocated(ve%coef)) deallocate (ve%coef, ve%omega)
+      allocate (ve%coef(6, field%n))
+      ve%omega = field%omega
+      call vessel_coefficients(ve%rao, ve%heading, field%amp, field%omega, beta, phi, &
+                               ve%coef)
+      ve%sea_ramp = field%ramp
+   end subroutine vessel_in_sea
 end module rodyn_deck_vessel

@@ -64,7 +64,7 @@ contains
 
    !> Motion xi(t) = (surge, sway, heave [m], roll, pitch, yaw [rad]) of a vessel's
    !> reference point, in vessel axes: from its RAOs in the sea (the response factors
-   !> set up before the run), or its table (linear interpolation, constant beyond the
+   !> set up before the run, times the sea's ramp), or its table (linear interpolation, constant beyond the
    !> ends).
    pure function vessel_motion(ve, t) result(xi)
       type(vessel_t), intent(in) :: ve !< vessel
@@ -73,7 +73,8 @@ contains
       integer :: k
       xi = 0.0_wp
       if (ve%kind == vessel_from_rao) then
-         if (allocated(ve%coef)) xi = vessel_harmonic_motion(ve%coef, ve%omega, t)
+         if (allocated(ve%coef)) xi = ramp_factor(t, ve%sea_ramp)* &
+                                      vessel_harmonic_motion(ve%coef, ve%omega, t)
          return
       end if
       do k = 1, 6
