@@ -64,8 +64,8 @@ contains
 
    !> Motion xi(t) = (surge, sway, heave [m], roll, pitch, yaw [rad]) of a vessel's
    !> reference point, in vessel axes: from its RAOs in the sea (the response factors
-   !> set up before the run, times the sea's ramp), or its table (linear interpolation, constant beyond the
-   !> ends).
+   !> set up before the run, times the sea's ramp), or its table (linear interpolation,
+   !> constant beyond the ends).
    pure function vessel_motion(ve, t) result(xi)
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
