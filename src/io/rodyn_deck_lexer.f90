@@ -168,6 +168,11 @@ contains
       type(card_t) :: card
       type(error_t) :: perr
 
+      s = encoding_problem(text)
+      if (len(s) > 0) then
+         call set_error(err, stat_input, path//':1: error: '//s)
+         return
+      end if
       deck%text = deck%text//'** ---- file: '//path//lf//without_cr(text)
       if (len(text) > 0) then
          if (text(len(text):len(text)) /= lf) deck%text = deck%text//lf
@@ -854,6 +859,11 @@ contains
                                table%path//"'", err)
          return
       end if
+      s = encoding_problem(text)
+      if (len(s) > 0) then
+         call card_file_error(card, table%path, 1, s, err)
+         return
+      end if
       table%text = without_cr(text)
       if (len(table%text) > 0) then
          if (table%text(len(table%text):len(table%text)) /= lf) table%text = table%text//lf
@@ -1348,8 +1358,35 @@ contains
       if (len(text) >= 3) then
          if (text(1:3) == utf8_bom) text = text(4:)
       end if
+      ! carriage returns alone end the lines of old Mac files: made line feeds
+      if (index(text, lf) == 0 .and. index(text, cr) > 0) then
+         do n = 1_i8, int(len(text), i8)
+            if (text(n:n) == cr) text(n:n) = lf
+         end do
+      end if
       ok = .true.
    end subroutine read_file_text
+
+   !> Why a file's text cannot be a deck or table in this encoding ('' if it can): a
+   !> UTF-16 byte-order mark, or NUL bytes in the first line (UTF-16 without one).
+   pure function encoding_problem(text) result(msg)
+      character(len=*), intent(in) :: text !< the file's contents
+      character(len=:), allocatable :: msg !< '' or the problem
+      integer :: eol
+      msg = ''
+      if (len(text) >= 2) then
+         if (text(1:2) == achar(255)//achar(254) .or. text(1:2) == achar(254)//achar(255)) &
+            then
+            msg = 'the file is UTF-16 (it starts with a UTF-16 byte-order mark): save it'// &
+                  ' as UTF-8 or ASCII'
+            return
+         end if
+      end if
+      eol = index(text, lf)
+      if (eol == 0) eol = len(text) + 1
+      if (index(text(:eol - 1), achar(0)) > 0) msg = 'the first line holds NUL bytes (a'// &
+         ' UTF-16 or binary file?): save the file as UTF-8 or ASCII'
+   end function encoding_problem
 
    !> Folder part of a path, with its trailing '/' ('' for a bare file name).
    pure function dir_of(path) result(d)
