@@ -201,14 +201,11 @@ contains
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
-         if (allocated(prob%model%vessels)) then
-            prob%x_held(:, node) = prob%x_start(:, node) + motion_displacement( &
-                                   prob%model%motions(i), t0 + dt, prob%model%vessels, &
-                                   prob%x_start(:, node))
-         else
-            prob%x_held(:, node) = prob%x_start(:, node) &
-                                   + motion_displacement(prob%model%motions(i), t0 + dt)
-         end if
+         ! (model%vessels unallocated, as in a model built without a deck, is an absent
+         ! optional argument)
+         prob%x_held(:, node) = prob%x_start(:, node) + motion_displacement( &
+                                prob%model%motions(i), t0 + dt, prob%model%vessels, &
+                                prob%x_start(:, node))
       end do
       prob%ref_pending = .not. prob%have_conv
       if (prob%have_conv) then

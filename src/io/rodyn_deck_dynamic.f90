@@ -24,7 +24,7 @@ module rodyn_deck_dynamic
    implicit none
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
-   public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings
+   public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings, record_table
 
    integer, parameter :: max_steps = 100000000    !< most time steps TIME/DT of a run
    ! Time resolution of the prescribed motions and loads (docs/dynamics.md, "Time step

@@ -15,6 +15,7 @@ module rodyn_deck_vessel
                                int_str, param_len
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
+   use rodyn_deck_dynamic, only: record_table
    use rodyn_waves, only: wave_field_t, waves_build
    use rodyn_vessel, only: vessel_coefficients
    implicit none
@@ -106,7 +107,7 @@ contains
             call rao_grid(card, table, rot, iphase == 1, ve, err)
             if (has_error(err)) return
          end if
-         call record_table_text(table, model)
+         call record_table(table, model)
       end associate
       pend%n_vessels = pend%n_vessels + 1
       model%vessels(pend%n_vessels) = ve
@@ -226,16 +227,6 @@ contains
          end do
       end subroutine sort
    end subroutine rao_grid
-
-   !> Keep the text of a table file with the deck text (once per file).
-   subroutine record_table_text(table, model)
-      type(table_t), intent(in) :: table     !< a table read from a file
-      type(model_t), intent(inout) :: model  !< model whose deck_text is extended
-      character(len=:), allocatable :: head
-      head = '** ---- file: '//table%path//achar(10)
-      if (index(model%deck_text, head) > 0) return
-      model%deck_text = model%deck_text//head//table%text
-   end subroutine record_table_text
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
    !> (its index set); its node is not clamped (the end's rotation would not follow the

@@ -414,15 +414,7 @@ contains
       type(error_t) :: e
       character(len=row_len) :: row
       integer :: n
-      if (has_error(err)) return
-      if (.not. w%is_open) then
-         call set_error(err, stat_io, 'dynamic_output_step: the writer is not open')
-         return
-      end if
-      if (w%failed) then
-         call set_error(err, stat_io, w%why)
-         return
-      end if
+      if (.not. writer_ready(w, 'dynamic_output_step', err)) return
       if (w%csv) then
          n = 0
          call put_int(row, n, log%step)
@@ -463,15 +455,7 @@ contains
       character(len=row_len) :: row
       type(error_t) :: e
       integer :: i, j, n
-      if (has_error(err)) return
-      if (.not. w%is_open) then
-         call set_error(err, stat_io, 'dynamic_output_ends_step: the writer is not open')
-         return
-      end if
-      if (w%failed) then
-         call set_error(err, stat_io, w%why)
-         return
-      end if
+      if (.not. writer_ready(w, 'dynamic_output_ends_step', err)) return
       do i = 1, size(w%line)
          associate (lo => w%line(i))
             if (w%csv) then
@@ -969,6 +953,23 @@ contains
       call output_write_status(w%dir, w%progress, err, w%deck_file, w%params)
       call system_clock(w%clock_status)
    end subroutine sync
+
+   !> The writer takes rows: err clear, the writer open and not failed; else err says
+   !> why (the failure recorded, or `who` called on a writer not open).
+   logical function writer_ready(w, who, err) result(ok)
+      type(dynamic_writer_t), intent(in) :: w      !< writer
+      character(len=*), intent(in) :: who          !< caller, for the message
+      type(error_t), intent(inout) :: err          !< status
+      ok = .false.
+      if (has_error(err)) return
+      if (.not. w%is_open) then
+         call set_error(err, stat_io, who//': the writer is not open')
+      else if (w%failed) then
+         call set_error(err, stat_io, w%why)
+      else
+         ok = .true.
+      end if
+   end function writer_ready
 
    !> Characters of CSV rows held in memory.
    pure integer function csv_held(w)

@@ -71,6 +71,26 @@ def expected(t, x0, small=False, motion=motion):
     return ORIGIN + r0 @ (xi[0:3] + moved)
 
 
+# the cable of both decks, and the end of both decks after the *VESSEL card
+CABLE = """*GRAVITY
+0.0, 0.0, -9.80665
+*INCLUDE, INPUT=paper_cable_section.inc
+*LINE, NAME=CABLE, SECTION=CABLE, LENGTH=10.0, ELEMENTS=10, ORDER=3
+0.0, 0.0, 0.0, 8.0, 0.0, -1.0
+*BOUNDARY, LINE=CABLE, END=A, TYPE=PINNED
+*BOUNDARY, LINE=CABLE, END=B, TYPE=PINNED
+"""
+
+
+def vessel_end():
+    """The *VESSEL data line, end A on the vessel, *DYNAMIC and *OUTPUT."""
+    return f"""{ORIGIN[0]}, {ORIGIN[1]}, {ORIGIN[2]}, {HEADING}
+*MOTION, LINE=CABLE, END=A, TYPE=VESSEL, VESSEL=SHIP, RAMP={RAMP}
+*DYNAMIC, DT={DT}, TIME={T_END}
+*OUTPUT, CSV=YES, HDF5=NO
+"""
+
+
 def run(rodyn, workdir, section, units):
     os.makedirs(workdir, exist_ok=True)
     shutil.copy(section, workdir)
@@ -85,27 +105,21 @@ def run(rodyn, workdir, section, units):
             f.write(", ".join(repr(float(v)) for v in [t, *xi]) + "\n")
     deck = f"""*HEADING
 Paper cable hung from a point of a moving vessel (rotations in {units})
-*GRAVITY
-0.0, 0.0, -9.80665
-*INCLUDE, INPUT=paper_cable_section.inc
-*LINE, NAME=CABLE, SECTION=CABLE, LENGTH=10.0, ELEMENTS=10, ORDER=3
-0.0, 0.0, 0.0, 8.0, 0.0, -1.0
-*BOUNDARY, LINE=CABLE, END=A, TYPE=PINNED
-*BOUNDARY, LINE=CABLE, END=B, TYPE=PINNED
-*VESSEL, NAME=SHIP, TYPE=TABLE, INPUT=vessel_motion.csv, ROTATION UNITS={units}
-{ORIGIN[0]}, {ORIGIN[1]}, {ORIGIN[2]}, {HEADING}
-*MOTION, LINE=CABLE, END=A, TYPE=VESSEL, VESSEL=SHIP, RAMP={RAMP}
-*DYNAMIC, DT={DT}, TIME={T_END}
-*OUTPUT, CSV=YES, HDF5=NO
-"""
-    path = os.path.join(workdir, "vessel.inp")
+{CABLE}*VESSEL, NAME=SHIP, TYPE=TABLE, INPUT=vessel_motion.csv, ROTATION UNITS={units}
+{vessel_end()}"""
+    return run_deck(rodyn, workdir, "vessel", deck)
+
+
+def run_deck(rodyn, workdir, name, deck):
+    """Write deck text as workdir/name.inp, run it; end A's position at each frame."""
+    path = os.path.join(workdir, name + ".inp")
     with open(path, "w") as f:
         f.write(deck)
     out = os.path.join(workdir, "out")
     proc = subprocess.run([rodyn, path, "-o", out, "--quiet"], capture_output=True,
                           text=True)
     if proc.returncode != 0:
-        sys.exit(f"{units}: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+        sys.exit(f"{name}: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
     frames = {}
     with open(os.path.join(out, "dynamic_nodes.csv")) as f:
         for row in csv.DictReader(f):
@@ -162,36 +176,11 @@ def run_rao(rodyn, workdir, section):
             f.write(", ".join(repr(float(v)) for v in row) + "\n")
     deck = f"""*HEADING
 Paper cable hung from a vessel moved by displacement RAOs in a regular wave
-*GRAVITY
-0.0, 0.0, -9.80665
-*INCLUDE, INPUT=paper_cable_section.inc
-*LINE, NAME=CABLE, SECTION=CABLE, LENGTH=10.0, ELEMENTS=10, ORDER=3
-0.0, 0.0, 0.0, 8.0, 0.0, -1.0
-*BOUNDARY, LINE=CABLE, END=A, TYPE=PINNED
-*BOUNDARY, LINE=CABLE, END=B, TYPE=PINNED
-*WATER, DEPTH={DEPTH}, SURFACE=-20.0
+{CABLE}*WATER, DEPTH={DEPTH}, SURFACE=-20.0
 *WAVE, HEIGHT={WAVE_H}, PERIOD={WAVE_T}, HEADING={WAVE_DIR}, PHASE={WAVE_PHASE}
 *VESSEL, NAME=SHIP, TYPE=RAO, INPUT=rao.csv, PHASE=LAG
-{ORIGIN[0]}, {ORIGIN[1]}, {ORIGIN[2]}, {HEADING}
-*MOTION, LINE=CABLE, END=A, TYPE=VESSEL, VESSEL=SHIP, RAMP={RAMP}
-*DYNAMIC, DT={DT}, TIME={T_END}
-*OUTPUT, CSV=YES, HDF5=NO
-"""
-    path = os.path.join(workdir, "vessel_rao.inp")
-    with open(path, "w") as f:
-        f.write(deck)
-    out = os.path.join(workdir, "out")
-    proc = subprocess.run([rodyn, path, "-o", out, "--quiet"], capture_output=True,
-                          text=True)
-    if proc.returncode != 0:
-        sys.exit(f"RAO: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
-    frames = {}
-    with open(os.path.join(out, "dynamic_nodes.csv")) as f:
-        for row in csv.DictReader(f):
-            if int(row["node"]) == 1:
-                frames[float(row["time_s"])] = np.array(
-                    [float(row["x_m"]), float(row["y_m"]), float(row["z_m"])])
-    return frames
+{vessel_end()}"""
+    return run_deck(rodyn, workdir, "vessel_rao", deck)
 
 
 def main():
