@@ -189,7 +189,7 @@ module rodyn_output_dynamic
       type(line_out_t), allocatable :: line(:)       !< per line
       type(step_log_t), allocatable :: pending(:)    !< (log_block) rows not in .h5 yet
       integer :: n_pending = 0                       !< rows held in pending
-      integer :: hold_frames = 1                     !< frames held for dynamic.h5 at most
+      integer :: hold_frames = frame_block           !< frames held between syncs at most
       integer :: frames_held = 0                     !< frames since the last sync
       type(run_summary_t) :: progress                !< what status.txt says while running
       type(run_summary_t) :: synced                  !< progress as of the last sync
