@@ -61,6 +61,9 @@ module rodyn_water
                                                    !< [m/s], acceleration [m/s2], eta [m]
       real(wp), allocatable :: fh(:, :)            !< (3, nn) water force on the nodes [N]
       real(wp), allocatable :: fs(:, :)            !< (3, nn) seabed force on the nodes [N]
+      !> (nl) factor on the buoyancy of each line's sections and attachments: statics
+      !> ramps it with the line's weight (rodyn_statics); unallocated: 1 (dynamics)
+      real(wp), allocatable :: bfac(:)
    end type water_loads_t
 
 contains
@@ -405,7 +408,8 @@ contains
    !> Its weight is in the gravity loads and its added mass in the inertia. In a wave
    !> (we: the node's wkin) the wave's velocity is added to the current's, the surface
    !> is z_s + eta, and the water's acceleration a_w adds (1 + C_a) rho_w V a_w.
-   pure subroutine water_attachment(wl, volume, cda_area, x, v, cx, cv, f, k, want_k, we, ca)
+   pure subroutine water_attachment(wl, volume, cda_area, x, v, cx, cv, f, k, want_k, we, ca, &
+                                    bf)
       type(water_loads_t), intent(in) :: wl !< loads
       real(wp), intent(in) :: volume        !< displaced volume [m3]
       real(wp), intent(in) :: cda_area      !< Cd A [m2]
@@ -418,6 +422,7 @@ contains
       logical, intent(in) :: want_k         !< form k
       real(wp), intent(in), optional :: we(7) !< the node's wave kinematics (wkin)
       real(wp), intent(in), optional :: ca    !< added-mass coefficient, with we [-]
+      real(wp), intent(in), optional :: bf    !< factor on the buoyancy (bfac) [-]
       real(wp) :: rho, gmag, r, phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), urm, g(3, 3)
       integer :: i
       rho = wl%env%water%density
@@ -432,6 +437,10 @@ contains
       k = 0.0_wp
       f(3) = rho*gmag*volume*phi
       if (want_k) k(3, 3) = -cx*rho*gmag*volume*dphi
+      if (present(bf)) then
+         f(3) = bf*f(3)
+         k(3, 3) = bf*k(3, 3)
+      end if
       if (present(we) .and. present(ca)) then
          f = f + phi*(1.0_wp + ca)*rho*volume*we(4:6)
          if (want_k) k(:, 3) = k(:, 3) - cx*dphi*(1.0_wp + ca)*rho*volume*we(4:6)

@@ -11,6 +11,7 @@ module rodyn_assembly
                           bc_position, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_water, only: water_loads_t, water_element, water_attachment
+   use rodyn_hydro, only: water_section_t
    use rodyn_state, only: state_t, state_gather
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
@@ -295,6 +296,7 @@ contains
       type(banded_t), intent(inout) :: bm      !< tangent
       logical, intent(in) :: want_k            !< add the tangent
       real(wp) :: fh(3, max_nen), fs(3, max_nen), ke(3*max_nen, 3*max_nen), f(3), k(3, 3)
+      type(water_section_t) :: ws
       real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen), we(7, max_nen)
       integer :: e, p, nen, a, j, node, dofs(3*max_nen), i
       wl%fh = 0.0_wp
@@ -313,10 +315,19 @@ contains
                   we(:, a) = wl%wkin(:, nodes(a))
                end do
             end if
-            call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
-                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
-                               we(:, 1:nen))
+            if (allocated(wl%bfac)) then       ! (statics: buoyancy ramped with the weight)
+               ws = wl%sec(mesh%elem_sec(e))
+               ws%fb = wl%bfac(mesh%elem_line(e))*ws%fb
+               call water_element(wl, ws, p, mesh%elem_le(e), &
+                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                                  we(:, 1:nen))
+            else
+               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
+                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                                  we(:, 1:nen))
+            end if
             do a = 1, nen
                fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
@@ -334,6 +345,10 @@ contains
             call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
                                   vf(:, node), cx, cv, f, k, want_k, wl%wkin(:, node), &
                                   wl%att_ca(i))
+         else if (allocated(wl%bfac)) then
+            call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
+                                  vf(:, node), cx, cv, f, k, want_k, &
+                                  bf=wl%bfac(mesh%node_line(node)))
          else
             call water_attachment(wl, wl%att_volume(i), wl%att_cda(i), xf(:, node), &
                                   vf(:, node), cx, cv, f, k, want_k)

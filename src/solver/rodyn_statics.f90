@@ -28,7 +28,11 @@
 !> converged shape is the same.
 !>
 !> Self-weight is applied in full from the start on a line that starts as a catenary
-!> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda.
+!> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda,
+!> and so is the line's buoyancy (sections and attachments): the weight in water is
+!> ramped, never the weight alone under full buoyancy, which on a free-hanging riser
+!> in a current floated the line up, flipped it, and converged to the unstable
+!> upside-down equilibrium.
 module rodyn_statics
    use rodyn_kinds, only: wp
    use rodyn_rotation, only: skew
@@ -143,17 +147,22 @@ contains
       end do
    end subroutine roll_gauges
 
-   !> Set the load factor: external forces and the prescribed positions of held nodes
-   !> (reached by the next Newton step, see apply_supports).
-   subroutine static_set_load_factor(prob, lam)
+   !> Set the load factor lam and the factor cur on the current's velocity: external
+   !> forces and the prescribed positions of held nodes (reached by the next Newton step,
+   !> see apply_supports).
+   subroutine static_set_load_factor(prob, lam, cur)
       type(static_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: lam                   !< load factor [-]
+      real(wp), intent(in) :: cur                   !< current factor [-]
       prob%lam = lam
       where (.not. prob%mesh%line_catenary) prob%gfac = lam
+      ! the buoyancy with the weight: the weight in water is what is ramped (buoyancy in
+      ! full under a tenth of the weight floated a free-hanging riser up and flipped it)
+      if (prob%water%active) prob%water%bfac = prob%gfac
       call external_force(prob%mesh, prob%loads, prob%gfac, lam, 0.0_wp, prob%fext)
-      ! the current grows with the load factor (its drag is a load like the others)
-      if (prob%water%active) prob%water%env%r_current = lam*current_factor(prob%water%env%water, &
-                                                                           0.0_wp)
+      ! the current's drag is a load like the others
+      if (prob%water%active) prob%water%env%r_current = cur*current_factor(prob%water%env% &
+                                                                            water, 0.0_wp)
       prob%x_held = prob%sup%x_start + lam*(prob%sup%x_target - prob%sup%x_start)
    end subroutine static_set_load_factor
 
@@ -167,7 +176,8 @@ contains
       if (has_error(err)) return
       call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
                            want_k)
-      ! buoyancy and seabed contact in full from the start, current drag times lambda
+      ! seabed contact in full from the start, buoyancy with the weight (bfac), current
+      ! drag times lambda
       if (this%water%active) call assemble_water(this%water, this%mesh, this%sup, &
                                                  this%state%x, this%zero3, this%zero3, &
                                                  1.0_wp, 0.0_wp, 0.0_wp, this%fint, &
@@ -246,6 +256,13 @@ contains
 
    !> Load stepping from lambda = 0 to 1 with bounded halving of failed increments.
    !> On failure the state is the last converged one and summary says how far it got.
+   !> The current's velocity grows with lambda, but where a line is not started as a
+   !> catenary and the deck has a current, in a second stage: lambda to 1 in still
+   !> water, then the current's factor from 0 to 1 in as many increments. A line that
+   !> starts straight and slack (a free-hanging riser) has no tension at the start and
+   !> so no stiffness against swinging about its top: the first Newton step under a
+   !> drag load across it turned it by thousands of radians, and the solve ended in the
+   !> upside-down equilibrium. With its weight in full first the line is taut.
    subroutine statics_solve(prob, model, summary, err, log_unit)
       type(static_problem_t), intent(inout) :: prob !< set-up problem
       type(model_t), intent(in) :: model            !< model (static options)
@@ -256,8 +273,8 @@ contains
       type(newton_stats_t) :: stats
       type(error_t) :: nerr
       real(wp) :: lam, dlam, dlam0, lam_try
-      integer :: level
-      logical :: retried
+      integer :: level, stage, n_stages
+      logical :: retried, staged
       character(len=200) :: msg
       character(len=:), allocatable :: why
       opts%max_iterations = model%static%max_iterations
@@ -266,22 +283,28 @@ contains
       opts%line_search = model%static%line_search
       opts%log_unit = log_unit
       dlam0 = 1.0_wp/real(model%static%increments, wp)
+      staged = .false.
+      if (prob%water%active .and. allocated(model%water%cur_z)) &
+         staged = size(model%water%cur_z) > 0 .and. .not. all(prob%mesh%line_catenary)
+      n_stages = merge(2, 1, staged)
       lam = 0.0_wp
-      level = 0
-      call static_set_load_factor(prob, lam)
+      call set_factor(1, lam)
       call prob%evaluate(.false., nerr)
       prob%r0 = prob%fint - prob%fext
       prob%d0 = prob%state%d
+      do stage = 1, n_stages
+      lam = 0.0_wp
+      level = 0
       retried = .false.
       do while (lam < 1.0_wp)
          dlam = dlam0*0.5_wp**level
          lam_try = min(1.0_wp, lam + dlam)
          if (1.0_wp - lam_try < 1.0e-12_wp) lam_try = 1.0_wp
-         if (log_unit >= 0) write (log_unit, '(a,i0,a,f10.7)') 'increment ', &
-            summary%increments + 1, ': load factor ', lam_try
+         if (log_unit >= 0) write (log_unit, '(a,i0,3a,f10.7)') 'increment ', &
+            summary%increments + 1, ': ', factor_name(stage), ' ', lam_try
          prob%x_conv = prob%state%x
          prob%d_conv = prob%state%d
-         call static_set_load_factor(prob, lam_try)
+         call set_factor(stage, lam_try)
          call clear_error(nerr)
          opts%line_search = model%static%line_search .or. retried
          call newton_solve(prob, opts, stats, nerr)
@@ -289,7 +312,7 @@ contains
          if (stats%converged .and. .not. has_error(nerr)) then
             lam = lam_try
             summary%increments = summary%increments + 1
-            summary%load_factor = lam
+            if (stage == 1) summary%load_factor = lam
             if (level > 0) level = level - 1
             retried = .false.
             cycle
@@ -297,7 +320,7 @@ contains
          ! failed: back to the last converged state, halve the increment
          prob%state%x = prob%x_conv
          prob%state%d = prob%d_conv
-         call static_set_load_factor(prob, lam)
+         call set_factor(stage, lam)
          if (log_unit >= 0) then
             if (has_error(nerr)) then
                write (log_unit, '(2a)') '  failed: ', nerr%message
@@ -312,8 +335,8 @@ contains
          end if
          retried = .false.
          if (level >= model%static%max_cutbacks) then
-            write (msg, '(a,f9.6,a,i0,a)') 'statics: no convergence beyond load factor ', &
-               lam, ' after ', level, ' halvings of the increment'
+            write (msg, '(3a,f9.6,a,i0,a)') 'statics: no convergence beyond ', &
+               factor_name(stage), ' ', lam, ' after ', level, ' halvings of the increment'
             ! what diverged: a load beyond the lines' reach, else the solver's reason
             why = load_divergence_hint(model)
             if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
@@ -326,8 +349,30 @@ contains
          level = level + 1
          summary%cutbacks = summary%cutbacks + 1
       end do
+      end do
       summary%complete = .true.
       summary%status = 'complete'
+   contains
+      !> Stage 1: the load factor f (with the current unless staged); 2: the current's.
+      subroutine set_factor(stage, f)
+         integer, intent(in) :: stage   !< 1 or 2
+         real(wp), intent(in) :: f      !< factor of the stage [-]
+         if (stage == 1) then
+            call static_set_load_factor(prob, f, merge(0.0_wp, f, staged))
+         else
+            call static_set_load_factor(prob, 1.0_wp, f)
+         end if
+      end subroutine set_factor
+
+      pure function factor_name(stage) result(name)
+         integer, intent(in) :: stage   !< 1 or 2
+         character(len=:), allocatable :: name
+         if (stage == 1) then
+            name = 'load factor'
+         else
+            name = 'current factor (the weight in full)'
+         end if
+      end function factor_name
    end subroutine statics_solve
    !> Set up and solve the static problem of a built mesh; wall time into summary.
    subroutine statics_run(prob, model, mesh, state, summary, err, log_unit)
