@@ -3,16 +3,18 @@
 !> (wave_warnings: a wave steeper than the breaking limit). docs/deck.md describes the
 !> keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to these readers.
 module rodyn_deck_waves
-   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_kinds, only: wp, i8, pi, two_pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
-                          sea_jonswap, sea_table
+                          sea_jonswap, sea_table, sea_record
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
                                card_get_real, card_get_int, card_get_choice, &
                                card_check_data, card_data_table, card_data_error, &
-                               card_find_param, real_str, int_str, param_len
+                               card_find_param, card_get_table, card_file_error, &
+                               real_str, int_str, param_len
    use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
-   use rodyn_waves, only: wave_number, jonswap_gamma, sea_components
+   use rodyn_deck_dynamic, only: record_table, check_time_table
+   use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components
    implicit none
    private
    public :: read_wave_card, validate_waves, wave_warnings
@@ -22,6 +24,9 @@ module rodyn_deck_waves
    real(wp), parameter :: steep_depth = 0.78_wp    !< breaking limit of H/d [-]
    real(wp), parameter :: max_gamma = 20.0_wp      !< largest JONSWAP GAMMA [-]
    integer, parameter :: max_components = 100000   !< most components of a sea
+   integer, parameter :: max_directions = 360      !< most directions of a spread sea
+   integer, parameter :: default_directions = 15   !< directions when SPREADING is given
+   real(wp), parameter :: record_spacing = 1.0e-6_wp !< tolerance of a record's step [dt]
    character(len=1), parameter :: lf = achar(10)
 
 contains
@@ -31,7 +36,9 @@ contains
    !> PHASE) [deg]. *WAVE, TYPE=JONSWAP|PM, HS=, TP= [, GAMMA=] or TYPE=SPECTRUM with data
    !> lines omega [rad/s], S [m2 s/rad]: an irregular sea of COMPONENTS (200) components
    !> between OMEGA MIN and OMEGA MAX [rad/s] (0.5 and 4 omega_p; the table's ends),
-   !> drawn from SEED (1) by sea_components. All: HEADING [deg, from +x towards +y],
+   !> drawn from SEED (1) by sea_components, spread over DIRECTIONS (15) by the cos-2s
+   !> exponent SPREADING (none). *WAVE, TYPE=RECORD, INPUT=file [, X=, Y=]: the
+   !> components of an elevation record (read_record). All: HEADING [deg, from +x towards +y],
    !> STRETCHING=WHEELER (default), VERTICAL, EXTRAPOLATION or NONE, RAMP [s] (0).
    !> At most one.
    subroutine read_wave_card(deck, ic, model, err)
@@ -51,7 +58,8 @@ contains
          call card_check_params(card, [character(len=param_len) :: 'TYPE', 'HEIGHT', &
                                 'PERIOD', 'HEADING', 'PHASE', 'STRETCHING', 'RAMP', 'HS', &
                                 'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', &
-                                'OMEGA MAX'], err)
+                                'OMEGA MAX', 'SPREADING', 'DIRECTIONS', 'INPUT', 'X', &
+                                'Y'], err)
          if (has_error(err)) return
          k = sea_airy
          call card_get_choice(card, 'TYPE', sea_names, k, err)
@@ -66,6 +74,16 @@ contains
          wv%stretching = k
          call get_bounded(card, 'RAMP', wv%ramp, .false., err)
          if (has_error(err)) return
+         if (wv%kind == sea_record) then
+            wv%heading = [heading*deg]
+            call read_record(card, model, err)
+            if (has_error(err)) return
+            wv%present = .true.
+            return
+         end if
+         call refuse(card, [character(len=param_len) :: 'INPUT', 'X', 'Y'], &
+                     trim(sea_names(wv%kind)), err)
+         if (has_error(err)) return
          if (wv%kind /= sea_airy) then
             call read_sea(card, wv, err)
             if (has_error(err)) return
@@ -75,7 +93,7 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
-                     'SEED', 'OMEGA MIN', 'OMEGA MAX'], 'AIRY', err)
+                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
          if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
@@ -187,6 +205,8 @@ contains
                          int_str(wv%components), err)
          return
       end if
+      call read_spreading(card, wv, err)
+      if (has_error(err)) return
       call card_get_int(card, 'SEED', wv%seed, err)
       call get_bounded(card, 'OMEGA MIN', wv%omega_min, .true., err)
       call get_bounded(card, 'OMEGA MAX', wv%omega_max, .true., err)
@@ -197,6 +217,77 @@ contains
          return
       end if
    end subroutine read_sea
+
+   !> TYPE=RECORD, INPUT=file of rows t [s], eta [m] (at least 2, equally spaced in
+   !> time) [, X=, Y= of the point the record was taken at, m]: the record's Fourier
+   !> components (record_components) towards HEADING.
+   subroutine read_record(card, model, err)
+      type(card_t), intent(in) :: card      !< the *WAVE card
+      type(model_t), intent(inout) :: model !< model: waves set, the table recorded
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: what = 't, eta'
+      type(table_t) :: table
+      real(wp) :: dt, tk
+      integer :: k, n
+      call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE', 'HS', &
+                  'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', 'OMEGA MAX', &
+                  'SPREADING', 'DIRECTIONS'], 'RECORD', err)
+      if (has_error(err)) return
+      call card_check_data(card, 0, 0, err)
+      if (has_error(err)) return
+      call card_get_real(card, 'X', model%waves%point(1), err)
+      call card_get_real(card, 'Y', model%waves%point(2), err)
+      if (has_error(err)) return
+      call card_get_table(card, 'INPUT', 2, what, table, err, required=.true.)
+      if (has_error(err)) return
+      call check_time_table(card, table, .true., what, err)
+      if (has_error(err)) return
+      n = table%n_rows
+      dt = (table%values(1, n) - table%values(1, 1))/real(n - 1, wp)
+      do k = 2, n
+         tk = table%values(1, 1) + real(k - 1, wp)*dt
+         if (abs(table%values(1, k) - tk) > record_spacing*dt) then
+            call card_file_error(card, table%path, table%line(k), 'the samples must be'// &
+                                 ' equally spaced (every '//real_str(dt)//' s from the'// &
+                                 ' first and last times): t = '// &
+                                 real_str(table%values(1, k))//', expected '// &
+                                 real_str(tk), err)
+            return
+         end if
+      end do
+      call record_components(table%values(1, 1), dt, table%values(2, 1:n), model%waves)
+      call record_table(table, model)
+   end subroutine read_record
+
+   !> SPREADING (the cos-2s exponent s, > 0) and DIRECTIONS (M, 1 to 360; 15 when
+   !> SPREADING is given, and only with it); COMPONENTS x DIRECTIONS at most 100000.
+   subroutine read_spreading(card, wv, err)
+      type(card_t), intent(in) :: card      !< the *WAVE card
+      type(waves_t), intent(inout) :: wv    !< the sea: spreading, directions set
+      type(error_t), intent(inout) :: err   !< status
+      logical :: found
+      call get_bounded(card, 'SPREADING', wv%spreading, .true., err)
+      if (has_error(err)) return
+      wv%directions = 1
+      if (wv%spreading > 0.0_wp) wv%directions = default_directions
+      call card_get_int(card, 'DIRECTIONS', wv%directions, err, found)
+      if (has_error(err)) return
+      if (found .and. .not. wv%spreading > 0.0_wp) then
+         call param_fail(card, 'DIRECTIONS', 'DIRECTIONS needs SPREADING (the cos-2s '// &
+                         'exponent): without it the sea is long-crested', err)
+         return
+      end if
+      if (wv%directions < 1 .or. wv%directions > max_directions) then
+         call param_fail(card, 'DIRECTIONS', 'DIRECTIONS must be >= 1 and <= 360, got '// &
+                         int_str(wv%directions), err)
+         return
+      end if
+      if (int(wv%components, i8)*int(wv%directions, i8) > int(max_components, i8)) then
+         call param_fail(card, 'DIRECTIONS', 'COMPONENTS x DIRECTIONS must be <= 100000, '// &
+                         'got '//int_str(wv%components)//' x '//int_str(wv%directions), err)
+         return
+      end if
+   end subroutine read_spreading
 
    !> An error at the first of `names` given on the card: not a parameter of this TYPE.
    subroutine refuse(card, names, kind, err)
