@@ -1,7 +1,8 @@
 !> Deck reader, the waves: *WAVE (read_wave_card), its whole-deck check (validate_waves:
 !> the deck has *WATER, whose depth the dispersion relation uses) and its warning
-!> (wave_warnings: a wave steeper than the breaking limit). docs/deck.md describes the
-!> keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to these readers.
+!> (wave_warnings: a wave or a sea steeper than the breaking limit). docs/deck.md
+!> describes the keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to
+!> these readers.
 module rodyn_deck_waves
    use rodyn_kinds, only: wp, i8, pi, two_pi
    use rodyn_error, only: error_t, has_error
@@ -22,6 +23,10 @@ module rodyn_deck_waves
    real(wp), parameter :: deg = pi/180.0_wp        !< one degree [rad]
    real(wp), parameter :: steep_deep = 1.0_wp/7.0_wp !< breaking limit of H/L [-]
    real(wp), parameter :: steep_depth = 0.78_wp    !< breaking limit of H/d [-]
+   real(wp), parameter :: steep_sea_short = 1.0_wp/15.0_wp !< limit of S_p, Tp <= tp_short
+   real(wp), parameter :: steep_sea_long = 1.0_wp/25.0_wp  !< limit of S_p, Tp >= tp_long
+   real(wp), parameter :: tp_short = 8.0_wp        !< [s]
+   real(wp), parameter :: tp_long = 15.0_wp        !< [s]
    real(wp), parameter :: max_gamma = 20.0_wp      !< largest JONSWAP GAMMA [-]
    integer, parameter :: max_components = 100000   !< most components of a sea
    integer, parameter :: max_directions = 360      !< most directions of a spread sea
@@ -325,22 +330,36 @@ contains
 
    !> 'FILE:LINE: warning: *WAVE: ...' when a regular wave is steeper than the breaking limit,
    !> H/L > 1/7 (L = 2 pi/k at the water depth) or H/d > 0.78 (DNV-RP-C205, 2021,
-   !> section 3.4.6): linear theory describes such a wave badly. '' otherwise.
+   !> section 3.4.6), or an irregular sea (JONSWAP, PM, SPECTRUM) steeper than DNV-RP-C205's
+   !> limiting average steepness (section 3.5.5): S_p = 2 pi Hs/(g Tp^2) > 1/15 for
+   !> Tp <= 8 s, 1/25 for Tp >= 15 s, linear in Tp between (sea_steepness); linear
+   !> theory describes such a wave badly. '' otherwise.
    function wave_warnings(deck, model) result(text)
       type(deck_t), intent(in) :: deck      !< all cards
       type(model_t), intent(in) :: model    !< the validated model
       character(len=:), allocatable :: text !< the warning lines
-      real(wp) :: h, d, el
+      real(wp) :: h, d, el, sp, lim, tp
       integer :: ic, i
       text = ''
       if (.not. model%waves%present .or. .not. model%water%present) return
-      if (model%waves%kind /= sea_airy) return
       ic = 0
       do i = 1, deck%n_cards
          if (deck%cards(i)%keyword == 'WAVE') ic = i
       end do
       if (ic == 0) return
       d = model%water%depth
+      if (model%waves%kind == sea_record) return
+      if (model%waves%kind /= sea_airy) then
+         call sea_steepness(model%waves, norm2(model%gravity), tp, sp, lim)
+         if (sp > lim) text = location(deck, ic)//': warning: *WAVE: the sea of HS='// &
+                              real_str(rounded(model%waves%hs))//' m and TP='// &
+                              real_str(rounded(tp))//' s is steeper than the breaking'// &
+                              ' limit: 2 pi Hs/(g Tp^2) = '//real_str(rounded(sp))//' > '// &
+                              real_str(rounded(lim))//" (DNV-RP-C205's limiting average"// &
+                              ' steepness: 1/15 for Tp <= 8 s, 1/25 for Tp >= 15 s, linear'// &
+                              ' between); linear theory describes it badly'//lf
+         return
+      end if
       do i = 1, size(model%waves%height)
          h = model%waves%height(i)
          el = two_pi/wave_number(two_pi/model%waves%period(i), d, norm2(model%gravity))
@@ -365,4 +384,20 @@ contains
          rounded = anint(x*sc)/sc
       end function rounded
    end function wave_warnings
+
+   !> The average steepness S_p = 2 pi Hs/(g Tp^2) of an irregular sea and DNV-RP-C205's
+   !> limit at its Tp (wave_warnings); Tp of a SPECTRUM table at its largest S (the
+   !> first row of the largest), its Hs 4 sqrt(m0).
+   pure subroutine sea_steepness(wv, g, tp, sp, lim)
+      type(waves_t), intent(in) :: wv  !< an irregular sea (JONSWAP, PM, SPECTRUM)
+      real(wp), intent(in) :: g        !< |gravity| [m/s2]
+      real(wp), intent(out) :: tp      !< peak period [s]
+      real(wp), intent(out) :: sp      !< S_p [-]
+      real(wp), intent(out) :: lim     !< the limit at tp [-]
+      tp = wv%tp
+      if (wv%kind == sea_table) tp = two_pi/wv%tab_omega(maxloc(wv%tab_s, 1))
+      sp = two_pi*wv%hs/(g*tp**2)
+      lim = steep_sea_short + (steep_sea_long - steep_sea_short) &
+            *min(1.0_wp, max(0.0_wp, (tp - tp_short)/(tp_long - tp_short)))
+   end subroutine sea_steepness
 end module rodyn_deck_waves
