@@ -266,12 +266,14 @@ module rodyn_model
       complex(wp), allocatable :: coef(:, :)  !< (6, nc) complex response factors
       real(wp), allocatable :: omega(:)       !< (nc) angular frequencies [rad/s]
       real(wp) :: sea_ramp = 0.0_wp           !< ramp-in of the sea [s] (0: none)
-      !> slow motion of the reference point, global: a static offset and a harmonic drift
-      !> (rodyn_motion's vessel_slow_motion)
+      !> slow motion of the reference point, global: a static offset and a drift,
+      !> harmonic or from a table (rodyn_motion's vessel_slow_motion)
       real(wp) :: offset(4) = 0.0_wp          !< x, y, z [m], heading [rad]
       real(wp) :: drift(4) = 0.0_wp           !< amplitudes x, y [m], 0, yaw [rad]
       real(wp) :: drift_period = 0.0_wp       !< [s]; 0: no drift
       real(wp) :: drift_phase = 0.0_wp        !< [rad]
+      real(wp), allocatable :: drift_time(:)  !< (nd) times of a drift table [s]
+      real(wp), allocatable :: drift_table(:, :) !< (4, nd) x, y, z [m], heading [rad]
    end type vessel_t
 
    !> Prescribed motion of a held node (*MOTION): a displacement added to the position

@@ -15,7 +15,7 @@ module rodyn_deck_vessel
                                int_str, param_len
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
-   use rodyn_deck_dynamic, only: record_table
+   use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_field_t, waves_build
    use rodyn_vessel, only: vessel_coefficients
    implicit none
@@ -51,7 +51,8 @@ contains
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'INPUT', &
                                 'PHASE', 'ROTATION UNITS', 'INTERPOLATION', 'OFFSET X', &
                                 'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
-                                'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE'], err)
+                                'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE', &
+                                'DRIFT INPUT'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -90,7 +91,7 @@ contains
          if (has_error(err)) return
          ve%origin = v(1:3)
          ve%heading = v(4)*deg
-         call read_slow_motion(card, ve, err)
+         call read_slow_motion(card, ve, model, err)
          if (has_error(err)) return
 
          if (ve%kind == vessel_from_table) then
@@ -121,11 +122,15 @@ contains
    !> The slow motion of the reference point, global (rodyn_motion's vessel_slow_motion):
    !> OFFSET X, Y, Z [m], OFFSET HEADING [deg] (0); a harmonic drift of amplitudes
    !> DRIFT X, DRIFT Y [m], DRIFT YAW [deg] (0), DRIFT PERIOD [s] (> 0, required with an
-   !> amplitude and only with one), DRIFT PHASE [deg] (0, only with a drift).
-   subroutine read_slow_motion(card, ve, err)
+   !> amplitude and only with one), DRIFT PHASE [deg] (0, only with a drift); or a drift
+   !> table, DRIFT INPUT=file of rows t [s], x, y, z [m], heading [deg].
+   subroutine read_slow_motion(card, ve, model, err)
       type(card_t), intent(in) :: card      !< the *VESSEL card
       type(vessel_t), intent(inout) :: ve   !< vessel: offset and drift set
+      type(model_t), intent(inout) :: model !< model: the drift table recorded
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: what_drift = 't, x, y, z, heading'
+      type(table_t) :: table
       character(len=param_len), parameter :: off(4) = [character(len=param_len) :: &
                                              'OFFSET X', 'OFFSET Y', 'OFFSET Z', &
                                              'OFFSET HEADING']
@@ -172,6 +177,19 @@ contains
          return
       end if
       ve%drift_phase = ph*deg
+      call card_get_table(card, 'DRIFT INPUT', 5, what_drift, table, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (any_amp) then
+         call param_fail(card, 'DRIFT INPUT', 'DRIFT INPUT (a drift table) or DRIFT X, '// &
+                         'DRIFT Y, DRIFT YAW (a harmonic drift), not both', err)
+         return
+      end if
+      call check_time_table(card, table, .true., what_drift, err)
+      if (has_error(err)) return
+      ve%drift_time = table%values(1, 1:table%n_rows)
+      ve%drift_table = table%values(2:5, 1:table%n_rows)
+      ve%drift_table(4, :) = ve%drift_table(4, :)*deg
+      call record_table(table, model)
    end subroutine read_slow_motion
 
    !> A 6-DOF motion table: at least 2 rows, times increasing strictly, finite values.

@@ -89,15 +89,22 @@ contains
    end function vessel_motion
 
    !> Slow motion of a vessel's reference point, global: its static offset plus its
-   !> harmonic drift, d(t) = offset + a sin(2 pi t/T_d + phi_d) (x, y [m], z [m], heading
-   !> [rad]; a = 0 in z; no drift when T_d = 0).
+   !> drift, harmonic d(t) = offset + a sin(2 pi t/T_d + phi_d) (x, y [m], z [m], heading
+   !> [rad]; a = 0 in z; none when T_d = 0) or from its table (linear interpolation,
+   !> constant beyond the ends).
    pure function vessel_slow_motion(ve, t) result(d)
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
       real(wp) :: d(4)
+      integer :: k
       d = ve%offset
       if (ve%drift_period > 0.0_wp) &
          d = d + ve%drift*sin(two_pi*t/ve%drift_period + ve%drift_phase)
+      if (allocated(ve%drift_time)) then
+         do k = 1, 4
+            d(k) = d(k) + interpolate(ve%drift_time, ve%drift_table(k, :), t)
+         end do
+      end if
    end function vessel_slow_motion
 
    !> Value of an amplitude at time t (linear interpolation, constant beyond the ends).
