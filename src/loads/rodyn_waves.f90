@@ -334,7 +334,8 @@ contains
       end if
       allocate (theta(m))
       theta = 0.0_wp
-      if (m > 1) call spreading_directions(waves%spreading, m, theta)
+      if (m > 1 .and. waves%spreading > 0.0_wp) &
+         call spreading_directions(waves%spreading, m, theta)
       ! the generator's two states from the seed (L'Ecuyer's ranges 1..m - 1)
       s1 = 1_i8 + modulo(int(waves%seed, i8), 2147483562_i8)
       s2 = 1_i8 + modulo(int(waves%seed, i8)*7919_i8 + 12345_i8, 2147483398_i8)
@@ -378,8 +379,10 @@ contains
       real(wp), allocatable :: cum(:), cumc(:)
       real(wp) :: f0, f1, h, xmax, c0, c1, clo, chi, elo, ehi
       integer :: j, k
-      allocate (cum(0:ng), cumc(0:ng))
+      theta = 0.0_wp
       xmax = min(pi, 2.0_wp*acos(exp(-40.0_wp/s)))
+      if (.not. xmax > 0.0_wp) return  ! s so large that the spread is below round-off
+      allocate (cum(0:ng), cumc(0:ng))
       h = xmax/real(ng, wp)
       cum(0) = 0.0_wp
       cumc(0) = 0.0_wp
@@ -392,7 +395,6 @@ contains
       end do
       cumc = cumc/cum(ng)
       cum = cum/cum(ng)
-      theta = 0.0_wp
       ! the upper half: bin j holds the probabilities [(j - 1)/M, j/M], that is
       ! [2 (j - 1)/M - 1, 2 j/M - 1] of [0, pi]; mirrored below
       do j = m/2 + 1 + modulo(m, 2), m
