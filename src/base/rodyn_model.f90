@@ -10,7 +10,7 @@ module rodyn_model
    public :: dynamic_options_t, motion_t, amplitude_t, initial_velocity_t
    public :: water_t, seabed_t, attachment_t, rho_water_default
    public :: waves_t, stretch_wheeler, stretch_vertical, stretch_extrapolation, stretch_none
-   public :: stretch_names, sea_airy, sea_jonswap, sea_pm, sea_table, sea_names
+   public :: stretch_names, sea_airy, sea_jonswap, sea_pm, sea_table, sea_record, sea_names
    public :: element_rod, element_cable, element_names
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table, motion_vessel
@@ -167,8 +167,9 @@ module rodyn_model
    integer, parameter :: sea_jonswap = 2   !< JONSWAP spectrum (Hs, Tp, gamma)
    integer, parameter :: sea_pm = 3        !< Pierson-Moskowitz spectrum (Hs, Tp)
    integer, parameter :: sea_table = 4     !< a spectrum given as a table
-   character(len=8), parameter :: sea_names(4) = [character(len=8) :: 'AIRY', 'JONSWAP', &
-                                                  'PM', 'SPECTRUM']
+   integer, parameter :: sea_record = 5    !< an elevation record, decomposed (FFT)
+   character(len=8), parameter :: sea_names(5) = [character(len=8) :: 'AIRY', 'JONSWAP', &
+                                                  'PM', 'SPECTRUM', 'RECORD']
 
    !> The sea state (*WAVE): a sum of Airy components, the elevation above the still
    !> water level eta = sum_i (H_i/2) cos(k_i (x cos beta_i + y sin beta_i) - omega_i t
@@ -186,6 +187,10 @@ module rodyn_model
       integer :: seed = 1                !< seed of the frequencies and phases
       real(wp) :: omega_min = 0.0_wp     !< lowest frequency of the components [rad/s]
       real(wp) :: omega_max = 0.0_wp     !< highest [rad/s]
+      real(wp) :: spreading = 0.0_wp     !< cos-2s exponent s [-]; 0: long-crested
+      integer :: directions = 1          !< directions per frequency bin (spreading)
+      real(wp) :: point(2) = 0.0_wp      !< x, y where the phases are given (RECORD) [m]
+      real(wp) :: mean = 0.0_wp          !< the record's mean elevation, removed [m]
       real(wp), allocatable :: tab_omega(:) !< (nt) SPECTRUM table: frequencies [rad/s]
       real(wp), allocatable :: tab_s(:)     !< (nt) spectral density [m2 s/rad]
       integer :: stretching = stretch_wheeler !< stretch_* constant
@@ -261,6 +266,14 @@ module rodyn_model
       complex(wp), allocatable :: coef(:, :)  !< (6, nc) complex response factors
       real(wp), allocatable :: omega(:)       !< (nc) angular frequencies [rad/s]
       real(wp) :: sea_ramp = 0.0_wp           !< ramp-in of the sea [s] (0: none)
+      !> slow motion of the reference point, global: a static offset and a drift,
+      !> harmonic or from a table (rodyn_motion's vessel_slow_motion)
+      real(wp) :: offset(4) = 0.0_wp          !< x, y, z [m], heading [rad]
+      real(wp) :: drift(4) = 0.0_wp           !< amplitudes x, y [m], 0, yaw [rad]
+      real(wp) :: drift_period = 0.0_wp       !< [s]; 0: no drift
+      real(wp) :: drift_phase = 0.0_wp        !< [rad]
+      real(wp), allocatable :: drift_time(:)  !< (nd) times of a drift table [s]
+      real(wp), allocatable :: drift_table(:, :) !< (4, nd) x, y, z [m], heading [rad]
    end type vessel_t
 
    !> Prescribed motion of a held node (*MOTION): a displacement added to the position

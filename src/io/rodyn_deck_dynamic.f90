@@ -25,6 +25,7 @@ module rodyn_deck_dynamic
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
    public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings, record_table
+   public :: check_time_table
 
    integer, parameter :: max_steps = 100000000    !< most time steps TIME/DT of a run
    ! Time resolution of the prescribed motions and loads (docs/dynamics.md, "Time step

@@ -9,13 +9,13 @@ module rodyn_deck_vessel
    use rodyn_model, only: model_t, vessel_t, vessel_from_rao, vessel_from_table, &
                           rao_interp_complex, rao_interp_polar, motion_vessel, bc_clamped
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
-                               card_find_param, &
+                               card_find_param, card_get_real, &
                                card_file_error, card_get_name, card_get_choice, &
                                card_check_data, card_data_reals, card_get_table, real_str, &
                                int_str, param_len
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
-   use rodyn_deck_dynamic, only: record_table
+   use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_field_t, waves_build
    use rodyn_vessel, only: vessel_coefficients
    implicit none
@@ -49,7 +49,10 @@ contains
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'INPUT', &
-                                'PHASE', 'ROTATION UNITS', 'INTERPOLATION'], err)
+                                'PHASE', 'ROTATION UNITS', 'INTERPOLATION', 'OFFSET X', &
+                                'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
+                                'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE', &
+                                'DRIFT INPUT'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -88,6 +91,8 @@ contains
          if (has_error(err)) return
          ve%origin = v(1:3)
          ve%heading = v(4)*deg
+         call read_slow_motion(card, ve, model, err)
+         if (has_error(err)) return
 
          if (ve%kind == vessel_from_table) then
             call card_get_table(card, 'INPUT', 7, what_motion, table, err, required=.true.)
@@ -113,6 +118,79 @@ contains
       model%vessels(pend%n_vessels) = ve
       pend%vessel_card(pend%n_vessels) = ic
    end subroutine read_vessel_card
+
+   !> The slow motion of the reference point, global (rodyn_motion's vessel_slow_motion):
+   !> OFFSET X, Y, Z [m], OFFSET HEADING [deg] (0); a harmonic drift of amplitudes
+   !> DRIFT X, DRIFT Y [m], DRIFT YAW [deg] (0), DRIFT PERIOD [s] (> 0, required with an
+   !> amplitude and only with one), DRIFT PHASE [deg] (0, only with a drift); or a drift
+   !> table, DRIFT INPUT=file of rows t [s], x, y, z [m], heading [deg].
+   subroutine read_slow_motion(card, ve, model, err)
+      type(card_t), intent(in) :: card      !< the *VESSEL card
+      type(vessel_t), intent(inout) :: ve   !< vessel: offset and drift set
+      type(model_t), intent(inout) :: model !< model: the drift table recorded
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: what_drift = 't, x, y, z, heading'
+      type(table_t) :: table
+      character(len=param_len), parameter :: off(4) = [character(len=param_len) :: &
+                                             'OFFSET X', 'OFFSET Y', 'OFFSET Z', &
+                                             'OFFSET HEADING']
+      character(len=param_len), parameter :: amp(3) = [character(len=param_len) :: &
+                                             'DRIFT X', 'DRIFT Y', 'DRIFT YAW']
+      real(wp) :: ph
+      logical :: found, any_amp
+      integer :: j
+      do j = 1, 4
+         call card_get_real(card, trim(off(j)), ve%offset(j), err)
+      end do
+      if (has_error(err)) return
+      ve%offset(4) = ve%offset(4)*deg
+      any_amp = .false.
+      do j = 1, 3
+         call card_get_real(card, trim(amp(j)), ve%drift(merge(j, 4, j < 3)), err, found)
+         any_amp = any_amp .or. found
+      end do
+      if (has_error(err)) return
+      ve%drift(4) = ve%drift(4)*deg
+      call card_get_real(card, 'DRIFT PERIOD', ve%drift_period, err, found)
+      if (has_error(err)) return
+      if (any_amp .and. .not. found) then
+         call card_error(card, 'a drift (DRIFT X, DRIFT Y or DRIFT YAW) needs its DRIFT '// &
+                         'PERIOD', err)
+         return
+      end if
+      if (found .and. .not. any_amp) then
+         call param_fail(card, 'DRIFT PERIOD', 'DRIFT PERIOD without a drift amplitude '// &
+                         '(DRIFT X, DRIFT Y or DRIFT YAW)', err)
+         return
+      end if
+      if (found .and. .not. ve%drift_period > 0.0_wp) then
+         call param_fail(card, 'DRIFT PERIOD', 'DRIFT PERIOD must be > 0, got '// &
+                         real_str(ve%drift_period), err)
+         return
+      end if
+      ph = 0.0_wp
+      call card_get_real(card, 'DRIFT PHASE', ph, err, found)
+      if (has_error(err)) return
+      if (found .and. .not. any_amp) then
+         call param_fail(card, 'DRIFT PHASE', 'DRIFT PHASE without a drift amplitude '// &
+                         '(DRIFT X, DRIFT Y or DRIFT YAW)', err)
+         return
+      end if
+      ve%drift_phase = ph*deg
+      call card_get_table(card, 'DRIFT INPUT', 5, what_drift, table, err, found)
+      if (has_error(err) .or. .not. found) return
+      if (any_amp) then
+         call param_fail(card, 'DRIFT INPUT', 'DRIFT INPUT (a drift table) or DRIFT X, '// &
+                         'DRIFT Y, DRIFT YAW (a harmonic drift), not both', err)
+         return
+      end if
+      call check_time_table(card, table, .true., what_drift, err)
+      if (has_error(err)) return
+      ve%drift_time = table%values(1, 1:table%n_rows)
+      ve%drift_table = table%values(2:5, 1:table%n_rows)
+      ve%drift_table(4, :) = ve%drift_table(4, :)*deg
+      call record_table(table, model)
+   end subroutine read_slow_motion
 
    !> A 6-DOF motion table: at least 2 rows, times increasing strictly, finite values.
    subroutine check_motion_table(card, table, err)

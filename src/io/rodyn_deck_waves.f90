@@ -1,18 +1,21 @@
 !> Deck reader, the waves: *WAVE (read_wave_card), its whole-deck check (validate_waves:
 !> the deck has *WATER, whose depth the dispersion relation uses) and its warning
-!> (wave_warnings: a wave steeper than the breaking limit). docs/deck.md describes the
-!> keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to these readers.
+!> (wave_warnings: a wave or a sea steeper than the breaking limit). docs/deck.md
+!> describes the keyword, docs/waves.md the kinematics; rodyn_deck hands the cards to
+!> these readers.
 module rodyn_deck_waves
-   use rodyn_kinds, only: wp, pi, two_pi
+   use rodyn_kinds, only: wp, i8, pi, two_pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
-                          sea_jonswap, sea_table
+                          sea_jonswap, sea_table, sea_record
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
                                card_get_real, card_get_int, card_get_choice, &
                                card_check_data, card_data_table, card_data_error, &
-                               card_find_param, real_str, int_str, param_len
+                               card_find_param, card_get_table, card_file_error, &
+                               real_str, int_str, param_len
    use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
-   use rodyn_waves, only: wave_number, jonswap_gamma, sea_components
+   use rodyn_deck_dynamic, only: record_table, check_time_table
+   use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components
    implicit none
    private
    public :: read_wave_card, validate_waves, wave_warnings
@@ -20,8 +23,15 @@ module rodyn_deck_waves
    real(wp), parameter :: deg = pi/180.0_wp        !< one degree [rad]
    real(wp), parameter :: steep_deep = 1.0_wp/7.0_wp !< breaking limit of H/L [-]
    real(wp), parameter :: steep_depth = 0.78_wp    !< breaking limit of H/d [-]
+   real(wp), parameter :: steep_sea_short = 1.0_wp/15.0_wp !< limit of S_p, Tp <= tp_short
+   real(wp), parameter :: steep_sea_long = 1.0_wp/25.0_wp  !< limit of S_p, Tp >= tp_long
+   real(wp), parameter :: tp_short = 8.0_wp        !< [s]
+   real(wp), parameter :: tp_long = 15.0_wp        !< [s]
    real(wp), parameter :: max_gamma = 20.0_wp      !< largest JONSWAP GAMMA [-]
    integer, parameter :: max_components = 100000   !< most components of a sea
+   integer, parameter :: max_directions = 360      !< most directions of a spread sea
+   integer, parameter :: default_directions = 15   !< directions when SPREADING is given
+   real(wp), parameter :: record_spacing = 1.0e-6_wp !< tolerance of a record's step [dt]
    character(len=1), parameter :: lf = achar(10)
 
 contains
@@ -31,7 +41,9 @@ contains
    !> PHASE) [deg]. *WAVE, TYPE=JONSWAP|PM, HS=, TP= [, GAMMA=] or TYPE=SPECTRUM with data
    !> lines omega [rad/s], S [m2 s/rad]: an irregular sea of COMPONENTS (200) components
    !> between OMEGA MIN and OMEGA MAX [rad/s] (0.5 and 4 omega_p; the table's ends),
-   !> drawn from SEED (1) by sea_components. All: HEADING [deg, from +x towards +y],
+   !> drawn from SEED (1) by sea_components, spread over DIRECTIONS (15) by the cos-2s
+   !> exponent SPREADING (none). *WAVE, TYPE=RECORD, INPUT=file [, X=, Y=]: the
+   !> components of an elevation record (read_record). All: HEADING [deg, from +x towards +y],
    !> STRETCHING=WHEELER (default), VERTICAL, EXTRAPOLATION or NONE, RAMP [s] (0).
    !> At most one.
    subroutine read_wave_card(deck, ic, model, err)
@@ -51,7 +63,8 @@ contains
          call card_check_params(card, [character(len=param_len) :: 'TYPE', 'HEIGHT', &
                                 'PERIOD', 'HEADING', 'PHASE', 'STRETCHING', 'RAMP', 'HS', &
                                 'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', &
-                                'OMEGA MAX'], err)
+                                'OMEGA MAX', 'SPREADING', 'DIRECTIONS', 'INPUT', 'X', &
+                                'Y'], err)
          if (has_error(err)) return
          k = sea_airy
          call card_get_choice(card, 'TYPE', sea_names, k, err)
@@ -66,6 +79,16 @@ contains
          wv%stretching = k
          call get_bounded(card, 'RAMP', wv%ramp, .false., err)
          if (has_error(err)) return
+         if (wv%kind == sea_record) then
+            wv%heading = [heading*deg]
+            call read_record(card, model, err)
+            if (has_error(err)) return
+            wv%present = .true.
+            return
+         end if
+         call refuse(card, [character(len=param_len) :: 'INPUT', 'X', 'Y'], &
+                     trim(sea_names(wv%kind)), err)
+         if (has_error(err)) return
          if (wv%kind /= sea_airy) then
             call read_sea(card, wv, err)
             if (has_error(err)) return
@@ -75,7 +98,7 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
-                     'SEED', 'OMEGA MIN', 'OMEGA MAX'], 'AIRY', err)
+                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
          if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
@@ -187,6 +210,8 @@ contains
                          int_str(wv%components), err)
          return
       end if
+      call read_spreading(card, wv, err)
+      if (has_error(err)) return
       call card_get_int(card, 'SEED', wv%seed, err)
       call get_bounded(card, 'OMEGA MIN', wv%omega_min, .true., err)
       call get_bounded(card, 'OMEGA MAX', wv%omega_max, .true., err)
@@ -197,6 +222,77 @@ contains
          return
       end if
    end subroutine read_sea
+
+   !> TYPE=RECORD, INPUT=file of rows t [s], eta [m] (at least 2, equally spaced in
+   !> time) [, X=, Y= of the point the record was taken at, m]: the record's Fourier
+   !> components (record_components) towards HEADING.
+   subroutine read_record(card, model, err)
+      type(card_t), intent(in) :: card      !< the *WAVE card
+      type(model_t), intent(inout) :: model !< model: waves set, the table recorded
+      type(error_t), intent(inout) :: err   !< status
+      character(len=*), parameter :: what = 't, eta'
+      type(table_t) :: table
+      real(wp) :: dt, tk
+      integer :: k, n
+      call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE', 'HS', &
+                  'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', 'OMEGA MAX', &
+                  'SPREADING', 'DIRECTIONS'], 'RECORD', err)
+      if (has_error(err)) return
+      call card_check_data(card, 0, 0, err)
+      if (has_error(err)) return
+      call card_get_real(card, 'X', model%waves%point(1), err)
+      call card_get_real(card, 'Y', model%waves%point(2), err)
+      if (has_error(err)) return
+      call card_get_table(card, 'INPUT', 2, what, table, err, required=.true.)
+      if (has_error(err)) return
+      call check_time_table(card, table, .true., what, err)
+      if (has_error(err)) return
+      n = table%n_rows
+      dt = (table%values(1, n) - table%values(1, 1))/real(n - 1, wp)
+      do k = 2, n
+         tk = table%values(1, 1) + real(k - 1, wp)*dt
+         if (abs(table%values(1, k) - tk) > record_spacing*dt) then
+            call card_file_error(card, table%path, table%line(k), 'the samples must be'// &
+                                 ' equally spaced (every '//real_str(dt)//' s from the'// &
+                                 ' first and last times): t = '// &
+                                 real_str(table%values(1, k))//', expected '// &
+                                 real_str(tk), err)
+            return
+         end if
+      end do
+      call record_components(table%values(1, 1), dt, table%values(2, 1:n), model%waves)
+      call record_table(table, model)
+   end subroutine read_record
+
+   !> SPREADING (the cos-2s exponent s, > 0) and DIRECTIONS (M, 1 to 360; 15 when
+   !> SPREADING is given, and only with it); COMPONENTS x DIRECTIONS at most 100000.
+   subroutine read_spreading(card, wv, err)
+      type(card_t), intent(in) :: card      !< the *WAVE card
+      type(waves_t), intent(inout) :: wv    !< the sea: spreading, directions set
+      type(error_t), intent(inout) :: err   !< status
+      logical :: found
+      call get_bounded(card, 'SPREADING', wv%spreading, .true., err)
+      if (has_error(err)) return
+      wv%directions = 1
+      if (wv%spreading > 0.0_wp) wv%directions = default_directions
+      call card_get_int(card, 'DIRECTIONS', wv%directions, err, found)
+      if (has_error(err)) return
+      if (found .and. .not. wv%spreading > 0.0_wp) then
+         call param_fail(card, 'DIRECTIONS', 'DIRECTIONS needs SPREADING (the cos-2s '// &
+                         'exponent): without it the sea is long-crested', err)
+         return
+      end if
+      if (wv%directions < 1 .or. wv%directions > max_directions) then
+         call param_fail(card, 'DIRECTIONS', 'DIRECTIONS must be >= 1 and <= 360, got '// &
+                         int_str(wv%directions), err)
+         return
+      end if
+      if (int(wv%components, i8)*int(wv%directions, i8) > int(max_components, i8)) then
+         call param_fail(card, 'DIRECTIONS', 'COMPONENTS x DIRECTIONS must be <= 100000, '// &
+                         'got '//int_str(wv%components)//' x '//int_str(wv%directions), err)
+         return
+      end if
+   end subroutine read_spreading
 
    !> An error at the first of `names` given on the card: not a parameter of this TYPE.
    subroutine refuse(card, names, kind, err)
@@ -234,22 +330,36 @@ contains
 
    !> 'FILE:LINE: warning: *WAVE: ...' when a regular wave is steeper than the breaking limit,
    !> H/L > 1/7 (L = 2 pi/k at the water depth) or H/d > 0.78 (DNV-RP-C205, 2021,
-   !> section 3.4.6): linear theory describes such a wave badly. '' otherwise.
+   !> section 3.4.6), or an irregular sea (JONSWAP, PM, SPECTRUM) steeper than DNV-RP-C205's
+   !> limiting average steepness (section 3.5.5): S_p = 2 pi Hs/(g Tp^2) > 1/15 for
+   !> Tp <= 8 s, 1/25 for Tp >= 15 s, linear in Tp between (sea_steepness); linear
+   !> theory describes such a wave badly. '' otherwise.
    function wave_warnings(deck, model) result(text)
       type(deck_t), intent(in) :: deck      !< all cards
       type(model_t), intent(in) :: model    !< the validated model
       character(len=:), allocatable :: text !< the warning lines
-      real(wp) :: h, d, el
+      real(wp) :: h, d, el, sp, lim, tp
       integer :: ic, i
       text = ''
       if (.not. model%waves%present .or. .not. model%water%present) return
-      if (model%waves%kind /= sea_airy) return
       ic = 0
       do i = 1, deck%n_cards
          if (deck%cards(i)%keyword == 'WAVE') ic = i
       end do
       if (ic == 0) return
       d = model%water%depth
+      if (model%waves%kind == sea_record) return
+      if (model%waves%kind /= sea_airy) then
+         call sea_steepness(model%waves, norm2(model%gravity), tp, sp, lim)
+         if (sp > lim) text = location(deck, ic)//': warning: *WAVE: the sea of HS='// &
+                              real_str(rounded(model%waves%hs))//' m and TP='// &
+                              real_str(rounded(tp))//' s is steeper than the breaking'// &
+                              ' limit: 2 pi Hs/(g Tp^2) = '//real_str(rounded(sp))//' > '// &
+                              real_str(rounded(lim))//" (DNV-RP-C205's limiting average"// &
+                              ' steepness: 1/15 for Tp <= 8 s, 1/25 for Tp >= 15 s, linear'// &
+                              ' between); linear theory describes it badly'//lf
+         return
+      end if
       do i = 1, size(model%waves%height)
          h = model%waves%height(i)
          el = two_pi/wave_number(two_pi/model%waves%period(i), d, norm2(model%gravity))
@@ -274,4 +384,20 @@ contains
          rounded = anint(x*sc)/sc
       end function rounded
    end function wave_warnings
+
+   !> The average steepness S_p = 2 pi Hs/(g Tp^2) of an irregular sea and DNV-RP-C205's
+   !> limit at its Tp (wave_warnings); Tp of a SPECTRUM table at its largest S (the
+   !> first row of the largest), its Hs 4 sqrt(m0).
+   pure subroutine sea_steepness(wv, g, tp, sp, lim)
+      type(waves_t), intent(in) :: wv  !< an irregular sea (JONSWAP, PM, SPECTRUM)
+      real(wp), intent(in) :: g        !< |gravity| [m/s2]
+      real(wp), intent(out) :: tp      !< peak period [s]
+      real(wp), intent(out) :: sp      !< S_p [-]
+      real(wp), intent(out) :: lim     !< the limit at tp [-]
+      tp = wv%tp
+      if (wv%kind == sea_table) tp = two_pi/wv%tab_omega(maxloc(wv%tab_s, 1))
+      sp = two_pi*wv%hs/(g*tp**2)
+      lim = steep_sea_short + (steep_sea_long - steep_sea_short) &
+            *min(1.0_wp, max(0.0_wp, (tp - tp_short)/(tp_long - tp_short)))
+   end subroutine sea_steepness
 end module rodyn_deck_waves

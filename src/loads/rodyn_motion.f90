@@ -8,6 +8,7 @@ module rodyn_motion
    implicit none
    private
    public :: motion_displacement, amplitude_value, ramp_factor, vessel_motion
+   public :: vessel_slow_motion
 
 contains
 
@@ -28,22 +29,27 @@ contains
    !> Displacement of a moved node at time t, from its position x0 at t = 0 [m]. A point
    !> of a vessel: u = X(r xi(t)) - x0, X the position of the vessel's point p at x0 for
    !> the vessel motion xi (rodyn_vessel; X = x0 for xi = 0), r the ramp: the rotations
-   !> stay exact while they are ramped in.
+   !> stay exact while they are ramped in. The vessel's slow motion (offset and drift,
+   !> vessel_slow_motion) moves its reference point to O + r d(t) and turns it to
+   !> psi0 + r d_psi(t), the wave-frequency motion xi acting about them:
+   !>   X = O + r d + Rz(psi0 + r d_psi) (r xi_1:3 + Rv(r xi_4:6) p).
    pure function motion_displacement(mo, t, vessels, x0) result(u)
       type(motion_t), intent(in) :: mo !< motion
       real(wp), intent(in) :: t        !< time [s]
       type(vessel_t), intent(in), optional :: vessels(:) !< the model's (motion_vessel)
       real(wp), intent(in), optional :: x0(3) !< the node at t = 0 (motion_vessel) [m]
       real(wp) :: u(3)
-      real(wp) :: xi(6), p(3)
+      real(wp) :: xi(6), p(3), sl(4), r
       integer :: j
       if (mo%kind == motion_vessel) then
          u = 0.0_wp
          if (.not. (present(vessels) .and. present(x0))) return
          associate (ve => vessels(mo%vessel))
-            xi = ramp_factor(t, mo%ramp)*vessel_motion(ve, t)
+            r = ramp_factor(t, mo%ramp)
+            xi = r*vessel_motion(ve, t)
+            sl = r*vessel_slow_motion(ve, t)
             p = vessel_local_point(ve%origin, ve%heading, x0)
-            u = vessel_point_position(ve%origin, ve%heading, xi, p) - x0
+            u = vessel_point_position(ve%origin + sl(1:3), ve%heading + sl(4), xi, p) - x0
          end associate
          return
       end if
@@ -81,6 +87,25 @@ contains
          xi(k) = interpolate(ve%time, ve%motion(k, :), t)
       end do
    end function vessel_motion
+
+   !> Slow motion of a vessel's reference point, global: its static offset plus its
+   !> drift, harmonic d(t) = offset + a sin(2 pi t/T_d + phi_d) (x, y [m], z [m], heading
+   !> [rad]; a = 0 in z; none when T_d = 0) or from its table (linear interpolation,
+   !> constant beyond the ends).
+   pure function vessel_slow_motion(ve, t) result(d)
+      type(vessel_t), intent(in) :: ve !< vessel
+      real(wp), intent(in) :: t        !< time [s]
+      real(wp) :: d(4)
+      integer :: k
+      d = ve%offset
+      if (ve%drift_period > 0.0_wp) &
+         d = d + ve%drift*sin(two_pi*t/ve%drift_period + ve%drift_phase)
+      if (allocated(ve%drift_time)) then
+         do k = 1, 4
+            d(k) = d(k) + interpolate(ve%drift_time, ve%drift_table(k, :), t)
+         end do
+      end if
+   end function vessel_slow_motion
 
    !> Value of an amplitude at time t (linear interpolation, constant beyond the ends).
    pure real(wp) function amplitude_value(amp, t)

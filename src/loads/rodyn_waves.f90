@@ -36,15 +36,27 @@
 !>   default gamma      5 for T_p/sqrt(Hs) <= 3.6, exp(5.75 - 1.15 T_p/sqrt(Hs)) below 5,
 !>                      1 from 5 (T_p in s, Hs in m)
 !>   table              linear between the points of the table, 0 outside it.
+!> Directional spreading (optional; Longuet-Higgins et al. 1963, DNV-RP-C205, 2021,
+!> section 3.5.8): the cos-2s distribution about the mean heading beta,
+!>   D(theta) = Gamma(s + 1)/(2 sqrt(pi) Gamma(s + 1/2)) cos^(2s)((theta - beta)/2),
+!> |theta - beta| <= pi, whose circular moments are E cos(theta - beta) = s/(s + 1),
+!> E cos 2(theta - beta) = s (s - 1)/((s + 1)(s + 2)). It is cut into M directions of
+!> equal energy at its quantiles, each keeping its bin's mean cosine (so the spread
+!> is kept; spreading_directions), the same for every seed; each frequency bin i then has M
+!> components (i, j), each with its own frequency drawn within the bin, amplitude
+!> sqrt(2 S(omega_ij) d omega/M) and phase: N M components, no two at one frequency,
+!> so the sea stays ergodic (a record at one point has the directional sea's variance).
 module rodyn_waves
    use rodyn_kinds, only: wp, i8, pi, two_pi
    use rodyn_model, only: waves_t, stretch_wheeler, stretch_vertical, &
                           stretch_extrapolation, stretch_none, sea_airy, sea_jonswap, &
-                          sea_pm, sea_table
+                          sea_pm, sea_table, sea_record
+   use rodyn_fft, only: dft_real
    implicit none
    private
    public :: wave_field_t, wave_number, waves_build, wave_elevation, wave_kinematics
-   public :: wave_ramp, wave_spectrum, jonswap_gamma, sea_components
+   public :: wave_ramp, wave_spectrum, jonswap_gamma, sea_components, spreading_directions
+   public :: record_components
 
    real(wp), parameter :: kd_exp = 20.0_wp !< above k d the depth terms use exponentials
 
@@ -122,7 +134,8 @@ contains
          field%sb(i) = sin(waves%heading(i))
          field%kx(i) = field%k(i)*field%cb(i)
          field%ky(i) = field%k(i)*field%sb(i)
-         field%phase(i) = waves%phase(i)
+         field%phase(i) = waves%phase(i) - (field%kx(i)*waves%point(1) &
+                                            + field%ky(i)*waves%point(2))
          field%aw(i) = field%amp(i)*field%omega(i)
          field%aw2(i) = field%aw(i)*field%omega(i)
          field%deep(i) = field%k(i)*depth >= kd_exp
@@ -302,19 +315,27 @@ contains
    end function wave_spectrum
 
    !> The components of an irregular sea (module header): height H_i = 2 A_i, period,
-   !> phase and the sea's heading, into waves%height, period, phase, heading (n =
-   !> waves%components). A regular wave (sea_airy) is left as it is.
+   !> phase and heading, into waves%height, period, phase, heading (n =
+   !> waves%components x waves%directions, bin by bin, the directions within a bin
+   !> innermost; one direction: the long-crested sea). A regular wave (sea_airy) is left
+   !> as it is.
    pure subroutine sea_components(waves)
       type(waves_t), intent(inout) :: waves !< the sea; its components set
       integer(i8) :: s1, s2
       real(wp) :: dw, om, beta, u
-      integer :: i, n
-      if (waves%kind == sea_airy) return
+      real(wp), allocatable :: theta(:)
+      integer :: i, j, n, m, ic
+      if (waves%kind == sea_airy .or. waves%kind == sea_record) return
       n = waves%components
+      m = max(waves%directions, 1)
       beta = 0.0_wp
       if (allocated(waves%heading)) then
          if (size(waves%heading) > 0) beta = waves%heading(1)
       end if
+      allocate (theta(m))
+      theta = 0.0_wp
+      if (m > 1 .and. waves%spreading > 0.0_wp) &
+         call spreading_directions(waves%spreading, m, theta)
       ! the generator's two states from the seed (L'Ecuyer's ranges 1..m - 1)
       s1 = 1_i8 + modulo(int(waves%seed, i8), 2147483562_i8)
       s2 = 1_i8 + modulo(int(waves%seed, i8)*7919_i8 + 12345_i8, 2147483398_i8)
@@ -323,17 +344,135 @@ contains
       if (allocated(waves%period)) deallocate (waves%period)
       if (allocated(waves%phase)) deallocate (waves%phase)
       if (allocated(waves%heading)) deallocate (waves%heading)
-      allocate (waves%height(n), waves%period(n), waves%phase(n), waves%heading(n))
+      allocate (waves%height(n*m), waves%period(n*m), waves%phase(n*m), &
+                waves%heading(n*m))
+      ic = 0
       do i = 1, n
-         call lecuyer_next(s1, s2, u)
-         om = waves%omega_min + dw*(real(i - 1, wp) + u)
-         waves%period(i) = two_pi/om
-         waves%height(i) = 2.0_wp*sqrt(2.0_wp*wave_spectrum(waves, om)*dw)
-         call lecuyer_next(s1, s2, u)
-         waves%phase(i) = two_pi*u
-         waves%heading(i) = beta
+         do j = 1, m
+            ic = ic + 1
+            call lecuyer_next(s1, s2, u)
+            om = waves%omega_min + dw*(real(i - 1, wp) + u)
+            waves%period(ic) = two_pi/om
+            waves%height(ic) = 2.0_wp*sqrt(2.0_wp*wave_spectrum(waves, om)*dw/real(m, wp))
+            call lecuyer_next(s1, s2, u)
+            waves%phase(ic) = two_pi*u
+            waves%heading(ic) = beta + theta(j)
+         end do
       end do
    end subroutine sea_components
+
+   !> The M directions of equal energy of the cos-2s distribution (module header),
+   !> relative to the mean heading [rad]: the distribution cut at its quantiles
+   !> F^-1(j/M), j = 1..M-1, each bin j taking the angle whose cosine is the bin's mean
+   !> cosine, theta_j = acos(E[cos x | bin j]) (in the bin, as cos is monotonic there),
+   !> so that sum cos(theta_j)/M = E cos x = s/(s + 1): the first circular moment, and
+   !> with it the spread sqrt(2 (1 - E cos x)), kept (the middle bin of an odd M at 0 by
+   !> symmetry, a departure of a few 1e-4 of the variance). F and the integrals by the
+   !> trapezoidal rule of cos^(2s)(x/2) and its product with cos x on ng intervals of
+   !> [0, x_max] (x_max = pi, or where the density is below e^-80 of its peak), linear
+   !> within an interval. theta_j = -theta_(M+1-j) exactly.
+   pure subroutine spreading_directions(s, m, theta)
+      real(wp), intent(in) :: s          !< spreading exponent, > 0 [-]
+      integer, intent(in) :: m           !< number of directions, >= 1
+      real(wp), intent(out) :: theta(m)  !< directions relative to the mean [rad]
+      integer, parameter :: ng = 20000
+      real(wp), allocatable :: cum(:), cumc(:)
+      real(wp) :: f0, f1, h, xmax, c0, c1, clo, chi, elo, ehi
+      integer :: j, k
+      theta = 0.0_wp
+      xmax = min(pi, 2.0_wp*acos(exp(-40.0_wp/s)))
+      if (.not. xmax > 0.0_wp) return  ! s so large that the spread is below round-off
+      allocate (cum(0:ng), cumc(0:ng))
+      h = xmax/real(ng, wp)
+      cum(0) = 0.0_wp
+      cumc(0) = 0.0_wp
+      f0 = 1.0_wp
+      do k = 1, ng
+         f1 = density(h*real(k, wp))
+         cum(k) = cum(k - 1) + 0.5_wp*h*(f0 + f1)
+         cumc(k) = cumc(k - 1) + 0.5_wp*h*(f0*cos(h*real(k - 1, wp)) + f1*cos(h*real(k, wp)))
+         f0 = f1
+      end do
+      cumc = cumc/cum(ng)
+      cum = cum/cum(ng)
+      ! the upper half: bin j holds the probabilities [(j - 1)/M, j/M], that is
+      ! [2 (j - 1)/M - 1, 2 j/M - 1] of [0, pi]; mirrored below
+      do j = m/2 + 1 + modulo(m, 2), m
+         call cut(max(0.0_wp, 2.0_wp*real(j - 1, wp)/real(m, wp) - 1.0_wp), clo, elo)
+         call cut(2.0_wp*real(j, wp)/real(m, wp) - 1.0_wp, chi, ehi)
+         theta(j) = acos(min(1.0_wp, (ehi - elo)/(chi - clo)))
+         theta(m + 1 - j) = -theta(j)
+      end do
+   contains
+      !> cos^(2s)(x/2), 0 where it underflows.
+      pure real(wp) function density(x)
+         real(wp), intent(in) :: x !< angle [rad]
+         real(wp) :: c
+         density = 0.0_wp
+         c = cos(0.5_wp*x)
+         if (c <= 0.0_wp) return
+         density = exp(2.0_wp*s*log(c))
+      end function density
+      !> The grid's F = p and the integral of f cos x up to the same point.
+      pure subroutine cut(p, c, e)
+         real(wp), intent(in) :: p   !< probability within [0, pi]
+         real(wp), intent(out) :: c  !< F there (p, up to the grid's resolution)
+         real(wp), intent(out) :: e  !< integral of f cos x up to there (normalised)
+         real(wp) :: r
+         integer :: kk
+         kk = 1
+         do while (kk < ng .and. cum(kk) < p)
+            kk = kk + 1
+         end do
+         r = 0.0_wp
+         if (cum(kk) > cum(kk - 1)) r = min(1.0_wp, max(0.0_wp, &
+                                             (p - cum(kk - 1))/(cum(kk) - cum(kk - 1))))
+         c = cum(kk - 1) + r*(cum(kk) - cum(kk - 1))
+         e = cumc(kk - 1) + r*(cumc(kk) - cumc(kk - 1))
+      end subroutine cut
+   end subroutine spreading_directions
+
+   !> The Airy components of an elevation record eta(t_m), t_m = t_0 + m dt, m = 0..n-1
+   !> (module header; docs/waves.md): with X_k its DFT (rodyn_fft), the record's Fourier
+   !> series eta_m = X_0/n + sum_k (2|X_k|/n) cos(omega_k (t_m - t_0) + arg X_k),
+   !> omega_k = 2 pi k/(n dt), k = 1..(n-1)/2, and for an even n the last term
+   !> (|X_{n/2}|/n) cos(pi m + arg X_{n/2}). Component k: H = 2 A_k, T = 2 pi/omega_k,
+   !> phase phi_k = omega_k t_0 - arg X_k (so that -omega t + phi is the series' angle at
+   !> the record's point, waves%point, where waves_build refers the phases to), heading
+   !> the sea's. The mean X_0/n is not a wave: it is kept in waves%mean and left out.
+   pure subroutine record_components(t0, dt, eta, waves)
+      real(wp), intent(in) :: t0             !< time of the first sample [s]
+      real(wp), intent(in) :: dt             !< sampling interval [s], > 0
+      real(wp), intent(in) :: eta(:)         !< (n >= 2) the record [m]
+      type(waves_t), intent(inout) :: waves  !< the sea: its components set
+      complex(wp), allocatable :: xk(:)
+      real(wp) :: beta, om, a
+      integer :: n, nc, k
+      n = size(eta)
+      beta = 0.0_wp
+      if (allocated(waves%heading)) then
+         if (size(waves%heading) > 0) beta = waves%heading(1)
+      end if
+      allocate (xk(0:n - 1))
+      call dft_real(eta, xk)
+      nc = n/2
+      if (allocated(waves%height)) deallocate (waves%height)
+      if (allocated(waves%period)) deallocate (waves%period)
+      if (allocated(waves%phase)) deallocate (waves%phase)
+      if (allocated(waves%heading)) deallocate (waves%heading)
+      allocate (waves%height(nc), waves%period(nc), waves%phase(nc), waves%heading(nc))
+      waves%mean = real(xk(0), wp)/real(n, wp)
+      do k = 1, nc
+         om = two_pi*real(k, wp)/(real(n, wp)*dt)
+         a = 2.0_wp*abs(xk(k))/real(n, wp)
+         if (2*k == n) a = 0.5_wp*a
+         waves%height(k) = 2.0_wp*a
+         waves%period(k) = two_pi/om
+         waves%phase(k) = om*t0 - atan2(aimag(xk(k)), real(xk(k), wp))
+         waves%heading(k) = beta
+      end do
+      waves%components = nc
+   end subroutine record_components
 
    !> Next number u in (0, 1) of L'Ecuyer's combined generator (1988): two
    !> multiplicative congruential generators, s1 = 40014 s1 mod 2147483563,
