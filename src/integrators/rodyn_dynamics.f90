@@ -33,7 +33,8 @@ module rodyn_dynamics
    use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
-                             external_force, assemble_water, assemble_dynamic_cables
+                             external_force, assemble_water, assemble_dynamic_cables, &
+                             roll_gauges
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
@@ -57,6 +58,10 @@ module rodyn_dynamics
       real(wp), allocatable :: af_acc(:, :)    !< (3, nn) accelerations of the scheme [m/s2]
       real(wp), allocatable :: gfac(:)         !< (nl) ones: the weight in full
       type(inertia_t) :: inert
+      !> roll gauges (rodyn_statics' header) of the runs of rod elements whose roll has
+      !> no inertia (no OD, no RHOI) nor support: node (0 after the last), stiffness
+      integer, allocatable :: gauge_node(:)
+      real(wp), allocatable :: gauge_k(:)      !< [N m/rad]
       integer :: scheme = 1
       real(wp) :: alpha = 0.0_wp               !< Rayleigh mass-proportional damping [1/s]
       real(wp) :: beta_d = 0.0_wp              !< Rayleigh stiffness-proportional damping [s]
@@ -115,6 +120,9 @@ contains
          prob%af_acc = 0.0_wp
       end if
       call inertia_build(model, mesh, prob%inert)
+      ! a free roll without inertia is a null vector of the step's tangent, as in statics
+      call roll_gauges(mesh, prob%sup, prob%loads, prob%gauge_node, prob%gauge_k, &
+                       prob%inert%md(1, :) + prob%inert%md(2, :))
       prob%scheme = model%dynamic%scheme
       call state_allocate(prob%s0, nn, prob%scheme == scheme_alpha)
       prob%fields0 = (prob%scheme == scheme_emc .or. prob%scheme == scheme_trapezoidal) &
@@ -284,6 +292,7 @@ contains
       logical, intent(in) :: want_k                   !< form the tangent
       type(error_t), intent(inout) :: err             !< status (cannot fail)
       real(wp) :: c2, h(3), dm(3), d1(3), kb(6, 6), fi(3), blk(3, 3), mi, hd, dmd1, bdt2, wp_
+      real(wp) :: d3(3)
       real(wp) :: fx, mx
       integer :: node, i, j, k
       if (has_error(err)) return
@@ -346,6 +355,18 @@ contains
             kb(4:6, 4:6) = kb(4:6, 4:6) + blk
          end do
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
+      end do
+      ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged
+      do i = 1, size(this%gauge_node)
+         if (.not. want_k) exit
+         node = this%gauge_node(i)
+         if (node == 0) exit
+         d3 = this%s1%d(:, 3, node)
+         kb = 0.0_wp
+         do j = 1, 3
+            kb(4:6, 3 + j) = this%gauge_k(i)*d3*d3(j)
+         end do
+         call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! The residual's reference force and moment stay fixed while Newton iterates: those
       ! of the last converged step (for the first step, of its first evaluation). Taken

@@ -43,7 +43,7 @@ module rodyn_statics
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
-                             add_node_block
+                             add_node_block, roll_gauges
    use rodyn_water, only: water_loads_t, water_loads_build
    use rodyn_environment, only: current_factor
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
@@ -99,53 +99,6 @@ contains
       call roll_gauges(mesh, prob%sup, prob%loads, prob%gauge_node, prob%gauge_k)
    end subroutine statics_setup
 
-   !> The roll gauges (module header): for each run of consecutive rod elements of a line
-   !> that can roll freely, its middle node and stiffness; node 0 after the last.
-   subroutine roll_gauges(mesh, sup, loads, gauge_node, gauge_k)
-      type(mesh_t), intent(in) :: mesh              !< mesh
-      type(supports_t), intent(in) :: sup           !< supports
-      type(loads_t), intent(in) :: loads            !< point loads
-      integer, allocatable, intent(out) :: gauge_node(:) !< (ne) node per run, 0: none
-      real(wp), allocatable, intent(out) :: gauge_k(:)   !< (ne) stiffness [N m/rad]
-      integer :: e, e1, e2, em, i, nr
-      logical :: free
-      allocate (gauge_node(mesh%n_elements), gauge_k(mesh%n_elements))
-      gauge_node = 0
-      gauge_k = 0.0_wp
-      nr = 0
-      ! each run of consecutive rod elements of one line (cable elements have no roll)
-      e1 = 1
-      do while (e1 <= mesh%n_elements)
-         if (mesh%elem_cable(e1)) then
-            e1 = e1 + 1
-            cycle
-         end if
-         e2 = e1
-         do while (e2 < mesh%n_elements)
-            if (mesh%elem_line(e2 + 1) /= mesh%elem_line(e1) .or. mesh%elem_cable(e2 + 1)) exit
-            e2 = e2 + 1
-         end do
-         free = .true.
-         do e = e1, e2
-            associate (c => mesh%elem_c(:, e), &
-                       nodes => mesh%elem_nodes(1:mesh%line_order(mesh%elem_line(e)) + 1, e))
-               if (c(1) /= c(2) .or. c(4) /= c(5)) free = .false.
-               do i = 1, size(nodes)
-                  if (any(sup%held(4:6, nodes(i))) .or. sup%rotated(nodes(i))) free = .false.
-                  if (any(loads%pt_node == nodes(i) .and. &
-                          any(loads%pt_fm(4:6, :) /= 0.0_wp, dim=1))) free = .false.
-               end do
-            end associate
-         end do
-         if (free) then
-            nr = nr + 1
-            em = (e1 + e2)/2
-            gauge_node(nr) = mesh%elem_nodes(1, em)
-            gauge_k(nr) = maxval(mesh%elem_c(4:6, em))/mesh%elem_le(em)
-         end if
-         e1 = e2 + 1
-      end do
-   end subroutine roll_gauges
 
    !> Set the load factor lam and the factor cur on the current's velocity: external
    !> forces and the prescribed positions of held nodes (reached by the next Newton step,
