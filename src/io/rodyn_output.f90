@@ -7,7 +7,7 @@
 !> half-written file. The folder is created (with its parents) if missing. status.txt
 !> is written last and says complete = true only when every file was written.
 module rodyn_output
-   use rodyn_kinds, only: wp, rodyn_version
+   use rodyn_kinds, only: wp, i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_model, only: model_t, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t
@@ -23,6 +23,15 @@ module rodyn_output
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
+   public :: committed_t
+
+   !> The committed size of a table that grows while a run goes: status.txt's key
+   !> 'committed_bytes.<name>' (docs/output.md). A reader trusts the first `bytes` bytes
+   !> of the file; anything beyond is an uncommitted tail (a kill inside a sync).
+   type :: committed_t
+      character(len=:), allocatable :: name  !< file name, 'dynamic_nodes.csv'
+      integer(i8) :: bytes = 0_i8            !< bytes committed at the last sync
+   end type committed_t
 
    character(len=*), parameter :: nodes_csv = 'static_nodes.csv'
    character(len=*), parameter :: elements_csv = 'static_elements.csv'
@@ -100,13 +109,16 @@ contains
    !> stops before it has results to write, and for the dynamic writer (which adds the
    !> keys dynamic ... step_cutbacks when summary%dynamic is true). Acts even when err
    !> already holds an error. The deck parameters `params` (if any) follow the key deck,
-   !> one line 'parameter.NAME = text' each.
-   subroutine output_write_status(dir, summary, err, deck_file, params)
+   !> one line 'parameter.NAME = text' each. The committed sizes of a dynamic run's
+   !> tables `committed` (if any) follow the dynamic keys (frames, then one line
+   !> 'committed_bytes.NAME = bytes' each).
+   subroutine output_write_status(dir, summary, err, deck_file, params, committed)
       character(len=*), intent(in) :: dir                 !< output folder
       type(run_summary_t), intent(in) :: summary          !< how the run went
       type(error_t), intent(inout) :: err                 !< status
       character(len=*), intent(in), optional :: deck_file !< path of the deck
       type(parameter_value_t), intent(in), optional :: params(:) !< deck parameters used
+      type(committed_t), intent(in), optional :: committed(:) !< sizes of live tables
       type(error_t) :: e
       type(out_file_t) :: f
       integer :: k, attempt
@@ -133,6 +145,13 @@ contains
                call outfile_put(f, 'step_iterations = '//int_str(summary%step_iterations))
                call outfile_put(f, 'step_tangents = '//int_str(summary%step_tangents))
                call outfile_put(f, 'step_cutbacks = '//int_str(summary%step_cutbacks))
+               call outfile_put(f, 'frames = '//int_str(summary%frames))
+               if (present(committed)) then
+                  do k = 1, size(committed)
+                     call outfile_put(f, 'committed_bytes.'//committed(k)%name//' = '// &
+                        int8_str(committed(k)%bytes))
+                  end do
+               end if
             end if
             call outfile_put(f, 'rodyn_version = '//rodyn_version)
             if (present(deck_file)) then
@@ -446,6 +465,15 @@ contains
          s = s//real_str(x(i))
       end do
    end function reals_str
+
+   !> A 64-bit integer without blanks.
+   pure function int8_str(i) result(s)
+      integer(i8), intent(in) :: i          !< value
+      character(len=:), allocatable :: s    !< text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function int8_str
 
    !> An integer without blanks.
    pure function int_str(i) result(s)

@@ -14,12 +14,14 @@
 !> values with hdf5_series_hold, at most frame_block frames or hold_bytes) and written
 !> together, in a "sync": the CSV rows (write(2), checked), then dynamic.h5 (one block
 !> per dataset, the step rows, H5Fflush), then status.txt (temporary file + rename) with
-!> complete = false, status = running and the time and steps of the last frame synced.
+!> complete = false, status = running, the time, steps and frames of the last sync and
+!> the committed size of each CSV table (committed_bytes.NAME, its bytes at that sync).
 !> A sync happens at the first frame, after a frame when status_interval (1 s) of wall
 !> time has passed since the last one, when the hold is full (or log_block step rows
 !> are), and at close. So status.txt, the CSV tables and dynamic.h5 hold the same frames
-!> whenever the run is killed (a kill inside a sync can leave the data files one block
-!> ahead of status.txt, never behind it).
+!> whenever the run is killed, up to the sizes status.txt gives: a kill inside a sync
+!> can leave the data files one block ahead of status.txt (an uncommitted tail, which
+!> readers ignore and a restart cuts off), never behind it.
 !> On a write failure (a full disk) nothing more is written: the CSV tables are cut back
 !> to their last sync (whole frames), a dynamic.h5 whose write failed is removed, and
 !> status.txt says complete = false, the failure, and the time and steps of that sync.
@@ -45,10 +47,10 @@ module rodyn_output_dynamic
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
       hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
       hdf5_append_steps
-   use rodyn_output, only: output_write_status, output_write_environment
+   use rodyn_output, only: output_write_status, output_write_environment, committed_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
-      outfile_mark, outfile_close, outfile_abort, outfile_pending, temp_name, &
-      commit_rename, remove_file, outfile_reopen
+      outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
+      temp_name, commit_rename, remove_file, outfile_reopen
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
@@ -512,8 +514,9 @@ contains
       end if
       call release_all(w, e)
       if (w%failed) call as_synced(w, s)
+      if (.not. w%failed) s%frames = w%frames
       if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file), &
-                                                     w%params)
+                                                     w%params, committed_sizes(w))
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (w%failed) call set_error(err, stat_io, w%why)
    end subroutine dynamic_output_close
@@ -945,12 +948,14 @@ contains
       w%steps_held = 0
       w%progress%time_reached = w%last_time
       w%progress%steps = w%steps
+      w%progress%frames = w%frames
       w%synced = w%progress
       if (present(rewrite_status)) then
          if (.not. rewrite_status) return
       end if
       w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
-      call output_write_status(w%dir, w%progress, err, w%deck_file, w%params)
+      call output_write_status(w%dir, w%progress, err, w%deck_file, w%params, &
+                               committed_sizes(w))
       call system_clock(w%clock_status)
    end subroutine sync
 
@@ -970,6 +975,21 @@ contains
          ok = .true.
       end if
    end function writer_ready
+
+   !> The committed sizes of the CSV tables (their last sync) for status.txt; none when
+   !> the run writes no CSV.
+   function committed_sizes(w) result(c)
+      type(dynamic_writer_t), intent(in) :: w   !< writer
+      type(committed_t), allocatable :: c(:)    !< (6) or (0)
+      allocate (c(0))
+      if (.not. w%csv) return
+      c = [committed_t(nodes_csv, outfile_committed(w%f_nodes)), &
+           committed_t(elements_csv, outfile_committed(w%f_elements)), &
+           committed_t(ends_csv, outfile_committed(w%f_ends)), &
+           committed_t(lines_csv, outfile_committed(w%f_lines)), &
+           committed_t(log_csv, outfile_committed(w%f_log)), &
+           committed_t(ends_step_csv, outfile_committed(w%f_ends_step))]
+   end function committed_sizes
 
    !> Characters of CSV rows held in memory.
    pure integer function csv_held(w)
@@ -996,6 +1016,7 @@ contains
       s%complete = .false.
       s%time_reached = w%synced%time_reached
       s%steps = w%synced%steps
+      s%frames = w%synced%frames
       s%step_iterations = w%synced%step_iterations
       s%step_tangents = w%synced%step_tangents
       s%step_cutbacks = w%synced%step_cutbacks
