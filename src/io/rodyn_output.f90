@@ -14,6 +14,7 @@ module rodyn_output
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
       temp_name, commit_rename, remove_file
    use rodyn_outdir, only: outdir_make
+   use rodyn_output_schema, only: schema_header
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
@@ -195,7 +196,7 @@ contains
       items = environment_items(model)
       call outfile_create(f, dir, environment_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'key,value,unit')
+      call outfile_put(f, schema_header(environment_csv))
       do k = 1, size(items)
          call outfile_put(f, items(k)%key//','//real_str(items(k)%value)//','// &
             items(k)%unit)
@@ -217,8 +218,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, nodes_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,node,s_m,x_m,y_m,z_m,seabed_normal_N_per_m,'// &
-         'seabed_friction_N_per_m')
+      call outfile_put(f, schema_header(nodes_csv))
       do i = 1, size(lines)
          fn = seabed_force_of(lines(i), 1)
          ff = seabed_force_of(lines(i), 2)
@@ -241,9 +241,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, elements_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,element,point,s_m,effective_tension_N,wall_tension_N,'// &
-         'shear_1_N,shear_2_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_1_per_m,'// &
-         'curvature_2_per_m,twist_per_m,curvature_per_m')
+      call outfile_put(f, schema_header(elements_csv))
       do i = 1, size(lines)
          associate (r => lines(i))
             tw = wall_tension_of(r)
@@ -269,7 +267,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, reactions_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N')
+      call outfile_put(f, schema_header(reactions_csv))
       do i = 1, size(lines)
          do j = 1, 2
             if (.not. lines(i)%end_held(j)) cycle
@@ -291,7 +289,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, lines_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,length_m,touchdown_s_m')
+      call outfile_put(f, schema_header(lines_csv))
       do i = 1, size(lines)
          associate (r => lines(i))
             call outfile_put(f, csv_name(r%name)//','//reals_str([r%node_s(size(r%node_s)), &

@@ -48,6 +48,7 @@ module rodyn_output_dynamic
       hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment, committed_t
+   use rodyn_output_schema, only: schema_header
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
       temp_name, commit_rename, remove_file, outfile_reopen
@@ -70,18 +71,6 @@ module rodyn_output_dynamic
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
-   character(len=*), parameter :: nodes_head = 'time_s,line,node,s_m,x_m,y_m,z_m,'// &
-      'seabed_normal_N_per_m,seabed_friction_N_per_m'
-   character(len=*), parameter :: elements_head = 'time_s,line,element,point,s_m,'// &
-      'effective_tension_N,wall_tension_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_per_m'
-   character(len=*), parameter :: lines_head = 'time_s,line,touchdown_s_m'
-   character(len=*), parameter :: ends_head = &
-      'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
-   character(len=*), parameter :: ends_step_head = &
-      'step,time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
-   character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
-      'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,hydro_work_J,'// &
-      'seabed_work_J,total_J,px,py,pz,Lx,Ly,Lz'
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
@@ -291,12 +280,12 @@ contains
          call reopen_csv(lines_csv, w%f_lines, 5)
          call reopen_csv(ends_step_csv, w%f_ends_step, 6)
       else if (w%csv) then
-         call open_csv(w, nodes_csv, nodes_head, w%f_nodes, e)
-         call open_csv(w, elements_csv, elements_head, w%f_elements, e)
-         call open_csv(w, ends_csv, ends_head, w%f_ends, e)
-         call open_csv(w, log_csv, log_head, w%f_log, e)
-         call open_csv(w, ends_step_csv, ends_step_head, w%f_ends_step, e)
-         call open_csv(w, lines_csv, lines_head, w%f_lines, e)
+         call open_csv(w, nodes_csv, schema_header(nodes_csv), w%f_nodes, e)
+         call open_csv(w, elements_csv, schema_header(elements_csv), w%f_elements, e)
+         call open_csv(w, ends_csv, schema_header(ends_csv), w%f_ends, e)
+         call open_csv(w, log_csv, schema_header(log_csv), w%f_log, e)
+         call open_csv(w, ends_step_csv, schema_header(ends_step_csv), w%f_ends_step, e)
+         call open_csv(w, lines_csv, schema_header(lines_csv), w%f_lines, e)
       end if
       if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
