@@ -17,8 +17,8 @@ module rodyn_output
    use rodyn_output_schema, only: schema_header
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
-                                  csv_name, env_item_t, environment_items, &
+   use rodyn_output_common, only: text_of, status_of, path_join, one_line, &
+                                  describe_dataset, csv_name, env_item_t, environment_items, &
                                   write_environment_h5, wall_tension_of, seabed_force_of, &
                                   water_fields_fit, touchdown_of, write_parameters_h5
    implicit none
@@ -322,7 +322,7 @@ contains
       call hdf5_write_attribute(h5, '/', 'complete', merge(1, 0, summary%complete), err)
       call hdf5_write_attribute(h5, '/', 'status', one_line(status_of(summary)), err)
       call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
-      call describe(h5, '/deck', '-', 'full text of the input deck, includes expanded', err)
+      call describe_dataset(h5, results_h5, '/deck', err)
       call hdf5_create_group(h5, '/static', err)
       call hdf5_write_attribute(h5, '/static', 'load_factor', summary%load_factor, err)
       call hdf5_write_attribute(h5, '/static', 'increments', summary%increments, err)
@@ -354,49 +354,36 @@ contains
       call hdf5_create_group(h5, g, err)
       call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
       call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
-      call describe(h5, g//'/node_s', 'm', 'unstretched arc length of the nodes', err)
+      call describe_dataset(h5, results_h5, g//'/node_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/node_xyz', r%node_x, err)
-      call describe(h5, g//'/node_xyz', 'm', &
-         'node positions, one row per node, columns x, y, z (global axes)', err)
+      call describe_dataset(h5, results_h5, g//'/node_xyz', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
-      call describe(h5, g//'/gp_element', '-', &
-         'element of each integration point, numbered from 1 along the line', err)
+      call describe_dataset(h5, results_h5, g//'/gp_element', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
-      call describe(h5, g//'/gp_point', '-', &
-         'integration point number within its element, from 1', err)
+      call describe_dataset(h5, results_h5, g//'/gp_point', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
-      call describe(h5, g//'/gp_s', 'm', &
-         'unstretched arc length of the integration points', err)
+      call describe_dataset(h5, results_h5, g//'/gp_s', err, line_group=g)
       call hdf5_write_attribute(h5, g, 'touchdown_s', touchdown_of(r), err)
       call hdf5_write_dataset(h5, g//'/effective_tension', r%tension, err)
-      call describe(h5, g//'/effective_tension', 'N', &
-         'effective tension N3 along d3, positive in tension', err)
+      call describe_dataset(h5, results_h5, g//'/effective_tension', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/wall_tension', wall_tension_of(r), err)
-      call describe(h5, g//'/wall_tension', 'N', 'wall (true) tension, '// &
-         'T_eff + p_o A_o - p_i A_i, positive in tension', err)
+      call describe_dataset(h5, results_h5, g//'/wall_tension', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/shear', r%shear, err)
-      call describe(h5, g//'/shear', 'N', 'shear forces, columns N1 along d1, N2 along d2', &
-         err)
+      call describe_dataset(h5, results_h5, g//'/shear', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/moment', r%moment, err)
-      call describe(h5, g//'/moment', 'N m', &
-         'bending moments, columns M1 about d1, M2 about d2', err)
+      call describe_dataset(h5, results_h5, g//'/moment', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/torque', r%torque, err)
-      call describe(h5, g//'/torque', 'N m', 'torsional moment M3 about d3', err)
+      call describe_dataset(h5, results_h5, g//'/torque', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/curvature', r%curvature, err)
-      call describe(h5, g//'/curvature', '1/m', &
-         'section-frame curvatures, columns K1 (about d1), K2 (about d2), K3 (twist)', err)
+      call describe_dataset(h5, results_h5, g//'/curvature', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/reactions', r%reaction, err)
-      call describe(h5, g//'/reactions', 'N (columns 1-3), N m (columns 4-6)', &
-         'force and moment of the support on the line, global axes; rows end A, end B; '// &
-         'columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', err)
+      call describe_dataset(h5, results_h5, g//'/reactions', err, line_group=g)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call hdf5_write_dataset(h5, g//'/seabed_normal', seabed_force_of(r, 1), err)
-      call describe(h5, g//'/seabed_normal', 'N/m', &
-         'seabed normal contact force per unit length at the nodes (0: no contact)', err)
+      call describe_dataset(h5, results_h5, g//'/seabed_normal', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/seabed_friction', seabed_force_of(r, 2), err)
-      call describe(h5, g//'/seabed_friction', 'N/m', &
-         'magnitude of the seabed friction force per unit length at the nodes', err)
+      call describe_dataset(h5, results_h5, g//'/seabed_friction', err, line_group=g)
    end subroutine write_h5_line
 
 

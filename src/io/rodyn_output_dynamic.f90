@@ -52,7 +52,7 @@ module rodyn_output_dynamic
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
       temp_name, commit_rename, remove_file, outfile_reopen
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
+   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe_dataset, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
                                   write_parameters_h5
@@ -582,8 +582,7 @@ contains
          call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
          call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
          call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
-         call describe(h5, '/deck', '-', 'full text of the input deck, includes expanded', &
-            err)
+         call describe_dataset(h5, dynamic_h5, '/deck', err)
          call hdf5_create_group(h5, '/dynamic', err)
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
@@ -591,7 +590,7 @@ contains
          call write_environment_h5(h5, model, err)
          call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
-         call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
+         call describe_dataset(h5, dynamic_h5, '/dynamic/time', err)
          do i = 1, size(lines)
             call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
          end do
@@ -687,63 +686,45 @@ contains
       call hdf5_create_group(h5, g, err)
       call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
       call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
-      call describe(h5, g//'/node_s', 'm', 'unstretched arc length of the nodes', err)
+      call describe_dataset(h5, dynamic_h5, g//'/node_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
-      call describe(h5, g//'/gp_s', 'm', 'unstretched arc length of the integration points', &
-         err)
+      call describe_dataset(h5, dynamic_h5, g//'/gp_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
-      call describe(h5, g//'/gp_element', '-', &
-         'element of each integration point, numbered from 1 along the line', err)
+      call describe_dataset(h5, dynamic_h5, g//'/gp_element', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
-      call describe(h5, g//'/gp_point', '-', &
-         'integration point number within its element, from 1', err)
-      call history(g//'/x', nn, 'm', 'x of the nodes (global axes); row per frame')
-      call history(g//'/y', nn, 'm', 'y of the nodes (global axes); row per frame')
-      call history(g//'/z', nn, 'm', 'z of the nodes (global axes); row per frame')
-      call history(g//'/effective_tension', ng, 'N', &
-         'effective tension N3 along d3, positive in tension; row per frame')
-      call history(g//'/moment_1', ng, 'N m', 'bending moment M1 about d1; row per frame')
-      call history(g//'/moment_2', ng, 'N m', 'bending moment M2 about d2; row per frame')
-      call history(g//'/torque', ng, 'N m', 'torsional moment M3 about d3; row per frame')
-      call history(g//'/bending_curvature', ng, '1/m', &
-         'total bending curvature sqrt(K1^2 + K2^2); row per frame')
-      call history(g//'/reactions', 12, 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
-         'force and moment of the support on the line, global axes; row per frame; '// &
-         'columns Fx, Fy, Fz, Mx, My, Mz at end A, then at end B; zero at a free end')
+      call describe_dataset(h5, dynamic_h5, g//'/gp_point', err, line_group=g)
+      call history(g//'/x', nn)
+      call history(g//'/y', nn)
+      call history(g//'/z', nn)
+      call history(g//'/effective_tension', ng)
+      call history(g//'/moment_1', ng)
+      call history(g//'/moment_2', ng)
+      call history(g//'/torque', ng)
+      call history(g//'/bending_curvature', ng)
+      call history(g//'/reactions', 12)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', merge(1, 0, r%end_held), &
          err)
-      call history(g//'/end_tension', 2, 'N', 'magnitude of the support force, '// &
-         'sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B')
-      call history(g//'/wall_tension', ng, 'N', 'wall (true) tension, '// &
-         'T_eff + p_o A_o - p_i A_i, positive in tension; row per frame')
-      call history(g//'/seabed_normal', nn, 'N/m', &
-         'seabed normal contact force per unit length at the nodes; row per frame')
-      call history(g//'/seabed_friction', nn, 'N/m', &
-         'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call history(g//'/end_tension', 2)
+      call history(g//'/wall_tension', ng)
+      call history(g//'/seabed_normal', nn)
+      call history(g//'/seabed_friction', nn)
       call hdf5_create_series_1d(h5, g//'/step_time', err, chunk_steps=log_chunk)
-      call describe(h5, g//'/step_time', 's', 'time of each row of step_reactions and '// &
-         'step_end_tension: 0, then the end of each step', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_time', err, line_group=g)
       call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
-      call describe(h5, g//'/step_reactions', 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
-         'force and moment of the support on the line, global axes, at the times of '// &
-         'step_time (every step); columns as reactions', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_reactions', err, line_group=g)
       call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
-      call describe(h5, g//'/step_end_tension', 'N', 'magnitude of the support force at '// &
-         'the times of step_time (every step); columns end A, end B', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_end_tension', err, line_group=g)
       call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
-      call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
-         'seabed, -1 when none; one value per frame', err)
+      call describe_dataset(h5, dynamic_h5, g//'/touchdown_s', err, line_group=g)
    contains
       !> An empty history of n values per frame, with its units and description.
-      subroutine history(path, n, units, description)
+      subroutine history(path, n)
          character(len=*), intent(in) :: path         !< dataset path
          integer, intent(in) :: n                     !< values per frame
-         character(len=*), intent(in) :: units        !< units text
-         character(len=*), intent(in) :: description  !< one-line description
          call hdf5_create_series(h5, path, n, err, chunk_steps=max(8, chunk_bytes/(8*n)))
-         call describe(h5, path, units, description, err)
+         call describe_dataset(h5, dynamic_h5, path, err, line_group=g)
       end subroutine history
    end subroutine create_h5_line
 
@@ -752,39 +733,27 @@ contains
       type(hdf5_file_t), intent(in) :: h5    !< open file
       type(error_t), intent(inout) :: err    !< status
       character(len=*), parameter :: g = '/dynamic/log/'
+      ! the 1-D datasets in the order created (the order h5py lists them)
+      integer, parameter :: order(13) = [lg_step, lg_time, lg_dt, lg_iterations, &
+         lg_cutbacks, lg_kinetic, lg_strain, lg_gravity, lg_external_work, lg_damping_work, &
+         lg_hydro_work, lg_seabed_work, lg_total]
+      integer :: k
       call hdf5_create_group(h5, '/dynamic/log', err)
-      call column(lg_step, '-', 'step number, from 1', .true.)
-      call column(lg_time, 's', 'time at the end of the step', .false.)
-      call column(lg_dt, 's', 'step length used', .false.)
-      call column(lg_iterations, '-', 'Newton iterations of the step', .true.)
-      call column(lg_cutbacks, '-', 'halvings needed by the step', .true.)
-      call column(lg_kinetic, 'J', 'kinetic energy', .false.)
-      call column(lg_strain, 'J', 'stored (strain) energy', .false.)
-      call column(lg_gravity, 'J', 'potential of the weight', .false.)
-      call column(lg_external_work, 'J', &
-         'work done on the line since t = 0 by prescribed motions and loads', .false.)
-      call column(lg_damping_work, 'J', 'energy taken out by damping since t = 0', .false.)
-      call column(lg_hydro_work, 'J', 'work done on the line since t = 0 by the water: '// &
-         'buoyancy, drag, added mass', .false.)
-      call column(lg_seabed_work, 'J', 'work done on the line since t = 0 by the '// &
-         'seabed: contact, damping, friction', .false.)
-      call column(lg_total, 'J', 'kinetic + strain + gravity', .false.)
+      do k = 1, size(order)
+         call column(order(k), any(order(k) == [lg_step, lg_iterations, lg_cutbacks]))
+      end do
       call hdf5_create_series(h5, g//'momentum', 3, err, chunk_steps=log_chunk)
-      call describe(h5, g//'momentum', 'kg m/s', &
-         'total linear momentum; columns x, y, z (global axes)', err)
+      call describe_dataset(h5, dynamic_h5, g//'momentum', err)
       call hdf5_create_series(h5, g//'angular_momentum', 3, err, chunk_steps=log_chunk)
-      call describe(h5, g//'angular_momentum', 'kg m2/s', &
-         'total angular momentum about the origin; columns x, y, z (global axes)', err)
+      call describe_dataset(h5, dynamic_h5, g//'angular_momentum', err)
    contains
       !> One 1-D dataset of the log.
-      subroutine column(k, units, description, integers)
+      subroutine column(k, integers)
          integer, intent(in) :: k                     !< lg_* index
-         character(len=*), intent(in) :: units        !< units text
-         character(len=*), intent(in) :: description  !< one-line description
          logical, intent(in) :: integers              !< integer values
          call hdf5_create_series_1d(h5, g//trim(log_series_name(k)), err, &
             chunk_steps=log_chunk, integers=integers)
-         call describe(h5, g//trim(log_series_name(k)), units, description, err)
+         call describe_dataset(h5, dynamic_h5, g//trim(log_series_name(k)), err)
       end subroutine column
    end subroutine create_h5_log
 

@@ -10,9 +10,10 @@
 module rodyn_output_schema
    implicit none
    private
-   public :: output_columns, schema_field, schema_header, schema_tables
+   public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
+   public :: schema_dataset
 
-   integer, parameter :: row_len = 160  !< longest row of the table
+   integer, parameter :: row_len = 240  !< longest row of the tables
 
    !> Every column of every CSV table, file by file, in the order written.
    character(len=row_len), parameter :: output_columns(*) = [character(len=row_len) :: &
@@ -118,6 +119,110 @@ module rodyn_output_schema
       'dynamic_log.csv | Ly | kg m2/s | y of the total angular momentum about the origin', &
       'dynamic_log.csv | Lz | kg m2/s | z of the total angular momentum about the origin']
 
+   !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
+   !> come with environment_items, rodyn_output_common): 'file | path | units |
+   !> description', LINE standing for a line's group; written as the attributes `units`
+   !> and `description` of the dataset (rodyn_output_common's describe).
+   character(len=row_len), parameter :: output_datasets(*) = [character(len=row_len) :: &
+      'results.h5 | /deck | - | full text of the input deck, includes expanded', &
+      'results.h5 | /static/LINE/curvature | 1/m | section-frame curvatures, '// &
+         'columns K1 (about d1), K2 (about d2), K3 (twist)', &
+      'results.h5 | /static/LINE/effective_tension | N | effective tension N3 '// &
+         'along d3, positive in tension', &
+      'results.h5 | /static/LINE/gp_element | - | element of each integration '// &
+         'point, numbered from 1 along the line', &
+      'results.h5 | /static/LINE/gp_point | - | integration point number within '// &
+         'its element, from 1', &
+      'results.h5 | /static/LINE/gp_s | m | unstretched arc length of the '// &
+         'integration points', &
+      'results.h5 | /static/LINE/moment | N m | bending moments, columns M1 '// &
+         'about d1, M2 about d2', &
+      'results.h5 | /static/LINE/node_s | m | unstretched arc length of the '// &
+         'nodes', &
+      'results.h5 | /static/LINE/node_xyz | m | node positions, one row per '// &
+         'node, columns x, y, z (global axes)', &
+      'results.h5 | /static/LINE/reactions | N (columns 1-3), N m (columns 4-6) '// &
+         '| force and moment of the support on the line, global axes; rows end A, '// &
+         'end B; columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', &
+      'results.h5 | /static/LINE/seabed_friction | N/m | magnitude of the '// &
+         'seabed friction force per unit length at the nodes', &
+      'results.h5 | /static/LINE/seabed_normal | N/m | seabed normal contact '// &
+         'force per unit length at the nodes (0: no contact)', &
+      'results.h5 | /static/LINE/shear | N | shear forces, columns N1 along d1, '// &
+         'N2 along d2', &
+      'results.h5 | /static/LINE/torque | N m | torsional moment M3 about d3', &
+      'results.h5 | /static/LINE/wall_tension | N | wall (true) tension, T_eff '// &
+         '+ p_o A_o - p_i A_i, positive in tension', &
+      'dynamic.h5 | /deck | - | full text of the input deck, includes expanded', &
+      'dynamic.h5 | /dynamic/LINE/bending_curvature | 1/m | total bending '// &
+         'curvature sqrt(K1^2 + K2^2); row per frame', &
+      'dynamic.h5 | /dynamic/LINE/effective_tension | N | effective tension N3 '// &
+         'along d3, positive in tension; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/end_tension | N | magnitude of the support '// &
+         'force, sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B', &
+      'dynamic.h5 | /dynamic/LINE/gp_element | - | element of each integration '// &
+         'point, numbered from 1 along the line', &
+      'dynamic.h5 | /dynamic/LINE/gp_point | - | integration point number '// &
+         'within its element, from 1', &
+      'dynamic.h5 | /dynamic/LINE/gp_s | m | unstretched arc length of the '// &
+         'integration points', &
+      'dynamic.h5 | /dynamic/LINE/moment_1 | N m | bending moment M1 about d1; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/moment_2 | N m | bending moment M2 about d2; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/node_s | m | unstretched arc length of the '// &
+         'nodes', &
+      'dynamic.h5 | /dynamic/LINE/reactions | N (columns 1-3, 7-9), N m (4-6, '// &
+         '10-12) | force and moment of the support on the line, global axes; row '// &
+         'per frame; columns Fx, Fy, Fz, Mx, My, Mz at end A, then at end B; zero '// &
+         'at a free end', &
+      'dynamic.h5 | /dynamic/LINE/seabed_friction | N/m | magnitude of the '// &
+         'seabed friction force per unit length at the nodes; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/seabed_normal | N/m | seabed normal contact '// &
+         'force per unit length at the nodes; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/step_end_tension | N | magnitude of the '// &
+         'support force at the times of step_time (every step); columns end A, end '// &
+         'B', &
+      'dynamic.h5 | /dynamic/LINE/step_reactions | N (columns 1-3, 7-9), N m '// &
+         '(4-6, 10-12) | force and moment of the support on the line, global axes, '// &
+         'at the times of step_time (every step); columns as reactions', &
+      'dynamic.h5 | /dynamic/LINE/step_time | s | time of each row of '// &
+         'step_reactions and step_end_tension: 0, then the end of each step', &
+      'dynamic.h5 | /dynamic/LINE/torque | N m | torsional moment M3 about d3; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/touchdown_s | m | largest arc length in '// &
+         'contact with the seabed, -1 when none; one value per frame', &
+      'dynamic.h5 | /dynamic/LINE/wall_tension | N | wall (true) tension, T_eff '// &
+         '+ p_o A_o - p_i A_i, positive in tension; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/x | m | x of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/LINE/y | m | y of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/LINE/z | m | z of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/log/angular_momentum | kg m2/s | total angular '// &
+         'momentum about the origin; columns x, y, z (global axes)', &
+      'dynamic.h5 | /dynamic/log/cutbacks | - | halvings needed by the step', &
+      'dynamic.h5 | /dynamic/log/damping_work | J | energy taken out by damping '// &
+         'since t = 0', &
+      'dynamic.h5 | /dynamic/log/dt | s | step length used', &
+      'dynamic.h5 | /dynamic/log/external_work | J | work done on the line '// &
+         'since t = 0 by prescribed motions and loads', &
+      'dynamic.h5 | /dynamic/log/gravity | J | potential of the weight', &
+      'dynamic.h5 | /dynamic/log/hydro_work | J | work done on the line since t '// &
+         '= 0 by the water: buoyancy, drag, added mass', &
+      'dynamic.h5 | /dynamic/log/iterations | - | Newton iterations of the step', &
+      'dynamic.h5 | /dynamic/log/kinetic | J | kinetic energy', &
+      'dynamic.h5 | /dynamic/log/momentum | kg m/s | total linear momentum; '// &
+         'columns x, y, z (global axes)', &
+      'dynamic.h5 | /dynamic/log/seabed_work | J | work done on the line since '// &
+         't = 0 by the seabed: contact, damping, friction', &
+      'dynamic.h5 | /dynamic/log/step | - | step number, from 1', &
+      'dynamic.h5 | /dynamic/log/strain | J | stored (strain) energy', &
+      'dynamic.h5 | /dynamic/log/time | s | time at the end of the step', &
+      'dynamic.h5 | /dynamic/log/total | J | kinetic + strain + gravity', &
+      'dynamic.h5 | /dynamic/time | s | time of each output frame']
+
 contains
 
    !> Field k (1: file, 2: column, 3: unit, 4: meaning) of a row of output_columns,
@@ -143,6 +248,31 @@ contains
          s = trim(adjustl(row(a:a + b - 2)))
       end if
    end function schema_field
+
+   !> The row of output_datasets for dataset `path` of file `file` ('' when none): a
+   !> line's dataset is looked up with its group name replaced by LINE, from `line_group`
+   !> ('/static/RISER': '/static/LINE/node_s' for '/static/RISER/node_s').
+   pure function schema_dataset(file, path, line_group) result(row)
+      character(len=*), intent(in) :: file                 !< 'results.h5', 'dynamic.h5'
+      character(len=*), intent(in) :: path                 !< dataset path in the file
+      character(len=*), intent(in), optional :: line_group !< group of the line, if any
+      character(len=:), allocatable :: row                 !< the row, or ''
+      character(len=:), allocatable :: key
+      integer :: k
+      key = path
+      if (present(line_group)) then
+         if (index(path, line_group//'/') == 1) key = &
+            line_group(:index(line_group, '/', back=.true.))//'LINE'//path(len(line_group) + 1:)
+      end if
+      row = ''
+      do k = 1, size(output_datasets)
+         if (schema_field(output_datasets(k), 1) == file .and. &
+             schema_field(output_datasets(k), 2) == key) then
+            row = trim(output_datasets(k))
+            return
+         end if
+      end do
+   end function schema_dataset
 
    !> The header row of CSV table `file`: its column names, comma-separated, in order
    !> ('' for a file the schema does not know).

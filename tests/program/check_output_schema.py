@@ -3,16 +3,18 @@
 
 usage: check_output_schema.py SCHEMA_DUMP SOURCE_DIR WORK_DIR RODYN
 
-rodyn_output_schema (printed by SCHEMA_DUMP) names every column of every CSV table
-with its unit. Checks:
+rodyn_output_schema (printed by SCHEMA_DUMP) names every column of every CSV table and
+every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
   1. the header row the writers take from it is its columns, in order;
   2. docs/output.md documents exactly those tables and, under each table's heading,
      exactly those columns, in the same order, with the same units (environment.csv:
-     its header quoted in the text);
+     its header quoted in the text); and in the layouts of results.h5 and dynamic.h5
+     exactly the datasets of the schema, with the same units;
   3. the Python readers (rodyn_post) look only for columns the schema has, in its order;
   4. a run of RODYN (statics, dynamics, water; CSV and HDF5) writes every table of the
-     schema with that header, and every dataset of results.h5 and dynamic.h5 carries
-     the attributes `units` and `description`.
+     schema with that header; results.h5 and dynamic.h5 hold exactly the datasets of
+     the schema (and /environment), each with the attributes `units` and `description`,
+     equal to the schema's.
 """
 import pathlib
 import re
@@ -28,7 +30,7 @@ def fail(msg):
 
 def read_schema(dump):
     out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
-    columns, headers = {}, {}
+    columns, headers, datasets = {}, {}, {}
     for line in out.splitlines():
         kind, *fields = line.split("\t")
         if kind == "COLUMN":
@@ -38,7 +40,55 @@ def read_schema(dump):
             columns.setdefault(file, []).append((name, unit))
         elif kind == "HEADER":
             headers[fields[0]] = fields[1]
-    return columns, headers
+        elif kind == "DATASET":
+            file, path, units, description = fields
+            if not description:
+                fail(f"{file} {path}: no description in the schema")
+            datasets.setdefault(file, {})[path] = (units, description)
+    return columns, headers, datasets
+
+
+def plain_units(units):
+    """Units without their parenthesised column notes: 'N (columns 1-3), N m (4-6)'
+    -> 'N, N m' (as docs/output.md writes them)."""
+    return re.sub(r"\s+", " ", re.sub(r"\s*\([^)]*\)", "", units)).strip()
+
+
+def doc_datasets(section):
+    """{path: units} of the datasets in the layout (code block) of an HDF5 file in a
+    section of docs/output.md: top-level lines '/path  (shape)  units  ...' and member
+    lines '    name[, name]  (shape)  units  ...' of the group line above them ('<LINE
+    NAME>' read as LINE); /deck is a string dataset without shape or units."""
+    out, group = {}, None
+    for line in section.splitlines():
+        if line.startswith("/"):
+            group = line.split()[0].replace("<LINE", "LINE")
+            if group.startswith("/deck"):
+                out["/deck"] = "-"
+            m = re.match(r"^(/\S+)\s+\([^)]*\)\s+(\S.*?)(\s{2,}|$)", line)
+            if m:
+                out[m.group(1)] = m.group(2)
+            continue
+        m = re.match(r"^    ([a-z][a-z0-9_]*(?:, [a-z][a-z0-9_]*)*)\s+\([^)]*\)\s+"
+                     r"(\S.*?)(\s{2,}|$)", line)
+        if m and group:
+            for name in m.group(1).split(", "):
+                out[group.replace(" NAME>", "") + "/" + name] = m.group(2)
+    return out
+
+
+def check_docs_h5(text, datasets):
+    for file, heading in (("results.h5", "## results.h5"), ("dynamic.h5", "### dynamic.h5")):
+        start = text.index("\n" + heading + "\n")
+        level = heading.split()[0]
+        end = text.find("\n" + level + " ", start + 1)
+        docs = doc_datasets(text[start:end if end > 0 else None])
+        schema = {p: plain_units(u) for p, (u, _) in datasets[file].items()}
+        if docs != schema:
+            fail(f"docs/output.md, {file}: datasets (path: units) differ from the schema: "
+                 f"not documented {sorted(set(schema.items()) - set(docs.items()))}, "
+                 f"not in the schema {sorted(set(docs.items()) - set(schema.items()))}")
+        print(f"docs/output.md: the {len(docs)} datasets of {file} as in the schema")
 
 
 def doc_tables(text):
@@ -71,8 +121,9 @@ def doc_tables(text):
     return tables
 
 
-def check_docs(src, columns, headers):
+def check_docs(src, columns, headers, datasets):
     text = (src / "docs" / "output.md").read_text()
+    check_docs_h5(text, datasets)
     docs = doc_tables(text)
     for file in docs:
         if file not in columns:
@@ -121,7 +172,7 @@ def check_readers(src, columns):
     print(f"rodyn_post: the columns it reads of {len(used)} tables are in the schema")
 
 
-def check_run(src, work, rodyn, headers):
+def check_run(src, work, rodyn, headers, datasets):
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     text = (src / "tests" / "program" / "mooring_waves.inp").read_text()
@@ -150,31 +201,40 @@ def check_run(src, work, rodyn, headers):
         print("h5py missing: the HDF5 attributes are not checked")
         return
     for name in ("results.h5", "dynamic.h5"):
-        bare, count = [], 0
+        bare, found = [], {}
 
         def visit(path, obj):
-            nonlocal count
             if isinstance(obj, h5py.Dataset):
-                count += 1
                 if not {"units", "description"} <= set(obj.attrs):
                     bare.append(path)
+                    return
+                key = re.sub(r"^(static|dynamic)/LEG/", r"\1/LINE/", path)
+                found["/" + key] = (str(obj.attrs["units"]), str(obj.attrs["description"]))
         with h5py.File(out / name, "r") as f:
             f.visititems(visit)
         if bare:
             fail(f"{out / name}: datasets without units and description: {bare}")
-        print(f"{name}: all {count} datasets carry units and description")
+        found_schema = {k: v for k, v in found.items() if not k.startswith("/environment/")}
+        if found_schema != datasets[name]:
+            other = [k for k in found_schema
+                     if k in datasets[name] and found_schema[k] != datasets[name][k]]
+            fail(f"{out / name}: datasets (path: units, description) differ from the "
+                 f"schema: not written {set(datasets[name]) - set(found_schema)}, not in the "
+                 f"schema {set(found_schema) - set(datasets[name])}, other attributes {other}")
+        print(f"{name}: all {len(found)} datasets carry units and description, "
+              f"those of the schema its own")
 
 
 def main():
     dump, src, work, rodyn = sys.argv[1:5]
     src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
-    columns, headers = read_schema(dump)
+    columns, headers, datasets = read_schema(dump)
     for file, cols in columns.items():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
-    check_docs(src, columns, headers)
+    check_docs(src, columns, headers, datasets)
     check_readers(src, columns)
-    check_run(src, work, rodyn, headers)
+    check_run(src, work, rodyn, headers, datasets)
     print("OK")
 
 
