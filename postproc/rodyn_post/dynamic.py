@@ -35,6 +35,7 @@ from .errors import RodynResultsError
 from .results import _h5_attr, _h5_dataset, _read_key_values
 from .results import _read_status as _read_static_status
 from .results import check_header, water_defaults
+from .schema import header
 
 H5_FILE = "dynamic.h5"
 STATUS_FILE = "status.txt"
@@ -47,18 +48,13 @@ LINES_CSV = "dynamic_lines.csv"
 # status.txt key of a table's committed size: committed_bytes.dynamic_nodes.csv = 12345
 COMMITTED_PREFIX = "committed_bytes."
 
-NODES_HEADER = ("time_s", "line", "node", "s_m", "x_m", "y_m", "z_m",
-                "seabed_normal_N_per_m", "seabed_friction_N_per_m")
-ELEMENTS_HEADER = ("time_s", "line", "element", "point", "s_m", "effective_tension_N",
-                   "wall_tension_N", "moment_1_Nm", "moment_2_Nm", "torque_Nm",
-                   "curvature_per_m")
-LINES_HEADER = ("time_s", "line", "touchdown_s_m")
-ENDS_HEADER = ("time_s", "line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
-               "tension_N")
-ENDS_STEP_HEADER = ("step",) + ENDS_HEADER
-LOG_HEADER = ("step", "time_s", "dt_s", "iterations", "cutbacks", "kinetic_J", "strain_J",
-              "gravity_J", "external_work_J", "damping_work_J", "hydro_work_J",
-              "seabed_work_J", "total_J", "px", "py", "pz", "Lx", "Ly", "Lz")
+# the columns of the tables, from the one description of the output (rodyn_post.schema)
+NODES_HEADER = header(NODES_CSV)
+ELEMENTS_HEADER = header(ELEMENTS_CSV)
+LINES_HEADER = header(LINES_CSV)
+ENDS_HEADER = header(ENDS_CSV)
+ENDS_STEP_HEADER = header(ENDS_STEP_CSV)
+LOG_HEADER = header(LOG_CSV)
 
 # Datasets of a line group in dynamic.h5: shapes ('nf' frames, 'nn' nodes, 'ng' points).
 H5_LINE_DATASETS = {
@@ -399,14 +395,15 @@ def _read_h5(path: Path, status) -> DynamicResults:
             arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
             for k in H5_WATER_DATASETS:
                 if isinstance(group.get(k), h5py.Dataset):
-                    arrays[k] = group[k][...]
+                    arrays[k] = _h5_dataset(group, k, path)[...]
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
             for k in ("step_reactions", "step_end_tension"):
                 if isinstance(group.get(k), h5py.Dataset) and "step_time" in group:
-                    arrays[k] = np.asarray(group[k][...], dtype=float)
+                    arrays[k] = np.asarray(_h5_dataset(group, k, path)[...], dtype=float)
             if isinstance(group.get("step_time"), h5py.Dataset):
-                step_time = np.asarray(group["step_time"][...], dtype=float)
+                step_time = np.asarray(_h5_dataset(group, "step_time", path)[...],
+                                       dtype=float)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
                                     f"{path}: {group.name}"))
         from .environment import environment_of
@@ -449,10 +446,10 @@ def _committed_h5(time, log, step_time, lines, status, path, warnings) -> tuple:
     forces of the steps up to the last committed one (by time). Rows beyond are an
     uncommitted tail (a kill inside a sync), ignored with a warning."""
     n_frames, n_steps = status["frames"], status["steps"]
-    if len(time) < n_frames or len(log) < n_steps:
-        raise RodynResultsError(f"{path}: {len(time)} frames and {len(log)} steps, fewer "
-                                f"than the {n_frames} and {n_steps} status.txt says were "
-                                "committed")
+    if len(time) < n_frames or len(log) < n_steps:   # not status.txt's run: as it is
+        warnings.append(f"{path.name}: {len(time)} frames and {len(log)} steps, fewer than "
+                        f"the {n_frames} and {n_steps} status.txt says were committed")
+        return time, log, step_time, lines
     if len(time) == n_frames and len(log) == n_steps:
         return time, log, step_time, lines
     warnings.append(f"{path.name}: {len(time) - n_frames} frames and {len(log) - n_steps} "
@@ -502,14 +499,16 @@ def _read_status(path: Path) -> dict:
 
 def _committed_text(path: Path, status: dict, warnings: list) -> str:
     """The text of a CSV table up to its committed size in status.txt (the whole file
-    when status.txt gives none); a longer file's tail is ignored with a warning."""
+    when status.txt gives none); a longer file's tail is ignored with a warning. A file
+    shorter than that (cut after the run) is read as it is, with a warning: its last
+    frame or step, if cut short, is then dropped as for an older rodyn."""
     data = path.read_bytes()
     limit = (status or {}).get("committed", {}).get(path.name)
     if limit is not None:
         if len(data) < limit:
-            raise RodynResultsError(f"{path}: {len(data)} bytes, shorter than the "
-                                    f"{limit} status.txt says were committed")
-        if len(data) > limit:
+            warnings.append(f"{path.name}: {len(data)} bytes, shorter than the {limit} "
+                            f"status.txt says were committed")
+        elif len(data) > limit:
             warnings.append(f"{path.name}: {len(data) - limit} bytes beyond the committed "
                             f"size in status.txt (an uncommitted tail), ignored")
             data = data[:limit]

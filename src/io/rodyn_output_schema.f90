@@ -1,9 +1,11 @@
-!> The one description of rodyn's output tables: every column of every CSV table, with
-!> its unit and a one-line meaning, in the order written. The writers (rodyn_output,
-!> rodyn_output_dynamic) take their header rows from here; docs/output.md lists the same
-!> columns with the same units, which tests/program/check_output_schema.py checks (it
-!> reads this table through tests/program/output_schema_dump.f90), together with the
-!> columns the Python readers (postproc/rodyn_post) look for by name.
+!> The one description of rodyn's output: every column of every CSV table, with its
+!> unit and a one-line meaning, in the order written, and every HDF5 dataset with its
+!> units and description. The writers (rodyn_output, rodyn_output_dynamic) take their
+!> header rows and their datasets' `units` and `description` attributes from here; the
+!> Python readers their columns and the units they expect (postproc/rodyn_post/schema.py,
+!> written from this file by tools/gen_output_schema.py); docs/output.md lists the same
+!> tables, columns and datasets with the same units. tests/program/check_output_schema.py
+!> checks all of them against this table (read through output_schema_dump.f90).
 !>
 !> A row of `output_columns` is 'file | column | unit | meaning'; the unit '-' means
 !> none (a name, a count, a ratio).

@@ -10,7 +10,9 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
      exactly those columns, in the same order, with the same units (environment.csv:
      its header quoted in the text); and in the layouts of results.h5 and dynamic.h5
      exactly the datasets of the schema, with the same units;
-  3. the Python readers (rodyn_post) look only for columns the schema has, in its order;
+  3. the Python readers' copy (postproc/rodyn_post/schema.py, made by
+     tools/gen_output_schema.py) is the schema, and the readers look only for columns
+     the schema has, in its order;
   4. a run of RODYN (statics, dynamics, water; CSV and HDF5) writes every table of the
      schema with that header; results.h5 and dynamic.h5 hold exactly the datasets of
      the schema (and /environment), each with the attributes `units` and `description`,
@@ -146,9 +148,14 @@ def check_docs(src, columns, headers, datasets):
           f"{sum(len(c) for c in columns.values())} columns as in the schema")
 
 
-def check_readers(src, columns):
+def check_readers(src, columns, datasets):
     sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import dynamic, environment, results
+    from rodyn_post import dynamic, environment, results, schema
+    py_columns = {f: [(c, u) for c, u, _ in cols] for f, cols in schema.COLUMNS.items()}
+    if py_columns != columns or schema.DATASETS != datasets:
+        fail("postproc/rodyn_post/schema.py differs from rodyn_output_schema: run "
+             "python3 tools/gen_output_schema.py")
+    print("rodyn_post.schema is rodyn_output_schema")
     used = {
         "static_nodes.csv": results.NODES_HEADER,
         "static_elements.csv": results.ELEMENTS_HEADER,
@@ -233,7 +240,7 @@ def main():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
     check_docs(src, columns, headers, datasets)
-    check_readers(src, columns)
+    check_readers(src, columns, datasets)
     check_run(src, work, rodyn, headers, datasets)
     print("OK")
 
