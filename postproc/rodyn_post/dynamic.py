@@ -11,9 +11,12 @@ significant digits. The support forces of every step (`DynamicResults.step_time`
 `LineDynamic.step_reactions`, `step_end_tension`) are empty in results of a rodyn that
 did not write them; `LineDynamic.end_tension_series()` picks them when there.
 
-A run that was killed or failed is read up to what is on disk: in the CSV tables a
-last frame with missing rows, or a last row cut short, is dropped (docs/output.md,
-"After a killed or failed run").
+A run that was killed or failed is read up to what it committed: status.txt gives the
+frames and the bytes of each CSV table at the last sync (`frames`,
+`committed_bytes.NAME`); anything beyond (a kill inside a sync) is an uncommitted tail,
+ignored with a warning, in the CSV tables as in a dynamic.h5 still marked running.
+Without those keys (an older rodyn) a last frame with missing rows, or a last row cut
+short, is dropped (docs/output.md, "After a killed or failed run").
 
 Every problem with the files raises `RodynResultsError` (from rodyn_post.errors),
 whose message names the file and, for CSV, the line number.
@@ -21,8 +24,9 @@ whose message names the file and, for CSV, the line number.
 from __future__ import annotations
 
 import csv
+import io
 import re
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +35,7 @@ from .errors import RodynResultsError
 from .results import _h5_attr, _h5_dataset, _read_key_values
 from .results import _read_status as _read_static_status
 from .results import check_header, water_defaults
+from .schema import header
 
 H5_FILE = "dynamic.h5"
 STATUS_FILE = "status.txt"
@@ -40,19 +45,16 @@ ENDS_CSV = "dynamic_ends.csv"
 ENDS_STEP_CSV = "dynamic_ends_step.csv"
 LOG_CSV = "dynamic_log.csv"
 LINES_CSV = "dynamic_lines.csv"
+# status.txt key of a table's committed size: committed_bytes.dynamic_nodes.csv = 12345
+COMMITTED_PREFIX = "committed_bytes."
 
-NODES_HEADER = ("time_s", "line", "node", "s_m", "x_m", "y_m", "z_m",
-                "seabed_normal_N_per_m", "seabed_friction_N_per_m")
-ELEMENTS_HEADER = ("time_s", "line", "element", "point", "s_m", "effective_tension_N",
-                   "wall_tension_N", "moment_1_Nm", "moment_2_Nm", "torque_Nm",
-                   "curvature_per_m")
-LINES_HEADER = ("time_s", "line", "touchdown_s_m")
-ENDS_HEADER = ("time_s", "line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
-               "tension_N")
-ENDS_STEP_HEADER = ("step",) + ENDS_HEADER
-LOG_HEADER = ("step", "time_s", "dt_s", "iterations", "cutbacks", "kinetic_J", "strain_J",
-              "gravity_J", "external_work_J", "damping_work_J", "hydro_work_J",
-              "seabed_work_J", "total_J", "px", "py", "pz", "Lx", "Ly", "Lz")
+# the columns of the tables, from the one description of the output (rodyn_post.schema)
+NODES_HEADER = header(NODES_CSV)
+ELEMENTS_HEADER = header(ELEMENTS_CSV)
+LINES_HEADER = header(LINES_CSV)
+ENDS_HEADER = header(ENDS_CSV)
+ENDS_STEP_HEADER = header(ENDS_STEP_CSV)
+LOG_HEADER = header(LOG_CSV)
 
 # Datasets of a line group in dynamic.h5: shapes ('nf' frames, 'nn' nodes, 'ng' points).
 H5_LINE_DATASETS = {
@@ -393,14 +395,15 @@ def _read_h5(path: Path, status) -> DynamicResults:
             arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
             for k in H5_WATER_DATASETS:
                 if isinstance(group.get(k), h5py.Dataset):
-                    arrays[k] = group[k][...]
+                    arrays[k] = _h5_dataset(group, k, path)[...]
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
                                           "end_held", path)
             for k in ("step_reactions", "step_end_tension"):
                 if isinstance(group.get(k), h5py.Dataset) and "step_time" in group:
-                    arrays[k] = np.asarray(group[k][...], dtype=float)
+                    arrays[k] = np.asarray(_h5_dataset(group, k, path)[...], dtype=float)
             if isinstance(group.get("step_time"), h5py.Dataset):
-                step_time = np.asarray(group["step_time"][...], dtype=float)
+                step_time = np.asarray(_h5_dataset(group, "step_time", path)[...],
+                                       dtype=float)
             lines.append(_make_line(str(_h5_attr(group, "name", path)), arrays, len(time),
                                     f"{path}: {group.name}"))
         from .environment import environment_of
@@ -415,6 +418,10 @@ def _read_h5(path: Path, status) -> DynamicResults:
     if not lines:
         raise RodynResultsError(f"{path}: no lines in /dynamic")
     step_time, lines = _same_step_rows(step_time, lines)
+    warnings = []
+    if not finished and status is not None and status.get("frames") is not None:
+        time, log, step_time, lines = _committed_h5(time, log, step_time, lines, status,
+                                                    path, warnings)
     if not finished:  # running or killed: counters from what was flushed
         counters = {"steps": len(log), "step_iterations": int(log.iterations.sum()),
                     "step_cutbacks": int(log.cutbacks.sum()),
@@ -430,7 +437,33 @@ def _read_h5(path: Path, status) -> DynamicResults:
         dt=float(info["dt"]), title=str(info["title"]), deck=str(deck),
         version=str(info["version"]), deck_file=str(info["deck_file"]),
         folder=path.parent, source=path, environment=environment,
-        step_time=step_time)
+        step_time=step_time, warnings=tuple(warnings))
+
+
+def _committed_h5(time, log, step_time, lines, status, path, warnings) -> tuple:
+    """(time, log, step_time, lines) of a dynamic.h5 still marked running cut to what
+    status.txt says was committed: `frames` frames, `steps` log rows, and the support
+    forces of the steps up to the last committed one (by time). Rows beyond are an
+    uncommitted tail (a kill inside a sync), ignored with a warning."""
+    n_frames, n_steps = status["frames"], status["steps"]
+    if len(time) < n_frames or len(log) < n_steps:   # not status.txt's run: as it is
+        warnings.append(f"{path.name}: {len(time)} frames and {len(log)} steps, fewer than "
+                        f"the {n_frames} and {n_steps} status.txt says were committed")
+        return time, log, step_time, lines
+    if len(time) == n_frames and len(log) == n_steps:
+        return time, log, step_time, lines
+    warnings.append(f"{path.name}: {len(time) - n_frames} frames and {len(log) - n_steps} "
+                    "steps beyond those committed in status.txt (an uncommitted tail), "
+                    "ignored")
+    t_last = log.time[n_steps - 1] if n_steps else status["time_reached_s"]
+    n_rows = int(np.count_nonzero(step_time <= t_last))
+    log = replace(log, **{f.name: getattr(log, f.name)[:n_steps] for f in fields(log)})
+    per_frame = [k for k, shape in {**H5_LINE_DATASETS, **H5_WATER_DATASETS}.items()
+                 if shape[0] == "nf"]
+    lines = [replace(line, **{k: getattr(line, k)[:n_frames] for k in per_frame},
+                     step_reactions=line.step_reactions[:n_rows],
+                     step_end_tension=line.step_end_tension[:n_rows]) for line in lines]
+    return time[:n_frames], log, step_time[:n_rows], lines
 
 
 
@@ -440,21 +473,60 @@ def _read_h5(path: Path, status) -> DynamicResults:
 # --- CSV + status.txt ---------------------------------------------------------------
 
 def _read_status(path: Path) -> dict:
-    """status.txt of a dynamic run as a dict of typed values (keys of STATUS_KEYS)."""
-    if _read_key_values(path).get("dynamic") != "true":
+    """status.txt of a dynamic run as a dict of typed values (keys of STATUS_KEYS), plus
+    `frames` (int; None when absent: an older rodyn) and `committed` ({table: bytes},
+    from the keys committed_bytes.NAME; empty when absent)."""
+    raw = _read_key_values(path)
+    if raw.get("dynamic") != "true":
         raise RodynResultsError(f"{path}: not the status of a dynamic run (no "
                                 "'dynamic = true')")
-    return _read_static_status(path, STATUS_KEYS)
+    status = _read_static_status(path, STATUS_KEYS)
+    status["frames"], status["committed"] = None, {}
+    for key, value in raw.items():
+        if key != "frames" and not key.startswith(COMMITTED_PREFIX):
+            continue
+        try:
+            number = int(value)
+        except ValueError:
+            raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid int") from None
+        if key == "frames":
+            status["frames"] = number
+        else:
+            status["committed"][key[len(COMMITTED_PREFIX):]] = number
+    return status
 
 
 
-def _read_rows(path: Path, header: tuple, warnings: list) -> tuple:
-    """(columns of the file, rows as lists of strings) of a rodyn CSV table: the file
-    must hold the columns of `header` (by name; results.check_header). A last row with
-    the wrong number of fields (cut short by a kill) is dropped with a warning."""
+def _committed_text(path: Path, status: dict, warnings: list) -> str:
+    """The text of a CSV table up to its committed size in status.txt (the whole file
+    when status.txt gives none); a longer file's tail is ignored with a warning. A file
+    shorter than that (cut after the run) is read as it is, with a warning: its last
+    frame or step, if cut short, is then dropped as for an older rodyn."""
+    data = path.read_bytes()
+    limit = (status or {}).get("committed", {}).get(path.name)
+    if limit is not None:
+        if len(data) < limit:
+            warnings.append(f"{path.name}: {len(data)} bytes, shorter than the {limit} "
+                            f"status.txt says were committed")
+        elif len(data) > limit:
+            warnings.append(f"{path.name}: {len(data) - limit} bytes beyond the committed "
+                            f"size in status.txt (an uncommitted tail), ignored")
+            data = data[:limit]
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise RodynResultsError(f"{path}: not UTF-8 text ({exc})") from None
+
+
+def _read_rows(path: Path, header: tuple, warnings: list, status: dict = None) -> tuple:
+    """(columns of the file, rows as lists of strings) of a rodyn CSV table up to its
+    committed size (`status`: status.txt values or None): the file must hold the columns
+    of `header` (by name; results.check_header). A last row with the wrong number of
+    fields (cut short by a kill) is dropped with a warning."""
     if not path.is_file():
         raise RodynResultsError(f"{path}: file missing")
-    with open(path, newline="", encoding="utf-8") as f:
+    text = _committed_text(path, status, warnings)
+    with io.StringIO(text, newline="") as f:
         reader = csv.reader(f)
         header = check_header(path, next(reader, []), header)
         rows, bad = [], None
@@ -505,10 +577,11 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
     """Dynamic results from the CSV tables of `folder` and its status.txt."""
     from .environment import load_environment
     warnings = []
-    node_head, node_rows = _read_rows(folder / NODES_CSV, NODES_HEADER, warnings)
-    point_head, point_rows = _read_rows(folder / ELEMENTS_CSV, ELEMENTS_HEADER, warnings)
-    end_head, end_rows = _read_rows(folder / ENDS_CSV, ENDS_HEADER, warnings)
-    log_head, log_rows = _read_rows(folder / LOG_CSV, LOG_HEADER, warnings)
+    node_head, node_rows = _read_rows(folder / NODES_CSV, NODES_HEADER, warnings, status)
+    point_head, point_rows = _read_rows(folder / ELEMENTS_CSV, ELEMENTS_HEADER, warnings,
+                                        status)
+    end_head, end_rows = _read_rows(folder / ENDS_CSV, ENDS_HEADER, warnings, status)
+    log_head, log_rows = _read_rows(folder / LOG_CSV, LOG_HEADER, warnings, status)
     for name, rows in ((NODES_CSV, node_rows), (ELEMENTS_CSV, point_rows)):
         if not rows:
             raise RodynResultsError(f"{folder / name}: no frames (header only)")
@@ -545,8 +618,8 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
             raise RodynResultsError(f"{folder / ELEMENTS_CSV}: line {name!r} is not in "
                                     f"{NODES_CSV}")
     ends, complete_frames = _ends(end_rows, end_head, folder / ENDS_CSV, times, line_names)
-    touchdown = _touchdown(folder / LINES_CSV, times, line_names, warnings)
-    step_time, step_ends = _ends_step(folder / ENDS_STEP_CSV, ends, warnings)
+    touchdown = _touchdown(folder / LINES_CSV, times, line_names, warnings, status)
+    step_time, step_ends = _ends_step(folder / ENDS_STEP_CSV, ends, warnings, status)
     if complete_frames < n_frames:
         warnings.append(f"last frame (t = {times[-1]:g} s) incomplete in {ENDS_CSV}, "
                         "dropped")
@@ -604,12 +677,12 @@ def _read_csv_folder(folder: Path, status: dict) -> DynamicResults:
         step_time=step_time)
 
 
-def _touchdown(path, times, line_names, warnings) -> dict:
+def _touchdown(path, times, line_names, warnings, status=None) -> dict:
     """{line: touchdown S per frame (nf,)} from dynamic_lines.csv ({} when the file is
     missing, as in the results of an older rodyn); frames without a row read -1."""
     if not path.is_file():
         return {}
-    header, rows = _read_rows(path, LINES_HEADER, warnings)
+    header, rows = _read_rows(path, LINES_HEADER, warnings, status)
     index = {t: i for i, t in enumerate(times)}
     out = {name: np.full(len(times), -1.0) for name in line_names}
     col_t, col_line, col_s = (header.index(c) for c in LINES_HEADER)
@@ -676,14 +749,14 @@ def _ends(rows, header, path, times, line_names):
     return out, complete_frames
 
 
-def _ends_step(path, ends, warnings) -> tuple:
+def _ends_step(path, ends, warnings, status=None) -> tuple:
     """(step_time (ns1,), {line: {step_reactions (ns1, 12), step_end_tension (ns1, 2)}})
     from dynamic_ends_step.csv (empty when the file is missing: an older rodyn). Each
     step has one row per held end (`ends`: the frames' end_held); a last step with
     fewer rows (a kill while writing) is dropped."""
     if not path.is_file():
         return np.zeros(0), {}
-    header, rows = _read_rows(path, ENDS_STEP_HEADER, warnings)
+    header, rows = _read_rows(path, ENDS_STEP_HEADER, warnings, status)
     held = [(name, k) for name, line in ends.items() for k in (0, 1) if line["end_held"][k]]
     col = {c: header.index(c) for c in ENDS_STEP_HEADER}
     steps, times, values = [], [], {}

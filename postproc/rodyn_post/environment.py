@@ -21,9 +21,10 @@ from pathlib import Path
 import numpy as np
 
 from .errors import RodynResultsError
+from .schema import header
 
 ENVIRONMENT_CSV = "environment.csv"
-ENVIRONMENT_HEADER = ("key", "value", "unit")
+ENVIRONMENT_HEADER = header(ENVIRONMENT_CSV)  # rodyn_post.schema
 # scalar keys of environment.csv / datasets of /environment: (attribute, unit)
 _SCALARS = {
     "surface_z": "m", "depth": "m", "density": "kg/m3", "current_ramp": "s",

@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import RodynResultsError  # noqa: F401  (also importable from here)
+from .schema import DATASETS, header
 
 H5_FILE = "results.h5"
 STATUS_FILE = "status.txt"
@@ -33,19 +34,15 @@ ELEMENTS_CSV = "static_elements.csv"
 REACTIONS_CSV = "static_reactions.csv"
 LINES_CSV = "static_lines.csv"
 
-NODES_HEADER = ("line", "node", "s_m", "x_m", "y_m", "z_m", "seabed_normal_N_per_m",
-                "seabed_friction_N_per_m")
-ELEMENTS_HEADER = (
-    "line", "element", "point", "s_m", "effective_tension_N", "wall_tension_N", "shear_1_N",
-    "shear_2_N", "moment_1_Nm", "moment_2_Nm", "torque_Nm", "curvature_1_per_m",
-    "curvature_2_per_m", "twist_per_m", "curvature_per_m")
-LINES_HEADER = ("line", "length_m", "touchdown_s_m")
+# the columns of the tables, from the one description of the output (rodyn_post.schema)
+NODES_HEADER = header(NODES_CSV)
+ELEMENTS_HEADER = header(ELEMENTS_CSV)
+LINES_HEADER = header(LINES_CSV)
 # columns an older rodyn did not write (read as: wall = effective, seabed forces and
 # hydro and seabed work 0); static and dynamic tables
 OPTIONAL_COLUMNS = ("wall_tension_N", "seabed_normal_N_per_m", "seabed_friction_N_per_m",
                     "hydro_work_J", "seabed_work_J")
-REACTIONS_HEADER = ("line", "end", "Fx_N", "Fy_N", "Fz_N", "Mx_Nm", "My_Nm", "Mz_Nm",
-                    "tension_N")
+REACTIONS_HEADER = header(REACTIONS_CSV)
 
 # Datasets of a line group in results.h5 and their shapes ('nn' nodes, 'ng' points).
 H5_LINE_DATASETS = {
@@ -217,7 +214,7 @@ def _read_h5(path: Path) -> StaticResults:
             arrays = {k: _h5_dataset(group, k, path)[...] for k in H5_LINE_DATASETS}
             for k in H5_WATER_DATASETS:
                 if isinstance(group.get(k), h5py.Dataset):
-                    arrays[k] = group[k][...]
+                    arrays[k] = _h5_dataset(group, k, path)[...]
             if "touchdown_s" in group.attrs:
                 arrays["touchdown_s"] = _h5_attr(group, "touchdown_s", path)
             arrays["end_held"] = _h5_attr(_h5_dataset(group, "reactions", path),
@@ -248,12 +245,36 @@ def _h5_attr(obj, key, path):
 
 
 def _h5_dataset(group, key, path):
-    """Dataset `key` of an HDF5 group."""
+    """Dataset `key` of an HDF5 group, after checking its own `units` attribute against
+    the schema (h5_units_checked)."""
     import h5py
 
     data = group.get(key)
     if not isinstance(data, h5py.Dataset):
         raise RodynResultsError(f"{path}: dataset {group.name.rstrip('/')}/{key} missing")
+    h5_units_checked(data, path)
+    return data
+
+
+def h5_units_checked(data, path):
+    """A dataset of results.h5 or dynamic.h5 whose `units` attribute is those rodyn_post
+    reads it in (rodyn_post.schema.DATASETS; SI, docs/output.md); RodynResultsError
+    otherwise. A dataset without the attribute (an older rodyn) or not in the schema
+    passes."""
+    parts = data.name.split("/")
+    file = {"static": "results.h5", "dynamic": "dynamic.h5"}.get(parts[1])
+    if file is None or "units" not in data.attrs:
+        return data
+    key = data.name
+    if len(parts) == 4 and parts[2] != "log":
+        key = f"/{parts[1]}/LINE/{parts[3]}"
+    known = DATASETS[file].get(key)
+    units = data.attrs["units"]
+    if isinstance(units, bytes):
+        units = units.decode("utf-8")
+    if known is not None and str(units) != known[0]:
+        raise RodynResultsError(f"{path}: {data.name} is in {units!r}, rodyn_post reads it "
+                                f"in {known[0]!r} (docs/output.md)")
     return data
 
 

@@ -21,6 +21,7 @@ import pytest
 from rodyn_post import RodynResultsError, load_static
 from rodyn_post.commands import plot_static
 from rodyn_post.results import ELEMENTS_HEADER, LINES_HEADER, NODES_HEADER, REACTIONS_HEADER
+from rodyn_post.schema import DATASETS
 
 REPO = Path(__file__).resolve().parents[2]
 COMMAND = [sys.executable, "-m", "rodyn_post.commands.plot_static"]  # = rodyn-plot-static
@@ -84,7 +85,8 @@ def write_h5(path, lines, complete=True, counters=COUNTERS):
             for key, value in a.items():
                 if key != "end_held":
                     g[key] = value
-                    g[key].attrs.update(units="-", description=key)
+                    units = DATASETS["results.h5"].get(f"/static/LINE/{key}", ("-",))[0]
+                    g[key].attrs.update(units=units, description=key)
             g["reactions"].attrs["end_held"] = a["end_held"]
 
 

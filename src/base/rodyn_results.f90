@@ -72,6 +72,7 @@ module rodyn_results
       logical :: dynamic = .false.             !< a dynamic analysis was run
       real(wp) :: time_reached = 0.0_wp        !< last time reached [s]
       integer :: steps = 0                     !< time steps completed
+      integer :: frames = 0                    !< output frames the files hold
       integer :: step_cutbacks = 0             !< step halvings in total
       integer :: step_iterations = 0           !< Newton iterations over all steps
       integer :: step_tangents = 0             !< tangents formed and factorised, all steps

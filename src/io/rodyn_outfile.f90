@@ -28,7 +28,7 @@ module rodyn_outfile
    private
    public :: out_file_t, outfile_create, outfile_put, outfile_flush, outfile_mark
    public :: outfile_commit, outfile_close, outfile_abort, outfile_pending
-   public :: outfile_reopen, outfile_size
+   public :: outfile_reopen, outfile_size, outfile_committed
    public :: temp_name, commit_rename, remove_file, system_error, path_join
 
    integer, parameter :: chunk = 65536   !< buffer of a whole file, written when full
@@ -218,6 +218,13 @@ contains
       type(out_file_t), intent(in) :: f  !< file
       outfile_pending = f%n
    end function outfile_pending
+
+   !> Bytes of a live file at its last outfile_mark: what a reader may trust.
+   pure function outfile_committed(f) result(bytes)
+      type(out_file_t), intent(in) :: f  !< file
+      integer(i8) :: bytes               !< bytes
+      bytes = f%good
+   end function outfile_committed
 
    !> Hand everything held to the system; a failure (now or before) is recorded in err.
    subroutine outfile_flush(f, err)

@@ -7,22 +7,32 @@
 !> half-written file. The folder is created (with its parents) if missing. status.txt
 !> is written last and says complete = true only when every file was written.
 module rodyn_output
-   use rodyn_kinds, only: wp, rodyn_version
+   use rodyn_kinds, only: wp, i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_model, only: model_t, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
       temp_name, commit_rename, remove_file
    use rodyn_outdir, only: outdir_make
+   use rodyn_output_schema, only: schema_header
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
-                                  csv_name, env_item_t, environment_items, &
+   use rodyn_output_common, only: text_of, status_of, path_join, one_line, &
+                                  describe_dataset, csv_name, env_item_t, environment_items, &
                                   write_environment_h5, wall_tension_of, seabed_force_of, &
                                   water_fields_fit, touchdown_of, write_parameters_h5
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
+   public :: committed_t
+
+   !> The committed size of a table that grows while a run goes: status.txt's key
+   !> 'committed_bytes.<name>' (docs/output.md). A reader trusts the first `bytes` bytes
+   !> of the file; anything beyond is an uncommitted tail (a kill inside a sync).
+   type :: committed_t
+      character(len=:), allocatable :: name  !< file name, 'dynamic_nodes.csv'
+      integer(i8) :: bytes = 0_i8            !< bytes committed at the last sync
+   end type committed_t
 
    character(len=*), parameter :: nodes_csv = 'static_nodes.csv'
    character(len=*), parameter :: elements_csv = 'static_elements.csv'
@@ -100,13 +110,16 @@ contains
    !> stops before it has results to write, and for the dynamic writer (which adds the
    !> keys dynamic ... step_cutbacks when summary%dynamic is true). Acts even when err
    !> already holds an error. The deck parameters `params` (if any) follow the key deck,
-   !> one line 'parameter.NAME = text' each.
-   subroutine output_write_status(dir, summary, err, deck_file, params)
+   !> one line 'parameter.NAME = text' each. The committed sizes of a dynamic run's
+   !> tables `committed` (if any) follow the dynamic keys (frames, then one line
+   !> 'committed_bytes.NAME = bytes' each).
+   subroutine output_write_status(dir, summary, err, deck_file, params, committed)
       character(len=*), intent(in) :: dir                 !< output folder
       type(run_summary_t), intent(in) :: summary          !< how the run went
       type(error_t), intent(inout) :: err                 !< status
       character(len=*), intent(in), optional :: deck_file !< path of the deck
       type(parameter_value_t), intent(in), optional :: params(:) !< deck parameters used
+      type(committed_t), intent(in), optional :: committed(:) !< sizes of live tables
       type(error_t) :: e
       type(out_file_t) :: f
       integer :: k, attempt
@@ -133,6 +146,13 @@ contains
                call outfile_put(f, 'step_iterations = '//int_str(summary%step_iterations))
                call outfile_put(f, 'step_tangents = '//int_str(summary%step_tangents))
                call outfile_put(f, 'step_cutbacks = '//int_str(summary%step_cutbacks))
+               call outfile_put(f, 'frames = '//int_str(summary%frames))
+               if (present(committed)) then
+                  do k = 1, size(committed)
+                     call outfile_put(f, 'committed_bytes.'//committed(k)%name//' = '// &
+                        int8_str(committed(k)%bytes))
+                  end do
+               end if
             end if
             call outfile_put(f, 'rodyn_version = '//rodyn_version)
             if (present(deck_file)) then
@@ -176,7 +196,7 @@ contains
       items = environment_items(model)
       call outfile_create(f, dir, environment_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'key,value,unit')
+      call outfile_put(f, schema_header(environment_csv))
       do k = 1, size(items)
          call outfile_put(f, items(k)%key//','//real_str(items(k)%value)//','// &
             items(k)%unit)
@@ -198,8 +218,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, nodes_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,node,s_m,x_m,y_m,z_m,seabed_normal_N_per_m,'// &
-         'seabed_friction_N_per_m')
+      call outfile_put(f, schema_header(nodes_csv))
       do i = 1, size(lines)
          fn = seabed_force_of(lines(i), 1)
          ff = seabed_force_of(lines(i), 2)
@@ -222,9 +241,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, elements_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,element,point,s_m,effective_tension_N,wall_tension_N,'// &
-         'shear_1_N,shear_2_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_1_per_m,'// &
-         'curvature_2_per_m,twist_per_m,curvature_per_m')
+      call outfile_put(f, schema_header(elements_csv))
       do i = 1, size(lines)
          associate (r => lines(i))
             tw = wall_tension_of(r)
@@ -250,7 +267,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, reactions_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N')
+      call outfile_put(f, schema_header(reactions_csv))
       do i = 1, size(lines)
          do j = 1, 2
             if (.not. lines(i)%end_held(j)) cycle
@@ -272,7 +289,7 @@ contains
       if (has_error(err)) return
       call outfile_create(f, dir, lines_csv, err)
       if (has_error(err)) return
-      call outfile_put(f, 'line,length_m,touchdown_s_m')
+      call outfile_put(f, schema_header(lines_csv))
       do i = 1, size(lines)
          associate (r => lines(i))
             call outfile_put(f, csv_name(r%name)//','//reals_str([r%node_s(size(r%node_s)), &
@@ -305,7 +322,7 @@ contains
       call hdf5_write_attribute(h5, '/', 'complete', merge(1, 0, summary%complete), err)
       call hdf5_write_attribute(h5, '/', 'status', one_line(status_of(summary)), err)
       call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
-      call describe(h5, '/deck', '-', 'full text of the input deck, includes expanded', err)
+      call describe_dataset(h5, results_h5, '/deck', err)
       call hdf5_create_group(h5, '/static', err)
       call hdf5_write_attribute(h5, '/static', 'load_factor', summary%load_factor, err)
       call hdf5_write_attribute(h5, '/static', 'increments', summary%increments, err)
@@ -337,49 +354,36 @@ contains
       call hdf5_create_group(h5, g, err)
       call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
       call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
-      call describe(h5, g//'/node_s', 'm', 'unstretched arc length of the nodes', err)
+      call describe_dataset(h5, results_h5, g//'/node_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/node_xyz', r%node_x, err)
-      call describe(h5, g//'/node_xyz', 'm', &
-         'node positions, one row per node, columns x, y, z (global axes)', err)
+      call describe_dataset(h5, results_h5, g//'/node_xyz', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
-      call describe(h5, g//'/gp_element', '-', &
-         'element of each integration point, numbered from 1 along the line', err)
+      call describe_dataset(h5, results_h5, g//'/gp_element', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
-      call describe(h5, g//'/gp_point', '-', &
-         'integration point number within its element, from 1', err)
+      call describe_dataset(h5, results_h5, g//'/gp_point', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
-      call describe(h5, g//'/gp_s', 'm', &
-         'unstretched arc length of the integration points', err)
+      call describe_dataset(h5, results_h5, g//'/gp_s', err, line_group=g)
       call hdf5_write_attribute(h5, g, 'touchdown_s', touchdown_of(r), err)
       call hdf5_write_dataset(h5, g//'/effective_tension', r%tension, err)
-      call describe(h5, g//'/effective_tension', 'N', &
-         'effective tension N3 along d3, positive in tension', err)
+      call describe_dataset(h5, results_h5, g//'/effective_tension', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/wall_tension', wall_tension_of(r), err)
-      call describe(h5, g//'/wall_tension', 'N', 'wall (true) tension, '// &
-         'T_eff + p_o A_o - p_i A_i, positive in tension', err)
+      call describe_dataset(h5, results_h5, g//'/wall_tension', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/shear', r%shear, err)
-      call describe(h5, g//'/shear', 'N', 'shear forces, columns N1 along d1, N2 along d2', &
-         err)
+      call describe_dataset(h5, results_h5, g//'/shear', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/moment', r%moment, err)
-      call describe(h5, g//'/moment', 'N m', &
-         'bending moments, columns M1 about d1, M2 about d2', err)
+      call describe_dataset(h5, results_h5, g//'/moment', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/torque', r%torque, err)
-      call describe(h5, g//'/torque', 'N m', 'torsional moment M3 about d3', err)
+      call describe_dataset(h5, results_h5, g//'/torque', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/curvature', r%curvature, err)
-      call describe(h5, g//'/curvature', '1/m', &
-         'section-frame curvatures, columns K1 (about d1), K2 (about d2), K3 (twist)', err)
+      call describe_dataset(h5, results_h5, g//'/curvature', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/reactions', r%reaction, err)
-      call describe(h5, g//'/reactions', 'N (columns 1-3), N m (columns 4-6)', &
-         'force and moment of the support on the line, global axes; rows end A, end B; '// &
-         'columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', err)
+      call describe_dataset(h5, results_h5, g//'/reactions', err, line_group=g)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call hdf5_write_dataset(h5, g//'/seabed_normal', seabed_force_of(r, 1), err)
-      call describe(h5, g//'/seabed_normal', 'N/m', &
-         'seabed normal contact force per unit length at the nodes (0: no contact)', err)
+      call describe_dataset(h5, results_h5, g//'/seabed_normal', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/seabed_friction', seabed_force_of(r, 2), err)
-      call describe(h5, g//'/seabed_friction', 'N/m', &
-         'magnitude of the seabed friction force per unit length at the nodes', err)
+      call describe_dataset(h5, results_h5, g//'/seabed_friction', err, line_group=g)
    end subroutine write_h5_line
 
 
@@ -446,6 +450,15 @@ contains
          s = s//real_str(x(i))
       end do
    end function reals_str
+
+   !> A 64-bit integer without blanks.
+   pure function int8_str(i) result(s)
+      integer(i8), intent(in) :: i          !< value
+      character(len=:), allocatable :: s    !< text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function int8_str
 
    !> An integer without blanks.
    pure function int_str(i) result(s)

@@ -14,12 +14,14 @@
 !> values with hdf5_series_hold, at most frame_block frames or hold_bytes) and written
 !> together, in a "sync": the CSV rows (write(2), checked), then dynamic.h5 (one block
 !> per dataset, the step rows, H5Fflush), then status.txt (temporary file + rename) with
-!> complete = false, status = running and the time and steps of the last frame synced.
+!> complete = false, status = running, the time, steps and frames of the last sync and
+!> the committed size of each CSV table (committed_bytes.NAME, its bytes at that sync).
 !> A sync happens at the first frame, after a frame when status_interval (1 s) of wall
 !> time has passed since the last one, when the hold is full (or log_block step rows
 !> are), and at close. So status.txt, the CSV tables and dynamic.h5 hold the same frames
-!> whenever the run is killed (a kill inside a sync can leave the data files one block
-!> ahead of status.txt, never behind it).
+!> whenever the run is killed, up to the sizes status.txt gives: a kill inside a sync
+!> can leave the data files one block ahead of status.txt (an uncommitted tail, which
+!> readers ignore and a restart cuts off), never behind it.
 !> On a write failure (a full disk) nothing more is written: the CSV tables are cut back
 !> to their last sync (whole frames), a dynamic.h5 whose write failed is removed, and
 !> status.txt says complete = false, the failure, and the time and steps of that sync.
@@ -45,11 +47,12 @@ module rodyn_output_dynamic
       hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
       hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
       hdf5_append_steps
-   use rodyn_output, only: output_write_status, output_write_environment
+   use rodyn_output, only: output_write_status, output_write_environment, committed_t
+   use rodyn_output_schema, only: schema_header
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
-      outfile_mark, outfile_close, outfile_abort, outfile_pending, temp_name, &
-      commit_rename, remove_file, outfile_reopen
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe, &
+      outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
+      temp_name, commit_rename, remove_file, outfile_reopen
+   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe_dataset, &
                                   csv_name, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, water_fields_fit, touchdown_of, &
                                   write_parameters_h5
@@ -68,18 +71,6 @@ module rodyn_output_dynamic
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
-   character(len=*), parameter :: nodes_head = 'time_s,line,node,s_m,x_m,y_m,z_m,'// &
-      'seabed_normal_N_per_m,seabed_friction_N_per_m'
-   character(len=*), parameter :: elements_head = 'time_s,line,element,point,s_m,'// &
-      'effective_tension_N,wall_tension_N,moment_1_Nm,moment_2_Nm,torque_Nm,curvature_per_m'
-   character(len=*), parameter :: lines_head = 'time_s,line,touchdown_s_m'
-   character(len=*), parameter :: ends_head = &
-      'time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
-   character(len=*), parameter :: ends_step_head = &
-      'step,time_s,line,end,Fx_N,Fy_N,Fz_N,Mx_Nm,My_Nm,Mz_Nm,tension_N'
-   character(len=*), parameter :: log_head = 'step,time_s,dt_s,iterations,cutbacks,'// &
-      'kinetic_J,strain_J,gravity_J,external_work_J,damping_work_J,hydro_work_J,'// &
-      'seabed_work_J,total_J,px,py,pz,Lx,Ly,Lz'
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
@@ -289,12 +280,12 @@ contains
          call reopen_csv(lines_csv, w%f_lines, 5)
          call reopen_csv(ends_step_csv, w%f_ends_step, 6)
       else if (w%csv) then
-         call open_csv(w, nodes_csv, nodes_head, w%f_nodes, e)
-         call open_csv(w, elements_csv, elements_head, w%f_elements, e)
-         call open_csv(w, ends_csv, ends_head, w%f_ends, e)
-         call open_csv(w, log_csv, log_head, w%f_log, e)
-         call open_csv(w, ends_step_csv, ends_step_head, w%f_ends_step, e)
-         call open_csv(w, lines_csv, lines_head, w%f_lines, e)
+         call open_csv(w, nodes_csv, schema_header(nodes_csv), w%f_nodes, e)
+         call open_csv(w, elements_csv, schema_header(elements_csv), w%f_elements, e)
+         call open_csv(w, ends_csv, schema_header(ends_csv), w%f_ends, e)
+         call open_csv(w, log_csv, schema_header(log_csv), w%f_log, e)
+         call open_csv(w, ends_step_csv, schema_header(ends_step_csv), w%f_ends_step, e)
+         call open_csv(w, lines_csv, schema_header(lines_csv), w%f_lines, e)
       end if
       if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
@@ -512,8 +503,9 @@ contains
       end if
       call release_all(w, e)
       if (w%failed) call as_synced(w, s)
+      if (.not. w%failed) s%frames = w%frames
       if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file), &
-                                                     w%params)
+                                                     w%params, committed_sizes(w))
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (w%failed) call set_error(err, stat_io, w%why)
    end subroutine dynamic_output_close
@@ -590,8 +582,7 @@ contains
          call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
          call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
          call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
-         call describe(h5, '/deck', '-', 'full text of the input deck, includes expanded', &
-            err)
+         call describe_dataset(h5, dynamic_h5, '/deck', err)
          call hdf5_create_group(h5, '/dynamic', err)
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
@@ -599,7 +590,7 @@ contains
          call write_environment_h5(h5, model, err)
          call write_parameters_h5(h5, model, err)
          call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
-         call describe(h5, '/dynamic/time', 's', 'time of each output frame', err)
+         call describe_dataset(h5, dynamic_h5, '/dynamic/time', err)
          do i = 1, size(lines)
             call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
          end do
@@ -695,63 +686,45 @@ contains
       call hdf5_create_group(h5, g, err)
       call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
       call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
-      call describe(h5, g//'/node_s', 'm', 'unstretched arc length of the nodes', err)
+      call describe_dataset(h5, dynamic_h5, g//'/node_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
-      call describe(h5, g//'/gp_s', 'm', 'unstretched arc length of the integration points', &
-         err)
+      call describe_dataset(h5, dynamic_h5, g//'/gp_s', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
-      call describe(h5, g//'/gp_element', '-', &
-         'element of each integration point, numbered from 1 along the line', err)
+      call describe_dataset(h5, dynamic_h5, g//'/gp_element', err, line_group=g)
       call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
-      call describe(h5, g//'/gp_point', '-', &
-         'integration point number within its element, from 1', err)
-      call history(g//'/x', nn, 'm', 'x of the nodes (global axes); row per frame')
-      call history(g//'/y', nn, 'm', 'y of the nodes (global axes); row per frame')
-      call history(g//'/z', nn, 'm', 'z of the nodes (global axes); row per frame')
-      call history(g//'/effective_tension', ng, 'N', &
-         'effective tension N3 along d3, positive in tension; row per frame')
-      call history(g//'/moment_1', ng, 'N m', 'bending moment M1 about d1; row per frame')
-      call history(g//'/moment_2', ng, 'N m', 'bending moment M2 about d2; row per frame')
-      call history(g//'/torque', ng, 'N m', 'torsional moment M3 about d3; row per frame')
-      call history(g//'/bending_curvature', ng, '1/m', &
-         'total bending curvature sqrt(K1^2 + K2^2); row per frame')
-      call history(g//'/reactions', 12, 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
-         'force and moment of the support on the line, global axes; row per frame; '// &
-         'columns Fx, Fy, Fz, Mx, My, Mz at end A, then at end B; zero at a free end')
+      call describe_dataset(h5, dynamic_h5, g//'/gp_point', err, line_group=g)
+      call history(g//'/x', nn)
+      call history(g//'/y', nn)
+      call history(g//'/z', nn)
+      call history(g//'/effective_tension', ng)
+      call history(g//'/moment_1', ng)
+      call history(g//'/moment_2', ng)
+      call history(g//'/torque', ng)
+      call history(g//'/bending_curvature', ng)
+      call history(g//'/reactions', 12)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', merge(1, 0, r%end_held), &
          err)
-      call history(g//'/end_tension', 2, 'N', 'magnitude of the support force, '// &
-         'sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B')
-      call history(g//'/wall_tension', ng, 'N', 'wall (true) tension, '// &
-         'T_eff + p_o A_o - p_i A_i, positive in tension; row per frame')
-      call history(g//'/seabed_normal', nn, 'N/m', &
-         'seabed normal contact force per unit length at the nodes; row per frame')
-      call history(g//'/seabed_friction', nn, 'N/m', &
-         'magnitude of the seabed friction force per unit length at the nodes; row per frame')
+      call history(g//'/end_tension', 2)
+      call history(g//'/wall_tension', ng)
+      call history(g//'/seabed_normal', nn)
+      call history(g//'/seabed_friction', nn)
       call hdf5_create_series_1d(h5, g//'/step_time', err, chunk_steps=log_chunk)
-      call describe(h5, g//'/step_time', 's', 'time of each row of step_reactions and '// &
-         'step_end_tension: 0, then the end of each step', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_time', err, line_group=g)
       call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
-      call describe(h5, g//'/step_reactions', 'N (columns 1-3, 7-9), N m (4-6, 10-12)', &
-         'force and moment of the support on the line, global axes, at the times of '// &
-         'step_time (every step); columns as reactions', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_reactions', err, line_group=g)
       call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
-      call describe(h5, g//'/step_end_tension', 'N', 'magnitude of the support force at '// &
-         'the times of step_time (every step); columns end A, end B', err)
+      call describe_dataset(h5, dynamic_h5, g//'/step_end_tension', err, line_group=g)
       call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
-      call describe(h5, g//'/touchdown_s', 'm', 'largest arc length in contact with the '// &
-         'seabed, -1 when none; one value per frame', err)
+      call describe_dataset(h5, dynamic_h5, g//'/touchdown_s', err, line_group=g)
    contains
       !> An empty history of n values per frame, with its units and description.
-      subroutine history(path, n, units, description)
+      subroutine history(path, n)
          character(len=*), intent(in) :: path         !< dataset path
          integer, intent(in) :: n                     !< values per frame
-         character(len=*), intent(in) :: units        !< units text
-         character(len=*), intent(in) :: description  !< one-line description
          call hdf5_create_series(h5, path, n, err, chunk_steps=max(8, chunk_bytes/(8*n)))
-         call describe(h5, path, units, description, err)
+         call describe_dataset(h5, dynamic_h5, path, err, line_group=g)
       end subroutine history
    end subroutine create_h5_line
 
@@ -760,39 +733,27 @@ contains
       type(hdf5_file_t), intent(in) :: h5    !< open file
       type(error_t), intent(inout) :: err    !< status
       character(len=*), parameter :: g = '/dynamic/log/'
+      ! the 1-D datasets in the order created (the order h5py lists them)
+      integer, parameter :: order(13) = [lg_step, lg_time, lg_dt, lg_iterations, &
+         lg_cutbacks, lg_kinetic, lg_strain, lg_gravity, lg_external_work, lg_damping_work, &
+         lg_hydro_work, lg_seabed_work, lg_total]
+      integer :: k
       call hdf5_create_group(h5, '/dynamic/log', err)
-      call column(lg_step, '-', 'step number, from 1', .true.)
-      call column(lg_time, 's', 'time at the end of the step', .false.)
-      call column(lg_dt, 's', 'step length used', .false.)
-      call column(lg_iterations, '-', 'Newton iterations of the step', .true.)
-      call column(lg_cutbacks, '-', 'halvings needed by the step', .true.)
-      call column(lg_kinetic, 'J', 'kinetic energy', .false.)
-      call column(lg_strain, 'J', 'stored (strain) energy', .false.)
-      call column(lg_gravity, 'J', 'potential of the weight', .false.)
-      call column(lg_external_work, 'J', &
-         'work done on the line since t = 0 by prescribed motions and loads', .false.)
-      call column(lg_damping_work, 'J', 'energy taken out by damping since t = 0', .false.)
-      call column(lg_hydro_work, 'J', 'work done on the line since t = 0 by the water: '// &
-         'buoyancy, drag, added mass', .false.)
-      call column(lg_seabed_work, 'J', 'work done on the line since t = 0 by the '// &
-         'seabed: contact, damping, friction', .false.)
-      call column(lg_total, 'J', 'kinetic + strain + gravity', .false.)
+      do k = 1, size(order)
+         call column(order(k), any(order(k) == [lg_step, lg_iterations, lg_cutbacks]))
+      end do
       call hdf5_create_series(h5, g//'momentum', 3, err, chunk_steps=log_chunk)
-      call describe(h5, g//'momentum', 'kg m/s', &
-         'total linear momentum; columns x, y, z (global axes)', err)
+      call describe_dataset(h5, dynamic_h5, g//'momentum', err)
       call hdf5_create_series(h5, g//'angular_momentum', 3, err, chunk_steps=log_chunk)
-      call describe(h5, g//'angular_momentum', 'kg m2/s', &
-         'total angular momentum about the origin; columns x, y, z (global axes)', err)
+      call describe_dataset(h5, dynamic_h5, g//'angular_momentum', err)
    contains
       !> One 1-D dataset of the log.
-      subroutine column(k, units, description, integers)
+      subroutine column(k, integers)
          integer, intent(in) :: k                     !< lg_* index
-         character(len=*), intent(in) :: units        !< units text
-         character(len=*), intent(in) :: description  !< one-line description
          logical, intent(in) :: integers              !< integer values
          call hdf5_create_series_1d(h5, g//trim(log_series_name(k)), err, &
             chunk_steps=log_chunk, integers=integers)
-         call describe(h5, g//trim(log_series_name(k)), units, description, err)
+         call describe_dataset(h5, dynamic_h5, g//trim(log_series_name(k)), err)
       end subroutine column
    end subroutine create_h5_log
 
@@ -945,12 +906,14 @@ contains
       w%steps_held = 0
       w%progress%time_reached = w%last_time
       w%progress%steps = w%steps
+      w%progress%frames = w%frames
       w%synced = w%progress
       if (present(rewrite_status)) then
          if (.not. rewrite_status) return
       end if
       w%progress%wall_time = w%static_wall_time + seconds_since(w%clock_start)
-      call output_write_status(w%dir, w%progress, err, w%deck_file, w%params)
+      call output_write_status(w%dir, w%progress, err, w%deck_file, w%params, &
+                               committed_sizes(w))
       call system_clock(w%clock_status)
    end subroutine sync
 
@@ -970,6 +933,21 @@ contains
          ok = .true.
       end if
    end function writer_ready
+
+   !> The committed sizes of the CSV tables (their last sync) for status.txt; none when
+   !> the run writes no CSV.
+   function committed_sizes(w) result(c)
+      type(dynamic_writer_t), intent(in) :: w   !< writer
+      type(committed_t), allocatable :: c(:)    !< (6) or (0)
+      allocate (c(0))
+      if (.not. w%csv) return
+      c = [committed_t(nodes_csv, outfile_committed(w%f_nodes)), &
+           committed_t(elements_csv, outfile_committed(w%f_elements)), &
+           committed_t(ends_csv, outfile_committed(w%f_ends)), &
+           committed_t(lines_csv, outfile_committed(w%f_lines)), &
+           committed_t(log_csv, outfile_committed(w%f_log)), &
+           committed_t(ends_step_csv, outfile_committed(w%f_ends_step))]
+   end function committed_sizes
 
    !> Characters of CSV rows held in memory.
    pure integer function csv_held(w)
@@ -996,6 +974,7 @@ contains
       s%complete = .false.
       s%time_reached = w%synced%time_reached
       s%steps = w%synced%steps
+      s%frames = w%synced%frames
       s%step_iterations = w%synced%step_iterations
       s%step_tangents = w%synced%step_tangents
       s%step_cutbacks = w%synced%step_cutbacks

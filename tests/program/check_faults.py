@@ -17,7 +17,10 @@ MODE
               exit (0, 2, 3).
   stale       temporaries of a killed run are removed by the next run into the folder;
               a run killed (SIGKILL) while it writes leaves status.txt, the CSV tables
-              and dynamic.h5 holding the same frames.
+              and dynamic.h5 holding the same frames up to the sizes status.txt gives
+              (frames, committed_bytes.NAME; a kill inside a sync may leave a tail of
+              later rows beyond them), and rodyn_post reads exactly those frames, from
+              dynamic.h5 and from the CSV tables alike.
 """
 import argparse
 import os
@@ -30,6 +33,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+import numpy as np
 
 SKIP = 77
 FINAL_STATIC = ["static_nodes.csv", "static_elements.csv", "static_reactions.csv",
@@ -156,6 +161,9 @@ def check_folder(out, ref, code, stderr, h5py):
         reft = (ref / n).read_text()
         if not reft.startswith(text) or not text.endswith("\n"):
             fail(f"{out}/{n}: not a whole-row prefix of the reference's")
+        size = st.get("committed_bytes." + n) if dyn else None
+        if size is not None and int(size) != len(text.encode()):
+            fail(f"{out}/{n}: {len(text.encode())} bytes, status.txt says {size} committed")
         if n == "dynamic_log.csv":
             if dyn and len(text.splitlines()) - 1 != int(st["steps"]):
                 fail(f"{out}/{n}: {len(text.splitlines()) - 1} steps, status.txt says "
@@ -309,6 +317,71 @@ def lock(exe, src, work, n):
     print("lock removed after exit 2")
 
 
+def check_committed(out, st, h5py, src):
+    """The files of a killed run hold what status.txt says was committed: each CSV table
+    at least committed_bytes.NAME bytes, whose part ends with a whole row and the frame
+    at time_reached_s (the nodes table: `frames` frames; the log: `steps` rows); beyond
+    it at most an uncommitted tail of later rows. dynamic.h5 holds at least those frames
+    and steps. rodyn_post reads exactly the committed frames and steps, from dynamic.h5
+    and from the CSV tables alike, with the same values. Returns whether a tail was
+    found."""
+    reached, steps, nframes = float(st["time_reached_s"]), int(st["steps"]), int(st["frames"])
+    tail = False
+    for n in DYN_TABLES + ["dynamic_log.csv", "dynamic_ends_step.csv"]:
+        key = "committed_bytes." + n
+        if key not in st:
+            fail(f"killed run: status.txt has no {key}")
+        data, size = (out / n).read_bytes(), int(st[key])
+        if len(data) < size:
+            fail(f"killed run: {n} has {len(data)} bytes, status.txt says {size} committed")
+        text, rest = data[:size].decode(), data[size:].decode()
+        tail = tail or bool(rest)
+        if not text.endswith("\n"):
+            fail(f"killed run: the committed part of {n} does not end with a whole row")
+        rows, later = text.splitlines()[1:], rest.splitlines(keepends=True)
+        later = [r for r in later if r.endswith("\n")]   # a last row may be cut short
+        col = 1 if n in ("dynamic_log.csv", "dynamic_ends_step.csv") else 0
+        if n == "dynamic_log.csv":
+            if len(rows) != steps:
+                fail(f"killed run: dynamic_log.csv has {len(rows)} committed steps, "
+                     f"status.txt {steps}")
+        elif n != "dynamic_ends_step.csv":
+            fr = frames(text)
+            if not fr or float(fr[-1][0]) != reached:
+                fail(f"killed run: the committed part of {n} ends at "
+                     f"{fr[-1][0] if fr else 'no frame'}, status.txt says {reached}")
+            if n == "dynamic_nodes.csv" and len(fr) != nframes:
+                fail(f"killed run: {n} holds {len(fr)} committed frames, status.txt "
+                     f"{nframes}")
+        last = float(rows[-1].split(",")[col]) if rows else -1.0
+        for r in later:
+            if float(r.split(",")[col]) <= last:
+                fail(f"killed run: {n}: a row after the committed part is not later "
+                     f"({r[:40]!r})")
+    with h5py.File(out / "dynamic.h5", "r", locking=False) as f:
+        t, step = f["dynamic/time"][()], f["dynamic/log/step"][()]
+        if len(t) < nframes or float(t[nframes - 1]) != reached or len(step) < steps:
+            fail(f"killed run: dynamic.h5 holds {len(t)} frames and {len(step)} steps, "
+                 f"status.txt says {nframes} up to t = {reached} and {steps}")
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import load_dynamic
+    csv_only = out.parent / (out.name + "_csv")
+    shutil.rmtree(csv_only, ignore_errors=True)
+    shutil.copytree(out, csv_only, ignore=shutil.ignore_patterns("dynamic.h5"))
+    for res in (load_dynamic(out), load_dynamic(csv_only)):
+        if (len(res.time) != nframes or float(res.time[-1]) != reached
+                or len(res.log) != steps):
+            fail(f"killed run: rodyn_post reads {len(res.time)} frames to "
+                 f"t = {res.time[-1]} and {len(res.log)} steps from {res.source.name}, "
+                 f"status.txt says {nframes}, {reached}, {steps}")
+    a, b = load_dynamic(out), load_dynamic(csv_only)
+    if not all(np.array_equal(la.x, lb.x) and np.array_equal(la.reactions, lb.reactions)
+               for la, lb in zip(a.lines, b.lines)):
+        fail("killed run: dynamic.h5 and the CSV tables read differently")
+    shutil.rmtree(csv_only)
+    return tail
+
+
 def stale(exe, src, work):
     import h5py
     deck = make_deck(src, work, "stale.inp", 2.0)
@@ -348,26 +421,15 @@ def stale(exe, src, work):
         if st["complete"] != "false" or st["status"] != "running":
             fail(f"killed run: status.txt says complete = {st['complete']}, "
                  f"status = {st['status']}")
-        reached = float(st["time_reached_s"])
-        for n in DYN_TABLES:
-            fr = frames((out / n).read_text())
-            if not fr or float(fr[-1][0]) != reached:
-                fail(f"killed run after {delay} s: {n} ends at "
-                     f"{fr[-1][0] if fr else 'no frame'}, status.txt says {reached}")
-        nlog = len((out / "dynamic_log.csv").read_text().splitlines()) - 1
-        if nlog != int(st["steps"]):
-            fail(f"killed run: dynamic_log.csv has {nlog} steps, status.txt {st['steps']}")
-        with h5py.File(out / "dynamic.h5", "r", locking=False) as f:
-            t = f["dynamic/time"][()]
-            if float(t[-1]) != reached or len(f["dynamic/log/step"]) != int(st["steps"]):
-                fail(f"killed run: dynamic.h5 ends at t = {t[-1]}, status.txt says {reached}")
+        tail = check_committed(out, st, h5py, src)
+        agree += 1
+        print(f"killed after {delay} s: status.txt, tables and dynamic.h5 end at "
+              f"t = {st['time_reached_s']} s, {st['steps']} steps, {st['frames']} frames"
+              f" ({'an uncommitted tail after them' if tail else 'no tail'})")
         # the next run into the folder cleans up and runs
         code, err = run(exe, deck, out)
         if code != 0:
             fail(f"run after a killed one: exit {code}: {err}")
-        agree += 1
-        print(f"killed after {delay} s: status.txt, tables and dynamic.h5 end at "
-              f"t = {reached} s, {st['steps']} steps")
     del long_ref
     print(f"killed runs: files and status.txt agree in {agree} of 3")
 

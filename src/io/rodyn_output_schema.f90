@@ -1,0 +1,306 @@
+!> The one description of rodyn's output: every column of every CSV table, with its
+!> unit and a one-line meaning, in the order written, and every HDF5 dataset with its
+!> units and description. The writers (rodyn_output, rodyn_output_dynamic) take their
+!> header rows and their datasets' `units` and `description` attributes from here; the
+!> Python readers their columns and the units they expect (postproc/rodyn_post/schema.py,
+!> written from this file by tools/gen_output_schema.py); docs/output.md lists the same
+!> tables, columns and datasets with the same units. tests/program/check_output_schema.py
+!> checks all of them against this table (read through output_schema_dump.f90).
+!>
+!> A row of `output_columns` is 'file | column | unit | meaning'; the unit '-' means
+!> none (a name, a count, a ratio).
+module rodyn_output_schema
+   implicit none
+   private
+   public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
+   public :: schema_dataset
+
+   integer, parameter :: row_len = 240  !< longest row of the tables
+
+   !> Every column of every CSV table, file by file, in the order written.
+   character(len=row_len), parameter :: output_columns(*) = [character(len=row_len) :: &
+      'static_nodes.csv | line | - | line name', &
+      'static_nodes.csv | node | - | node number along the line, from 1 (end A)', &
+      'static_nodes.csv | s_m | m | unstretched arc length S of the node', &
+      'static_nodes.csv | x_m | m | x of the node, global axes', &
+      'static_nodes.csv | y_m | m | y of the node, global axes', &
+      'static_nodes.csv | z_m | m | z of the node, global axes', &
+      'static_nodes.csv | seabed_normal_N_per_m | N/m | seabed normal contact force per length', &
+      'static_nodes.csv | seabed_friction_N_per_m | N/m | seabed friction force per length', &
+      'static_elements.csv | line | - | line name', &
+      'static_elements.csv | element | - | element number along the line, from 1 at end A', &
+      'static_elements.csv | point | - | integration point within the element, from 1', &
+      'static_elements.csv | s_m | m | unstretched arc length S of the point', &
+      'static_elements.csv | effective_tension_N | N | N3, along d3, positive in tension', &
+      'static_elements.csv | wall_tension_N | N | wall (true) tension', &
+      'static_elements.csv | shear_1_N | N | N1, along d1', &
+      'static_elements.csv | shear_2_N | N | N2, along d2', &
+      'static_elements.csv | moment_1_Nm | N m | M1, bending moment about d1', &
+      'static_elements.csv | moment_2_Nm | N m | M2, bending moment about d2', &
+      'static_elements.csv | torque_Nm | N m | M3, torsional moment about d3', &
+      'static_elements.csv | curvature_1_per_m | 1/m | K1, bending curvature about d1', &
+      'static_elements.csv | curvature_2_per_m | 1/m | K2, bending curvature about d2', &
+      'static_elements.csv | twist_per_m | 1/m | K3, twist', &
+      'static_elements.csv | curvature_per_m | 1/m | total bending curvature', &
+      'static_reactions.csv | line | - | line name', &
+      'static_reactions.csv | end | - | A (S = 0) or B (S = L)', &
+      'static_reactions.csv | Fx_N | N | x force of the support on the line', &
+      'static_reactions.csv | Fy_N | N | y force of the support on the line', &
+      'static_reactions.csv | Fz_N | N | z force of the support on the line', &
+      'static_reactions.csv | Mx_Nm | N m | x moment of the support on the line', &
+      'static_reactions.csv | My_Nm | N m | y moment of the support on the line', &
+      'static_reactions.csv | Mz_Nm | N m | z moment of the support on the line', &
+      'static_reactions.csv | tension_N | N | magnitude of the support force', &
+      'static_lines.csv | line | - | line name', &
+      'static_lines.csv | length_m | m | unstretched length L', &
+      'static_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'environment.csv | key | - | name of the quantity', &
+      'environment.csv | value | - | its value, in the unit of the row', &
+      'environment.csv | unit | - | unit of the value', &
+      'dynamic_nodes.csv | time_s | s | time of the frame', &
+      'dynamic_nodes.csv | line | - | line name', &
+      'dynamic_nodes.csv | node | - | node number along the line, from 1 (end A)', &
+      'dynamic_nodes.csv | s_m | m | unstretched arc length S of the node', &
+      'dynamic_nodes.csv | x_m | m | x of the node, global axes', &
+      'dynamic_nodes.csv | y_m | m | y of the node, global axes', &
+      'dynamic_nodes.csv | z_m | m | z of the node, global axes', &
+      'dynamic_nodes.csv | seabed_normal_N_per_m | N/m | seabed normal contact force per length', &
+      'dynamic_nodes.csv | seabed_friction_N_per_m | N/m | seabed friction force per length', &
+      'dynamic_elements.csv | time_s | s | time of the frame', &
+      'dynamic_elements.csv | line | - | line name', &
+      'dynamic_elements.csv | element | - | element number along the line, from 1 at end A', &
+      'dynamic_elements.csv | point | - | integration point within the element, from 1', &
+      'dynamic_elements.csv | s_m | m | unstretched arc length S of the point', &
+      'dynamic_elements.csv | effective_tension_N | N | N3, along d3, positive in tension', &
+      'dynamic_elements.csv | wall_tension_N | N | wall (true) tension', &
+      'dynamic_elements.csv | moment_1_Nm | N m | M1, bending moment about d1', &
+      'dynamic_elements.csv | moment_2_Nm | N m | M2, bending moment about d2', &
+      'dynamic_elements.csv | torque_Nm | N m | M3, torsional moment about d3', &
+      'dynamic_elements.csv | curvature_per_m | 1/m | total bending curvature', &
+      'dynamic_lines.csv | time_s | s | time of the frame', &
+      'dynamic_lines.csv | line | - | line name', &
+      'dynamic_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'dynamic_ends.csv | time_s | s | time of the frame', &
+      'dynamic_ends.csv | line | - | line name', &
+      'dynamic_ends.csv | end | - | A (S = 0) or B (S = L)', &
+      'dynamic_ends.csv | Fx_N | N | x force of the support on the line', &
+      'dynamic_ends.csv | Fy_N | N | y force of the support on the line', &
+      'dynamic_ends.csv | Fz_N | N | z force of the support on the line', &
+      'dynamic_ends.csv | Mx_Nm | N m | x moment of the support on the line', &
+      'dynamic_ends.csv | My_Nm | N m | y moment of the support on the line', &
+      'dynamic_ends.csv | Mz_Nm | N m | z moment of the support on the line', &
+      'dynamic_ends.csv | tension_N | N | magnitude of the support force', &
+      'dynamic_ends_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_ends_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_ends_step.csv | line | - | line name', &
+      'dynamic_ends_step.csv | end | - | A (S = 0) or B (S = L)', &
+      'dynamic_ends_step.csv | Fx_N | N | x force of the support on the line', &
+      'dynamic_ends_step.csv | Fy_N | N | y force of the support on the line', &
+      'dynamic_ends_step.csv | Fz_N | N | z force of the support on the line', &
+      'dynamic_ends_step.csv | Mx_Nm | N m | x moment of the support on the line', &
+      'dynamic_ends_step.csv | My_Nm | N m | y moment of the support on the line', &
+      'dynamic_ends_step.csv | Mz_Nm | N m | z moment of the support on the line', &
+      'dynamic_ends_step.csv | tension_N | N | magnitude of the support force', &
+      'dynamic_log.csv | step | - | step number, from 1', &
+      'dynamic_log.csv | time_s | s | time at the end of the step', &
+      'dynamic_log.csv | dt_s | s | step length used', &
+      'dynamic_log.csv | iterations | - | Newton iterations of the step', &
+      'dynamic_log.csv | cutbacks | - | halvings the step needed', &
+      'dynamic_log.csv | kinetic_J | J | kinetic energy', &
+      'dynamic_log.csv | strain_J | J | stored (strain) energy', &
+      'dynamic_log.csv | gravity_J | J | potential of the weight', &
+      'dynamic_log.csv | external_work_J | J | work of prescribed motions and loads since t = 0', &
+      'dynamic_log.csv | damping_work_J | J | energy taken out by damping since t = 0', &
+      'dynamic_log.csv | hydro_work_J | J | work of the water since t = 0', &
+      'dynamic_log.csv | seabed_work_J | J | work of the seabed since t = 0', &
+      'dynamic_log.csv | total_J | J | kinetic + strain + gravity', &
+      'dynamic_log.csv | px | kg m/s | x of the total linear momentum', &
+      'dynamic_log.csv | py | kg m/s | y of the total linear momentum', &
+      'dynamic_log.csv | pz | kg m/s | z of the total linear momentum', &
+      'dynamic_log.csv | Lx | kg m2/s | x of the total angular momentum about the origin', &
+      'dynamic_log.csv | Ly | kg m2/s | y of the total angular momentum about the origin', &
+      'dynamic_log.csv | Lz | kg m2/s | z of the total angular momentum about the origin']
+
+   !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
+   !> come with environment_items, rodyn_output_common): 'file | path | units |
+   !> description', LINE standing for a line's group; written as the attributes `units`
+   !> and `description` of the dataset (rodyn_output_common's describe).
+   character(len=row_len), parameter :: output_datasets(*) = [character(len=row_len) :: &
+      'results.h5 | /deck | - | full text of the input deck, includes expanded', &
+      'results.h5 | /static/LINE/curvature | 1/m | section-frame curvatures, '// &
+         'columns K1 (about d1), K2 (about d2), K3 (twist)', &
+      'results.h5 | /static/LINE/effective_tension | N | effective tension N3 '// &
+         'along d3, positive in tension', &
+      'results.h5 | /static/LINE/gp_element | - | element of each integration '// &
+         'point, numbered from 1 along the line', &
+      'results.h5 | /static/LINE/gp_point | - | integration point number within '// &
+         'its element, from 1', &
+      'results.h5 | /static/LINE/gp_s | m | unstretched arc length of the '// &
+         'integration points', &
+      'results.h5 | /static/LINE/moment | N m | bending moments, columns M1 '// &
+         'about d1, M2 about d2', &
+      'results.h5 | /static/LINE/node_s | m | unstretched arc length of the '// &
+         'nodes', &
+      'results.h5 | /static/LINE/node_xyz | m | node positions, one row per '// &
+         'node, columns x, y, z (global axes)', &
+      'results.h5 | /static/LINE/reactions | N (columns 1-3), N m (columns 4-6) '// &
+         '| force and moment of the support on the line, global axes; rows end A, '// &
+         'end B; columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', &
+      'results.h5 | /static/LINE/seabed_friction | N/m | magnitude of the '// &
+         'seabed friction force per unit length at the nodes', &
+      'results.h5 | /static/LINE/seabed_normal | N/m | seabed normal contact '// &
+         'force per unit length at the nodes (0: no contact)', &
+      'results.h5 | /static/LINE/shear | N | shear forces, columns N1 along d1, '// &
+         'N2 along d2', &
+      'results.h5 | /static/LINE/torque | N m | torsional moment M3 about d3', &
+      'results.h5 | /static/LINE/wall_tension | N | wall (true) tension, T_eff '// &
+         '+ p_o A_o - p_i A_i, positive in tension', &
+      'dynamic.h5 | /deck | - | full text of the input deck, includes expanded', &
+      'dynamic.h5 | /dynamic/LINE/bending_curvature | 1/m | total bending '// &
+         'curvature sqrt(K1^2 + K2^2); row per frame', &
+      'dynamic.h5 | /dynamic/LINE/effective_tension | N | effective tension N3 '// &
+         'along d3, positive in tension; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/end_tension | N | magnitude of the support '// &
+         'force, sqrt(Fx^2 + Fy^2 + Fz^2); row per frame; columns end A, end B', &
+      'dynamic.h5 | /dynamic/LINE/gp_element | - | element of each integration '// &
+         'point, numbered from 1 along the line', &
+      'dynamic.h5 | /dynamic/LINE/gp_point | - | integration point number '// &
+         'within its element, from 1', &
+      'dynamic.h5 | /dynamic/LINE/gp_s | m | unstretched arc length of the '// &
+         'integration points', &
+      'dynamic.h5 | /dynamic/LINE/moment_1 | N m | bending moment M1 about d1; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/moment_2 | N m | bending moment M2 about d2; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/node_s | m | unstretched arc length of the '// &
+         'nodes', &
+      'dynamic.h5 | /dynamic/LINE/reactions | N (columns 1-3, 7-9), N m (4-6, '// &
+         '10-12) | force and moment of the support on the line, global axes; row '// &
+         'per frame; columns Fx, Fy, Fz, Mx, My, Mz at end A, then at end B; zero '// &
+         'at a free end', &
+      'dynamic.h5 | /dynamic/LINE/seabed_friction | N/m | magnitude of the '// &
+         'seabed friction force per unit length at the nodes; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/seabed_normal | N/m | seabed normal contact '// &
+         'force per unit length at the nodes; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/step_end_tension | N | magnitude of the '// &
+         'support force at the times of step_time (every step); columns end A, end '// &
+         'B', &
+      'dynamic.h5 | /dynamic/LINE/step_reactions | N (columns 1-3, 7-9), N m '// &
+         '(4-6, 10-12) | force and moment of the support on the line, global axes, '// &
+         'at the times of step_time (every step); columns as reactions', &
+      'dynamic.h5 | /dynamic/LINE/step_time | s | time of each row of '// &
+         'step_reactions and step_end_tension: 0, then the end of each step', &
+      'dynamic.h5 | /dynamic/LINE/torque | N m | torsional moment M3 about d3; '// &
+         'row per frame', &
+      'dynamic.h5 | /dynamic/LINE/touchdown_s | m | largest arc length in '// &
+         'contact with the seabed, -1 when none; one value per frame', &
+      'dynamic.h5 | /dynamic/LINE/wall_tension | N | wall (true) tension, T_eff '// &
+         '+ p_o A_o - p_i A_i, positive in tension; row per frame', &
+      'dynamic.h5 | /dynamic/LINE/x | m | x of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/LINE/y | m | y of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/LINE/z | m | z of the nodes (global axes); row per '// &
+         'frame', &
+      'dynamic.h5 | /dynamic/log/angular_momentum | kg m2/s | total angular '// &
+         'momentum about the origin; columns x, y, z (global axes)', &
+      'dynamic.h5 | /dynamic/log/cutbacks | - | halvings needed by the step', &
+      'dynamic.h5 | /dynamic/log/damping_work | J | energy taken out by damping '// &
+         'since t = 0', &
+      'dynamic.h5 | /dynamic/log/dt | s | step length used', &
+      'dynamic.h5 | /dynamic/log/external_work | J | work done on the line '// &
+         'since t = 0 by prescribed motions and loads', &
+      'dynamic.h5 | /dynamic/log/gravity | J | potential of the weight', &
+      'dynamic.h5 | /dynamic/log/hydro_work | J | work done on the line since t '// &
+         '= 0 by the water: buoyancy, drag, added mass', &
+      'dynamic.h5 | /dynamic/log/iterations | - | Newton iterations of the step', &
+      'dynamic.h5 | /dynamic/log/kinetic | J | kinetic energy', &
+      'dynamic.h5 | /dynamic/log/momentum | kg m/s | total linear momentum; '// &
+         'columns x, y, z (global axes)', &
+      'dynamic.h5 | /dynamic/log/seabed_work | J | work done on the line since '// &
+         't = 0 by the seabed: contact, damping, friction', &
+      'dynamic.h5 | /dynamic/log/step | - | step number, from 1', &
+      'dynamic.h5 | /dynamic/log/strain | J | stored (strain) energy', &
+      'dynamic.h5 | /dynamic/log/time | s | time at the end of the step', &
+      'dynamic.h5 | /dynamic/log/total | J | kinetic + strain + gravity', &
+      'dynamic.h5 | /dynamic/time | s | time of each output frame']
+
+contains
+
+   !> Field k (1: file, 2: column, 3: unit, 4: meaning) of a row of output_columns,
+   !> without the blanks around it.
+   pure function schema_field(row, k) result(s)
+      character(len=*), intent(in) :: row   !< a row of output_columns
+      integer, intent(in) :: k              !< field number, 1 to 4
+      character(len=:), allocatable :: s    !< the field
+      integer :: i, a, b
+      a = 1
+      do i = 1, k - 1
+         b = index(row(a:), '|')
+         if (b == 0) then
+            s = ''
+            return
+         end if
+         a = a + b
+      end do
+      b = index(row(a:), '|')
+      if (b == 0 .or. k == 4) then
+         s = trim(adjustl(row(a:)))
+      else
+         s = trim(adjustl(row(a:a + b - 2)))
+      end if
+   end function schema_field
+
+   !> The row of output_datasets for dataset `path` of file `file` ('' when none): a
+   !> line's dataset is looked up with its group name replaced by LINE, from `line_group`
+   !> ('/static/RISER': '/static/LINE/node_s' for '/static/RISER/node_s').
+   pure function schema_dataset(file, path, line_group) result(row)
+      character(len=*), intent(in) :: file                 !< 'results.h5', 'dynamic.h5'
+      character(len=*), intent(in) :: path                 !< dataset path in the file
+      character(len=*), intent(in), optional :: line_group !< group of the line, if any
+      character(len=:), allocatable :: row                 !< the row, or ''
+      character(len=:), allocatable :: key
+      integer :: k
+      key = path
+      if (present(line_group)) then
+         if (index(path, line_group//'/') == 1) key = &
+            line_group(:index(line_group, '/', back=.true.))//'LINE'//path(len(line_group) + 1:)
+      end if
+      row = ''
+      do k = 1, size(output_datasets)
+         if (schema_field(output_datasets(k), 1) == file .and. &
+             schema_field(output_datasets(k), 2) == key) then
+            row = trim(output_datasets(k))
+            return
+         end if
+      end do
+   end function schema_dataset
+
+   !> The header row of CSV table `file`: its column names, comma-separated, in order
+   !> ('' for a file the schema does not know).
+   pure function schema_header(file) result(s)
+      character(len=*), intent(in) :: file  !< 'dynamic_nodes.csv', ...
+      character(len=:), allocatable :: s    !< 'time_s,line,node,...'
+      integer :: k
+      s = ''
+      do k = 1, size(output_columns)
+         if (schema_field(output_columns(k), 1) /= file) cycle
+         if (len(s) > 0) s = s//','
+         s = s//schema_field(output_columns(k), 2)
+      end do
+   end function schema_header
+
+   !> The files of the schema, each once, in the order of output_columns, as one
+   !> comma-separated text.
+   pure function schema_tables() result(s)
+      character(len=:), allocatable :: s    !< 'static_nodes.csv,static_elements.csv,...'
+      character(len=:), allocatable :: file
+      integer :: k
+      s = ','
+      do k = 1, size(output_columns)
+         file = schema_field(output_columns(k), 1)
+         if (index(s, ','//file//',') == 0) s = s//file//','
+      end do
+      s = s(2:len(s) - 1)
+   end function schema_tables
+end module rodyn_output_schema

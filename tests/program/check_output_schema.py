@@ -1,0 +1,249 @@
+#!/usr/bin/env python3
+"""One description of the output tables (issue 12, "Design").
+
+usage: check_output_schema.py SCHEMA_DUMP SOURCE_DIR WORK_DIR RODYN
+
+rodyn_output_schema (printed by SCHEMA_DUMP) names every column of every CSV table and
+every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
+  1. the header row the writers take from it is its columns, in order;
+  2. docs/output.md documents exactly those tables and, under each table's heading,
+     exactly those columns, in the same order, with the same units (environment.csv:
+     its header quoted in the text); and in the layouts of results.h5 and dynamic.h5
+     exactly the datasets of the schema, with the same units;
+  3. the Python readers' copy (postproc/rodyn_post/schema.py, made by
+     tools/gen_output_schema.py) is the schema, and the readers look only for columns
+     the schema has, in its order;
+  4. a run of RODYN (statics, dynamics, water; CSV and HDF5) writes every table of the
+     schema with that header; results.h5 and dynamic.h5 hold exactly the datasets of
+     the schema (and /environment), each with the attributes `units` and `description`,
+     equal to the schema's.
+"""
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def read_schema(dump):
+    out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
+    columns, headers, datasets = {}, {}, {}
+    for line in out.splitlines():
+        kind, *fields = line.split("\t")
+        if kind == "COLUMN":
+            file, name, unit, meaning = fields
+            if not meaning:
+                fail(f"{file} {name}: no meaning in the schema")
+            columns.setdefault(file, []).append((name, unit))
+        elif kind == "HEADER":
+            headers[fields[0]] = fields[1]
+        elif kind == "DATASET":
+            file, path, units, description = fields
+            if not description:
+                fail(f"{file} {path}: no description in the schema")
+            datasets.setdefault(file, {})[path] = (units, description)
+    return columns, headers, datasets
+
+
+def plain_units(units):
+    """Units without their parenthesised column notes: 'N (columns 1-3), N m (4-6)'
+    -> 'N, N m' (as docs/output.md writes them)."""
+    return re.sub(r"\s+", " ", re.sub(r"\s*\([^)]*\)", "", units)).strip()
+
+
+def doc_datasets(section):
+    """{path: units} of the datasets in the layout (code block) of an HDF5 file in a
+    section of docs/output.md: top-level lines '/path  (shape)  units  ...' and member
+    lines '    name[, name]  (shape)  units  ...' of the group line above them ('<LINE
+    NAME>' read as LINE); /deck is a string dataset without shape or units."""
+    out, group = {}, None
+    for line in section.splitlines():
+        if line.startswith("/"):
+            group = line.split()[0].replace("<LINE", "LINE")
+            if group.startswith("/deck"):
+                out["/deck"] = "-"
+            m = re.match(r"^(/\S+)\s+\([^)]*\)\s+(\S.*?)(\s{2,}|$)", line)
+            if m:
+                out[m.group(1)] = m.group(2)
+            continue
+        m = re.match(r"^    ([a-z][a-z0-9_]*(?:, [a-z][a-z0-9_]*)*)\s+\([^)]*\)\s+"
+                     r"(\S.*?)(\s{2,}|$)", line)
+        if m and group:
+            for name in m.group(1).split(", "):
+                out[group.replace(" NAME>", "") + "/" + name] = m.group(2)
+    return out
+
+
+def check_docs_h5(text, datasets):
+    for file, heading in (("results.h5", "## results.h5"), ("dynamic.h5", "### dynamic.h5")):
+        start = text.index("\n" + heading + "\n")
+        level = heading.split()[0]
+        end = text.find("\n" + level + " ", start + 1)
+        docs = doc_datasets(text[start:end if end > 0 else None])
+        schema = {p: plain_units(u) for p, (u, _) in datasets[file].items()}
+        if docs != schema:
+            fail(f"docs/output.md, {file}: datasets (path: units) differ from the schema: "
+                 f"not documented {sorted(set(schema.items()) - set(docs.items()))}, "
+                 f"not in the schema {sorted(set(docs.items()) - set(schema.items()))}")
+        print(f"docs/output.md: the {len(docs)} datasets of {file} as in the schema")
+
+
+def doc_tables(text):
+    """{file: [(column, unit)]} from docs/output.md: the first 'column | unit | meaning'
+    table after each heading that names a .csv file; a cell naming several columns
+    (`x_m`, `y_m`, `z_m`) gives each the unit of the row."""
+    tables, lines = {}, text.splitlines()
+    for i, line in enumerate(lines):
+        m = re.match(r"^#{2,4} `?([a-z_]+\.csv)`?\s*$", line)
+        if not m:
+            continue
+        rows, j = [], i + 1
+        while j < len(lines) and not lines[j].startswith("|"):
+            if lines[j].startswith("#"):
+                break
+            j += 1
+        if j == len(lines) or not lines[j].startswith("|"):
+            tables[m.group(1)] = rows
+            continue
+        head = [c.strip() for c in lines[j].strip("|").split("|")]
+        if head[:2] != ["column", "unit"]:
+            fail(f"docs/output.md: the table under '{line}' is not 'column | unit | ...'")
+        for row in lines[j + 2:]:
+            if not row.startswith("|"):
+                break
+            cells = [c.strip() for c in row.strip("|").split("|")]
+            for name in re.findall(r"`([^`]+)`", cells[0]):
+                rows.append((name, cells[1]))
+        tables[m.group(1)] = rows
+    return tables
+
+
+def check_docs(src, columns, headers, datasets):
+    text = (src / "docs" / "output.md").read_text()
+    check_docs_h5(text, datasets)
+    docs = doc_tables(text)
+    for file in docs:
+        if file not in columns:
+            fail(f"docs/output.md documents {file}, which the schema does not have")
+    for file, cols in columns.items():
+        if file == "environment.csv":
+            if f"header `{headers[file]}`" not in text:
+                fail(f"docs/output.md does not give environment.csv's header "
+                     f"`{headers[file]}`")
+            continue
+        if file not in docs:
+            fail(f"docs/output.md has no section (heading) for {file}")
+        if docs[file] != cols:
+            missing = [c for c in cols if c not in docs[file]]
+            extra = [c for c in docs[file] if c not in cols]
+            fail(f"docs/output.md, {file}: columns (name, unit) differ from the schema: "
+                 f"not documented {missing}, not in the schema {extra}"
+                 + ("" if missing or extra else " (order)"))
+    print(f"docs/output.md: {len(columns)} tables, "
+          f"{sum(len(c) for c in columns.values())} columns as in the schema")
+
+
+def check_readers(src, columns, datasets):
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import dynamic, environment, results, schema
+    py_columns = {f: [(c, u) for c, u, _ in cols] for f, cols in schema.COLUMNS.items()}
+    if py_columns != columns or schema.DATASETS != datasets:
+        fail("postproc/rodyn_post/schema.py differs from rodyn_output_schema: run "
+             "python3 tools/gen_output_schema.py")
+    print("rodyn_post.schema is rodyn_output_schema")
+    used = {
+        "static_nodes.csv": results.NODES_HEADER,
+        "static_elements.csv": results.ELEMENTS_HEADER,
+        "static_lines.csv": results.LINES_HEADER,
+        "static_reactions.csv": results.REACTIONS_HEADER,
+        "environment.csv": environment.ENVIRONMENT_HEADER,
+        "dynamic_nodes.csv": dynamic.NODES_HEADER,
+        "dynamic_elements.csv": dynamic.ELEMENTS_HEADER,
+        "dynamic_lines.csv": dynamic.LINES_HEADER,
+        "dynamic_ends.csv": dynamic.ENDS_HEADER,
+        "dynamic_ends_step.csv": dynamic.ENDS_STEP_HEADER,
+        "dynamic_log.csv": dynamic.LOG_HEADER,
+    }
+    for file, names in used.items():
+        schema = [c for c, _ in columns[file]]
+        if any(n not in schema for n in names):
+            fail(f"rodyn_post reads columns of {file} the schema does not have: "
+                 f"{[n for n in names if n not in schema]}")
+        if sorted(names, key=schema.index) != list(names):
+            fail(f"rodyn_post's columns of {file} are not in the schema's order")
+    print(f"rodyn_post: the columns it reads of {len(used)} tables are in the schema")
+
+
+def check_run(src, work, rodyn, headers, datasets):
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    text = (src / "tests" / "program" / "mooring_waves.inp").read_text()
+    inc = (src / "input" / "mooring_leg_section.inc").resolve()
+    text = text.replace("INPUT=../../input/mooring_leg_section.inc", f"INPUT={inc}")
+    text = text.replace("TIME=20.0, OUTPUT INTERVAL=0.5", "TIME=0.4, OUTPUT INTERVAL=0.2")
+    text = text.replace("HDF5=NO", "HDF5=YES")
+    deck = work / "schema.inp"
+    deck.write_text(text)
+    out = work / "out"
+    run = subprocess.run([rodyn, str(deck), "-o", str(out), "--quiet"], capture_output=True,
+                         text=True, timeout=300)
+    if run.returncode != 0:
+        fail(f"rodyn {deck}: exit {run.returncode}: {run.stderr}")
+    for file, header in headers.items():
+        path = out / file
+        if not path.is_file():
+            fail(f"{path}: not written")
+        first = path.read_text().split("\n", 1)[0]
+        if first != header:
+            fail(f"{path}: header {first!r}, the schema's {header!r}")
+    print(f"a run writes the {len(headers)} tables with the schema's headers")
+    try:
+        import h5py
+    except ImportError:
+        print("h5py missing: the HDF5 attributes are not checked")
+        return
+    for name in ("results.h5", "dynamic.h5"):
+        bare, found = [], {}
+
+        def visit(path, obj):
+            if isinstance(obj, h5py.Dataset):
+                if not {"units", "description"} <= set(obj.attrs):
+                    bare.append(path)
+                    return
+                key = re.sub(r"^(static|dynamic)/LEG/", r"\1/LINE/", path)
+                found["/" + key] = (str(obj.attrs["units"]), str(obj.attrs["description"]))
+        with h5py.File(out / name, "r") as f:
+            f.visititems(visit)
+        if bare:
+            fail(f"{out / name}: datasets without units and description: {bare}")
+        found_schema = {k: v for k, v in found.items() if not k.startswith("/environment/")}
+        if found_schema != datasets[name]:
+            other = [k for k in found_schema
+                     if k in datasets[name] and found_schema[k] != datasets[name][k]]
+            fail(f"{out / name}: datasets (path: units, description) differ from the "
+                 f"schema: not written {set(datasets[name]) - set(found_schema)}, not in the "
+                 f"schema {set(found_schema) - set(datasets[name])}, other attributes {other}")
+        print(f"{name}: all {len(found)} datasets carry units and description, "
+              f"those of the schema its own")
+
+
+def main():
+    dump, src, work, rodyn = sys.argv[1:5]
+    src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
+    columns, headers, datasets = read_schema(dump)
+    for file, cols in columns.items():
+        if headers.get(file) != ",".join(c for c, _ in cols):
+            fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
+    check_docs(src, columns, headers, datasets)
+    check_readers(src, columns, datasets)
+    check_run(src, work, rodyn, headers, datasets)
+    print("OK")
+
+
+if __name__ == "__main__":
+    main()
