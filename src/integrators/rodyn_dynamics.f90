@@ -34,7 +34,7 @@ module rodyn_dynamics
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
                              external_force, assemble_water, assemble_dynamic_cables, &
-                             roll_gauges
+                             roll_gauges, add_roll_gauges
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
@@ -292,7 +292,6 @@ contains
       logical, intent(in) :: want_k                   !< form the tangent
       type(error_t), intent(inout) :: err             !< status (cannot fail)
       real(wp) :: c2, h(3), dm(3), d1(3), kb(6, 6), fi(3), blk(3, 3), mi, hd, dmd1, bdt2, wp_
-      real(wp) :: d3(3)
       real(wp) :: fx, mx
       integer :: node, i, j, k
       if (has_error(err)) return
@@ -357,17 +356,8 @@ contains
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged
-      do i = 1, size(this%gauge_node)
-         if (.not. want_k) exit
-         node = this%gauge_node(i)
-         if (node == 0) exit
-         d3 = this%s1%d(:, 3, node)
-         kb = 0.0_wp
-         do j = 1, 3
-            kb(4:6, 3 + j) = this%gauge_k(i)*d3*d3(j)
-         end do
-         call add_node_block(this%sup, node, kb, this%bm)
-      end do
+      if (want_k) call add_roll_gauges(this%sup, this%gauge_node, this%gauge_k, this%s1%d, &
+                                       this%bm)
       ! The residual's reference force and moment stay fixed while Newton iterates: those
       ! of the last converged step (for the first step, of its first evaluation). Taken
       ! from each iterate they grow with a diverging iterate's own forces, its scaled

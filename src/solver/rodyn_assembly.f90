@@ -26,7 +26,8 @@ module rodyn_assembly
    public :: supports_t, loads_t, supports_build, loads_build
    public :: assemble_static, assemble_dynamic, assemble_dynamic_cables, apply_supports
    public :: external_force
-   public :: add_node_block, assemble_water, dof_map, dof_reach, roll_gauges
+   public :: add_node_block, assemble_water, dof_map, dof_reach, roll_gauges, &
+             add_roll_gauges
 
    !> Node constraints, fixed for the run.
    type :: supports_t
@@ -315,19 +316,12 @@ contains
                   we(:, a) = wl%wkin(:, nodes(a))
                end do
             end if
-            if (allocated(wl%bfac)) then       ! (statics: buoyancy ramped with the weight)
-               ws = wl%sec(mesh%elem_sec(e))
-               ws%fb = wl%bfac(mesh%elem_line(e))*ws%fb
-               call water_element(wl, ws, p, mesh%elem_le(e), &
-                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
-                                  we(:, 1:nen))
-            else
-               call water_element(wl, wl%sec(mesh%elem_sec(e)), p, mesh%elem_le(e), &
-                                  xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
-                                  fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
-                                  we(:, 1:nen))
-            end if
+            ws = wl%sec(mesh%elem_sec(e))
+            if (allocated(wl%bfac)) ws%fb = wl%bfac(mesh%elem_line(e))*ws%fb ! (statics)
+            call water_element(wl, ws, p, mesh%elem_le(e), &
+                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+                               fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
+                               we(:, 1:nen))
             do a = 1, nen
                fint(1:3, nodes(a)) = fint(1:3, nodes(a)) - fh(:, a) - fs(:, a)
                wl%fh(:, nodes(a)) = wl%fh(:, nodes(a)) + fh(:, a)
@@ -733,4 +727,26 @@ contains
          e1 = e2 + 1
       end do
    end subroutine roll_gauges
+
+   !> Add each roll gauge's k_g d3 d3^T to the rotation block of its node (d3 of the
+   !> configuration the matrix is formed at); the residual is not touched.
+   subroutine add_roll_gauges(sup, gauge_node, gauge_k, d, bm)
+      type(supports_t), intent(in) :: sup      !< supports (dof map, node bases)
+      integer, intent(in) :: gauge_node(:)     !< node of each gauge, 0 after the last
+      real(wp), intent(in) :: gauge_k(:)       !< their stiffness [N m/rad]
+      real(wp), intent(in) :: d(:, :, :)       !< (3, 3, nn) directors
+      type(banded_t), intent(inout) :: bm      !< matrix
+      real(wp) :: kb(6, 6), d3(3)
+      integer :: l, i, node
+      do l = 1, size(gauge_node)
+         node = gauge_node(l)
+         if (node == 0) exit
+         d3 = d(:, 3, node)
+         kb = 0.0_wp
+         do i = 1, 3
+            kb(4:6, 3 + i) = gauge_k(l)*d3*d3(i)
+         end do
+         call add_node_block(sup, node, kb, bm)
+      end do
+   end subroutine add_roll_gauges
 end module rodyn_assembly

@@ -43,7 +43,7 @@ module rodyn_statics
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
-                             add_node_block, roll_gauges
+                             add_node_block, roll_gauges, add_roll_gauges
    use rodyn_water, only: water_loads_t, water_loads_build
    use rodyn_environment, only: current_factor
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
@@ -157,8 +157,8 @@ contains
    subroutine homotopy_and_gauge(this, want_k)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< add to the tangent
-      real(wp) :: m0(3), kb(6, 6), d3(3), w
-      integer :: node, l, i
+      real(wp) :: m0(3), kb(6, 6), w
+      integer :: node
       w = 1.0_wp - this%lam
       if (w == 0.0_wp) then                  ! the last increment: the problem itself
          this%r = this%fint - this%fext
@@ -176,17 +176,8 @@ contains
             end if
          end do
       end if
-      if (.not. want_k) return
-      do l = 1, size(this%gauge_node)
-         node = this%gauge_node(l)
-         if (node == 0) exit
-         d3 = this%state%d(:, 3, node)
-         kb = 0.0_wp
-         do i = 1, 3
-            kb(4:6, 3 + i) = this%gauge_k(l)*d3*d3(i)
-         end do
-         call add_node_block(this%sup, node, kb, this%bm)
-      end do
+      if (want_k) call add_roll_gauges(this%sup, this%gauge_node, this%gauge_k, &
+                                       this%state%d, this%bm)
    end subroutine homotopy_and_gauge
 
    subroutine static_save_base(this)
