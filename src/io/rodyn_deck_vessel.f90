@@ -315,8 +315,8 @@ contains
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
    !> (its index set); its node is not hinged (the hinge's axis would not turn with the
-   !> vessel; a clamped end turns with it, rodyn_dynamics); a vessel moved by RAOs needs a sea (*WAVE), and gets its response factors
-   !> in it (vessel_in_sea).
+   !> vessel; a clamped end turns with it, rodyn_dynamics); a vessel moved by RAOs needs
+   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea).
    subroutine validate_vessels(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
