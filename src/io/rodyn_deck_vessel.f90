@@ -375,21 +375,29 @@ contains
    !> vessel_coefficients): component j of the sea, eta_j = a_j cos(k_j.x - omega_j t
    !> + phase_j) (rodyn_waves), has at the reference point O the elevation
    !> a_j cos(omega_j t + phi_j) with phi_j = -(k_j.O) - phase_j. The sea's ramp is the
-   !> vessel's too (vessel_motion).
+   !> vessel's too (vessel_motion). A vessel at rest at its static offset (OFFSET
+   !> START=STATIC and a dynamics started from the statics) meets the waves there: O +
+   !> offset_1:3 and relative heading beta_j - (psi0 + offset_psi).
    subroutine vessel_in_sea(model, ve)
       type(model_t), intent(in) :: model     !< model with its waves and water
       type(vessel_t), intent(inout) :: ve    !< coef, omega and ramp set
       type(wave_field_t) :: field
       real(wp), allocatable :: phi(:), beta(:)
+      real(wp) :: o(3), psi
       call waves_build(model%waves, model%water%depth, model%water%surface, &
                        norm2(model%gravity), field)
-      phi = -(field%kx*ve%origin(1) + field%ky*ve%origin(2)) - field%phase
+      o = ve%origin
+      psi = ve%heading
+      if (ve%offset_static .and. model%dynamic%start_static) then
+         o = o + ve%offset(1:3)
+         psi = psi + ve%offset(4)
+      end if
+      phi = -(field%kx*o(1) + field%ky*o(2)) - field%phase
       beta = atan2(field%sb, field%cb)
       if (allocated(ve%coef)) deallocate (ve%coef, ve%omega)
       allocate (ve%coef(6, field%n))
       ve%omega = field%omega
-      call vessel_coefficients(ve%rao, ve%heading, field%amp, field%omega, beta, phi, &
-                               ve%coef)
+      call vessel_coefficients(ve%rao, psi, field%amp, field%omega, beta, phi, ve%coef)
       ve%sea_ramp = field%ramp
    end subroutine vessel_in_sea
 end module rodyn_deck_vessel
