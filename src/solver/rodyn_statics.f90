@@ -112,7 +112,7 @@ contains
    !> vessel at rest to the same vessel point with the vessel at its offset,
    !>   X = O + offset_1:3 + Rz(psi0 + offset_psi) p,  p = Rz(psi0)^T (x - O),
    !> and a clamped one (rotations held) is turned by Rz(lam offset_psi) with it.
-   subroutine vessel_offsets(model, mesh, state, sup, turn_node, turn_psi, turn_d)
+   pure subroutine vessel_offsets(model, mesh, state, sup, turn_node, turn_psi, turn_d)
       type(model_t), intent(in) :: model         !< model
       type(mesh_t), intent(in) :: mesh           !< mesh
       type(state_t), intent(in) :: state         !< start configuration
