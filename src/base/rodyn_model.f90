@@ -274,6 +274,11 @@ module rodyn_model
       real(wp) :: drift_phase = 0.0_wp        !< [rad]
       real(wp), allocatable :: drift_time(:)  !< (nd) times of a drift table [s]
       real(wp), allocatable :: drift_table(:, :) !< (4, nd) x, y, z [m], heading [rad]
+      !> OFFSET START=STATIC (default): the static analysis puts the vessel at its offset
+      !> and a dynamics started from it does not ramp the offset in; DYNAMIC: statics at
+      !> rest at O, the offset ramped in with the dynamics (rodyn_motion's
+      !> vessel_offset_rest)
+      logical :: offset_static = .true.
    end type vessel_t
 
    !> Prescribed motion of a held node (*MOTION): a displacement added to the position

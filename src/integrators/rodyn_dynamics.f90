@@ -6,7 +6,10 @@
 !>   r_theta = sum_i d_i^{n+1/2} x [M_ia (ddot_i^{n+1} - ddot_i^n)/dt
 !>             + alpha M_ia (d_i^{n+1} - d_i^n)/dt] + f_theta - m_ext(t_{n+1/2})
 !> vanishes (f: the step internal force of the scheme, rodyn_rod_dynamic; alpha: Rayleigh
-!> mass-proportional damping). Held nodes follow their prescribed position at t_{n+1}.
+!> mass-proportional damping). Held nodes follow their prescribed position at t_{n+1}; a
+!> clamped end on a vessel also its prescribed directors d_i^{n+1} = Q(t_{n+1}) d_i(0), Q
+!> the vessel's turn since rest (rodyn_motion's motion_rotation), set in the predictor and
+!> kept by its held rotation unknowns.
 !> The rotation rows are projected with the midpoint directors, so Lagrange multipliers of
 !> the orthonormality constraints never appear (discrete null-space method).
 !>
@@ -26,7 +29,8 @@
 module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal
+   use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal, motion_vessel, &
+                          vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather
    use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields
@@ -40,7 +44,7 @@ module rodyn_dynamics
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
-   use rodyn_motion, only: motion_displacement
+   use rodyn_motion, only: motion_displacement, motion_rotation, vessel_offset_rest
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
@@ -72,6 +76,13 @@ module rodyn_dynamics
       real(wp) :: dt = 0.0_wp                  !< step [s]
       integer, allocatable :: motion_node(:)   !< (n motions) global node of each motion
       real(wp), allocatable :: x_start(:, :)   !< (3, nn) positions at t = 0 [m]
+      !> (n motions) the motion's node is clamped on a vessel: its directors follow the
+      !> vessel's turn, d_i = Q(t) d_i(0) (rodyn_motion's motion_rotation)
+      logical, allocatable :: motion_turns(:)
+      real(wp), allocatable :: d_start(:, :, :) !< (3, 3, n motions) their directors at t = 0
+      !> the model's vessels as the motions see them: with OFFSET START=STATIC and a start
+      !> from the static solution, at rest at their offset (vessel_offset_rest)
+      type(vessel_t), allocatable :: vessels(:)
       real(wp), allocatable :: x_held(:, :)    !< (3, nn) prescribed positions at t_n+1 [m]
       real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional damping
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
@@ -153,6 +164,26 @@ contains
             prob%sup%moved(prob%motion_node(i)) = .true.
          end do
       end if
+      ! the static solution has the vessels at their offsets (rodyn_statics'
+      ! vessel_offsets): the offset is their rest pose, not ramped in again
+      if (allocated(model%vessels)) then
+         prob%vessels = model%vessels
+         do i = 1, size(prob%vessels)
+            if (model%dynamic%start_static .and. model%vessels(i)%offset_static) &
+               prob%vessels(i) = vessel_offset_rest(model%vessels(i))
+         end do
+      end if
+      ! a clamped end on a vessel (its rotations held, a node with rotation unknowns)
+      ! turns with it: its directors are prescribed like its position
+      allocate (prob%motion_turns(size(prob%motion_node)), &
+                prob%d_start(3, 3, size(prob%motion_node)))
+      do i = 1, size(prob%motion_node)
+         associate (node => prob%motion_node(i))
+            prob%motion_turns(i) = model%motions(i)%kind == motion_vessel .and. &
+                                   prob%sup%ndof(node) == 6 .and. all(prob%sup%held(4:6, node))
+            prob%d_start(:, :, i) = state%d(:, :, node)
+         end associate
+      end do
    end subroutine dynamics_setup
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
@@ -216,10 +247,10 @@ contains
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
-         ! (model%vessels unallocated, as in a model built without a deck, is an absent
+         ! (vessels unallocated, as in a model built without a deck, is an absent
          ! optional argument)
          prob%x_held(:, node) = prob%x_start(:, node) + motion_displacement( &
-                                prob%model%motions(i), t0 + dt, prob%model%vessels, &
+                                prob%model%motions(i), t0 + dt, prob%vessels, &
                                 prob%x_start(:, node))
       end do
       prob%ref_pending = .not. prob%have_conv
@@ -238,6 +269,14 @@ contains
       end do
       prob%s1%x = prob%s0%x + prob%dx
       prob%s1%d = prob%s0%d
+      ! a clamped end on a vessel: its directors at t_n+1, d_i = Q d_i(0); its rotation
+      ! unknowns are held (their Newton corrections are zero), so they stay there
+      do i = 1, size(prob%motion_node)
+         if (.not. prob%motion_turns(i)) cycle
+         prob%s1%d(:, :, prob%motion_node(i)) = matmul(motion_rotation( &
+                                                prob%model%motions(i), t0 + dt, &
+                                                prob%vessels), prob%d_start(:, :, i))
+      end do
    end subroutine dynamics_begin_step
 
    !> The rods' fields and strains of the state at t_n (prob%s0) at their points.

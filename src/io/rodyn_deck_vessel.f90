@@ -1,13 +1,13 @@
 !> Deck reader, *VESSEL (docs/deck.md, docs/vessels.md): a vessel's reference point at
 !> rest, its heading, and its motion, from displacement RAOs (TYPE=RAO) or from a 6-DOF
 !> time series (TYPE=TABLE), both read from INPUT=file; and the whole-deck checks of
-!> vessels (validate_vessels: unique names, the VESSEL= of *MOTION, no clamped end on a
+!> vessels (validate_vessels: unique names, the VESSEL= of *MOTION, no hinged end on a
 !> vessel, a sea for RAOs, and the RAO vessels' response factors in that sea).
 module rodyn_deck_vessel
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, vessel_t, vessel_from_rao, vessel_from_table, &
-                          rao_interp_complex, rao_interp_polar, motion_vessel, bc_clamped
+                          rao_interp_complex, rao_interp_polar, motion_vessel, bc_hinged
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
                                card_find_param, card_get_real, &
                                card_file_error, card_get_name, card_get_choice, &
@@ -52,7 +52,7 @@ contains
                                 'PHASE', 'ROTATION UNITS', 'INTERPOLATION', 'OFFSET X', &
                                 'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
                                 'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE', &
-                                'DRIFT INPUT'], err)
+                                'DRIFT INPUT', 'OFFSET START'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -123,7 +123,9 @@ contains
    !> OFFSET X, Y, Z [m], OFFSET HEADING [deg] (0); a harmonic drift of amplitudes
    !> DRIFT X, DRIFT Y [m], DRIFT YAW [deg] (0), DRIFT PERIOD [s] (> 0, required with an
    !> amplitude and only with one), DRIFT PHASE [deg] (0, only with a drift); or a drift
-   !> table, DRIFT INPUT=file of rows t [s], x, y, z [m], heading [deg].
+   !> table, DRIFT INPUT=file of rows t [s], x, y, z [m], heading [deg]. OFFSET
+   !> START=STATIC (default) or DYNAMIC: the offset in the static analysis, or ramped in
+   !> with the dynamics.
    subroutine read_slow_motion(card, ve, model, err)
       type(card_t), intent(in) :: card      !< the *VESSEL card
       type(vessel_t), intent(inout) :: ve   !< vessel: offset and drift set
@@ -144,6 +146,11 @@ contains
       end do
       if (has_error(err)) return
       ve%offset(4) = ve%offset(4)*deg
+      j = 1
+      call card_get_choice(card, 'OFFSET START', [character(len=8) :: 'STATIC', 'DYNAMIC'], &
+                           j, err)
+      if (has_error(err)) return
+      ve%offset_static = j == 1
       any_amp = .false.
       do j = 1, 3
          call card_get_real(card, trim(amp(j)), ve%drift(merge(j, 4, j < 3)), err, found)
@@ -307,9 +314,9 @@ contains
    end subroutine rao_grid
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
-   !> (its index set); its node is not clamped (the end's rotation would not follow the
-   !> vessel); a vessel moved by RAOs needs a sea (*WAVE), and gets its response factors
-   !> in it (vessel_in_sea).
+   !> (its index set); its node is not hinged (the hinge's axis would not turn with the
+   !> vessel; a clamped end turns with it, rodyn_dynamics); a vessel moved by RAOs needs
+   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea).
    subroutine validate_vessels(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
@@ -351,12 +358,12 @@ contains
             do ib = 1, size(model%constraints)
                associate (b => model%constraints(ib))
                   if (b%line /= mo%line .or. node_number(b%node, nn) /= node) cycle
-                  if (b%kind /= bc_clamped) cycle
+                  if (b%kind /= bc_hinged) cycle
                   call card_error(card, 'line '//trim(model%lines(mo%line)%name)//' '// &
-                                  node_label(node, nn)//' is CLAMPED (*BOUNDARY at '// &
-                                  location(deck, pend%bc_line(ib)%card)//'): a clamped'// &
-                                  ' end does not turn with a vessel yet; hold it PINNED', &
-                                  err)
+                                  node_label(node, nn)//' is HINGED (*BOUNDARY at '// &
+                                  location(deck, pend%bc_line(ib)%card)//'): a hinge'// &
+                                  "'s axis does not turn with a vessel yet; hold the"// &
+                                  ' end PINNED or CLAMPED', err)
                   return
                end associate
             end do
@@ -368,21 +375,29 @@ contains
    !> vessel_coefficients): component j of the sea, eta_j = a_j cos(k_j.x - omega_j t
    !> + phase_j) (rodyn_waves), has at the reference point O the elevation
    !> a_j cos(omega_j t + phi_j) with phi_j = -(k_j.O) - phase_j. The sea's ramp is the
-   !> vessel's too (vessel_motion).
+   !> vessel's too (vessel_motion). A vessel at rest at its static offset (OFFSET
+   !> START=STATIC and a dynamics started from the statics) meets the waves there: O +
+   !> offset_1:3 and relative heading beta_j - (psi0 + offset_psi).
    subroutine vessel_in_sea(model, ve)
       type(model_t), intent(in) :: model     !< model with its waves and water
       type(vessel_t), intent(inout) :: ve    !< coef, omega and ramp set
       type(wave_field_t) :: field
       real(wp), allocatable :: phi(:), beta(:)
+      real(wp) :: o(3), psi
       call waves_build(model%waves, model%water%depth, model%water%surface, &
                        norm2(model%gravity), field)
-      phi = -(field%kx*ve%origin(1) + field%ky*ve%origin(2)) - field%phase
+      o = ve%origin
+      psi = ve%heading
+      if (ve%offset_static .and. model%dynamic%start_static) then
+         o = o + ve%offset(1:3)
+         psi = psi + ve%offset(4)
+      end if
+      phi = -(field%kx*o(1) + field%ky*o(2)) - field%phase
       beta = atan2(field%sb, field%cb)
       if (allocated(ve%coef)) deallocate (ve%coef, ve%omega)
       allocate (ve%coef(6, field%n))
       ve%omega = field%omega
-      call vessel_coefficients(ve%rao, ve%heading, field%amp, field%omega, beta, phi, &
-                               ve%coef)
+      call vessel_coefficients(ve%rao, psi, field%amp, field%omega, beta, phi, ve%coef)
       ve%sea_ramp = field%ramp
    end subroutine vessel_in_sea
 end module rodyn_deck_vessel

@@ -4,11 +4,13 @@ module rodyn_motion
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_model, only: motion_t, amplitude_t, motion_harmonic, motion_table, &
                           motion_vessel, vessel_t, vessel_from_rao
-   use rodyn_vessel, only: vessel_point_position, vessel_harmonic_motion, vessel_local_point
+   use rodyn_vessel, only: vessel_point_position, vessel_harmonic_motion, vessel_local_point, &
+                           vessel_rotation
    implicit none
    private
    public :: motion_displacement, amplitude_value, ramp_factor, vessel_motion
-   public :: vessel_slow_motion
+   public :: vessel_slow_motion, motion_rotation, vessel_offset_rest, vessel_offset_point
+   public :: rotation_z
 
 contains
 
@@ -67,6 +69,68 @@ contains
       end select
       u = ramp_factor(t, mo%ramp)*u
    end function motion_displacement
+
+   !> Rotation Q(t) of a moved node's directors from their start: d_i(t) = Q d_i(0). A
+   !> point of a vessel turns with it (the directors fixed to the vessel at rest):
+   !>   Q = Rz(psi0 + r d_psi) Rv(r xi_4:6) Rz(psi0)^T,
+   !> the vessel's rotation (as in motion_displacement: ramp r, slow heading d_psi, motion
+   !> xi, composed exactly) times the transpose of its rotation at rest; Q = I when the
+   !> vessel is at rest. The identity for the other motions (translations only).
+   pure function motion_rotation(mo, t, vessels) result(q)
+      type(motion_t), intent(in) :: mo !< motion
+      real(wp), intent(in) :: t        !< time [s]
+      type(vessel_t), intent(in), optional :: vessels(:) !< the model's (motion_vessel)
+      real(wp) :: q(3, 3)
+      real(wp) :: r, xi(6), sl(4)
+      q = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], &
+                  [3, 3])
+      if (mo%kind /= motion_vessel .or. .not. present(vessels)) return
+      associate (ve => vessels(mo%vessel))
+         r = ramp_factor(t, mo%ramp)
+         xi = r*vessel_motion(ve, t)
+         sl = r*vessel_slow_motion(ve, t)
+         q = matmul(matmul(rotation_z(ve%heading + sl(4)), vessel_rotation(xi(4:6))), &
+                    transpose(rotation_z(ve%heading)))
+      end associate
+   end function motion_rotation
+
+   !> The vessel whose rest pose is its static offset (OFFSET START=STATIC, when the
+   !> dynamics starts from the static solution): reference point O + offset_1:3, heading
+   !> psi0 + offset_psi, offset 0; its wave-frequency motion (RAO factors, table) and
+   !> drift unchanged. motion_displacement and motion_rotation with it give, after the
+   !> ramp, the positions and turns of the vessel itself, and none at t = 0.
+   pure function vessel_offset_rest(ve) result(vo)
+      type(vessel_t), intent(in) :: ve !< vessel
+      type(vessel_t) :: vo
+      vo = ve
+      vo%origin = ve%origin + ve%offset(1:3)
+      vo%heading = ve%heading + ve%offset(4)
+      vo%offset = 0.0_wp
+   end function vessel_offset_rest
+
+   !> Where the vessel point at x (the vessel at rest) is with the vessel at its static
+   !> offset, lam of it (statics' load factor):
+   !>   X = O + lam offset_1:3 + Rz(psi0 + lam offset_psi) p,  p = Rz(psi0)^T (x - O).
+   pure function vessel_offset_point(ve, x, lam) result(xo)
+      type(vessel_t), intent(in) :: ve !< vessel
+      real(wp), intent(in) :: x(3)     !< position at rest [m]
+      real(wp), intent(in) :: lam      !< fraction of the offset [-]
+      real(wp) :: xo(3)
+      real(wp) :: p(3)
+      p = vessel_local_point(ve%origin, ve%heading, x)
+      xo = vessel_point_position(ve%origin + lam*ve%offset(1:3), ve%heading + &
+                                 lam*ve%offset(4), [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+                                                    0.0_wp], p)
+   end function vessel_offset_point
+
+   !> Rotation by a about global z: Rz(a) = [cos a, -sin a, 0; sin a, cos a, 0; 0, 0, 1]
+   !> (the turn of a clamped end on a vessel turned by a static offset heading a).
+   pure function rotation_z(a) result(m)
+      real(wp), intent(in) :: a !< angle [rad]
+      real(wp) :: m(3, 3)
+      m = reshape([cos(a), sin(a), 0.0_wp, -sin(a), cos(a), 0.0_wp, 0.0_wp, 0.0_wp, &
+                   1.0_wp], [3, 3])
+   end function rotation_z
 
    !> Motion xi(t) = (surge, sway, heave [m], roll, pitch, yaw [rad]) of a vessel's
    !> reference point, in vessel axes: from its RAOs in the sea (the response factors

@@ -37,9 +37,10 @@ module rodyn_statics
    use rodyn_kinds, only: wp
    use rodyn_rotation, only: skew
    use rodyn_error, only: error_t, has_error, set_error, clear_error, stat_numerical
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, motion_vessel
+   use rodyn_motion, only: vessel_offset_point, rotation_z
    use rodyn_load_check, only: load_divergence_hint
-   use rodyn_mesh, only: mesh_t
+   use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
@@ -69,6 +70,11 @@ module rodyn_statics
       real(wp), allocatable :: x_held(:, :)   !< (3, nn) position prescribed at lam [m]
       real(wp), allocatable :: x_conv(:, :)   !< (3, nn) last converged increment
       real(wp), allocatable :: d_conv(:, :, :) !< (3, 3, nn)
+      !> clamped ends on a vessel turned by its static offset heading (vessel_offsets):
+      !> node, heading offset [rad], directors at rest; d_i = Rz(lam psi) d_i(rest)
+      integer, allocatable :: turn_node(:)
+      real(wp), allocatable :: turn_psi(:)
+      real(wp), allocatable :: turn_d(:, :, :)
    contains
       procedure :: evaluate => static_evaluate
       procedure :: save_base => static_save_base
@@ -98,7 +104,43 @@ contains
       prob%r0 = 0.0_wp
       prob%d0 = state%d
       call roll_gauges(mesh, prob%sup, prob%loads, prob%gauge_node, prob%gauge_k)
+      call vessel_offsets(model, mesh, state, prob%sup, prob%turn_node, prob%turn_psi, &
+                          prob%turn_d)
    end subroutine statics_setup
+
+   !> The vessels' static offsets (OFFSET START=STATIC, docs/vessels.md): a node on a
+   !> vessel (*MOTION, TYPE=VESSEL) is moved by the load steps from its place with the
+   !> vessel at rest to the same vessel point with the vessel at its offset,
+   !>   X = O + offset_1:3 + Rz(psi0 + offset_psi) p,  p = Rz(psi0)^T (x - O),
+   !> and a clamped one (rotations held) is turned by Rz(lam offset_psi) with it.
+   pure subroutine vessel_offsets(model, mesh, state, sup, turn_node, turn_psi, turn_d)
+      type(model_t), intent(in) :: model         !< model
+      type(mesh_t), intent(in) :: mesh           !< mesh
+      type(state_t), intent(in) :: state         !< start configuration
+      type(supports_t), intent(inout) :: sup     !< targets of the moved nodes set
+      integer, allocatable, intent(out) :: turn_node(:)    !< clamped nodes turned
+      real(wp), allocatable, intent(out) :: turn_psi(:)    !< their turn [rad]
+      real(wp), allocatable, intent(out) :: turn_d(:, :, :) !< their directors at rest
+      integer :: i, node
+      allocate (turn_node(0), turn_psi(0), turn_d(3, 3, 0))
+      if (.not. allocated(model%motions)) return
+      do i = 1, size(model%motions)
+         associate (mo => model%motions(i))
+            if (mo%kind /= motion_vessel) cycle
+            associate (ve => model%vessels(mo%vessel))
+               if (.not. ve%offset_static .or. all(ve%offset == 0.0_wp)) cycle
+               node = mesh_node(mesh, mo%line, mo%node)
+               sup%x_target(:, node) = vessel_offset_point(ve, sup%x_target(:, node), 1.0_wp)
+               sup%moved(node) = .true.
+               if (sup%ndof(node) /= 6 .or. .not. all(sup%held(4:6, node)) .or. &
+                   ve%offset(4) == 0.0_wp) cycle
+               turn_node = [turn_node, node]
+               turn_psi = [turn_psi, ve%offset(4)]
+               turn_d = reshape([turn_d, state%d(:, :, node)], [3, 3, size(turn_node)])
+            end associate
+         end associate
+      end do
+   end subroutine vessel_offsets
 
 
    !> Set the load factor lam and the factor cur on the current's velocity: external
@@ -108,6 +150,7 @@ contains
       type(static_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: lam                   !< load factor [-]
       real(wp), intent(in) :: cur                   !< current factor [-]
+      integer :: i
       prob%lam = lam
       where (.not. prob%mesh%line_catenary) prob%gfac = lam
       ! the buoyancy with the weight: the weight in water is what is ramped (buoyancy in
@@ -118,6 +161,12 @@ contains
       if (prob%water%active) prob%water%env%r_current = cur*current_factor(prob%water%env% &
                                                                             water, 0.0_wp)
       prob%x_held = prob%sup%x_start + lam*(prob%sup%x_target - prob%sup%x_start)
+      ! clamped ends on a vessel at its offset (vessel_offsets): their held rotation
+      ! unknowns keep these directors through Newton
+      do i = 1, size(prob%turn_node)
+         prob%state%d(:, :, prob%turn_node(i)) = matmul(rotation_z(lam*prob%turn_psi(i)), &
+                                                        prob%turn_d(:, :, i))
+      end do
    end subroutine static_set_load_factor
 
    !> Residual r = f_int - f_water - f_ext - (1 - lambda) r_0 (module header) and, if
