@@ -26,6 +26,7 @@ module rodyn_timeloop
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
    use rodyn_state, only: state_copy, state_gather
+   use rodyn_mesh, only: mesh_spurious_shape
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -261,6 +262,17 @@ contains
             call on_step(log, err)
             if (has_error(err)) return
             if (t >= next_frame - tol_t .or. t >= t_end - tol_t) then
+               ! a cubic rod in the spurious shape of its quadrature (rodyn_mesh) stops
+               ! the run before the frame is written
+               why = mesh_spurious_shape(model, prob%mesh, prob%s1)
+               if (len(why) > 0) then
+                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s '
+                  why = trim(msg)//why//'; the frames before it are written (the shape '// &
+                        'may have formed after the last of them)'
+                  call set_error(err, stat_numerical, why)
+                  summary%status = why
+                  return
+               end if
                call on_frame(t, prob, err)
                if (has_error(err)) return
                next_frame = next_frame + interval

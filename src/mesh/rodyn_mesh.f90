@@ -14,11 +14,13 @@ module rodyn_mesh
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
    use rodyn_environment, only: seabed_z
-   use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule
+   use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule, &
+                                rod_hidden_shear
    use rodyn_shape, only: max_nen, max_order
    use rodyn_memory, only: memory_estimate, memory_physical, memory_text
    implicit none
    private
+   public :: mesh_spurious_shape
    public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
@@ -477,4 +479,42 @@ contains
          d = rotation_frame(tt, hint)
       end function line_frame
    end subroutine line_initial_shape
+   !> A configuration refused when an element of order 3 of a rod line has taken the
+   !> spurious shape of its selective quadrature (rod_hidden_shear): shear strain above
+   !> hidden_max at its extension points and more than ten times the largest at its shear
+   !> points. Such a shape zig-zags at touch-down; found on the mooring surge deck as a
+   !> rod of EI = 10 N m2 with 26 cubic elements, whose statics converged to it and whose
+   !> dynamics then read a fairlead tension 34 % low (docs/element.md, "Known limits").
+   !> Returns the reason (empty: none). Statics checks its solution, dynamics each frame.
+   function mesh_spurious_shape(model, mesh, state) result(why)
+      type(model_t), intent(in) :: model   !< model (line names)
+      type(mesh_t), intent(in) :: mesh     !< mesh
+      type(state_t), intent(in) :: state   !< configuration
+      character(len=:), allocatable :: why
+      real(wp), parameter :: hidden_max = 0.05_wp  ! shear strain no line carries [-]
+      real(wp) :: xe(3, 4), de(3, 3, 4), hidden, seen
+      integer :: e, l, a, node
+      character(len=200) :: msg
+      why = ''
+      do e = 1, mesh%n_elements
+         l = mesh%elem_line(e)
+         if (mesh%line_order(l) /= 3 .or. mesh%elem_cable(e)) cycle
+         do a = 1, 4
+            node = mesh%elem_nodes(a, e)
+            xe(:, a) = state%x(:, node)
+            de(:, :, a) = state%d(:, :, node)
+         end do
+         call rod_hidden_shear(3, mesh%elem_le(e), xe, de, mesh%eps0(:, :, e), hidden, seen)
+         if (hidden <= hidden_max .or. hidden <= 10.0_wp*seen) cycle
+         write (msg, '(a,i0,a,f0.2,a,f0.2,a,es8.2,a,es8.2,a)') 'element ', &
+            e - mesh%line_first_elem(l) + 1, ' (S = ', mesh%elem_s0(e), ' to ', &
+            mesh%elem_s0(e) + mesh%elem_le(e), ' m) has taken a spurious shape: shear'// &
+            ' strain ', hidden, ' between its shear points, ', seen, ' at them'
+         why = 'line '//trim(model%lines(l)%name)//', '//trim(msg)//' (a mode of '// &
+               'cubic rod elements that only the bending stiffness holds: use '// &
+               'ELEMENT=CABLE for a line without bending stiffness, or another '// &
+               'element count; docs/element.md, "Known limits")'
+         return
+      end do
+   end function mesh_spurious_shape
 end module rodyn_mesh

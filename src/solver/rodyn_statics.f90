@@ -40,7 +40,7 @@ module rodyn_statics
    use rodyn_model, only: model_t, motion_vessel
    use rodyn_motion, only: vessel_offset_point, rotation_z
    use rodyn_load_check, only: load_divergence_hint
-   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
@@ -50,7 +50,6 @@ module rodyn_statics
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_results, only: run_summary_t
-   use rodyn_rod_element, only: rod_hidden_shear
    implicit none
    private
    public :: static_problem_t, statics_setup, statics_solve, statics_run
@@ -344,8 +343,8 @@ contains
          summary%cutbacks = summary%cutbacks + 1
       end do
       end do
-      ! a converged shape can still be a spurious one of cubic rods (spurious_shape)
-      why = spurious_shape(prob, model)
+      ! a converged shape can still be a spurious one of cubic rods (rodyn_mesh)
+      why = mesh_spurious_shape(model, prob%mesh, prob%state)
       if (len(why) > 0) then
          call set_error(err, stat_numerical, 'statics: '//why)
          summary%status = 'statics: '//why
@@ -376,47 +375,6 @@ contains
          end if
       end function factor_name
    end subroutine statics_solve
-   !> The converged static shape refused when an element of order 3 of a rod line has
-   !> taken the spurious shape of its selective quadrature (rod_hidden_shear): shear
-   !> strain above hidden_max at its extension points and more than ten times the
-   !> largest at its shear points. Such a shape zig-zags at touch-down; found on the
-   !> mooring surge deck as a rod of EI = 10 N m2 with 26 cubic elements, which converged
-   !> to it and then read a fairlead tension 34 % low (docs/element.md, "Known limits").
-   !> Returns the reason (empty: none).
-   function spurious_shape(prob, model) result(why)
-      type(static_problem_t), intent(in) :: prob !< solved problem
-      type(model_t), intent(in) :: model         !< model (line names)
-      character(len=:), allocatable :: why
-      real(wp), parameter :: hidden_max = 0.05_wp  ! shear strain no line carries [-]
-      real(wp) :: xe(3, 4), de(3, 3, 4), hidden, seen
-      integer :: e, l, a, node
-      character(len=200) :: msg
-      why = ''
-      associate (mesh => prob%mesh, st => prob%state)
-         do e = 1, mesh%n_elements
-            l = mesh%elem_line(e)
-            if (mesh%line_order(l) /= 3 .or. mesh%elem_cable(e)) cycle
-            do a = 1, 4
-               node = mesh%elem_nodes(a, e)
-               xe(:, a) = st%x(:, node)
-               de(:, :, a) = st%d(:, :, node)
-            end do
-            call rod_hidden_shear(3, mesh%elem_le(e), xe, de, mesh%eps0(:, :, e), hidden, &
-                                  seen)
-            if (hidden <= hidden_max .or. hidden <= 10.0_wp*seen) cycle
-            write (msg, '(a,i0,a,f0.2,a,f0.2,a,es8.2,a,es8.2,a)') 'element ', &
-               e - mesh%line_first_elem(l) + 1, ' (S = ', mesh%elem_s0(e), ' to ', &
-               mesh%elem_s0(e) + mesh%elem_le(e), ' m) converged to a spurious shape: shear'// &
-               ' strain ', hidden, ' between its shear points, ', seen, ' at them'
-            why = 'line '//trim(model%lines(l)%name)//', '//trim(msg)//' (a mode of '// &
-                  'cubic rod elements that only the bending stiffness holds: use '// &
-                  'ELEMENT=CABLE for a line without bending stiffness, or another '// &
-                  'element count; docs/element.md, "Known limits")'
-            return
-         end do
-      end associate
-   end function spurious_shape
-
    !> Set up and solve the static problem of a built mesh; wall time into summary.
    subroutine statics_run(prob, model, mesh, state, summary, err, log_unit)
       type(static_problem_t), intent(inout) :: prob  !< problem (workspace allocated here)
