@@ -53,6 +53,7 @@ finest MoorDyn run, every 0.1 s). Exit 1 if a 2 % target is missed.
 import argparse
 import csv
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -188,13 +189,18 @@ def run_rodyn(rodyn, tmp, name, text, t_end):
     with open(path, "w") as f:
         f.write(text)
     out = os.path.join(tmp, name)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), child_cpu()
     p = subprocess.run([rodyn, path, "-o", out, "--quiet", "--set", f"T_END={t_end!r}"],
                        capture_output=True, text=True)
-    wall = time.perf_counter() - t0
+    wall, cpu = time.perf_counter() - t0, child_cpu() - c0
     if p.returncode != 0:
         sys.exit(f"moordyn_waves: rodyn {name}: exit {p.returncode}: {p.stderr.strip()}")
-    return out, wall
+    return out, (wall, cpu)
+
+
+def child_cpu():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def rodyn_tension(rodyn, tmp, elements, dt):
@@ -234,18 +240,31 @@ def stats(t, ten):
     return float(yy.max()), float(yy.mean()), float(np.hypot(c[1], c[2]))
 
 
-def run_moordyn(n, track, components, t_end=T_END, dt=None, tag="regular"):
+def run_moordyn(n, track, components, t_end=T_END, dt=None, tag="regular", fresh=False):
     """MoorDyn v2 on the leg, its fairlead on the spline through `track`; returns the
-    sample times, the fairlead force, the wall times of the IC and the time loop."""
+    sample times, the fairlead force, (wall, CPU) of the IC and of the time loop. Kept
+    in bench/waves/.work/TAG_N.npz with the track; reused when the track is the same."""
+    dt = dt or md_dt(n)
+    cache = os.path.join(WORK, f"{tag}_{n}_{dt:.6g}_{t_end:g}.npz")
+    if os.path.exists(cache) and not fresh:
+        z = np.load(cache)
+        if z["track_x"].shape == track[1].shape and np.array_equal(z["track_x"], track[1]):
+            return z["t"], z["f"], tuple(z["ic"]), tuple(z["loop"])
+    out = _run_moordyn(n, track, components, t_end, dt, tag)
+    np.savez(cache, t=out[0], f=out[1], ic=out[2], loop=out[3], track_x=track[1])
+    return out
+
+
+def _run_moordyn(n, track, components, t_end, dt, tag):
     import moordyn as md
     from scipy.interpolate import CubicSpline
     dt = dt or md_dt(n)
     path = write_md_folder(os.path.join(WORK, f"{tag}_{n}"), n, components, dt)
     spline = CubicSpline(track[0], track[1], axis=0)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     s = md.Create(path)
     md.Init(s, list(leg.FAIRLEAD), [0.0, 0.0, 0.0])
-    wall_ic = time.perf_counter() - t0
+    ic = (time.perf_counter() - t0, time.process_time() - c0)
     point = md.GetPoint(s, 2)
     every = int(round(SAMPLE / dt))
     steps = int(round(t_end / SAMPLE)) * every
@@ -255,7 +274,7 @@ def run_moordyn(n, track, components, t_end=T_END, dt=None, tag="regular"):
     v = np.diff(x, axis=0) / dt
     rec_t, rec_f = [0.0], [md.GetPointForce(point)]
     step = md.Step
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     for k in range(steps):
         step(s, x[k].tolist(), v[k].tolist(), times[k], dt)
         if (k + 1) % every == 0:
@@ -264,9 +283,9 @@ def run_moordyn(n, track, components, t_end=T_END, dt=None, tag="regular"):
             rec_f.append(f)
             if not np.all(np.isfinite(f)):
                 raise RuntimeError(f"MoorDyn N={n}: not finite at t={times[k + 1]}")
-    wall = time.perf_counter() - t0
+    loop = (time.perf_counter() - t0, time.process_time() - c0)
     md.Close(s)
-    return np.array(rec_t), np.array(rec_f), wall_ic, wall
+    return np.array(rec_t), np.array(rec_f), ic, loop
 
 
 def check_kinematics(components):
@@ -308,10 +327,10 @@ def write_results(rows, series):
                 f"{WINDOW[1]:.2f} s; rodyn cubic cable elements, MoorDyn 2.7.2 segments\n")
         w = csv.writer(f)
         w.writerow(["code", "elements", "dt_s", "max_N", "mean_N", "harmonic1_N",
-                    "wall_s"])
+                    "wall_s", "cpu_s"])
         for r in rows:
             w.writerow([r[0], r[1], f"{r[2]:.6g}", f"{r[3]:.2f}", f"{r[4]:.2f}",
-                        f"{r[5]:.2f}", f"{r[6]:.1f}"])
+                        f"{r[5]:.2f}", f"{r[6]:.1f}", f"{r[7]:.1f}"])
     t, f3 = series
     with open(SERIES_CSV, "w", newline="") as f:
         f.write("# MoorDyn 2.7.2, finest run of bench/waves/moordyn_waves.py: force of the "
@@ -347,6 +366,71 @@ def compare(rodyn_stats, ref):
     return ok
 
 
+# the sea of input/riser_storm.inp (its *WAVE line): JONSWAP Hs 6 m, Tp 11 s, DNV's gamma,
+# 200 components over [0.5, 4] omega_p, towards -x, SEED 11, RAMP 30 s
+STORM_WAVE = ("*WAVE, TYPE=JONSWAP, HS=6.0, TP=11.0, SEED=11, HEADING=180.0, RAMP=30.0")
+STORM_HS, STORM_TP, STORM_N, STORM_SEED = 6.0, 11.0, 200, 11
+STORM_T = 1800.0
+
+
+def jonswap_components(hs=STORM_HS, tp=STORM_TP, n=STORM_N, seed=STORM_SEED):
+    """rodyn's discretisation of its JONSWAP sea (docs/waves.md, "Irregular seas"): n bins
+    over [0.5, 4] omega_p, a frequency drawn uniformly in each bin, amplitude
+    sqrt(2 S dw), a uniform phase; numpy's generator here (rodyn's L'Ecuyer generator
+    is not reproduced: the same spectrum and bins, other draws). Towards -x (beta = pi)."""
+    wp = 2.0 * np.pi / tp
+    r = tp / np.sqrt(hs)
+    gamma = 5.0 if r <= 3.6 else (np.exp(5.75 - 1.15 * r) if r < 5.0 else 1.0)
+    edges = np.linspace(0.5 * wp, 4.0 * wp, n + 1)
+    dw = edges[1] - edges[0]
+    rng = np.random.default_rng(seed)
+    w = edges[:-1] + dw * rng.random(n)
+    sig = np.where(w <= wp, 0.07, 0.09)
+    spm = 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * np.exp(-1.25 * (w / wp)**-4)
+    s = (1.0 - 0.287 * np.log(gamma)) * spm * gamma**np.exp(-(w - wp)**2 / (2 * sig**2 * wp**2))
+    a = np.sqrt(2.0 * s * dw)
+    ph = 2.0 * np.pi * rng.random(n)
+    return [(wi, ai * np.cos(p), ai * np.sin(p), np.pi) for wi, ai, p in zip(w, a, ph)], gamma
+
+
+def storm(rodyn, tmp, t_rodyn, t_md, segments):
+    """Cost of the storm: rodyn on input/riser_storm.inp, rodyn on the leg in the same sea
+    (the leg's deck with riser_storm.inp's *WAVE line; 120 cubic elements, dt 0.05 s, its
+    fairlead on the FPSO), MoorDyn on the leg in the same spectrum (its fairlead held at
+    its static position: the cost does not depend on it), each over a shorter time,
+    scaled to 1800 s by the simulated time (the cost per step is constant)."""
+    rows = []
+    t0, c0 = time.perf_counter(), child_cpu()
+    out = os.path.join(tmp, "riser_storm")
+    p = subprocess.run([rodyn, os.path.join(ROOT, "input", "riser_storm.inp"), "-o", out,
+                        "--quiet", "--set", f"T_END={t_rodyn!r}"], capture_output=True,
+                       text=True)
+    if p.returncode != 0:
+        sys.exit(f"moordyn_waves: riser_storm: exit {p.returncode}: {p.stderr.strip()}")
+    rows.append(("rodyn riser_storm.inp (170 cubic el., dt 0.05)", t_rodyn,
+                 time.perf_counter() - t0, child_cpu() - c0))
+    _, (wall, cpu) = run_rodyn(rodyn, tmp, "leg_storm",
+                               deck_text(120, 0.05, 10.0, STORM_WAVE), t_rodyn)
+    rows.append(("rodyn leg in the storm (120 cubic el., dt 0.05)", t_rodyn, wall, cpu))
+    comps, _ = jonswap_components()
+    fixed = (np.array([0.0, 2 * t_md + 1.0]), np.array([leg.FAIRLEAD, leg.FAIRLEAD]))
+    for n in segments:
+        t, f, ic, loop = run_moordyn(n, fixed, comps, t_end=t_md, tag="storm")
+        rows.append((f"MoorDyn leg in the storm (N {n}, dtM {md_dt(n):.3g}; IC apart)", t_md,
+                     loop[0], loop[1]))
+        rows.append((f"MoorDyn its static IC (N {n}, TmaxIC {IC_TMAX:g} s)", 0.0,
+                     ic[0], ic[1]))
+    print(f"{'run':58s} {'sim. s':>7s} {'wall s':>8s} {'CPU s':>8s} {'CPU/1800 s':>11s}")
+    for name, ts, wall, cpu in rows:
+        scaled = cpu * STORM_T / ts if ts > 0 else cpu
+        print(f"{name:58s} {ts:7.1f} {wall:8.1f} {cpu:8.1f} {scaled:11.0f}")
+    print(f"load average while measuring: {os.getloadavg()} (2 cores, shared)")
+    return rows
+
+
+FMT = ("%-7s %4d %9.4g  max %9.1f  mean %9.1f  harm1 %8.1f  wall %6.1f s  CPU %6.1f s")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rodyn", default=os.path.join(ROOT, "build", "rodyn"))
@@ -355,12 +439,20 @@ def main():
     ap.add_argument("--write", action="store_true",
                     help="write bench/results/waves_moordyn*.csv")
     ap.add_argument("--segments", type=int, nargs="+", default=MOORDYN_N)
+    ap.add_argument("--storm", nargs=2, type=float, metavar=("T_RODYN", "T_MOORDYN"),
+                    help="cost of the JONSWAP storm: rodyn for T_RODYN s, MoorDyn for "
+                         "T_MOORDYN s, scaled to 1800 s")
+    ap.add_argument("--fresh", action="store_true", help="ignore MoorDyn runs kept in .work/")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
+        if args.storm:
+            storm(args.rodyn, tmp, args.storm[0], args.storm[1], args.segments)
+            return
         if args.quick:
             t, ten, wall = rodyn_tension(args.rodyn, tmp, *RODYN_QUICK)
             st = stats(t, ten)
-            print(f"rodyn {RODYN_QUICK[0]} elements, dt {RODYN_QUICK[1]} s: {wall:.1f} s wall")
+            print(f"rodyn {RODYN_QUICK[0]} elements, dt {RODYN_QUICK[1]} s: "
+                  f"{wall[0]:.1f} s wall, {wall[1]:.1f} s CPU")
             sys.exit(0 if compare(st, stored_reference()) else 1)
         comps = regular_components()
         print(f"MoorDyn's regular wave against Airy + Wheeler (rodyn's convention), worst "
@@ -368,20 +460,18 @@ def main():
         rows = []
         for ne, dt in RODYN_RUNS:
             t, ten, wall = rodyn_tension(args.rodyn, tmp, ne, dt)
-            rows.append(("rodyn", ne, dt) + stats(t, ten) + (wall,))
-            print("rodyn   %4d %8.4g  max %10.1f  mean %10.1f  harm1 %9.1f  wall %6.1f s"
-                  % rows[-1][1:], flush=True)
+            rows.append(("rodyn", ne, dt) + stats(t, ten) + wall)
+            print(FMT % rows[-1], flush=True)
         track = fairlead_track(args.rodyn, tmp)
         amp = np.ptp(track[1][track[0] > WINDOW[0]], axis=0) / 2.0
         print(f"fairlead motion over the window, half range x y z [m]: {amp.round(3)}")
         series = None
         for n in args.segments:
-            t, f3, wall_ic, wall = run_moordyn(n, track, comps)
+            t, f3, ic, loop = run_moordyn(n, track, comps, fresh=args.fresh)
             st = stats(t, np.linalg.norm(f3, axis=1))
-            rows.append(("moordyn", n, md_dt(n)) + st + (wall_ic + wall,))
+            rows.append(("moordyn", n, md_dt(n)) + st + (ic[0] + loop[0], ic[1] + loop[1]))
             series = (t, f3)
-            print("moordyn %4d %8.4g  max %10.1f  mean %10.1f  harm1 %9.1f  wall %6.1f s"
-                  % rows[-1][1:] + f" (IC {wall_ic:.1f} s)", flush=True)
+            print(FMT % rows[-1] + f" (IC {ic[0]:.1f} s wall)", flush=True)
     fin = max((r for r in rows if r[0] == "moordyn"), key=lambda r: r[1])
     conv = [r for r in rows if r[0] == "rodyn" and (r[1], r[2]) == RODYN_QUICK][0]
     ok = compare(conv[3:5], (fin[1], fin[3], fin[4]))
