@@ -151,7 +151,7 @@ def write_md_folder(folder, n, components, dt=None):
     with open(os.path.join(folder, "wave_frequencies.txt"), "w") as f:
         f.write("0.0 0.0 0.0 0.0\n")
         for w, re, im, beta in components:
-            f.write(f"{w!r} {re!r} {im!r} {beta!r}\n")
+            f.write(f"{float(w)!r} {float(re)!r} {float(im)!r} {float(beta)!r}\n")
     return path
 
 
