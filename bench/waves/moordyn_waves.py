@@ -362,20 +362,29 @@ def stored_reference():
     if not rows:
         sys.exit(f"moordyn_waves: no MoorDyn rows in {SUMMARY_CSV}")
     fin = max(rows, key=lambda r: int(r["elements"]))
-    return int(fin["elements"]), float(fin["max_N"]), float(fin["mean_N"])
+    return (int(fin["elements"]), float(fin["max_N"]), float(fin["mean_N"]),
+            float(fin["periodic_max_N"]))
 
 
 def compare(rodyn_stats, ref):
-    n, rmax, rmean = ref
+    """rodyn's (max, mean, harm1, periodic max) against MoorDyn's finest run. The exit
+    status follows the mean and the periodic part's maximum; the raw maximum is printed
+    against the same 2 % target but MoorDyn's is not converged in N (high-frequency
+    content of its fairlead force, docs/waves.md), so it does not set the status."""
+    n, rmax, rmean, rpmax = ref
     ok = True
-    print(f"{'fairlead tension over the window':36s} {'rodyn':>10s} "
+    print(f"{'fairlead tension over the window':40s} {'rodyn':>10s} "
           f"{'MoorDyn N=' + str(n):>13s} {'rel. diff':>10s} {'target':>7s}")
-    for name, v, r in (("maximum [N]", rodyn_stats[0], rmax),
-                       ("mean [N]", rodyn_stats[1], rmean)):
+    for name, v, r, binding in (("maximum [N] (not converged in MoorDyn)", rodyn_stats[0],
+                                 rmax, False),
+                                ("mean [N]", rodyn_stats[1], rmean, True),
+                                ("maximum of the periodic part [N]", rodyn_stats[3], rpmax,
+                                 True)):
         e = v / r - 1.0
         good = abs(e) <= TOLERANCE
-        ok &= good
-        print(f"{name:36s} {v:10.1f} {r:13.1f} {e:10.2e} {TOLERANCE:7.0e} "
+        if binding:
+            ok &= good
+        print(f"{name:40s} {v:10.1f} {r:13.1f} {e:10.2e} {TOLERANCE:7.0e} "
               f"{'ok' if good else 'MISSED'}")
     return ok
 
@@ -496,7 +505,7 @@ def main():
             print(FMT % rows[-1] + f" (IC {ic[0]:.1f} s wall)", flush=True)
     fin = max((r for r in rows if r[0] == "moordyn"), key=lambda r: r[1])
     conv = [r for r in rows if r[0] == "rodyn" and (r[1], r[2]) == RODYN_QUICK][0]
-    ok = compare(conv[3:5], (fin[1], fin[3], fin[4]))
+    ok = compare(conv[3:7], (fin[1], fin[3], fin[4], fin[6]))
     if args.write:
         write_results(rows, series)
     sys.exit(0 if ok else 1)
