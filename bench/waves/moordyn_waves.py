@@ -52,7 +52,7 @@ source, source/Line.cpp and source/Waves/SpectrumKin.cpp, docs/waterkinematics.r
   MoorDyn's GetPointForce of the Coupled point, sampled every 0.05 s.
 
   python3 bench/waves/moordyn_waves.py --write       # both sides (MoorDyn cached in .work/;
-                                                     # 3 min of CPU, 15 min wall when shared)
+                                                     # 11 min of CPU, 30 min wall when shared)
   python3 bench/waves/moordyn_waves.py --quick       # rodyn against the stored MoorDyn
   python3 bench/waves/moordyn_waves.py --storm 180 2 # the JONSWAP storm's cost, scaled
 Results: bench/results/waves_moordyn.csv (every run), waves_moordyn_fairlead.csv (the
