@@ -10,8 +10,8 @@ fairlead's vessel point, docs/vessels.md); a first rodyn run (8 elements: the ve
 motion does not depend on the line) writes the fairlead's position every 0.05 s, and
 MoorDyn's Coupled point follows a cubic spline through those samples (exact position at
 the end of every MoorDyn step, the secant velocity over the step, as in
-bench/water/moordyn_leg.py). Not a fixed fairlead: the vessel's motion (about 1 m at the
-fairlead) is what loads the leg most.
+bench/water/moordyn_leg.py). Not a fixed fairlead: the vessel's motion (+-0.7, +-0.9,
++-3.7 m in x, y, z at the fairlead) is what loads the leg most.
 
 The wave is at full height from t = 0 in both (MoorDyn v2's WaveKin 7 has no ramp): the
 deck's wave RAMP (22.96 s) is moved to the *MOTION's RAMP, so the vessel is still ramped
@@ -43,8 +43,10 @@ source, source/Line.cpp and source/Waves/SpectrumKin.cpp, docs/waterkinematics.r
   SpectrumKin maps z to h (z - eta) / (h + eta), the same map). The leg never reaches the
   surface (fairlead 10 m down), so stretching acts below the mean surface only.
   Seabed: vertical spring-damper, 3e6 Pa/m and 3e5 Pa s/m on d (the deck's *SEABED;
-  MoorDyn's kbot, cbot), no friction.
-  rodyn: cubic cable elements, EMC (the deck's scheme). MoorDyn: lumped mass, RK2,
+  MoorDyn's kbot, cbot), no friction. They differ in one point: rodyn's damper is met
+  c/k |v| above the plane so that the force grows from zero (docs/water.md); MoorDyn's
+  acts per node once below the seabed, its force jumping to cbot v_z d l at contact.
+  rodyn: cubic cable elements, EMC (the default scheme). MoorDyn: lumped mass, RK2,
   BA = -1 (critical damping of one segment's axial mode: vanishes with N), dtM = 0.25 l/c
   rounded down to a divisor of 0.05 s, static start by its stationary solver
   (ICgenDynamic 0, threshIC 1e-9, TmaxIC 300 s).
