@@ -49,6 +49,7 @@ module rodyn_output_dynamic
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment, committed_t
    use rodyn_output_schema, only: schema_header
+   use rodyn_sea_output, only: sea_scene_t, sea_values_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
       temp_name, commit_rename, remove_file, outfile_reopen
@@ -61,7 +62,7 @@ module rodyn_output_dynamic
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
    public :: dynamic_output_ends_step, dynamic_output_mark, dynamic_output_mark_t
-   public :: dynamic_output_close
+   public :: dynamic_output_close, dynamic_output_sea
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
@@ -70,6 +71,12 @@ module rodyn_output_dynamic
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
+   ! Tables of the sea and the vessels (written only for a scene with probes or vessels)
+   integer, parameter :: sf_waves = 1, sf_waves_step = 2, sf_vessels = 3, &
+      sf_vessels_step = 4, sf_conn = 5, sf_conn_step = 6, n_sea = 6
+   character(len=*), parameter :: sea_csv(n_sea) = [character(len=28) :: &
+      'dynamic_waves.csv', 'dynamic_waves_step.csv', 'dynamic_vessels.csv', &
+      'dynamic_vessels_step.csv', 'dynamic_connections.csv', 'dynamic_connections_step.csv']
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
    character(len=*), parameter :: running = 'running'
 
@@ -126,8 +133,9 @@ module rodyn_output_dynamic
    !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
    !> files hold, and the writer's counters; dynamic_output_open continues from it.
    type :: dynamic_output_mark_t
-      integer(i8) :: csv_bytes(6) = 0_i8  !< bytes of dynamic_nodes, _elements, _ends,
-                                          !< _log, _lines, _ends_step.csv
+      integer(i8) :: csv_bytes(12) = 0_i8 !< bytes of dynamic_nodes, _elements, _ends,
+                                          !< _log, _lines, _ends_step.csv, then of the
+                                          !< sea tables (sea_csv; 0 when not written)
       integer :: frames = 0               !< frames written
       integer :: steps = 0                !< step rows written
       integer :: end_rows = 0             !< rows of support forces of every step
@@ -169,6 +177,11 @@ module rodyn_output_dynamic
       type(out_file_t) :: f_log                      !< dynamic_log.csv
       type(out_file_t) :: f_ends_step                !< dynamic_ends_step.csv
       type(out_file_t) :: f_lines                    !< dynamic_lines.csv
+      type(out_file_t) :: f_sea(n_sea)               !< the tables of sea_csv
+      logical :: sea_on(n_sea) = .false.             !< which of them are written
+      type(text_t), allocatable :: probe_head(:)     !< (np) ',PROBE,x,y'
+      type(text_t), allocatable :: vessel_head(:)    !< (nv) ',VESSEL'
+      type(text_t), allocatable :: conn_head(:)      !< (nc) ',VESSEL,LINE,END'
       logical :: failed = .false.                    !< a write failed: nothing more written
       logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
       character(len=:), allocatable :: why           !< the first failure
@@ -202,7 +215,7 @@ contains
    !> status.txt saying the run is in progress. No frame is written: call
    !> dynamic_output_frame for the initial state if it is wanted. On failure everything
    !> opened is closed again (dynamic_output_close may still be called).
-   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume)
+   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume, sea)
       type(dynamic_writer_t), intent(inout) :: w        !< the writer (not open)
       character(len=*), intent(in) :: dir               !< output folder
       type(model_t), intent(in) :: model                !< model (title, deck, options)
@@ -212,6 +225,8 @@ contains
                                                         !< kept in status.txt meanwhile
       type(dynamic_output_mark_t), intent(in), optional :: resume !< continue the files
                                                         !< of a run from this checkpoint
+      type(sea_scene_t), intent(in), optional :: sea    !< probes, vessels, connections:
+                                                        !< their tables are written
       character(len=*), parameter :: where = 'dynamic_output_open'
       type(error_t) :: e
       integer :: i
@@ -272,6 +287,8 @@ contains
       do i = 1, size(lines)
          call set_up_line(w%line(i), lines(i))
       end do
+      w%sea_on = .false.
+      if (present(sea)) call set_up_sea(w, model, sea)
       if (w%csv .and. present(resume)) then
          call reopen_csv(nodes_csv, w%f_nodes, 1)
          call reopen_csv(elements_csv, w%f_elements, 2)
@@ -279,6 +296,9 @@ contains
          call reopen_csv(log_csv, w%f_log, 4)
          call reopen_csv(lines_csv, w%f_lines, 5)
          call reopen_csv(ends_step_csv, w%f_ends_step, 6)
+         do i = 1, n_sea
+            if (w%sea_on(i)) call reopen_csv(trim(sea_csv(i)), w%f_sea(i), 6 + i)
+         end do
       else if (w%csv) then
          call open_csv(w, nodes_csv, schema_header(nodes_csv), w%f_nodes, e)
          call open_csv(w, elements_csv, schema_header(elements_csv), w%f_elements, e)
@@ -286,6 +306,10 @@ contains
          call open_csv(w, log_csv, schema_header(log_csv), w%f_log, e)
          call open_csv(w, ends_step_csv, schema_header(ends_step_csv), w%f_ends_step, e)
          call open_csv(w, lines_csv, schema_header(lines_csv), w%f_lines, e)
+         do i = 1, n_sea
+            if (w%sea_on(i)) call open_csv(w, trim(sea_csv(i)), &
+                                           schema_header(trim(sea_csv(i))), w%f_sea(i), e)
+         end do
       end if
       if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
@@ -333,7 +357,8 @@ contains
          return
       end if
       mark%csv_bytes = [w%f_nodes%written, w%f_elements%written, w%f_ends%written, &
-                        w%f_log%written, w%f_lines%written, w%f_ends_step%written]
+                        w%f_log%written, w%f_lines%written, w%f_ends_step%written, &
+                        w%f_sea%written]
       mark%frames = w%frames
       mark%steps = w%steps
       mark%end_rows = w%end_rows
@@ -474,6 +499,58 @@ contains
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_ends_step
 
+   !> Append the sea and vessel outputs at the end of step `step` (0: the start state),
+   !> time `time`: a row per probe, vessel and connection to the _step tables, and, when
+   !> `frame`, to the frame tables (call before dynamic_output_frame of that time, so
+   !> that the rows are synced with the frame). Does nothing for a run without them.
+   subroutine dynamic_output_sea(w, step, time, v, frame, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      integer, intent(in) :: step                   !< step number (0: start) [-]
+      real(wp), intent(in) :: time                  !< time at the end of the step [s]
+      type(sea_values_t), intent(in) :: v           !< the values (rodyn_sea_output)
+      logical, intent(in) :: frame                  !< also a frame's rows
+      type(error_t), intent(inout) :: err           !< status
+      character(len=row_len) :: row
+      integer :: k, n, ns
+      if (.not. any(w%sea_on)) return
+      if (.not. writer_ready(w, 'dynamic_output_sea', err)) return
+      if (.not. w%csv) return
+      ns = 0
+      call put_int(row, ns, step)
+      call put_text(row, ns, ',')
+      n = ns
+      call format_real(time, row, n)
+      ns = n
+      if (w%sea_on(sf_waves)) then
+         do k = 1, size(w%probe_head)
+            n = ns
+            call put_text(row, n, w%probe_head(k)%s)
+            call put_reals(row, n, [v%eta(k)])
+            call outfile_put(w%f_sea(sf_waves_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_waves), row(index(row, ',') + 1:n))
+         end do
+      end if
+      if (w%sea_on(sf_vessels)) then
+         do k = 1, size(w%vessel_head)
+            n = ns
+            call put_text(row, n, w%vessel_head(k)%s)
+            call put_reals(row, n, v%pose(:, k))
+            call put_reals(row, n, v%load(:, k))
+            call outfile_put(w%f_sea(sf_vessels_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_vessels), row(index(row, ',') + 1:n))
+         end do
+      end if
+      if (w%sea_on(sf_conn)) then
+         do k = 1, size(w%conn_head)
+            n = ns
+            call put_text(row, n, w%conn_head(k)%s)
+            call put_reals(row, n, [v%conn(:, k), norm2(v%conn(1:3, k))])
+            call outfile_put(w%f_sea(sf_conn_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_conn), row(index(row, ',') + 1:n))
+         end do
+      end if
+   end subroutine dynamic_output_sea
+
    !> Finish the run's output: write everything still held (a last sync), the final
    !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
    !> file and rewrite status.txt from `summary` with the dynamic keys. Acts even when err
@@ -543,6 +620,40 @@ contains
       end do
       lo%line_head%s = ','//csv_name(r%name)
    end subroutine set_up_line
+
+   !> The sea and vessel tables a scene asks for, and the fixed start of their rows
+   !> (after the step and time columns): the probes' names and points, the vessels'
+   !> names, each connection's vessel, line and end.
+   subroutine set_up_sea(w, model, sea)
+      type(dynamic_writer_t), intent(inout) :: w  !< writer
+      type(model_t), intent(in) :: model          !< model (names)
+      type(sea_scene_t), intent(in) :: sea        !< the scene
+      character(len=row_len) :: row
+      integer :: k, n
+      if (.not. sea%active) return
+      w%sea_on(sf_waves) = sea%n_probes > 0
+      w%sea_on(sf_waves_step) = sea%n_probes > 0
+      w%sea_on(sf_vessels) = sea%n_vessels > 0
+      w%sea_on(sf_vessels_step) = sea%n_vessels > 0
+      w%sea_on(sf_conn) = sea%n_conn > 0
+      w%sea_on(sf_conn_step) = sea%n_conn > 0
+      allocate (w%probe_head(sea%n_probes), w%vessel_head(sea%n_vessels), &
+                w%conn_head(sea%n_conn))
+      do k = 1, sea%n_probes
+         n = 0
+         call put_text(row, n, ','//csv_name(model%waves%probe_name(k)))
+         call put_reals(row, n, sea%probe_xy(:, k))
+         w%probe_head(k)%s = row(:n)
+      end do
+      do k = 1, sea%n_vessels
+         w%vessel_head(k)%s = ','//csv_name(model%vessels(k)%name)
+      end do
+      do k = 1, sea%n_conn
+         w%conn_head(k)%s = ','//csv_name(model%vessels(sea%conn_vessel(k))%name)//','// &
+                            csv_name(model%lines(sea%conn_line(k))%name)//','// &
+                            trim(sea%conn_end(k))
+      end do
+   end subroutine set_up_sea
 
    !> Create (truncate) one CSV table and write its header (flushed: a table of no frame).
    subroutine open_csv(w, name, header, f, err)
@@ -873,6 +984,9 @@ contains
          call outfile_flush(w%f_lines, err)
          call outfile_flush(w%f_log, err)
          call outfile_flush(w%f_ends_step, err)
+         do i = 1, n_sea
+            call outfile_flush(w%f_sea(i), err)
+         end do
          w%flush_time = w%flush_time + seconds_since(c0)
          if (has_error(err)) return
       end if
@@ -901,6 +1015,9 @@ contains
          call outfile_mark(w%f_lines)
          call outfile_mark(w%f_log)
          call outfile_mark(w%f_ends_step)
+         do i = 1, n_sea
+            call outfile_mark(w%f_sea(i))
+         end do
       end if
       w%frames_held = 0
       w%steps_held = 0
@@ -938,7 +1055,8 @@ contains
    !> the run writes no CSV.
    function committed_sizes(w) result(c)
       type(dynamic_writer_t), intent(in) :: w   !< writer
-      type(committed_t), allocatable :: c(:)    !< (6) or (0)
+      type(committed_t), allocatable :: c(:)    !< (6 + sea tables) or (0)
+      integer :: k
       allocate (c(0))
       if (.not. w%csv) return
       c = [committed_t(nodes_csv, outfile_committed(w%f_nodes)), &
@@ -947,14 +1065,18 @@ contains
            committed_t(lines_csv, outfile_committed(w%f_lines)), &
            committed_t(log_csv, outfile_committed(w%f_log)), &
            committed_t(ends_step_csv, outfile_committed(w%f_ends_step))]
+      do k = 1, n_sea
+         if (w%sea_on(k)) c = [c, committed_t(trim(sea_csv(k)), outfile_committed(w%f_sea(k)))]
+      end do
    end function committed_sizes
 
    !> Characters of CSV rows held in memory.
    pure integer function csv_held(w)
       type(dynamic_writer_t), intent(in) :: w   !< writer
+      integer :: k
       csv_held = outfile_pending(w%f_nodes) + outfile_pending(w%f_elements) + &
          outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log) &
-         + outfile_pending(w%f_ends_step)
+         + outfile_pending(w%f_ends_step) + sum([(outfile_pending(w%f_sea(k)), k = 1, n_sea)])
    end function csv_held
 
    !> Record a write failure: nothing more is written.
@@ -1053,6 +1175,9 @@ contains
          call outfile_abort(w%f_log)
          call outfile_abort(w%f_ends_step)
          call outfile_abort(w%f_lines)
+         do k = 1, n_sea
+            call outfile_abort(w%f_sea(k))
+         end do
       else
          call outfile_close(w%f_nodes, err)
          call outfile_close(w%f_elements, err)
@@ -1060,6 +1185,9 @@ contains
          call outfile_close(w%f_log, err)
          call outfile_close(w%f_ends_step, err)
          call outfile_close(w%f_lines, err)
+         do k = 1, n_sea
+            call outfile_close(w%f_sea(k), err)
+         end do
       end if
       ! after a failure the held steps are dropped (the series see an error)
       if (w%failed) call set_error(eh, stat_io, w%why)

@@ -101,6 +101,95 @@ module rodyn_output_schema
       'dynamic_ends_step.csv | My_Nm | N m | y moment of the support on the line', &
       'dynamic_ends_step.csv | Mz_Nm | N m | z moment of the support on the line', &
       'dynamic_ends_step.csv | tension_N | N | magnitude of the support force', &
+      'dynamic_waves.csv | time_s | s | time of the frame', &
+      'dynamic_waves.csv | probe | - | wave probe name (*WAVE PROBE)', &
+      'dynamic_waves.csv | x_m | m | x of the probe, global axes', &
+      'dynamic_waves.csv | y_m | m | y of the probe, global axes', &
+      'dynamic_waves.csv | elevation_m | m | elevation above still water, ramp included', &
+      'dynamic_waves_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_waves_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_waves_step.csv | probe | - | wave probe name (*WAVE PROBE)', &
+      'dynamic_waves_step.csv | x_m | m | x of the probe, global axes', &
+      'dynamic_waves_step.csv | y_m | m | y of the probe, global axes', &
+      'dynamic_waves_step.csv | elevation_m | m | elevation above still water, ramp included', &
+      'dynamic_vessels.csv | time_s | s | time of the frame', &
+      'dynamic_vessels.csv | vessel | - | vessel name', &
+      'dynamic_vessels.csv | x_m | m | x of the reference point, global axes', &
+      'dynamic_vessels.csv | y_m | m | y of the reference point, global axes', &
+      'dynamic_vessels.csv | z_m | m | z of the reference point, global axes', &
+      'dynamic_vessels.csv | roll_rad | rad | roll of Rv = Rz(yaw) Ry(pitch) Rx(roll)', &
+      'dynamic_vessels.csv | pitch_rad | rad | pitch of Rv', &
+      'dynamic_vessels.csv | yaw_rad | rad | yaw of Rv, from the mean heading', &
+      'dynamic_vessels.csv | heading_rad | rad | mean heading; vessel axes Rz(heading) Rv', &
+      'dynamic_vessels.csv | Fx_N | N | x force of the lines on it, global', &
+      'dynamic_vessels.csv | Fy_N | N | y force of the lines on it, global', &
+      'dynamic_vessels.csv | Fz_N | N | z force of the lines on it, global', &
+      'dynamic_vessels.csv | Mx_Nm | N m | x moment about the reference point, global', &
+      'dynamic_vessels.csv | My_Nm | N m | y moment about the reference point, global', &
+      'dynamic_vessels.csv | Mz_Nm | N m | z moment about the reference point, global', &
+      'dynamic_vessels.csv | Fx_vessel_N | N | x force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Fy_vessel_N | N | y force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Fz_vessel_N | N | z force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Mx_vessel_Nm | N m | x moment about it, vessel axes', &
+      'dynamic_vessels.csv | My_vessel_Nm | N m | y moment about it, vessel axes', &
+      'dynamic_vessels.csv | Mz_vessel_Nm | N m | z moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_vessels_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_vessels_step.csv | vessel | - | vessel name', &
+      'dynamic_vessels_step.csv | x_m | m | x of the reference point, global axes', &
+      'dynamic_vessels_step.csv | y_m | m | y of the reference point, global axes', &
+      'dynamic_vessels_step.csv | z_m | m | z of the reference point, global axes', &
+      'dynamic_vessels_step.csv | roll_rad | rad | roll of Rv = Rz(yaw) Ry(pitch) Rx(roll)', &
+      'dynamic_vessels_step.csv | pitch_rad | rad | pitch of Rv', &
+      'dynamic_vessels_step.csv | yaw_rad | rad | yaw of Rv, from the mean heading', &
+      'dynamic_vessels_step.csv | heading_rad | rad | mean heading; vessel axes Rz(heading) Rv', &
+      'dynamic_vessels_step.csv | Fx_N | N | x force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Fy_N | N | y force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Fz_N | N | z force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Mx_Nm | N m | x moment about the reference point, global', &
+      'dynamic_vessels_step.csv | My_Nm | N m | y moment about the reference point, global', &
+      'dynamic_vessels_step.csv | Mz_Nm | N m | z moment about the reference point, global', &
+      'dynamic_vessels_step.csv | Fx_vessel_N | N | x force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Fy_vessel_N | N | y force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Fz_vessel_N | N | z force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Mx_vessel_Nm | N m | x moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | My_vessel_Nm | N m | y moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | Mz_vessel_Nm | N m | z moment about it, vessel axes', &
+      'dynamic_connections.csv | time_s | s | time of the frame', &
+      'dynamic_connections.csv | vessel | - | vessel name', &
+      'dynamic_connections.csv | line | - | line name', &
+      'dynamic_connections.csv | end | - | A (S = 0), B (S = L) or the node number', &
+      'dynamic_connections.csv | Fx_N | N | x force of the line on it, global', &
+      'dynamic_connections.csv | Fy_N | N | y force of the line on it, global', &
+      'dynamic_connections.csv | Fz_N | N | z force of the line on it, global', &
+      'dynamic_connections.csv | Mx_Nm | N m | x moment of the line, global', &
+      'dynamic_connections.csv | My_Nm | N m | y moment of the line, global', &
+      'dynamic_connections.csv | Mz_Nm | N m | z moment of the line, global', &
+      'dynamic_connections.csv | Fx_vessel_N | N | x force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Fy_vessel_N | N | y force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Fz_vessel_N | N | z force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Mx_vessel_Nm | N m | x moment of the line, vessel axes', &
+      'dynamic_connections.csv | My_vessel_Nm | N m | y moment of the line, vessel axes', &
+      'dynamic_connections.csv | Mz_vessel_Nm | N m | z moment of the line, vessel axes', &
+      'dynamic_connections.csv | tension_N | N | magnitude of the force', &
+      'dynamic_connections_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_connections_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_connections_step.csv | vessel | - | vessel name', &
+      'dynamic_connections_step.csv | line | - | line name', &
+      'dynamic_connections_step.csv | end | - | A (S = 0), B (S = L) or the node number', &
+      'dynamic_connections_step.csv | Fx_N | N | x force of the line on it, global', &
+      'dynamic_connections_step.csv | Fy_N | N | y force of the line on it, global', &
+      'dynamic_connections_step.csv | Fz_N | N | z force of the line on it, global', &
+      'dynamic_connections_step.csv | Mx_Nm | N m | x moment of the line, global', &
+      'dynamic_connections_step.csv | My_Nm | N m | y moment of the line, global', &
+      'dynamic_connections_step.csv | Mz_Nm | N m | z moment of the line, global', &
+      'dynamic_connections_step.csv | Fx_vessel_N | N | x force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Fy_vessel_N | N | y force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Fz_vessel_N | N | z force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Mx_vessel_Nm | N m | x moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | My_vessel_Nm | N m | y moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | Mz_vessel_Nm | N m | z moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | tension_N | N | magnitude of the force', &
       'dynamic_log.csv | step | - | step number, from 1', &
       'dynamic_log.csv | time_s | s | time at the end of the step', &
       'dynamic_log.csv | dt_s | s | step length used', &
