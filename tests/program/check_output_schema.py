@@ -150,7 +150,7 @@ def check_docs(src, columns, headers, datasets):
 
 def check_readers(src, columns, datasets):
     sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import dynamic, environment, results, schema
+    from rodyn_post import dynamic, environment, results, schema, sea
     py_columns = {f: [(c, u) for c, u, _ in cols] for f, cols in schema.COLUMNS.items()}
     if py_columns != columns or schema.DATASETS != datasets:
         fail("postproc/rodyn_post/schema.py differs from rodyn_output_schema: run "
@@ -169,6 +169,9 @@ def check_readers(src, columns, datasets):
         "dynamic_ends_step.csv": dynamic.ENDS_STEP_HEADER,
         "dynamic_log.csv": dynamic.LOG_HEADER,
     }
+    for file in (sea.WAVES_CSV, sea.WAVES_STEP_CSV, sea.VESSELS_CSV, sea.VESSELS_STEP_CSV,
+                 sea.CONNECTIONS_CSV, sea.CONNECTIONS_STEP_CSV):
+        used[file] = schema.header(file)
     for file, names in used.items():
         schema = [c for c, _ in columns[file]]
         if any(n not in schema for n in names):
@@ -187,6 +190,12 @@ def check_run(src, work, rodyn, headers, datasets):
     text = text.replace("INPUT=../../input/mooring_leg_section.inc", f"INPUT={inc}")
     text = text.replace("TIME=20.0, OUTPUT INTERVAL=0.5", "TIME=0.4, OUTPUT INTERVAL=0.2")
     text = text.replace("HDF5=NO", "HDF5=YES")
+    # a wave probe and the fairlead on a vessel: the sea and vessel tables are written
+    rao = (src / "input" / "fpso_rao.csv").resolve()
+    text = text.replace("*STATIC,", "*WAVE PROBE, NAME=P1\n0, 0\n"
+                        f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
+                        "0.0, 0.0, 0.0, 30.0\n"
+                        "*MOTION, LINE=LEG, END=B, TYPE=VESSEL, VESSEL=FPSO, RAMP=0\n*STATIC,")
     deck = work / "schema.inp"
     deck.write_text(text)
     out = work / "out"
