@@ -366,6 +366,47 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                 '/dynamic/log/strain': ('J', 'stored (strain) energy'),
                 '/dynamic/log/time': ('s', 'time at the end of the step'),
                 '/dynamic/log/total': ('J', 'kinetic + strain + gravity'),
+                '/dynamic/sea/probe_xy': ('m',
+                                          'the points of the wave probes, a row per probe '
+                                          '(attribute probes); columns x, y (global axes)'),
+                '/dynamic/sea/probe_elevation': ('m',
+                                                 'wave elevation above the still water '
+                                                 'level at each probe (attribute probes); '
+                                                 'row per frame'),
+                '/dynamic/sea/vessel_motion': ('m (x, y, z), rad (roll, pitch, yaw, '
+                                               'heading)',
+                                               'per vessel (attribute vessels) 7 columns: '
+                                               'reference point x, y, z (global), roll, '
+                                               'pitch, yaw of Rv, mean heading; row per '
+                                               'frame'),
+                '/dynamic/sea/vessel_load': ('N (Fx, Fy, Fz), N m (Mx, My, Mz)',
+                                             'per vessel 12 columns: force of its lines on '
+                                             'it and moment about its reference point, '
+                                             'global axes, then vessel axes; row per '
+                                             'frame'),
+                '/dynamic/sea/connection_load': ('N (Fx, Fy, Fz, tension), N m (Mx, My, '
+                                                 'Mz)',
+                                                 'per connection (attribute connections) '
+                                                 '13 columns: force and moment of the line '
+                                                 'on the vessel, global then vessel axes, '
+                                                 '|F|; row per frame'),
+                '/dynamic/sea/step_probe_elevation': ('m',
+                                                      'as probe_elevation, at the times of '
+                                                      'step_time (every step)'),
+                '/dynamic/sea/step_vessel_motion': ('m (x, y, z), rad (roll, pitch, yaw, '
+                                                    'heading)',
+                                                    'as vessel_motion, at the times of '
+                                                    'step_time (every step)'),
+                '/dynamic/sea/step_vessel_load': ('N (Fx, Fy, Fz), N m (Mx, My, Mz)',
+                                                  'as vessel_load, at the times of '
+                                                  'step_time (every step)'),
+                '/dynamic/sea/step_connection_load': ('N (Fx, Fy, Fz, tension), N m (Mx, '
+                                                      'My, Mz)',
+                                                      'as connection_load, at the times of '
+                                                      'step_time (every step)'),
+                '/dynamic/sea/step_time': ('s',
+                                           'time of each row of the step_ datasets of '
+                                           '/dynamic/sea: 0, then the end of each step'),
                 '/dynamic/time': ('s', 'time of each output frame')}}
 
 

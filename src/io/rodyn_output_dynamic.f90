@@ -77,6 +77,15 @@ module rodyn_output_dynamic
    character(len=*), parameter :: sea_csv(n_sea) = [character(len=28) :: &
       'dynamic_waves.csv', 'dynamic_waves_step.csv', 'dynamic_vessels.csv', &
       'dynamic_vessels_step.csv', 'dynamic_connections.csv', 'dynamic_connections_step.csv']
+   ! The same in dynamic.h5, /dynamic/sea (index into dynamic_writer_t%sea_h5): at the
+   ! frames and at every step
+   integer, parameter :: sh_elevation = 1, sh_motion = 2, sh_load = 3, sh_conn = 4, &
+      sh_step_elevation = 5, sh_step_motion = 6, sh_step_load = 7, sh_step_conn = 8, &
+      sh_step_time = 9, n_sea_h5 = 9
+   character(len=*), parameter :: sea_h5_name(n_sea_h5) = [character(len=24) :: &
+      'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', &
+      'step_probe_elevation', 'step_vessel_motion', 'step_vessel_load', &
+      'step_connection_load', 'step_time']
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
    character(len=*), parameter :: running = 'running'
 
@@ -182,6 +191,9 @@ module rodyn_output_dynamic
       type(text_t), allocatable :: probe_head(:)     !< (np) ',PROBE,x,y'
       type(text_t), allocatable :: vessel_head(:)    !< (nv) ',VESSEL'
       type(text_t), allocatable :: conn_head(:)      !< (nc) ',VESSEL,LINE,END'
+      integer :: sea_cols(n_sea_h5) = 0              !< columns of each /dynamic/sea series
+      real(wp), allocatable :: probe_xy(:, :)        !< (2, np) the probes' points [m]
+      type(hdf5_series_t) :: sea_h5(n_sea_h5)        !< /dynamic/sea, open when sea_cols > 0
       logical :: failed = .false.                    !< a write failed: nothing more written
       logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
       character(len=:), allocatable :: why           !< the first failure
@@ -288,6 +300,7 @@ contains
          call set_up_line(w%line(i), lines(i))
       end do
       w%sea_on = .false.
+      w%sea_cols = 0
       if (present(sea)) call set_up_sea(w, model, sea)
       if (w%csv .and. present(resume)) then
          call reopen_csv(nodes_csv, w%f_nodes, 1)
@@ -512,8 +525,18 @@ contains
       type(error_t), intent(inout) :: err           !< status
       character(len=row_len) :: row
       integer :: k, n, ns
+      type(error_t) :: e
       if (.not. any(w%sea_on)) return
       if (.not. writer_ready(w, 'dynamic_output_sea', err)) return
+      if (w%hdf5) then
+         call append_sea_h5(w, time, v, frame, e)
+         if (has_error(e)) then
+            w%h5_failed = .true.
+            call note_failure(w, e)
+            call set_error(err, e%code, e%message)
+            return
+         end if
+      end if
       if (.not. w%csv) return
       ns = 0
       call put_int(row, ns, step)
@@ -550,6 +573,96 @@ contains
          end do
       end if
    end subroutine dynamic_output_sea
+
+   !> The values of dynamic_output_sea appended to /dynamic/sea (held until the next sync).
+   subroutine append_sea_h5(w, time, v, frame, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      real(wp), intent(in) :: time                  !< time [s]
+      type(sea_values_t), intent(in) :: v           !< the values
+      logical, intent(in) :: frame                  !< also at the frames
+      type(error_t), intent(inout) :: err           !< status
+      integer :: k
+      real(wp), allocatable :: conn(:, :)
+      allocate (conn(13, size(w%conn_head)))
+      do k = 1, size(w%conn_head)
+         conn(1:12, k) = v%conn(:, k)
+         conn(13, k) = norm2(v%conn(1:3, k))
+      end do
+      call hdf5_append_steps(w%sea_h5(sh_step_time), [time], err)
+      call put(sh_step_elevation, v%eta)
+      call put(sh_step_motion, reshape(v%pose, [size(v%pose)]))
+      call put(sh_step_load, reshape(v%load, [size(v%load)]))
+      call put(sh_step_conn, reshape(conn, [size(conn)]))
+      if (.not. frame) return
+      call put(sh_elevation, v%eta)
+      call put(sh_motion, reshape(v%pose, [size(v%pose)]))
+      call put(sh_load, reshape(v%load, [size(v%load)]))
+      call put(sh_conn, reshape(conn, [size(conn)]))
+   contains
+      !> One row of series k, if the run has it.
+      subroutine put(k, row)
+         integer, intent(in) :: k            !< sh_* index
+         real(wp), intent(in) :: row(:)      !< the row
+         if (w%sea_cols(k) > 0) call hdf5_append_steps(w%sea_h5(k), row, err)
+      end subroutine put
+   end subroutine append_sea_h5
+
+   !> /dynamic/sea: the names of the probes, vessels and connections (attributes), the
+   !> probes' points, and the empty series of the sea and vessel outputs (module header).
+   subroutine create_h5_sea(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer, dynamic.h5 open
+      type(error_t), intent(inout) :: err          !< status
+      character(len=*), parameter :: g = '/dynamic/sea'
+      real(wp), allocatable :: xy(:, :)
+      integer :: k
+      if (.not. any(w%sea_cols > 0) .or. has_error(err)) return
+      associate (h5 => w%h5)
+         call hdf5_create_group(h5, g, err)
+         call hdf5_write_attribute(h5, g, 'probes', names(w%probe_head, 1), err)
+         call hdf5_write_attribute(h5, g, 'vessels', names(w%vessel_head, 1), err)
+         call hdf5_write_attribute(h5, g, 'connections', names(w%conn_head, 3), err)
+         if (size(w%probe_head) > 0) then
+            allocate (xy(size(w%probe_head), 2))
+            xy = transpose(w%probe_xy)
+            call hdf5_write_dataset(h5, g//'/probe_xy', xy, err)
+            call describe_dataset(h5, dynamic_h5, g//'/probe_xy', err)
+         end if
+         do k = 1, n_sea_h5
+            if (w%sea_cols(k) == 0) cycle
+            if (k == sh_step_time) then
+               call hdf5_create_series_1d(h5, g//'/'//trim(sea_h5_name(k)), err, &
+                                          chunk_steps=log_chunk)
+            else
+               call hdf5_create_series(h5, g//'/'//trim(sea_h5_name(k)), w%sea_cols(k), &
+                  err, chunk_steps=max(8, chunk_bytes/(8*w%sea_cols(k))))
+            end if
+            call describe_dataset(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), err)
+         end do
+      end associate
+   contains
+      !> The names of the rows' heads ',A,B,...': the first nf fields, '/'-joined, then
+      !> ', '-joined over the rows ('' when none).
+      function names(heads, nf) result(s)
+         type(text_t), intent(in) :: heads(:)  !< the heads
+         integer, intent(in) :: nf             !< fields per name
+         character(len=:), allocatable :: s
+         character(len=:), allocatable :: h
+         integer :: i, j, c
+         s = ''
+         do i = 1, size(heads)
+            h = heads(i)%s(2:)//','
+            c = 0
+            do j = 1, len(h)
+               if (h(j:j) /= ',') cycle
+               c = c + 1
+               if (c == nf) exit
+               h(j:j) = '/'
+            end do
+            if (i > 1) s = s//', '
+            s = s//h(:j - 1)
+         end do
+      end function names
+   end subroutine create_h5_sea
 
    !> Finish the run's output: write everything still held (a last sync), the final
    !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
@@ -639,6 +752,13 @@ contains
       w%sea_on(sf_conn_step) = sea%n_conn > 0
       allocate (w%probe_head(sea%n_probes), w%vessel_head(sea%n_vessels), &
                 w%conn_head(sea%n_conn))
+      w%probe_xy = sea%probe_xy
+      w%sea_cols = 0
+      w%sea_cols([sh_elevation, sh_step_elevation]) = sea%n_probes
+      w%sea_cols([sh_motion, sh_step_motion]) = 7*sea%n_vessels
+      w%sea_cols([sh_load, sh_step_load]) = 12*sea%n_vessels
+      w%sea_cols([sh_conn, sh_step_conn]) = 13*sea%n_conn
+      w%sea_cols(sh_step_time) = 1
       do k = 1, sea%n_probes
          n = 0
          call put_text(row, n, ','//csv_name(model%waves%probe_name(k)))
@@ -707,6 +827,7 @@ contains
          end do
          call create_h5_log(h5, err)
       end associate
+      call create_h5_sea(w, err)
       call open_h5_series(w, lines, err)
       call flush_h5(w, err)
       if (.not. has_error(err)) then
@@ -738,6 +859,10 @@ contains
          call hdf5_open_series(w%h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
             err)
       end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) > 0) call hdf5_open_series(w%h5, '/dynamic/sea/'// &
+                                                      trim(sea_h5_name(k)), w%sea_h5(k), err)
+      end do
       if (has_error(err)) return
       nv = 1
       do i = 1, size(lines)
@@ -754,6 +879,11 @@ contains
          call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
          call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
          call hdf5_series_hold(w%line(i)%step_time, log_block + 2)
+      end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) == 0) cycle
+         call hdf5_series_hold(w%sea_h5(k), merge(w%hold_frames, log_block + 2, k < &
+                                                  sh_step_elevation))
       end do
    end subroutine open_h5_series
 
@@ -781,6 +911,10 @@ contains
       end do
       do k = 1, n_log_series
          call hdf5_series_truncate(w%log(k), mark%steps, err)
+      end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) > 0) call hdf5_series_truncate(w%sea_h5(k), &
+            merge(mark%frames, mark%end_rows, k < sh_step_elevation), err)
       end do
       call flush_h5(w, err)
    end subroutine reopen_h5
@@ -1000,6 +1134,9 @@ contains
             call hdf5_series_write_held(w%line(i)%step_end_tension, eh)
             call hdf5_series_write_held(w%line(i)%step_time, eh)
          end do
+         do k = 1, n_sea_h5
+            call hdf5_series_write_held(w%sea_h5(k), eh)
+         end do
          call write_pending_log(w, eh)
          call flush_h5(w, eh)
          if (has_error(eh)) then
@@ -1206,6 +1343,9 @@ contains
          end do
          deallocate (w%line)
       end if
+      do k = 1, n_sea_h5
+         call hdf5_close_series(w%sea_h5(k), eh)
+      end do
       if (w%h5%id >= 0) then
          call hdf5_close_file(w%h5, eh)
          if (has_error(eh)) then
