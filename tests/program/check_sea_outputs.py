@@ -26,6 +26,10 @@ dynamic_connections.csv) and every step (the _step tables).
 3. Quasi-static: the vessel (TYPE=TABLE) surges 0.2 m slowly (a ramp of 40 s; the cable's
    first period is about 1 s) and holds: the connection tension at the end against the
    static end tension of the cable with end A moved there (a static run), 1e-3.
+4. Restart: input/mooring_waves.inp (the fairlead on the FPSO in a regular wave) with a
+   probe, 24 elements, 2 s, CHECKPOINT=0.5, killed after step 27 and continued
+   (check_restart.py's helpers): every table, the sea tables too, byte for byte, and
+   dynamic.h5's /dynamic/sea to the bit, as an uninterrupted run.
 
 Usage: check_sea_outputs.py RODYN INPUT_DIR WORK_DIR. Exit 0 on success."""
 import csv
@@ -310,9 +314,29 @@ Paper cable, its end A on a vessel surging slowly
     return err <= 1e-3 and abs(t_static - t0) > 100 * abs(t_dyn - t_static)
 
 
+def case_restart(rodyn, input_dir, work):
+    import check_restart as cr
+    work = os.path.join(work, "restart")
+    os.makedirs(work, exist_ok=True)
+    path = cr.deck(input_dir, work, "waves", "mooring_waves.inp",
+                   [(r"ELEMENTS=120", "ELEMENTS=24"),
+                    (r"\*VESSEL,", "*WAVE PROBE, NAME=P1\n10.0, 5.0\n*VESSEL,"),
+                    (r"TIME=<T_END>, OUTPUT INTERVAL=0\.1",
+                     "TIME=2.0, OUTPUT INTERVAL=0.1, CHECKPOINT=0.5")])
+    ref = os.path.join(work, "ref")
+    shutil.rmtree(ref, ignore_errors=True)
+    cr.run(rodyn, [path, "-o", ref])
+    tables = [n for n in os.listdir(ref) if n.startswith(("dynamic_waves", "dynamic_vessels",
+                                                          "dynamic_connections"))]
+    cr.killed_and_continued(rodyn, path, ref, work, "kill27", [27])
+    print(f"restart: sea tables {sorted(tables)}; failures: {cr.FAILURES}")
+    return len(tables) == 6 and not cr.FAILURES
+
+
 def main():
     rodyn, input_dir, work = sys.argv[1:4]
-    ok = case_rao(rodyn, input_dir, work)
+    ok = case_restart(rodyn, input_dir, work)
+    ok = case_rao(rodyn, input_dir, work) and ok
     ok = case_jonswap(rodyn, input_dir, work) and ok
     ok = case_quasi_static(rodyn, input_dir, work) and ok
     if not ok:
