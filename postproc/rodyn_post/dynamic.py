@@ -404,7 +404,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         lines = []
         step_time = np.zeros(0)   # the same in every line group (rodyn writes them alike)
         for key, group in dyn.items():
-            if key in ("time", "log"):
+            if key in ("time", "log", "sea"):
                 continue
             if not isinstance(group, h5py.Group):
                 raise RodynResultsError(f"{path}: {group.name} is not a line group")

@@ -5,7 +5,9 @@ force of each line end fixed to a vessel (dynamic_connections.csv), at the frame
 the `_step` tables, at every time step (step 0: the start).
 
 `read_sea(folder, status, warnings)` returns a `Sea`, or None when the run wrote none of
-these tables (a deck without probes or vessels). Tables are read up to the committed size
+these tables (a deck without probes or vessels). Without the CSV tables (`CSV=NO`) the
+same values are read from dynamic.h5's /dynamic/sea (h5py), up to the frames and steps
+status.txt says were committed. Tables are read up to the committed size
 status.txt gives for them (`committed_bytes.NAME`), like the other tables of a live or
 killed run; a last time with missing rows is dropped with a warning. Column names and
 units come from rodyn_post.schema (the one description of the output).
@@ -71,6 +73,8 @@ def read_sea(folder, status, warnings: list):
     `status`: status.txt as rodyn_post.dynamic reads it (committed sizes), or None."""
     folder = Path(folder)
     if not any((folder / f).is_file() for pair in _FILES.values() for f in pair):
+        if (folder / "dynamic.h5").is_file():
+            return _read_sea_h5(folder / "dynamic.h5", status)
         return None
     out = {}
     for kind, (frame_file, step_file) in _FILES.items():
@@ -134,3 +138,74 @@ def _grouped(path: Path, keys: tuple, with_step: bool, status, warnings: list) -
         n, len(values)) for key in order}
     steps = np.array(step_numbers[:n], dtype=int) if with_step else None
     return np.array(times[:n], dtype=float), data, steps
+
+
+# /dynamic/sea of dynamic.h5: (frame dataset, step dataset, columns per item)
+_H5 = {"waves": ("probe_elevation", "step_probe_elevation", 1),
+       "vessels": ("vessel_motion", "step_vessel_motion", 7),
+       "vessel_load": ("vessel_load", "step_vessel_load", 12),
+       "connections": ("connection_load", "step_connection_load", 13)}
+
+
+def _read_sea_h5(path: Path, status):
+    """The Sea of dynamic.h5's /dynamic/sea (None when it has none): the same columns as
+    the CSV tables (x_m, y_m of a probe from probe_xy); frames and steps cut to those
+    status.txt commits (`frames`, and the steps up to the last committed frame's time)."""
+    import h5py
+
+    from .results import _h5_dataset
+    with h5py.File(path, "r", locking=False) as f:
+        if "dynamic/sea" not in f:
+            return None
+        g = f["dynamic/sea"]
+        time = _h5_dataset(f["dynamic"], "time", path)[...]
+        step_time = _h5_dataset(g, "step_time", path)[...]
+        n_f = len(time)
+        if status and status.get("frames") is not None:
+            n_f = min(n_f, status["frames"])
+        n_s = len(step_time)
+        if n_f < len(time) and n_f > 0:
+            n_s = int(np.count_nonzero(step_time <= time[n_f - 1]))
+        time, step_time = time[:n_f], step_time[:n_s]
+        step = np.arange(n_s)
+
+        def split(attr):
+            text = g.attrs.get(attr, "")
+            text = text.decode() if isinstance(text, bytes) else str(text)
+            return [t for t in text.split(", ") if t]
+
+        def data(name, n):
+            return _h5_dataset(g, name, path)[:n]   # its units checked
+
+        out = {"waves": {}, "vessels": {}, "connections": {}}
+        names = split("probes")
+        if names:
+            xy = _h5_dataset(g, "probe_xy", path)[...]
+            fr, st = data("probe_elevation", n_f), data("step_probe_elevation", n_s)
+            for k, name in enumerate(names):
+                def cols(a, n):
+                    return np.column_stack([np.full(n, xy[k, 0]), np.full(n, xy[k, 1]), a[:, k]])
+                out["waves"][name] = SeaSeries(
+                    key=(name,), columns=header(WAVES_CSV)[2:], time=time,
+                    frames=cols(fr, n_f), step=step, step_time=step_time,
+                    steps=cols(st, n_s))
+        names = split("vessels")
+        if names:
+            m, sm = data("vessel_motion", n_f), data("step_vessel_motion", n_s)
+            ld, sl = data("vessel_load", n_f), data("step_vessel_load", n_s)
+            for k, name in enumerate(names):
+                out["vessels"][name] = SeaSeries(
+                    key=(name,), columns=header(VESSELS_CSV)[2:], time=time,
+                    frames=np.column_stack([m[:, 7 * k:7 * k + 7], ld[:, 12 * k:12 * k + 12]]),
+                    step=step, step_time=step_time,
+                    steps=np.column_stack([sm[:, 7 * k:7 * k + 7], sl[:, 12 * k:12 * k + 12]]))
+        names = split("connections")
+        if names:
+            c, sc = data("connection_load", n_f), data("step_connection_load", n_s)
+            for k, name in enumerate(names):
+                key = tuple(name.split("/"))
+                out["connections"][key] = SeaSeries(
+                    key=key, columns=header(CONNECTIONS_CSV)[4:], time=time,
+                    frames=c[:, 13 * k:13 * k + 13], step=step, step_time=step_time,
+                    steps=sc[:, 13 * k:13 * k + 13])
+    return Sea(probes=out["waves"], vessels=out["vessels"], connections=out["connections"])

@@ -103,6 +103,7 @@ def test_without_sea_tables(sea_run, tmp_path):
     for path in folder.glob("dynamic_*.csv"):
         if any(k in path.name for k in ("waves", "vessels", "connections")):
             path.unlink()
+    (folder / "dynamic.h5").unlink()
     assert load_dynamic(folder).sea is None
 
 
@@ -150,3 +151,29 @@ def test_malformed_table(sea_run, tmp_path):
     path.write_text("".join(lines))
     with pytest.raises(RodynResultsError, match="line 4: not a number"):
         load_dynamic(folder)
+
+
+def test_hdf5_same_as_csv(sea_run, tmp_path):
+    """A run's /dynamic/sea holds the values of the CSV tables, bit for bit; read from it
+    when the CSV tables are absent (CSV=NO)."""
+    folder = tmp_path / "h5only"
+    shutil.copytree(sea_run, folder)
+    for path in folder.glob("dynamic_*.csv"):
+        if any(k in path.name for k in ("waves", "vessels", "connections")):
+            path.unlink()
+    text = (folder / "status.txt").read_text()
+    (folder / "status.txt").write_text("".join(
+        line + "\n" for line in text.splitlines()
+        if not any(k in line for k in ("_waves", "_vessels", "_connections"))))
+    csv_sea = load_dynamic(sea_run).sea
+    h5_sea = load_dynamic(folder).sea
+    for kind in ("probes", "vessels", "connections"):
+        a, b = getattr(csv_sea, kind), getattr(h5_sea, kind)
+        assert set(a) == set(b)
+        for key in a:
+            assert a[key].columns == b[key].columns
+            np.testing.assert_array_equal(a[key].frames, b[key].frames)
+            np.testing.assert_array_equal(a[key].steps, b[key].steps)
+            np.testing.assert_array_equal(a[key].time, b[key].time)
+            np.testing.assert_array_equal(a[key].step_time, b[key].step_time)
+            np.testing.assert_array_equal(a[key].step, b[key].step)

@@ -622,8 +622,7 @@ contains
          call hdf5_write_attribute(h5, g, 'vessels', names(w%vessel_head, 1), err)
          call hdf5_write_attribute(h5, g, 'connections', names(w%conn_head, 3), err)
          if (size(w%probe_head) > 0) then
-            allocate (xy(size(w%probe_head), 2))
-            xy = transpose(w%probe_xy)
+            xy = w%probe_xy     ! (2, np): h5py's (np, 2), a row per probe
             call hdf5_write_dataset(h5, g//'/probe_xy', xy, err)
             call describe_dataset(h5, dynamic_h5, g//'/probe_xy', err)
          end if
@@ -1495,7 +1494,7 @@ contains
 
 
    !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
-   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time' and 'log' used in
+   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time', 'log' and 'sea' used in
    !> /dynamic (deck names are upper case, so this does not happen from a deck).
    pure function group_name(name, i) result(s)
       character(len=*), intent(in) :: name  !< line name
@@ -1504,7 +1503,7 @@ contains
       character(len=16) :: buf
       integer :: k
       s = trim(name)
-      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log') then
+      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log' .or. s == 'sea') then
          write (buf, '(i0)') i
          s = 'line_'//trim(buf)
       end if
