@@ -7,6 +7,8 @@ from: do not edit (tests/program/check_output_schema.py checks that it is up to 
 COLUMNS: {csv file: ((column, unit, meaning), ...)} in the order written.
 DATASETS: {hdf5 file: {path: (units, description)}}, LINE standing for a line's group;
 /environment's datasets are not listed (see rodyn_post.environment).
+STATUS: ((key, unit, meaning), ...) of status.txt in the order written, NAME standing for
+a table's or a deck parameter's name.
 """
 
 COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
@@ -408,6 +410,25 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                            'time of each row of the step_ datasets of '
                                            '/dynamic/sea: 0, then the end of each step'),
                 '/dynamic/time': ('s', 'time of each output frame')}}
+
+STATUS = (('complete', '-', 'true if the analysis reached its end, else false'),
+ ('status', '-', 'one line: complete, or what failed (running while it runs)'),
+ ('load_factor', '-', 'static load factor reached (1 for a complete static run)'),
+ ('increments', '-', 'static load increments converged'),
+ ('iterations', '-', 'Newton iterations of the static analysis'),
+ ('cutbacks', '-', 'static increment halvings'),
+ ('wall_time_s', 's', 'wall time of the solve (static and dynamic)'),
+ ('dynamic', '-', 'true (dynamic runs only, as the keys down to committed_bytes)'),
+ ('time_reached_s', 's', 'last time reached (running: of the last frame written)'),
+ ('steps', '-', 'time steps completed'),
+ ('step_iterations', '-', 'Newton iterations over all steps'),
+ ('step_tangents', '-', 'tangents formed and factorised over all steps'),
+ ('step_cutbacks', '-', 'step halvings in total'),
+ ('frames', '-', 'output frames committed (in the tables and dynamic.h5)'),
+ ('committed_bytes.NAME', 'bytes', 'size of CSV table NAME at the last sync'),
+ ('rodyn_version', '-', 'program version'),
+ ('deck', '-', 'path of the main deck file'),
+ ('parameter.NAME', '-', 'deck parameter NAME as substituted, one key each'))
 
 
 def header(file: str) -> tuple:

@@ -13,7 +13,7 @@ module rodyn_output_schema
    implicit none
    private
    public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
-   public :: schema_dataset
+   public :: schema_dataset, status_keys
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 
@@ -209,6 +209,29 @@ module rodyn_output_schema
       'dynamic_log.csv | Lx | kg m2/s | x of the total angular momentum about the origin', &
       'dynamic_log.csv | Ly | kg m2/s | y of the total angular momentum about the origin', &
       'dynamic_log.csv | Lz | kg m2/s | z of the total angular momentum about the origin']
+
+   !> Every key of status.txt, in the order written: 'status.txt | key | unit | meaning'
+   !> (NAME: one key per table or deck parameter). rodyn_output's output_write_status
+   !> writes them; docs/output.md lists the same keys (check_output_schema.py).
+   character(len=row_len), parameter :: status_keys(*) = [character(len=row_len) :: &
+      'status.txt | complete | - | true if the analysis reached its end, else false', &
+      'status.txt | status | - | one line: complete, or what failed (running while it runs)', &
+      'status.txt | load_factor | - | static load factor reached (1 for a complete static run)', &
+      'status.txt | increments | - | static load increments converged', &
+      'status.txt | iterations | - | Newton iterations of the static analysis', &
+      'status.txt | cutbacks | - | static increment halvings', &
+      'status.txt | wall_time_s | s | wall time of the solve (static and dynamic)', &
+      'status.txt | dynamic | - | true (dynamic runs only, as the keys down to committed_bytes)', &
+      'status.txt | time_reached_s | s | last time reached (running: of the last frame written)', &
+      'status.txt | steps | - | time steps completed', &
+      'status.txt | step_iterations | - | Newton iterations over all steps', &
+      'status.txt | step_tangents | - | tangents formed and factorised over all steps', &
+      'status.txt | step_cutbacks | - | step halvings in total', &
+      'status.txt | frames | - | output frames committed (in the tables and dynamic.h5)', &
+      'status.txt | committed_bytes.NAME | bytes | size of CSV table NAME at the last sync', &
+      'status.txt | rodyn_version | - | program version', &
+      'status.txt | deck | - | path of the main deck file', &
+      'status.txt | parameter.NAME | - | deck parameter NAME as substituted, one key each']
 
    !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
    !> come with environment_items, rodyn_output_common): 'file | path | units |

@@ -16,7 +16,11 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
   4. a run of RODYN (statics, dynamics, water; CSV and HDF5) writes every table of the
      schema with that header; results.h5 and dynamic.h5 hold exactly the datasets of
      the schema (and /environment), each with the attributes `units` and `description`,
-     equal to the schema's.
+     equal to the schema's;
+  5. the keys of status.txt (rodyn_output_schema's status_keys): docs/output.md's key
+     tables (status.txt, of a dynamic run) list exactly them (parameter.NAME in the
+     text), schema.py has them (STATUS), and the run's status.txt writes only them, in
+     their order (NAME: a table's or a parameter's name).
 """
 import pathlib
 import re
@@ -33,6 +37,7 @@ def fail(msg):
 def read_schema(dump):
     out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
     columns, headers, datasets = {}, {}, {}
+    status = []
     for line in out.splitlines():
         kind, *fields = line.split("\t")
         if kind == "COLUMN":
@@ -47,7 +52,62 @@ def read_schema(dump):
             if not description:
                 fail(f"{file} {path}: no description in the schema")
             datasets.setdefault(file, {})[path] = (units, description)
-    return columns, headers, datasets
+        elif kind == "STATUS":
+            key, unit, meaning = fields
+            if not meaning or not unit:
+                fail(f"status.txt {key}: no unit or meaning in the schema")
+            status.append((key, unit, meaning))
+    return columns, headers, datasets, status
+
+
+def status_key_pattern(status):
+    """One regular expression per key of the schema (NAME: any name)."""
+    return [re.compile("^" + re.escape(k).replace("NAME", ".+") + "$") for k, _, _ in status]
+
+
+def check_status(src, status, out):
+    """docs/output.md's status.txt key tables and a run's status.txt against the schema."""
+    text = (src / "docs" / "output.md").read_text()
+    keys = [k for k, _, _ in status]
+    documented = []
+    for heading in ("## status.txt", "### status.txt of a dynamic run"):
+        start = text.index("\n" + heading + "\n")
+        end = text.find("\n#", start + 1)
+        in_table = False
+        for line in text[start:end].splitlines():
+            if line.startswith("| key"):
+                in_table = True
+                continue
+            if in_table and line.startswith("|"):
+                documented += re.findall(r"^\| `([^`]+)`", line)
+            elif in_table:
+                in_table = False
+    documented = [k for k in documented if not k.startswith("-")]
+    missing = [k for k in keys if k not in documented and not k.startswith("parameter.")]
+    extra = [k for k in documented if k not in keys]
+    if missing or extra:
+        fail(f"docs/output.md: status.txt keys differ from the schema: not documented "
+             f"{missing}, not in the schema {extra}")
+    if "`parameter.NAME = text`" not in text:
+        fail("docs/output.md: the key parameter.NAME of status.txt is not documented")
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if tuple(status) != tuple(schema.STATUS):
+        fail("postproc/rodyn_post/schema.py: STATUS differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    patterns = status_key_pattern(status)
+    last = -1
+    written = [line.partition(" = ")[0] for line in (out / "status.txt").read_text()
+               .splitlines()]
+    for key in written:
+        hits = [i for i, p in enumerate(patterns) if p.match(key)]
+        if not hits:
+            fail(f"{out / 'status.txt'}: key {key!r} is not in the schema")
+        if hits[0] < last:
+            fail(f"{out / 'status.txt'}: key {key!r} out of the schema's order")
+        last = hits[0]
+    print(f"status.txt: {len(keys)} keys in the schema, documented; a run writes "
+          f"{len(written)} keys, all of the schema, in its order")
 
 
 def plain_units(units):
@@ -244,13 +304,14 @@ def check_run(src, work, rodyn, headers, datasets):
 def main():
     dump, src, work, rodyn = sys.argv[1:5]
     src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
-    columns, headers, datasets = read_schema(dump)
+    columns, headers, datasets, status = read_schema(dump)
     for file, cols in columns.items():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
     check_docs(src, columns, headers, datasets)
     check_readers(src, columns, datasets)
     check_run(src, work, rodyn, headers, datasets)
+    check_status(src, status, work / "out")
     print("OK")
 
 
