@@ -6,9 +6,11 @@ from: do not edit (tests/program/check_output_schema.py checks that it is up to 
 
 COLUMNS: {csv file: ((column, unit, meaning), ...)} in the order written.
 DATASETS: {hdf5 file: {path: (units, description)}}, LINE standing for a line's group;
-/environment's datasets are not listed (see rodyn_post.environment).
+/environment's datasets are in ENVIRONMENT.
 STATUS: ((key, unit, meaning), ...) of status.txt in the order written, NAME standing for
 a table's or a deck parameter's name.
+ENVIRONMENT: {path: (units, description)} of the /environment datasets of results.h5 and
+dynamic.h5 (units those of environment.csv).
 """
 
 COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
@@ -429,6 +431,25 @@ STATUS = (('complete', '-', 'true if the analysis reached its end, else false'),
  ('rodyn_version', '-', 'program version'),
  ('deck', '-', 'path of the main deck file'),
  ('parameter.NAME', '-', 'deck parameter NAME as substituted, one key each'))
+
+ENVIRONMENT = {'/environment/surface_z': ('m', 'z of the still water level'),
+ '/environment/depth': ('m', 'water depth at x = y = 0'),
+ '/environment/density': ('kg/m3', 'sea water density'),
+ '/environment/current_ramp': ('s', 'ramp-in duration of the current in dynamics'),
+ '/environment/current_z': ('m', 'levels of the current profile, increasing'),
+ '/environment/current_speed': ('m/s',
+                                'current speed at the levels (linear between, constant '
+                                'beyond)'),
+ '/environment/current_heading': ('deg',
+                                  'direction the current flows towards, from +x towards '
+                                  '+y'),
+ '/environment/seabed_slope': ('deg', 'angle of the seabed plane'),
+ '/environment/seabed_slope_dir': ('deg', 'heading of steepest ascent, from +x towards +y'),
+ '/environment/seabed_stiffness': ('N/m3', 'normal stiffness per contact area'),
+ '/environment/seabed_damping': ('Pa s/m', 'normal damping per contact area'),
+ '/environment/seabed_mu_axial': ('-', 'axial friction coefficient'),
+ '/environment/seabed_mu_lateral': ('-', 'lateral friction coefficient'),
+ '/environment/seabed_v_mob': ('m/s', 'friction mobilisation velocity')}
 
 
 def header(file: str) -> tuple:

@@ -13,7 +13,7 @@ module rodyn_output_schema
    implicit none
    private
    public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
-   public :: schema_dataset, status_keys
+   public :: schema_dataset, status_keys, environment_datasets, schema_environment
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 
@@ -233,6 +233,40 @@ module rodyn_output_schema
       'status.txt | deck | - | path of the main deck file', &
       'status.txt | parameter.NAME | - | deck parameter NAME as substituted, one key each']
 
+   !> The datasets of /environment in results.h5 and dynamic.h5 (with *WATER; current_*
+   !> with a current, seabed_* with a seabed; written by rodyn_output_common's
+   !> write_environment_h5, their units those of environment.csv): 'files | path | units
+   !> | description'.
+   character(len=row_len), parameter :: environment_datasets(*) = [character(len=row_len) :: &
+      'results.h5, dynamic.h5 | /environment/surface_z | m | '// &
+         'z of the still water level', &
+      'results.h5, dynamic.h5 | /environment/depth | m | '// &
+         'water depth at x = y = 0', &
+      'results.h5, dynamic.h5 | /environment/density | kg/m3 | '// &
+         'sea water density', &
+      'results.h5, dynamic.h5 | /environment/current_ramp | s | '// &
+         'ramp-in duration of the current in dynamics', &
+      'results.h5, dynamic.h5 | /environment/current_z | m | '// &
+         'levels of the current profile, increasing', &
+      'results.h5, dynamic.h5 | /environment/current_speed | m/s | '// &
+         'current speed at the levels (linear between, constant beyond)', &
+      'results.h5, dynamic.h5 | /environment/current_heading | deg | '// &
+         'direction the current flows towards, from +x towards +y', &
+      'results.h5, dynamic.h5 | /environment/seabed_slope | deg | '// &
+         'angle of the seabed plane', &
+      'results.h5, dynamic.h5 | /environment/seabed_slope_dir | deg | '// &
+         'heading of steepest ascent, from +x towards +y', &
+      'results.h5, dynamic.h5 | /environment/seabed_stiffness | N/m3 | '// &
+         'normal stiffness per contact area', &
+      'results.h5, dynamic.h5 | /environment/seabed_damping | Pa s/m | '// &
+         'normal damping per contact area', &
+      'results.h5, dynamic.h5 | /environment/seabed_mu_axial | - | '// &
+         'axial friction coefficient', &
+      'results.h5, dynamic.h5 | /environment/seabed_mu_lateral | - | '// &
+         'lateral friction coefficient', &
+      'results.h5, dynamic.h5 | /environment/seabed_v_mob | m/s | '// &
+         'friction mobilisation velocity']
+
    !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
    !> come with environment_items, rodyn_output_common): 'file | path | units |
    !> description', LINE standing for a line's group; written as the attributes `units`
@@ -410,6 +444,21 @@ contains
          end if
       end do
    end function schema_dataset
+
+   !> The row of environment_datasets for dataset `path` ('/environment/depth'); ''
+   !> when none.
+   pure function schema_environment(path) result(row)
+      character(len=*), intent(in) :: path   !< dataset path
+      character(len=:), allocatable :: row   !< the row, or ''
+      integer :: k
+      row = ''
+      do k = 1, size(environment_datasets)
+         if (schema_field(environment_datasets(k), 2) == path) then
+            row = trim(environment_datasets(k))
+            return
+         end if
+      end do
+   end function schema_environment
 
    !> The header row of CSV table `file`: its column names, comma-separated, in order
    !> ('' for a file the schema does not know).

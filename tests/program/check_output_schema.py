@@ -20,7 +20,11 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
   5. the keys of status.txt (rodyn_output_schema's status_keys): docs/output.md's key
      tables (status.txt, of a dynamic run) list exactly them (parameter.NAME in the
      text), schema.py has them (STATUS), and the run's status.txt writes only them, in
-     their order (NAME: a table's or a parameter's name).
+     their order (NAME: a table's or a parameter's name);
+  6. the /environment datasets (environment_datasets): the run's results.h5 and
+     dynamic.h5 (a deck with a current and a seabed) write exactly them with the
+     schema's units and description; docs/output.md's Environment table gives each the
+     same unit (current_z as current_z_<k>); schema.py has them (ENVIRONMENT).
 """
 import pathlib
 import re
@@ -38,6 +42,7 @@ def read_schema(dump):
     out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
     columns, headers, datasets = {}, {}, {}
     status = []
+    environment = {}
     for line in out.splitlines():
         kind, *fields = line.split("\t")
         if kind == "COLUMN":
@@ -57,7 +62,44 @@ def read_schema(dump):
             if not meaning or not unit:
                 fail(f"status.txt {key}: no unit or meaning in the schema")
             status.append((key, unit, meaning))
-    return columns, headers, datasets, status
+        elif kind == "ENVIRONMENT":
+            files, path, units, description = fields
+            if files != "results.h5, dynamic.h5" or not description:
+                fail(f"{path}: files {files!r} or no description in the schema")
+            environment[path] = (units, description)
+    return columns, headers, datasets, status, environment
+
+
+def check_environment(src, environment, out):
+    """The /environment datasets of a run and of docs/output.md against the schema."""
+    import h5py
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if environment != schema.ENVIRONMENT:
+        fail("postproc/rodyn_post/schema.py: ENVIRONMENT differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    for name in ("results.h5", "dynamic.h5"):
+        with h5py.File(out / name, "r") as f:
+            found = {"/environment/" + k: (str(d.attrs["units"]), str(d.attrs["description"]))
+                     for k, d in f["environment"].items()}
+        if found != environment:
+            fail(f"{out / name}: /environment differs from the schema: not written "
+                 f"{set(environment) - set(found)}, not in the schema "
+                 f"{set(found) - set(environment)}, other attributes "
+                 f"{[k for k in found if k in environment and found[k] != environment[k]]}")
+    text = (src / "docs" / "output.md").read_text()
+    start = text.index("\n## Environment\n")
+    table = {}
+    for line in text[start:text.index("\n## ", start + 1)].splitlines():
+        m = re.match(r"^\| `([a-z_]+?)(_<k>)?`\s*\|\s*([^|]+?)\s*\|", line)
+        if m:
+            table[m.group(1)] = m.group(3)
+    other = {p: u for p, (u, _) in environment.items()
+             if table.get(p.rsplit("/", 1)[1]) != u}
+    if other:
+        fail(f"docs/output.md, Environment: units differ from the schema's: {other}")
+    print(f"/environment: {len(environment)} datasets in the schema, written with its "
+          "units and descriptions in results.h5 and dynamic.h5, documented")
 
 
 def status_key_pattern(status):
@@ -252,6 +294,7 @@ def check_run(src, work, rodyn, headers, datasets):
     text = text.replace("HDF5=NO", "HDF5=YES")
     # a wave probe and the fairlead on a vessel: the sea and vessel tables are written
     rao = (src / "input" / "fpso_rao.csv").resolve()
+    text = text.replace("*SEABED,", "*CURRENT\n0, 0.5, 20\n-100, 0.1, 0\n*SEABED,")
     text = text.replace("*STATIC,", "*WAVE PROBE, NAME=P1\n0, 0\n"
                         f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
                         "0.0, 0.0, 0.0, 30.0\n"
@@ -304,7 +347,7 @@ def check_run(src, work, rodyn, headers, datasets):
 def main():
     dump, src, work, rodyn = sys.argv[1:5]
     src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
-    columns, headers, datasets, status = read_schema(dump)
+    columns, headers, datasets, status, environment = read_schema(dump)
     for file, cols in columns.items():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
@@ -312,6 +355,7 @@ def main():
     check_readers(src, columns, datasets)
     check_run(src, work, rodyn, headers, datasets)
     check_status(src, status, work / "out")
+    check_environment(src, environment, work / "out")
     print("OK")
 
 
