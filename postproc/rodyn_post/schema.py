@@ -11,6 +11,8 @@ STATUS: ((key, unit, meaning), ...) of status.txt in the order written, NAME sta
 a table's or a deck parameter's name.
 ENVIRONMENT: {path: (units, description)} of the /environment datasets of results.h5 and
 dynamic.h5 (units those of environment.csv).
+ATTRIBUTES: {hdf5 file: {'object:attribute': (unit, meaning)}} of the groups' attributes
+(LINE a line's group, NAME a deck parameter).
 """
 
 COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
@@ -450,6 +452,54 @@ ENVIRONMENT = {'/environment/surface_z': ('m', 'z of the still water level'),
  '/environment/seabed_mu_axial': ('-', 'axial friction coefficient'),
  '/environment/seabed_mu_lateral': ('-', 'lateral friction coefficient'),
  '/environment/seabed_v_mob': ('m/s', 'friction mobilisation velocity')}
+
+ATTRIBUTES = {'results.h5': {'/:program': ('-', 'program name: rodyn'),
+                '/:version': ('-', 'program version'),
+                '/:deck_file': ('-', 'path of the main deck file'),
+                '/:title': ('-', '*HEADING title'),
+                '/:units': ('-', 'the unit system: SI (m, s, kg, N, N m, rad)'),
+                '/:complete': ('-', '1 if the analysis reached its end, else 0'),
+                '/:status': ('-',
+                             'one line: complete, or what failed (running while it runs)'),
+                '/static:load_factor': ('-', 'static load factor reached'),
+                '/static:increments': ('-', 'load increments converged'),
+                '/static:iterations': ('-', 'Newton iterations in total'),
+                '/static:cutbacks': ('-', 'increment halvings'),
+                '/static:wall_time_s': ('s', 'solve wall time'),
+                '/static/LINE:name': ('-', 'the line name'),
+                '/static/LINE:touchdown_s': ('m', 'largest S on the seabed; -1 when none'),
+                '/static/LINE/reactions:end_held': ('-',
+                                                    '1 where end A, B is held, else 0'),
+                '/environment:seabed': ('-', '1 when a seabed is modelled, else 0'),
+                '/parameters:NAME': ('-', 'deck parameter NAME as used (number or text)')},
+ 'dynamic.h5': {'/:program': ('-', 'program name: rodyn'),
+                '/:version': ('-', 'program version'),
+                '/:deck_file': ('-', 'path of the main deck file'),
+                '/:title': ('-', '*HEADING title'),
+                '/:units': ('-', 'the unit system: SI (m, s, kg, N, N m, rad)'),
+                '/:complete': ('-', '1 if the analysis reached its end, else 0'),
+                '/:status': ('-',
+                             'one line: complete, or what failed (running while it runs)'),
+                '/:scheme': ('-', 'time integration scheme (EMC, ...)'),
+                '/:dt': ('s', '*DYNAMIC DT'),
+                '/dynamic:duration_s': ('s', '*DYNAMIC TIME'),
+                '/dynamic:output_interval_s': ('s', '*DYNAMIC OUTPUT INTERVAL'),
+                '/dynamic:frames': ('-', 'frames written (at close)'),
+                '/dynamic:steps': ('-', 'time steps completed (at close)'),
+                '/dynamic:time_reached_s': ('s', 'last time reached (at close)'),
+                '/dynamic:step_iterations': ('-', 'Newton iterations over all steps'),
+                '/dynamic:step_tangents': ('-', 'tangents formed over all steps'),
+                '/dynamic:step_cutbacks': ('-', 'step halvings in total'),
+                '/dynamic:wall_time_s': ('s', 'wall time of the run (at close)'),
+                '/dynamic/LINE:name': ('-', 'the line name'),
+                '/dynamic/LINE/reactions:end_held': ('-',
+                                                     '1 where end A, B is held, else 0'),
+                '/dynamic/LINE/step_reactions:end_held': ('-', 'as reactions'),
+                '/dynamic/sea:probes': ('-', 'names of the probes, comma-separated'),
+                '/dynamic/sea:vessels': ('-', 'names of the vessels, comma-separated'),
+                '/dynamic/sea:connections': ('-', 'VESSEL/LINE/END of each connection'),
+                '/environment:seabed': ('-', '1 when a seabed is modelled, else 0'),
+                '/parameters:NAME': ('-', 'deck parameter NAME as used (number or text)')}}
 
 
 def header(file: str) -> tuple:

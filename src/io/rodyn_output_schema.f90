@@ -14,6 +14,7 @@ module rodyn_output_schema
    private
    public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
    public :: schema_dataset, status_keys, environment_datasets, schema_environment
+   public :: output_attributes
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 
@@ -266,6 +267,55 @@ module rodyn_output_schema
          'lateral friction coefficient', &
       'results.h5, dynamic.h5 | /environment/seabed_v_mob | m/s | '// &
          'friction mobilisation velocity']
+
+   !> The attributes of the groups of results.h5 and dynamic.h5 (and the end_held of
+   !> reactions): 'file | object:attribute | unit | meaning', LINE standing for a line's
+   !> group, NAME for a deck parameter (the `units` and `description` of each dataset
+   !> are those of output_datasets).
+   character(len=row_len), parameter :: output_attributes(*) = [character(len=row_len) :: &
+      'results.h5 | /:program | - | program name: rodyn', &
+      'results.h5 | /:version | - | program version', &
+      'results.h5 | /:deck_file | - | path of the main deck file', &
+      'results.h5 | /:title | - | *HEADING title', &
+      'results.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
+      'results.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
+      'results.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'results.h5 | /static:load_factor | - | static load factor reached', &
+      'results.h5 | /static:increments | - | load increments converged', &
+      'results.h5 | /static:iterations | - | Newton iterations in total', &
+      'results.h5 | /static:cutbacks | - | increment halvings', &
+      'results.h5 | /static:wall_time_s | s | solve wall time', &
+      'results.h5 | /static/LINE:name | - | the line name', &
+      'results.h5 | /static/LINE:touchdown_s | m | largest S on the seabed; -1 when none', &
+      'results.h5 | /static/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
+      'results.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
+      'results.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)', &
+      'dynamic.h5 | /:program | - | program name: rodyn', &
+      'dynamic.h5 | /:version | - | program version', &
+      'dynamic.h5 | /:deck_file | - | path of the main deck file', &
+      'dynamic.h5 | /:title | - | *HEADING title', &
+      'dynamic.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
+      'dynamic.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
+      'dynamic.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'dynamic.h5 | /:scheme | - | time integration scheme (EMC, ...)', &
+      'dynamic.h5 | /:dt | s | *DYNAMIC DT', &
+      'dynamic.h5 | /dynamic:duration_s | s | *DYNAMIC TIME', &
+      'dynamic.h5 | /dynamic:output_interval_s | s | *DYNAMIC OUTPUT INTERVAL', &
+      'dynamic.h5 | /dynamic:frames | - | frames written (at close)', &
+      'dynamic.h5 | /dynamic:steps | - | time steps completed (at close)', &
+      'dynamic.h5 | /dynamic:time_reached_s | s | last time reached (at close)', &
+      'dynamic.h5 | /dynamic:step_iterations | - | Newton iterations over all steps', &
+      'dynamic.h5 | /dynamic:step_tangents | - | tangents formed over all steps', &
+      'dynamic.h5 | /dynamic:step_cutbacks | - | step halvings in total', &
+      'dynamic.h5 | /dynamic:wall_time_s | s | wall time of the run (at close)', &
+      'dynamic.h5 | /dynamic/LINE:name | - | the line name', &
+      'dynamic.h5 | /dynamic/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
+      'dynamic.h5 | /dynamic/LINE/step_reactions:end_held | - | as reactions', &
+      'dynamic.h5 | /dynamic/sea:probes | - | names of the probes, comma-separated', &
+      'dynamic.h5 | /dynamic/sea:vessels | - | names of the vessels, comma-separated', &
+      'dynamic.h5 | /dynamic/sea:connections | - | VESSEL/LINE/END of each connection', &
+      'dynamic.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
+      'dynamic.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)']
 
    !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
    !> come with environment_items, rodyn_output_common): 'file | path | units |

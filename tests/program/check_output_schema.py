@@ -24,7 +24,9 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
   6. the /environment datasets (environment_datasets): the run's results.h5 and
      dynamic.h5 (a deck with a current and a seabed) write exactly them with the
      schema's units and description; docs/output.md's Environment table gives each the
-     same unit (current_z as current_z_<k>); schema.py has them (ENVIRONMENT).
+     same unit (current_z as current_z_<k>); schema.py has them (ENVIRONMENT);
+  7. the attributes of groups (and end_held) of the run's results.h5 and dynamic.h5 are
+     exactly those of output_attributes (schema.py: ATTRIBUTES).
 """
 import pathlib
 import re
@@ -42,7 +44,7 @@ def read_schema(dump):
     out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
     columns, headers, datasets = {}, {}, {}
     status = []
-    environment = {}
+    environment, attributes = {}, {}
     for line in out.splitlines():
         kind, *fields = line.split("\t")
         if kind == "COLUMN":
@@ -67,7 +69,39 @@ def read_schema(dump):
             if files != "results.h5, dynamic.h5" or not description:
                 fail(f"{path}: files {files!r} or no description in the schema")
             environment[path] = (units, description)
-    return columns, headers, datasets, status, environment
+        elif kind == "ATTRIBUTE":
+            file, name, unit, meaning = fields
+            if not meaning or not unit or ":" not in name:
+                fail(f"{file} {name}: no unit or meaning, or not object:attribute")
+            attributes.setdefault(file, {})[name] = (unit, meaning)
+    return columns, headers, datasets, status, environment, attributes
+
+
+def check_attributes(src, attributes, out):
+    """The attributes of the run's HDF5 files against the schema's."""
+    import h5py
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if attributes != schema.ATTRIBUTES:
+        fail("postproc/rodyn_post/schema.py: ATTRIBUTES differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    for name in ("results.h5", "dynamic.h5"):
+        found = set()
+
+        def visit(path, obj):
+            for a in obj.attrs:
+                if isinstance(obj, h5py.Dataset) and a in ("units", "description"):
+                    continue
+                key = re.sub(r"^/(static|dynamic)/LEG(/|$)", r"/\1/LINE\2", path)
+                found.add(f"{key}:{'NAME' if key == '/parameters' else a}")
+        with h5py.File(out / name, "r") as f:
+            visit("/", f)
+            f.visititems(lambda p, o: visit("/" + p, o))
+        if found != set(attributes[name]):
+            fail(f"{out / name}: attributes differ from the schema: not written "
+                 f"{set(attributes[name]) - found}, not in the schema "
+                 f"{found - set(attributes[name])}")
+        print(f"{name}: its {len(found)} attributes are the schema's")
 
 
 def check_environment(src, environment, out):
@@ -347,7 +381,7 @@ def check_run(src, work, rodyn, headers, datasets):
 def main():
     dump, src, work, rodyn = sys.argv[1:5]
     src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
-    columns, headers, datasets, status, environment = read_schema(dump)
+    columns, headers, datasets, status, environment, attributes = read_schema(dump)
     for file, cols in columns.items():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
@@ -356,6 +390,7 @@ def main():
     check_run(src, work, rodyn, headers, datasets)
     check_status(src, status, work / "out")
     check_environment(src, environment, work / "out")
+    check_attributes(src, attributes, work / "out")
     print("OK")
 
 
