@@ -25,7 +25,13 @@ from: do not edit (tests/program/check_output_schema.py checks that it is up to 
 
 COLUMNS: {csv file: ((column, unit, meaning), ...)} in the order written.
 DATASETS: {hdf5 file: {path: (units, description)}}, LINE standing for a line's group;
-/environment's datasets are not listed (see rodyn_post.environment).
+/environment's datasets are in ENVIRONMENT.
+STATUS: ((key, unit, meaning), ...) of status.txt in the order written, NAME standing for
+a table's or a deck parameter's name.
+ENVIRONMENT: {path: (units, description)} of the /environment datasets of results.h5 and
+dynamic.h5 (units those of environment.csv).
+ATTRIBUTES: {hdf5 file: {'object:attribute': (unit, meaning)}} of the groups' attributes
+(LINE a line's group, NAME a deck parameter).
 """
 '''
 
@@ -69,8 +75,19 @@ def generate():
     for file, path, units, description in fortran_rows(text, "output_datasets"):
         datasets.setdefault(file, {})[path] = (units, description)
     columns = {k: tuple(v) for k, v in columns.items()}
+    attributes = {}
+    for file, name, unit, meaning in fortran_rows(text, "output_attributes"):
+        attributes.setdefault(file, {})[name] = (unit, meaning)
+    environment = {path: (units, description) for _, path, units, description
+                   in fortran_rows(text, "environment_datasets")}
+    status = tuple((key, unit, meaning)
+                   for _, key, unit, meaning in fortran_rows(text, "status_keys"))
     body = ("\nCOLUMNS = " + pprint.pformat(columns, width=92, sort_dicts=False) +
-            "\n\nDATASETS = " + pprint.pformat(datasets, width=92, sort_dicts=False) + "\n")
+            "\n\nDATASETS = " + pprint.pformat(datasets, width=92, sort_dicts=False) +
+            "\n\nSTATUS = " + pprint.pformat(status, width=92) +
+            "\n\nENVIRONMENT = " + pprint.pformat(environment, width=92, sort_dicts=False) +
+            "\n\nATTRIBUTES = " + pprint.pformat(attributes, width=92, sort_dicts=False) +
+            "\n")
     return HEAD + body + TAIL
 
 

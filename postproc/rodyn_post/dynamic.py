@@ -36,6 +36,7 @@ from .results import _h5_attr, _h5_dataset, _read_key_values
 from .results import _read_status as _read_static_status
 from .results import check_header, water_defaults
 from .schema import header
+from .sea import read_sea
 
 H5_FILE = "dynamic.h5"
 STATUS_FILE = "status.txt"
@@ -217,6 +218,7 @@ class DynamicResults:
     environment: object = field(default=None)  # environment.Environment; None: dry
     step_time: np.ndarray = field(default_factory=lambda: np.zeros(0))
     # (ns1,) s, times of the support forces of every step: 0, then each step's end
+    sea: object = field(default=None)  # sea.Sea: probes, vessels, connections; None: none
 
     def line(self, name: str) -> LineDynamic:
         """The line called `name` (KeyError if there is none)."""
@@ -269,9 +271,23 @@ def load_dynamic(path) -> DynamicResults:
     """Read the dynamic results in folder `path` (or in the dynamic.h5 file `path`).
 
     dynamic.h5 is used when present, unless status.txt shows that it was left by an
-    earlier run (other step counters); otherwise the CSV tables.
+    earlier run (other step counters); otherwise the CSV tables. The sea and vessel
+    tables (dynamic_waves.csv, dynamic_vessels.csv, dynamic_connections.csv and their
+    _step tables; rodyn_post.sea) are read from the folder when there, into `sea`.
     """
-    path = Path(path)
+    results = _load_dynamic(Path(path))
+    folder = Path(path) if Path(path).is_dir() else Path(path).parent
+    status_path = folder / STATUS_FILE
+    warnings = list(results.warnings)
+    status = _read_status(status_path) if status_path.is_file() else None
+    sea = read_sea(folder, status, warnings)
+    if sea is None:
+        return results
+    return replace(results, sea=sea, warnings=tuple(warnings))
+
+
+def _load_dynamic(path: Path) -> DynamicResults:
+    """load_dynamic without the sea tables."""
     if path.is_file():
         if path.suffix != ".h5":
             raise RodynResultsError(f"{path}: expected a results folder or a dynamic.h5 file")
@@ -388,7 +404,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         lines = []
         step_time = np.zeros(0)   # the same in every line group (rodyn writes them alike)
         for key, group in dyn.items():
-            if key in ("time", "log"):
+            if key in ("time", "log", "sea"):
                 continue
             if not isinstance(group, h5py.Group):
                 raise RodynResultsError(f"{path}: {group.name} is not a line group")

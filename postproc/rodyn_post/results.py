@@ -266,7 +266,7 @@ def h5_units_checked(data, path):
     if file is None or "units" not in data.attrs:
         return data
     key = data.name
-    if len(parts) == 4 and parts[2] != "log":
+    if len(parts) == 4 and parts[2] not in ("log", "sea"):
         key = f"/{parts[1]}/LINE/{parts[3]}"
     known = DATASETS[file].get(key)
     units = data.attrs["units"]

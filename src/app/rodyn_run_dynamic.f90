@@ -21,7 +21,8 @@ module rodyn_run_dynamic
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
                                    dynamic_output_frame, dynamic_output_step, &
                                    dynamic_output_close, dynamic_output_ends_step, &
-                                   dynamic_output_mark
+                                   dynamic_output_mark, dynamic_output_sea
+   use rodyn_sea_output, only: sea_scene_t, sea_values_t, sea_scene_build, sea_values
    implicit none
    private
    public :: run_dynamic, dynamic_not_available, stderr_is_terminal
@@ -60,6 +61,8 @@ module rodyn_run_dynamic
    integer :: k_pend = 0
    logical :: pending = .false., have_back = .false., frame_waiting = .false.
    logical :: show_progress = .false.
+   type(sea_scene_t) :: scene      !< probes, vessels and connections written (if any)
+   type(sea_values_t) :: sea_now   !< their values at the last time written
    integer(kind=8) :: clock0, clock_last, clock_rate
 
 contains
@@ -120,15 +123,18 @@ contains
          call apply_initial_velocities(model, mesh, state)
       start_state = state
       call dynamics_setup(prob, model, mesh, state)
+      call sea_scene_build(model, mesh, prob%x_start, scene)
+      sea_now = sea_values_t()
       call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
                          prob%water)
       if (present(resume)) then
-         call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark)
+         call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark, &
+                                  sea=scene)
          if (.not. has_error(err)) call restore(resume)
       else
          ! a checkpoint of an earlier run in this folder no longer fits its files
          call remove_file(path_join(dir, checkpoint_file))
-         call dynamic_output_open(writer, dir, model, frame_lines, err)
+         call dynamic_output_open(writer, dir, model, frame_lines, err, sea=scene)
       end if
       if (has_error(err)) then
          ! status.txt says so (it must not keep the static run's complete = true)
@@ -255,6 +261,10 @@ contains
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
                             frame_lines, prob%water)
+         if (scene%active) then
+            call sea_values(scene, ctx_model, prob%water%field, t, r_start, sea_now)
+            call dynamic_output_sea(writer, 0, t, sea_now, .true., err)
+         end if
          call dynamic_output_ends_step(writer, 0, t, end_forces(prob, r_start), err)
          call dynamic_output_frame(writer, t, frame_lines, err)
       end if
@@ -290,6 +300,10 @@ contains
       end if
       pending = .false.
       reaction = end_forces(prob, r_frame)
+      if (scene%active) then
+         call sea_values(scene, ctx_model, prob%water%field, t_pend, r_frame, sea_now)
+         call dynamic_output_sea(writer, k_pend, t_pend, sea_now, frame_waiting, err)
+      end if
       call dynamic_output_ends_step(writer, k_pend, t_pend, reaction, err)
       if (.not. frame_waiting) return
       do l = 1, size(frame_lines)

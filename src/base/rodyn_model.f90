@@ -200,6 +200,10 @@ module rodyn_model
       real(wp), allocatable :: heading(:) !< (nw) direction of travel, from +x towards +y
                                           !< [rad] (deg in the deck)
       real(wp), allocatable :: phase(:)   !< (nw) phase phi [rad] (deg in the deck)
+      !> wave probes (*WAVE PROBE): points whose elevation is written with the frames
+      !> and every step (docs/output.md, dynamic_waves.csv)
+      character(len=name_len), allocatable :: probe_name(:) !< (np) names
+      real(wp), allocatable :: probe_xy(:, :)  !< (2, np) x, y of each probe, global [m]
    end type waves_t
 
    !> A node constraint (*BOUNDARY).

@@ -166,7 +166,8 @@ contains
       call read_state('/now_', ck%now)
       call hdf5_close_file(h5, e)
       if (.not. has_error(e)) then
-         if (size(reals) /= n_reals .or. size(ints) /= n_ints .or. size(bytes) /= 6) &
+         if (size(reals) /= n_reals .or. size(ints) /= n_ints .or. &
+             size(bytes) /= size(ck%mark%csv_bytes)) &
             call set_error(e, stat_io, 'wrong sizes')
       end if
       if (has_error(e)) then

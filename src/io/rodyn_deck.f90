@@ -40,7 +40,8 @@ module rodyn_deck
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
-   use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings
+   use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings, &
+                               read_wave_probe_card
    implicit none
    private
    public :: deck_read
@@ -206,6 +207,8 @@ contains
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
             call read_wave_card(deck, ic, model, err)
+         case ('WAVE PROBE')
+            call read_wave_probe_card(deck, ic, model, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &

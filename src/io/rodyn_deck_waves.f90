@@ -12,13 +12,14 @@ module rodyn_deck_waves
                                card_get_real, card_get_int, card_get_choice, &
                                card_check_data, card_data_table, card_data_error, &
                                card_find_param, card_get_table, card_file_error, &
-                               real_str, int_str, param_len
+                               real_str, int_str, param_len, card_get_name, &
+                               card_data_reals
    use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components
    implicit none
    private
-   public :: read_wave_card, validate_waves, wave_warnings
+   public :: read_wave_card, validate_waves, wave_warnings, read_wave_probe_card
 
    real(wp), parameter :: deg = pi/180.0_wp        !< one degree [rad]
    real(wp), parameter :: steep_deep = 1.0_wp/7.0_wp !< breaking limit of H/L [-]
@@ -310,13 +311,67 @@ contains
       end do
    end subroutine refuse
 
+   !> *WAVE PROBE, NAME=: one data line x, y [m] (global): a point whose wave elevation
+   !> is written with the frames and every step (dynamic_waves.csv, docs/output.md).
+   !> Names are unique among the probes; the deck needs *WAVE (validate_waves).
+   subroutine read_wave_probe_card(deck, ic, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *WAVE PROBE card
+      type(model_t), intent(inout) :: model   !< model: one probe appended
+      type(error_t), intent(inout) :: err     !< status
+      character(len=:), allocatable :: name
+      character(len=len(model%waves%probe_name)), allocatable :: names(:)
+      real(wp) :: xy(2)
+      real(wp), allocatable :: pts(:, :)
+      integer :: n, j
+
+      associate (card => deck%cards(ic), wv => model%waves)
+         call card_check_params(card, [character(len=param_len) :: 'NAME'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         if (len(name) > len(names)) then
+            call card_error(card, 'NAME '''//name//''' is longer than '// &
+                            int_str(len(names))//' characters', err)
+            return
+         end if
+         call card_check_data(card, 1, 1, err, 'x, y')
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 2, xy, err, 'x, y')
+         if (has_error(err)) return
+         n = 0
+         if (allocated(wv%probe_name)) n = size(wv%probe_name)
+         do j = 1, n
+            if (wv%probe_name(j) /= name) cycle
+            call card_error(card, 'probe '''//name//''' is defined twice', err)
+            return
+         end do
+         allocate (names(n + 1), pts(2, n + 1))
+         if (n > 0) then
+            names(1:n) = wv%probe_name
+            pts(:, 1:n) = wv%probe_xy
+         end if
+         names(n + 1) = name
+         pts(:, n + 1) = xy
+         call move_alloc(names, wv%probe_name)
+         call move_alloc(pts, wv%probe_xy)
+      end associate
+   end subroutine read_wave_probe_card
+
    !> Whole-deck check: waves need *WATER (its DEPTH enters the dispersion relation;
-   !> validate_water has made gravity point along -z).
+   !> validate_water has made gravity point along -z); a *WAVE PROBE needs *WAVE.
    subroutine validate_waves(deck, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(model_t), intent(in) :: model      !< the model read
       type(error_t), intent(inout) :: err     !< status
       integer :: ic
+      if (.not. model%waves%present) then
+         do ic = 1, deck%n_cards
+            if (deck%cards(ic)%keyword /= 'WAVE PROBE') cycle
+            call card_error(deck%cards(ic), 'a probe needs waves (no *WAVE in the deck)', err)
+            return
+         end do
+      end if
       if (.not. model%waves%present .or. model%water%present) return
       do ic = 1, deck%n_cards
          if (deck%cards(ic)%keyword /= 'WAVE') cycle

@@ -9,8 +9,8 @@ module rodyn_output_common
    use rodyn_results, only: line_result_t, run_summary_t
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_dataset, &
       hdf5_create_group
-   use rodyn_error, only: error_t, set_error, stat_io
-   use rodyn_output_schema, only: schema_dataset, schema_field
+   use rodyn_error, only: error_t, set_error, stat_io, has_error
+   use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment
    use rodyn_outfile, only: path_join
    implicit none
    private
@@ -264,23 +264,40 @@ contains
                index(it%key, 'current_z_') == 1 .or. index(it%key, 'current_speed_') == 1 &
                .or. index(it%key, 'current_heading_') == 1) cycle
             call hdf5_write_dataset(h5, g//'/'//it%key, it%value, err)
-            call describe(h5, g//'/'//it%key, it%unit, it%description, err)
+            call describe_environment(g//'/'//it%key, it%unit)
          end associate
       end do
       associate (w => model%water)
          if (allocated(w%cur_z)) then
             if (size(w%cur_z) > 0) then
                call hdf5_write_dataset(h5, g//'/current_z', w%cur_z, err)
-               call describe(h5, g//'/current_z', 'm', &
-                  'levels of the current profile, increasing', err)
+               call describe_environment(g//'/current_z', 'm')
                call hdf5_write_dataset(h5, g//'/current_speed', w%cur_speed, err)
-               call describe(h5, g//'/current_speed', 'm/s', &
-                  'current speed at the levels (linear between, constant beyond)', err)
+               call describe_environment(g//'/current_speed', 'm/s')
                call hdf5_write_dataset(h5, g//'/current_heading', w%cur_heading*deg, err)
-               call describe(h5, g//'/current_heading', 'deg', &
-                  'direction the current flows towards, from +x towards +y', err)
+               call describe_environment(g//'/current_heading', 'deg')
             end if
          end if
       end associate
+   contains
+      !> The units and description of rodyn_output_schema's environment_datasets; a
+      !> dataset it does not list, or with other units than environment.csv's, is an
+      !> error (the writers and the schema out of step).
+      subroutine describe_environment(path, unit)
+         character(len=*), intent(in) :: path   !< dataset path
+         character(len=*), intent(in) :: unit   !< its unit in environment.csv
+         character(len=:), allocatable :: row
+         if (has_error(err)) return
+         row = schema_environment(path)
+         if (len(row) == 0) then
+            call set_error(err, stat_io, 'write_environment_h5: '//path// &
+                           ' is not in rodyn_output_schema')
+         else if (schema_field(row, 3) /= unit) then
+            call set_error(err, stat_io, 'write_environment_h5: '//path//' in '//unit// &
+                           ', in '//schema_field(row, 3)//' in rodyn_output_schema')
+         else
+            call describe(h5, path, unit, schema_field(row, 4), err)
+         end if
+      end subroutine describe_environment
    end subroutine write_environment_h5
 end module rodyn_output_common

@@ -49,6 +49,7 @@ module rodyn_output_dynamic
       hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment, committed_t
    use rodyn_output_schema, only: schema_header
+   use rodyn_sea_output, only: sea_scene_t, sea_values_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
       temp_name, commit_rename, remove_file, outfile_reopen
@@ -61,7 +62,7 @@ module rodyn_output_dynamic
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
    public :: dynamic_output_ends_step, dynamic_output_mark, dynamic_output_mark_t
-   public :: dynamic_output_close
+   public :: dynamic_output_close, dynamic_output_sea
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
@@ -70,6 +71,21 @@ module rodyn_output_dynamic
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
+   ! Tables of the sea and the vessels (written only for a scene with probes or vessels)
+   integer, parameter :: sf_waves = 1, sf_waves_step = 2, sf_vessels = 3, &
+      sf_vessels_step = 4, sf_conn = 5, sf_conn_step = 6, n_sea = 6
+   character(len=*), parameter :: sea_csv(n_sea) = [character(len=28) :: &
+      'dynamic_waves.csv', 'dynamic_waves_step.csv', 'dynamic_vessels.csv', &
+      'dynamic_vessels_step.csv', 'dynamic_connections.csv', 'dynamic_connections_step.csv']
+   ! The same in dynamic.h5, /dynamic/sea (index into dynamic_writer_t%sea_h5): at the
+   ! frames and at every step
+   integer, parameter :: sh_elevation = 1, sh_motion = 2, sh_load = 3, sh_conn = 4, &
+      sh_step_elevation = 5, sh_step_motion = 6, sh_step_load = 7, sh_step_conn = 8, &
+      sh_step_time = 9, n_sea_h5 = 9
+   character(len=*), parameter :: sea_h5_name(n_sea_h5) = [character(len=24) :: &
+      'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', &
+      'step_probe_elevation', 'step_vessel_motion', 'step_vessel_load', &
+      'step_connection_load', 'step_time']
    character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
    character(len=*), parameter :: running = 'running'
 
@@ -126,8 +142,9 @@ module rodyn_output_dynamic
    !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
    !> files hold, and the writer's counters; dynamic_output_open continues from it.
    type :: dynamic_output_mark_t
-      integer(i8) :: csv_bytes(6) = 0_i8  !< bytes of dynamic_nodes, _elements, _ends,
-                                          !< _log, _lines, _ends_step.csv
+      integer(i8) :: csv_bytes(12) = 0_i8 !< bytes of dynamic_nodes, _elements, _ends,
+                                          !< _log, _lines, _ends_step.csv, then of the
+                                          !< sea tables (sea_csv; 0 when not written)
       integer :: frames = 0               !< frames written
       integer :: steps = 0                !< step rows written
       integer :: end_rows = 0             !< rows of support forces of every step
@@ -169,6 +186,14 @@ module rodyn_output_dynamic
       type(out_file_t) :: f_log                      !< dynamic_log.csv
       type(out_file_t) :: f_ends_step                !< dynamic_ends_step.csv
       type(out_file_t) :: f_lines                    !< dynamic_lines.csv
+      type(out_file_t) :: f_sea(n_sea)               !< the tables of sea_csv
+      logical :: sea_on(n_sea) = .false.             !< which of them are written
+      type(text_t), allocatable :: probe_head(:)     !< (np) ',PROBE,x,y'
+      type(text_t), allocatable :: vessel_head(:)    !< (nv) ',VESSEL'
+      type(text_t), allocatable :: conn_head(:)      !< (nc) ',VESSEL,LINE,END'
+      integer :: sea_cols(n_sea_h5) = 0              !< columns of each /dynamic/sea series
+      real(wp), allocatable :: probe_xy(:, :)        !< (2, np) the probes' points [m]
+      type(hdf5_series_t) :: sea_h5(n_sea_h5)        !< /dynamic/sea, open when sea_cols > 0
       logical :: failed = .false.                    !< a write failed: nothing more written
       logical :: h5_failed = .false.                 !< an HDF5 call on dynamic.h5 failed
       character(len=:), allocatable :: why           !< the first failure
@@ -202,7 +227,7 @@ contains
    !> status.txt saying the run is in progress. No frame is written: call
    !> dynamic_output_frame for the initial state if it is wanted. On failure everything
    !> opened is closed again (dynamic_output_close may still be called).
-   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume)
+   subroutine dynamic_output_open(w, dir, model, lines, err, static_summary, resume, sea)
       type(dynamic_writer_t), intent(inout) :: w        !< the writer (not open)
       character(len=*), intent(in) :: dir               !< output folder
       type(model_t), intent(in) :: model                !< model (title, deck, options)
@@ -212,6 +237,8 @@ contains
                                                         !< kept in status.txt meanwhile
       type(dynamic_output_mark_t), intent(in), optional :: resume !< continue the files
                                                         !< of a run from this checkpoint
+      type(sea_scene_t), intent(in), optional :: sea    !< probes, vessels, connections:
+                                                        !< their tables are written
       character(len=*), parameter :: where = 'dynamic_output_open'
       type(error_t) :: e
       integer :: i
@@ -272,6 +299,9 @@ contains
       do i = 1, size(lines)
          call set_up_line(w%line(i), lines(i))
       end do
+      w%sea_on = .false.
+      w%sea_cols = 0
+      if (present(sea)) call set_up_sea(w, model, sea)
       if (w%csv .and. present(resume)) then
          call reopen_csv(nodes_csv, w%f_nodes, 1)
          call reopen_csv(elements_csv, w%f_elements, 2)
@@ -279,6 +309,9 @@ contains
          call reopen_csv(log_csv, w%f_log, 4)
          call reopen_csv(lines_csv, w%f_lines, 5)
          call reopen_csv(ends_step_csv, w%f_ends_step, 6)
+         do i = 1, n_sea
+            if (w%sea_on(i)) call reopen_csv(trim(sea_csv(i)), w%f_sea(i), 6 + i)
+         end do
       else if (w%csv) then
          call open_csv(w, nodes_csv, schema_header(nodes_csv), w%f_nodes, e)
          call open_csv(w, elements_csv, schema_header(elements_csv), w%f_elements, e)
@@ -286,6 +319,10 @@ contains
          call open_csv(w, log_csv, schema_header(log_csv), w%f_log, e)
          call open_csv(w, ends_step_csv, schema_header(ends_step_csv), w%f_ends_step, e)
          call open_csv(w, lines_csv, schema_header(lines_csv), w%f_lines, e)
+         do i = 1, n_sea
+            if (w%sea_on(i)) call open_csv(w, trim(sea_csv(i)), &
+                                           schema_header(trim(sea_csv(i))), w%f_sea(i), e)
+         end do
       end if
       if (w%csv) call output_write_environment(dir, model, e)
       if (w%hdf5 .and. .not. has_error(e)) then
@@ -333,7 +370,8 @@ contains
          return
       end if
       mark%csv_bytes = [w%f_nodes%written, w%f_elements%written, w%f_ends%written, &
-                        w%f_log%written, w%f_lines%written, w%f_ends_step%written]
+                        w%f_log%written, w%f_lines%written, w%f_ends_step%written, &
+                        w%f_sea%written]
       mark%frames = w%frames
       mark%steps = w%steps
       mark%end_rows = w%end_rows
@@ -474,6 +512,157 @@ contains
       if (has_error(e)) call set_error(err, e%code, e%message)
    end subroutine dynamic_output_ends_step
 
+   !> Append the sea and vessel outputs at the end of step `step` (0: the start state),
+   !> time `time`: a row per probe, vessel and connection to the _step tables, and, when
+   !> `frame`, to the frame tables (call before dynamic_output_frame of that time, so
+   !> that the rows are synced with the frame). Does nothing for a run without them.
+   subroutine dynamic_output_sea(w, step, time, v, frame, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      integer, intent(in) :: step                   !< step number (0: start) [-]
+      real(wp), intent(in) :: time                  !< time at the end of the step [s]
+      type(sea_values_t), intent(in) :: v           !< the values (rodyn_sea_output)
+      logical, intent(in) :: frame                  !< also a frame's rows
+      type(error_t), intent(inout) :: err           !< status
+      character(len=row_len) :: row
+      integer :: k, n, ns
+      type(error_t) :: e
+      if (.not. any(w%sea_on)) return
+      if (.not. writer_ready(w, 'dynamic_output_sea', err)) return
+      if (w%hdf5) then
+         call append_sea_h5(w, time, v, frame, e)
+         if (has_error(e)) then
+            w%h5_failed = .true.
+            call note_failure(w, e)
+            call set_error(err, e%code, e%message)
+            return
+         end if
+      end if
+      if (.not. w%csv) return
+      ns = 0
+      call put_int(row, ns, step)
+      call put_text(row, ns, ',')
+      n = ns
+      call format_real(time, row, n)
+      ns = n
+      if (w%sea_on(sf_waves)) then
+         do k = 1, size(w%probe_head)
+            n = ns
+            call put_text(row, n, w%probe_head(k)%s)
+            call put_reals(row, n, [v%eta(k)])
+            call outfile_put(w%f_sea(sf_waves_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_waves), row(index(row, ',') + 1:n))
+         end do
+      end if
+      if (w%sea_on(sf_vessels)) then
+         do k = 1, size(w%vessel_head)
+            n = ns
+            call put_text(row, n, w%vessel_head(k)%s)
+            call put_reals(row, n, v%pose(:, k))
+            call put_reals(row, n, v%load(:, k))
+            call outfile_put(w%f_sea(sf_vessels_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_vessels), row(index(row, ',') + 1:n))
+         end do
+      end if
+      if (w%sea_on(sf_conn)) then
+         do k = 1, size(w%conn_head)
+            n = ns
+            call put_text(row, n, w%conn_head(k)%s)
+            call put_reals(row, n, [v%conn(:, k), norm2(v%conn(1:3, k))])
+            call outfile_put(w%f_sea(sf_conn_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_conn), row(index(row, ',') + 1:n))
+         end do
+      end if
+   end subroutine dynamic_output_sea
+
+   !> The values of dynamic_output_sea appended to /dynamic/sea (held until the next sync).
+   subroutine append_sea_h5(w, time, v, frame, err)
+      type(dynamic_writer_t), intent(inout) :: w    !< open writer
+      real(wp), intent(in) :: time                  !< time [s]
+      type(sea_values_t), intent(in) :: v           !< the values
+      logical, intent(in) :: frame                  !< also at the frames
+      type(error_t), intent(inout) :: err           !< status
+      integer :: k
+      real(wp), allocatable :: conn(:, :)
+      allocate (conn(13, size(w%conn_head)))
+      do k = 1, size(w%conn_head)
+         conn(1:12, k) = v%conn(:, k)
+         conn(13, k) = norm2(v%conn(1:3, k))
+      end do
+      call hdf5_append_steps(w%sea_h5(sh_step_time), [time], err)
+      call put(sh_step_elevation, v%eta)
+      call put(sh_step_motion, reshape(v%pose, [size(v%pose)]))
+      call put(sh_step_load, reshape(v%load, [size(v%load)]))
+      call put(sh_step_conn, reshape(conn, [size(conn)]))
+      if (.not. frame) return
+      call put(sh_elevation, v%eta)
+      call put(sh_motion, reshape(v%pose, [size(v%pose)]))
+      call put(sh_load, reshape(v%load, [size(v%load)]))
+      call put(sh_conn, reshape(conn, [size(conn)]))
+   contains
+      !> One row of series k, if the run has it.
+      subroutine put(k, row)
+         integer, intent(in) :: k            !< sh_* index
+         real(wp), intent(in) :: row(:)      !< the row
+         if (w%sea_cols(k) > 0) call hdf5_append_steps(w%sea_h5(k), row, err)
+      end subroutine put
+   end subroutine append_sea_h5
+
+   !> /dynamic/sea: the names of the probes, vessels and connections (attributes), the
+   !> probes' points, and the empty series of the sea and vessel outputs (module header).
+   subroutine create_h5_sea(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer, dynamic.h5 open
+      type(error_t), intent(inout) :: err          !< status
+      character(len=*), parameter :: g = '/dynamic/sea'
+      real(wp), allocatable :: xy(:, :)
+      integer :: k
+      if (.not. any(w%sea_cols > 0) .or. has_error(err)) return
+      associate (h5 => w%h5)
+         call hdf5_create_group(h5, g, err)
+         call hdf5_write_attribute(h5, g, 'probes', names(w%probe_head, 1), err)
+         call hdf5_write_attribute(h5, g, 'vessels', names(w%vessel_head, 1), err)
+         call hdf5_write_attribute(h5, g, 'connections', names(w%conn_head, 3), err)
+         if (size(w%probe_head) > 0) then
+            xy = w%probe_xy     ! (2, np): h5py's (np, 2), a row per probe
+            call hdf5_write_dataset(h5, g//'/probe_xy', xy, err)
+            call describe_dataset(h5, dynamic_h5, g//'/probe_xy', err)
+         end if
+         do k = 1, n_sea_h5
+            if (w%sea_cols(k) == 0) cycle
+            if (k == sh_step_time) then
+               call hdf5_create_series_1d(h5, g//'/'//trim(sea_h5_name(k)), err, &
+                                          chunk_steps=log_chunk)
+            else
+               call hdf5_create_series(h5, g//'/'//trim(sea_h5_name(k)), w%sea_cols(k), &
+                  err, chunk_steps=max(8, chunk_bytes/(8*w%sea_cols(k))))
+            end if
+            call describe_dataset(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), err)
+         end do
+      end associate
+   contains
+      !> The names of the rows' heads ',A,B,...': the first nf fields, '/'-joined, then
+      !> ', '-joined over the rows ('' when none).
+      function names(heads, nf) result(s)
+         type(text_t), intent(in) :: heads(:)  !< the heads
+         integer, intent(in) :: nf             !< fields per name
+         character(len=:), allocatable :: s
+         character(len=:), allocatable :: h
+         integer :: i, j, c
+         s = ''
+         do i = 1, size(heads)
+            h = heads(i)%s(2:)//','
+            c = 0
+            do j = 1, len(h)
+               if (h(j:j) /= ',') cycle
+               c = c + 1
+               if (c == nf) exit
+               h(j:j) = '/'
+            end do
+            if (i > 1) s = s//', '
+            s = s//h(:j - 1)
+         end do
+      end function names
+   end subroutine create_h5_sea
+
    !> Finish the run's output: write everything still held (a last sync), the final
    !> attributes of dynamic.h5 (complete, status, steps, time reached, ...), close every
    !> file and rewrite status.txt from `summary` with the dynamic keys. Acts even when err
@@ -544,6 +733,47 @@ contains
       lo%line_head%s = ','//csv_name(r%name)
    end subroutine set_up_line
 
+   !> The sea and vessel tables a scene asks for, and the fixed start of their rows
+   !> (after the step and time columns): the probes' names and points, the vessels'
+   !> names, each connection's vessel, line and end.
+   subroutine set_up_sea(w, model, sea)
+      type(dynamic_writer_t), intent(inout) :: w  !< writer
+      type(model_t), intent(in) :: model          !< model (names)
+      type(sea_scene_t), intent(in) :: sea        !< the scene
+      character(len=row_len) :: row
+      integer :: k, n
+      if (.not. sea%active) return
+      w%sea_on(sf_waves) = sea%n_probes > 0
+      w%sea_on(sf_waves_step) = sea%n_probes > 0
+      w%sea_on(sf_vessels) = sea%n_vessels > 0
+      w%sea_on(sf_vessels_step) = sea%n_vessels > 0
+      w%sea_on(sf_conn) = sea%n_conn > 0
+      w%sea_on(sf_conn_step) = sea%n_conn > 0
+      allocate (w%probe_head(sea%n_probes), w%vessel_head(sea%n_vessels), &
+                w%conn_head(sea%n_conn))
+      w%probe_xy = sea%probe_xy
+      w%sea_cols = 0
+      w%sea_cols([sh_elevation, sh_step_elevation]) = sea%n_probes
+      w%sea_cols([sh_motion, sh_step_motion]) = 7*sea%n_vessels
+      w%sea_cols([sh_load, sh_step_load]) = 12*sea%n_vessels
+      w%sea_cols([sh_conn, sh_step_conn]) = 13*sea%n_conn
+      w%sea_cols(sh_step_time) = 1
+      do k = 1, sea%n_probes
+         n = 0
+         call put_text(row, n, ','//csv_name(model%waves%probe_name(k)))
+         call put_reals(row, n, sea%probe_xy(:, k))
+         w%probe_head(k)%s = row(:n)
+      end do
+      do k = 1, sea%n_vessels
+         w%vessel_head(k)%s = ','//csv_name(model%vessels(k)%name)
+      end do
+      do k = 1, sea%n_conn
+         w%conn_head(k)%s = ','//csv_name(model%vessels(sea%conn_vessel(k))%name)//','// &
+                            csv_name(model%lines(sea%conn_line(k))%name)//','// &
+                            trim(sea%conn_end(k))
+      end do
+   end subroutine set_up_sea
+
    !> Create (truncate) one CSV table and write its header (flushed: a table of no frame).
    subroutine open_csv(w, name, header, f, err)
       type(dynamic_writer_t), intent(inout) :: w  !< writer (folder)
@@ -596,6 +826,7 @@ contains
          end do
          call create_h5_log(h5, err)
       end associate
+      call create_h5_sea(w, err)
       call open_h5_series(w, lines, err)
       call flush_h5(w, err)
       if (.not. has_error(err)) then
@@ -627,6 +858,10 @@ contains
          call hdf5_open_series(w%h5, '/dynamic/log/'//trim(log_series_name(k)), w%log(k), &
             err)
       end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) > 0) call hdf5_open_series(w%h5, '/dynamic/sea/'// &
+                                                      trim(sea_h5_name(k)), w%sea_h5(k), err)
+      end do
       if (has_error(err)) return
       nv = 1
       do i = 1, size(lines)
@@ -643,6 +878,11 @@ contains
          call hdf5_series_hold(w%line(i)%step_reactions, log_block + 2)
          call hdf5_series_hold(w%line(i)%step_end_tension, log_block + 2)
          call hdf5_series_hold(w%line(i)%step_time, log_block + 2)
+      end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) == 0) cycle
+         call hdf5_series_hold(w%sea_h5(k), merge(w%hold_frames, log_block + 2, k < &
+                                                  sh_step_elevation))
       end do
    end subroutine open_h5_series
 
@@ -670,6 +910,10 @@ contains
       end do
       do k = 1, n_log_series
          call hdf5_series_truncate(w%log(k), mark%steps, err)
+      end do
+      do k = 1, n_sea_h5
+         if (w%sea_cols(k) > 0) call hdf5_series_truncate(w%sea_h5(k), &
+            merge(mark%frames, mark%end_rows, k < sh_step_elevation), err)
       end do
       call flush_h5(w, err)
    end subroutine reopen_h5
@@ -873,6 +1117,9 @@ contains
          call outfile_flush(w%f_lines, err)
          call outfile_flush(w%f_log, err)
          call outfile_flush(w%f_ends_step, err)
+         do i = 1, n_sea
+            call outfile_flush(w%f_sea(i), err)
+         end do
          w%flush_time = w%flush_time + seconds_since(c0)
          if (has_error(err)) return
       end if
@@ -885,6 +1132,9 @@ contains
             call hdf5_series_write_held(w%line(i)%step_reactions, eh)
             call hdf5_series_write_held(w%line(i)%step_end_tension, eh)
             call hdf5_series_write_held(w%line(i)%step_time, eh)
+         end do
+         do k = 1, n_sea_h5
+            call hdf5_series_write_held(w%sea_h5(k), eh)
          end do
          call write_pending_log(w, eh)
          call flush_h5(w, eh)
@@ -901,6 +1151,9 @@ contains
          call outfile_mark(w%f_lines)
          call outfile_mark(w%f_log)
          call outfile_mark(w%f_ends_step)
+         do i = 1, n_sea
+            call outfile_mark(w%f_sea(i))
+         end do
       end if
       w%frames_held = 0
       w%steps_held = 0
@@ -938,7 +1191,8 @@ contains
    !> the run writes no CSV.
    function committed_sizes(w) result(c)
       type(dynamic_writer_t), intent(in) :: w   !< writer
-      type(committed_t), allocatable :: c(:)    !< (6) or (0)
+      type(committed_t), allocatable :: c(:)    !< (6 + sea tables) or (0)
+      integer :: k
       allocate (c(0))
       if (.not. w%csv) return
       c = [committed_t(nodes_csv, outfile_committed(w%f_nodes)), &
@@ -947,14 +1201,18 @@ contains
            committed_t(lines_csv, outfile_committed(w%f_lines)), &
            committed_t(log_csv, outfile_committed(w%f_log)), &
            committed_t(ends_step_csv, outfile_committed(w%f_ends_step))]
+      do k = 1, n_sea
+         if (w%sea_on(k)) c = [c, committed_t(trim(sea_csv(k)), outfile_committed(w%f_sea(k)))]
+      end do
    end function committed_sizes
 
    !> Characters of CSV rows held in memory.
    pure integer function csv_held(w)
       type(dynamic_writer_t), intent(in) :: w   !< writer
+      integer :: k
       csv_held = outfile_pending(w%f_nodes) + outfile_pending(w%f_elements) + &
          outfile_pending(w%f_ends) + outfile_pending(w%f_lines) + outfile_pending(w%f_log) &
-         + outfile_pending(w%f_ends_step)
+         + outfile_pending(w%f_ends_step) + sum([(outfile_pending(w%f_sea(k)), k = 1, n_sea)])
    end function csv_held
 
    !> Record a write failure: nothing more is written.
@@ -1053,6 +1311,9 @@ contains
          call outfile_abort(w%f_log)
          call outfile_abort(w%f_ends_step)
          call outfile_abort(w%f_lines)
+         do k = 1, n_sea
+            call outfile_abort(w%f_sea(k))
+         end do
       else
          call outfile_close(w%f_nodes, err)
          call outfile_close(w%f_elements, err)
@@ -1060,6 +1321,9 @@ contains
          call outfile_close(w%f_log, err)
          call outfile_close(w%f_ends_step, err)
          call outfile_close(w%f_lines, err)
+         do k = 1, n_sea
+            call outfile_close(w%f_sea(k), err)
+         end do
       end if
       ! after a failure the held steps are dropped (the series see an error)
       if (w%failed) call set_error(eh, stat_io, w%why)
@@ -1078,6 +1342,9 @@ contains
          end do
          deallocate (w%line)
       end if
+      do k = 1, n_sea_h5
+         call hdf5_close_series(w%sea_h5(k), eh)
+      end do
       if (w%h5%id >= 0) then
          call hdf5_close_file(w%h5, eh)
          if (has_error(eh)) then
@@ -1227,7 +1494,7 @@ contains
 
 
    !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
-   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time' and 'log' used in
+   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time', 'log' and 'sea' used in
    !> /dynamic (deck names are upper case, so this does not happen from a deck).
    pure function group_name(name, i) result(s)
       character(len=*), intent(in) :: name  !< line name
@@ -1236,7 +1503,7 @@ contains
       character(len=16) :: buf
       integer :: k
       s = trim(name)
-      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log') then
+      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log' .or. s == 'sea') then
          write (buf, '(i0)') i
          s = 'line_'//trim(buf)
       end if

@@ -13,7 +13,8 @@ module rodyn_output_schema
    implicit none
    private
    public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
-   public :: schema_dataset
+   public :: schema_dataset, status_keys, environment_datasets, schema_environment
+   public :: output_attributes
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 
@@ -101,6 +102,95 @@ module rodyn_output_schema
       'dynamic_ends_step.csv | My_Nm | N m | y moment of the support on the line', &
       'dynamic_ends_step.csv | Mz_Nm | N m | z moment of the support on the line', &
       'dynamic_ends_step.csv | tension_N | N | magnitude of the support force', &
+      'dynamic_waves.csv | time_s | s | time of the frame', &
+      'dynamic_waves.csv | probe | - | wave probe name (*WAVE PROBE)', &
+      'dynamic_waves.csv | x_m | m | x of the probe, global axes', &
+      'dynamic_waves.csv | y_m | m | y of the probe, global axes', &
+      'dynamic_waves.csv | elevation_m | m | elevation above still water, ramp included', &
+      'dynamic_waves_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_waves_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_waves_step.csv | probe | - | wave probe name (*WAVE PROBE)', &
+      'dynamic_waves_step.csv | x_m | m | x of the probe, global axes', &
+      'dynamic_waves_step.csv | y_m | m | y of the probe, global axes', &
+      'dynamic_waves_step.csv | elevation_m | m | elevation above still water, ramp included', &
+      'dynamic_vessels.csv | time_s | s | time of the frame', &
+      'dynamic_vessels.csv | vessel | - | vessel name', &
+      'dynamic_vessels.csv | x_m | m | x of the reference point, global axes', &
+      'dynamic_vessels.csv | y_m | m | y of the reference point, global axes', &
+      'dynamic_vessels.csv | z_m | m | z of the reference point, global axes', &
+      'dynamic_vessels.csv | roll_rad | rad | roll of Rv = Rz(yaw) Ry(pitch) Rx(roll)', &
+      'dynamic_vessels.csv | pitch_rad | rad | pitch of Rv', &
+      'dynamic_vessels.csv | yaw_rad | rad | yaw of Rv, from the mean heading', &
+      'dynamic_vessels.csv | heading_rad | rad | mean heading; vessel axes Rz(heading) Rv', &
+      'dynamic_vessels.csv | Fx_N | N | x force of the lines on it, global', &
+      'dynamic_vessels.csv | Fy_N | N | y force of the lines on it, global', &
+      'dynamic_vessels.csv | Fz_N | N | z force of the lines on it, global', &
+      'dynamic_vessels.csv | Mx_Nm | N m | x moment about the reference point, global', &
+      'dynamic_vessels.csv | My_Nm | N m | y moment about the reference point, global', &
+      'dynamic_vessels.csv | Mz_Nm | N m | z moment about the reference point, global', &
+      'dynamic_vessels.csv | Fx_vessel_N | N | x force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Fy_vessel_N | N | y force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Fz_vessel_N | N | z force of the lines on it, vessel axes', &
+      'dynamic_vessels.csv | Mx_vessel_Nm | N m | x moment about it, vessel axes', &
+      'dynamic_vessels.csv | My_vessel_Nm | N m | y moment about it, vessel axes', &
+      'dynamic_vessels.csv | Mz_vessel_Nm | N m | z moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_vessels_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_vessels_step.csv | vessel | - | vessel name', &
+      'dynamic_vessels_step.csv | x_m | m | x of the reference point, global axes', &
+      'dynamic_vessels_step.csv | y_m | m | y of the reference point, global axes', &
+      'dynamic_vessels_step.csv | z_m | m | z of the reference point, global axes', &
+      'dynamic_vessels_step.csv | roll_rad | rad | roll of Rv = Rz(yaw) Ry(pitch) Rx(roll)', &
+      'dynamic_vessels_step.csv | pitch_rad | rad | pitch of Rv', &
+      'dynamic_vessels_step.csv | yaw_rad | rad | yaw of Rv, from the mean heading', &
+      'dynamic_vessels_step.csv | heading_rad | rad | mean heading; vessel axes Rz(heading) Rv', &
+      'dynamic_vessels_step.csv | Fx_N | N | x force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Fy_N | N | y force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Fz_N | N | z force of the lines on it, global', &
+      'dynamic_vessels_step.csv | Mx_Nm | N m | x moment about the reference point, global', &
+      'dynamic_vessels_step.csv | My_Nm | N m | y moment about the reference point, global', &
+      'dynamic_vessels_step.csv | Mz_Nm | N m | z moment about the reference point, global', &
+      'dynamic_vessels_step.csv | Fx_vessel_N | N | x force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Fy_vessel_N | N | y force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Fz_vessel_N | N | z force of the lines on it, vessel axes', &
+      'dynamic_vessels_step.csv | Mx_vessel_Nm | N m | x moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | My_vessel_Nm | N m | y moment about it, vessel axes', &
+      'dynamic_vessels_step.csv | Mz_vessel_Nm | N m | z moment about it, vessel axes', &
+      'dynamic_connections.csv | time_s | s | time of the frame', &
+      'dynamic_connections.csv | vessel | - | vessel name', &
+      'dynamic_connections.csv | line | - | line name', &
+      'dynamic_connections.csv | end | - | A (S = 0), B (S = L) or the node number', &
+      'dynamic_connections.csv | Fx_N | N | x force of the line on it, global', &
+      'dynamic_connections.csv | Fy_N | N | y force of the line on it, global', &
+      'dynamic_connections.csv | Fz_N | N | z force of the line on it, global', &
+      'dynamic_connections.csv | Mx_Nm | N m | x moment of the line, global', &
+      'dynamic_connections.csv | My_Nm | N m | y moment of the line, global', &
+      'dynamic_connections.csv | Mz_Nm | N m | z moment of the line, global', &
+      'dynamic_connections.csv | Fx_vessel_N | N | x force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Fy_vessel_N | N | y force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Fz_vessel_N | N | z force of the line on it, vessel axes', &
+      'dynamic_connections.csv | Mx_vessel_Nm | N m | x moment of the line, vessel axes', &
+      'dynamic_connections.csv | My_vessel_Nm | N m | y moment of the line, vessel axes', &
+      'dynamic_connections.csv | Mz_vessel_Nm | N m | z moment of the line, vessel axes', &
+      'dynamic_connections.csv | tension_N | N | magnitude of the force', &
+      'dynamic_connections_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_connections_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_connections_step.csv | vessel | - | vessel name', &
+      'dynamic_connections_step.csv | line | - | line name', &
+      'dynamic_connections_step.csv | end | - | A (S = 0), B (S = L) or the node number', &
+      'dynamic_connections_step.csv | Fx_N | N | x force of the line on it, global', &
+      'dynamic_connections_step.csv | Fy_N | N | y force of the line on it, global', &
+      'dynamic_connections_step.csv | Fz_N | N | z force of the line on it, global', &
+      'dynamic_connections_step.csv | Mx_Nm | N m | x moment of the line, global', &
+      'dynamic_connections_step.csv | My_Nm | N m | y moment of the line, global', &
+      'dynamic_connections_step.csv | Mz_Nm | N m | z moment of the line, global', &
+      'dynamic_connections_step.csv | Fx_vessel_N | N | x force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Fy_vessel_N | N | y force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Fz_vessel_N | N | z force of the line on it, vessel axes', &
+      'dynamic_connections_step.csv | Mx_vessel_Nm | N m | x moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | My_vessel_Nm | N m | y moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | Mz_vessel_Nm | N m | z moment of the line, vessel axes', &
+      'dynamic_connections_step.csv | tension_N | N | magnitude of the force', &
       'dynamic_log.csv | step | - | step number, from 1', &
       'dynamic_log.csv | time_s | s | time at the end of the step', &
       'dynamic_log.csv | dt_s | s | step length used', &
@@ -120,6 +210,112 @@ module rodyn_output_schema
       'dynamic_log.csv | Lx | kg m2/s | x of the total angular momentum about the origin', &
       'dynamic_log.csv | Ly | kg m2/s | y of the total angular momentum about the origin', &
       'dynamic_log.csv | Lz | kg m2/s | z of the total angular momentum about the origin']
+
+   !> Every key of status.txt, in the order written: 'status.txt | key | unit | meaning'
+   !> (NAME: one key per table or deck parameter). rodyn_output's output_write_status
+   !> writes them; docs/output.md lists the same keys (check_output_schema.py).
+   character(len=row_len), parameter :: status_keys(*) = [character(len=row_len) :: &
+      'status.txt | complete | - | true if the analysis reached its end, else false', &
+      'status.txt | status | - | one line: complete, or what failed (running while it runs)', &
+      'status.txt | load_factor | - | static load factor reached (1 for a complete static run)', &
+      'status.txt | increments | - | static load increments converged', &
+      'status.txt | iterations | - | Newton iterations of the static analysis', &
+      'status.txt | cutbacks | - | static increment halvings', &
+      'status.txt | wall_time_s | s | wall time of the solve (static and dynamic)', &
+      'status.txt | dynamic | - | true (dynamic runs only, as the keys down to committed_bytes)', &
+      'status.txt | time_reached_s | s | last time reached (running: of the last frame written)', &
+      'status.txt | steps | - | time steps completed', &
+      'status.txt | step_iterations | - | Newton iterations over all steps', &
+      'status.txt | step_tangents | - | tangents formed and factorised over all steps', &
+      'status.txt | step_cutbacks | - | step halvings in total', &
+      'status.txt | frames | - | output frames committed (in the tables and dynamic.h5)', &
+      'status.txt | committed_bytes.NAME | bytes | size of CSV table NAME at the last sync', &
+      'status.txt | rodyn_version | - | program version', &
+      'status.txt | deck | - | path of the main deck file', &
+      'status.txt | parameter.NAME | - | deck parameter NAME as substituted, one key each']
+
+   !> The datasets of /environment in results.h5 and dynamic.h5 (with *WATER; current_*
+   !> with a current, seabed_* with a seabed; written by rodyn_output_common's
+   !> write_environment_h5, their units those of environment.csv): 'files | path | units
+   !> | description'.
+   character(len=row_len), parameter :: environment_datasets(*) = [character(len=row_len) :: &
+      'results.h5, dynamic.h5 | /environment/surface_z | m | '// &
+         'z of the still water level', &
+      'results.h5, dynamic.h5 | /environment/depth | m | '// &
+         'water depth at x = y = 0', &
+      'results.h5, dynamic.h5 | /environment/density | kg/m3 | '// &
+         'sea water density', &
+      'results.h5, dynamic.h5 | /environment/current_ramp | s | '// &
+         'ramp-in duration of the current in dynamics', &
+      'results.h5, dynamic.h5 | /environment/current_z | m | '// &
+         'levels of the current profile, increasing', &
+      'results.h5, dynamic.h5 | /environment/current_speed | m/s | '// &
+         'current speed at the levels (linear between, constant beyond)', &
+      'results.h5, dynamic.h5 | /environment/current_heading | deg | '// &
+         'direction the current flows towards, from +x towards +y', &
+      'results.h5, dynamic.h5 | /environment/seabed_slope | deg | '// &
+         'angle of the seabed plane', &
+      'results.h5, dynamic.h5 | /environment/seabed_slope_dir | deg | '// &
+         'heading of steepest ascent, from +x towards +y', &
+      'results.h5, dynamic.h5 | /environment/seabed_stiffness | N/m3 | '// &
+         'normal stiffness per contact area', &
+      'results.h5, dynamic.h5 | /environment/seabed_damping | Pa s/m | '// &
+         'normal damping per contact area', &
+      'results.h5, dynamic.h5 | /environment/seabed_mu_axial | - | '// &
+         'axial friction coefficient', &
+      'results.h5, dynamic.h5 | /environment/seabed_mu_lateral | - | '// &
+         'lateral friction coefficient', &
+      'results.h5, dynamic.h5 | /environment/seabed_v_mob | m/s | '// &
+         'friction mobilisation velocity']
+
+   !> The attributes of the groups of results.h5 and dynamic.h5 (and the end_held of
+   !> reactions): 'file | object:attribute | unit | meaning', LINE standing for a line's
+   !> group, NAME for a deck parameter (the `units` and `description` of each dataset
+   !> are those of output_datasets).
+   character(len=row_len), parameter :: output_attributes(*) = [character(len=row_len) :: &
+      'results.h5 | /:program | - | program name: rodyn', &
+      'results.h5 | /:version | - | program version', &
+      'results.h5 | /:deck_file | - | path of the main deck file', &
+      'results.h5 | /:title | - | *HEADING title', &
+      'results.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
+      'results.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
+      'results.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'results.h5 | /static:load_factor | - | static load factor reached', &
+      'results.h5 | /static:increments | - | load increments converged', &
+      'results.h5 | /static:iterations | - | Newton iterations in total', &
+      'results.h5 | /static:cutbacks | - | increment halvings', &
+      'results.h5 | /static:wall_time_s | s | solve wall time', &
+      'results.h5 | /static/LINE:name | - | the line name', &
+      'results.h5 | /static/LINE:touchdown_s | m | largest S on the seabed; -1 when none', &
+      'results.h5 | /static/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
+      'results.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
+      'results.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)', &
+      'dynamic.h5 | /:program | - | program name: rodyn', &
+      'dynamic.h5 | /:version | - | program version', &
+      'dynamic.h5 | /:deck_file | - | path of the main deck file', &
+      'dynamic.h5 | /:title | - | *HEADING title', &
+      'dynamic.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
+      'dynamic.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
+      'dynamic.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'dynamic.h5 | /:scheme | - | time integration scheme (EMC, ...)', &
+      'dynamic.h5 | /:dt | s | *DYNAMIC DT', &
+      'dynamic.h5 | /dynamic:duration_s | s | *DYNAMIC TIME', &
+      'dynamic.h5 | /dynamic:output_interval_s | s | *DYNAMIC OUTPUT INTERVAL', &
+      'dynamic.h5 | /dynamic:frames | - | frames written (at close)', &
+      'dynamic.h5 | /dynamic:steps | - | time steps completed (at close)', &
+      'dynamic.h5 | /dynamic:time_reached_s | s | last time reached (at close)', &
+      'dynamic.h5 | /dynamic:step_iterations | - | Newton iterations over all steps', &
+      'dynamic.h5 | /dynamic:step_tangents | - | tangents formed over all steps', &
+      'dynamic.h5 | /dynamic:step_cutbacks | - | step halvings in total', &
+      'dynamic.h5 | /dynamic:wall_time_s | s | wall time of the run (at close)', &
+      'dynamic.h5 | /dynamic/LINE:name | - | the line name', &
+      'dynamic.h5 | /dynamic/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
+      'dynamic.h5 | /dynamic/LINE/step_reactions:end_held | - | as reactions', &
+      'dynamic.h5 | /dynamic/sea:probes | - | names of the probes, comma-separated', &
+      'dynamic.h5 | /dynamic/sea:vessels | - | names of the vessels, comma-separated', &
+      'dynamic.h5 | /dynamic/sea:connections | - | VESSEL/LINE/END of each connection', &
+      'dynamic.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
+      'dynamic.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)']
 
    !> Every HDF5 dataset of results.h5 and dynamic.h5 but those of /environment (which
    !> come with environment_items, rodyn_output_common): 'file | path | units |
@@ -223,6 +419,29 @@ module rodyn_output_schema
       'dynamic.h5 | /dynamic/log/strain | J | stored (strain) energy', &
       'dynamic.h5 | /dynamic/log/time | s | time at the end of the step', &
       'dynamic.h5 | /dynamic/log/total | J | kinetic + strain + gravity', &
+      'dynamic.h5 | /dynamic/sea/probe_xy | m | the points of the wave probes, a row '// &
+         'per probe (attribute probes); columns x, y (global axes)', &
+      'dynamic.h5 | /dynamic/sea/probe_elevation | m | wave elevation above the '// &
+         'still water level at each probe (attribute probes); row per frame', &
+      'dynamic.h5 | /dynamic/sea/vessel_motion | m (x, y, z), rad (roll, pitch, yaw, '// &
+         'heading) | per vessel (attribute vessels) 7 columns: reference point x, y, '// &
+         'z (global), roll, pitch, yaw of Rv, mean heading; row per frame', &
+      'dynamic.h5 | /dynamic/sea/vessel_load | N (Fx, Fy, Fz), N m (Mx, My, Mz) | per '// &
+         'vessel 12 columns: force of its lines on it and moment about its reference '// &
+         'point, global axes, then vessel axes; row per frame', &
+      'dynamic.h5 | /dynamic/sea/connection_load | N (Fx, Fy, Fz, tension), N m (Mx, '// &
+         'My, Mz) | per connection (attribute connections) 13 columns: force and '// &
+         'moment of the line on the vessel, global then vessel axes, |F|; row per frame', &
+      'dynamic.h5 | /dynamic/sea/step_probe_elevation | m | as probe_elevation, at '// &
+         'the times of step_time (every step)', &
+      'dynamic.h5 | /dynamic/sea/step_vessel_motion | m (x, y, z), rad (roll, pitch, '// &
+         'yaw, heading) | as vessel_motion, at the times of step_time (every step)', &
+      'dynamic.h5 | /dynamic/sea/step_vessel_load | N (Fx, Fy, Fz), N m (Mx, My, Mz) '// &
+         '| as vessel_load, at the times of step_time (every step)', &
+      'dynamic.h5 | /dynamic/sea/step_connection_load | N (Fx, Fy, Fz, tension), N m '// &
+         '(Mx, My, Mz) | as connection_load, at the times of step_time (every step)', &
+      'dynamic.h5 | /dynamic/sea/step_time | s | time of each row of the step_ '// &
+         'datasets of /dynamic/sea: 0, then the end of each step', &
       'dynamic.h5 | /dynamic/time | s | time of each output frame']
 
 contains
@@ -275,6 +494,21 @@ contains
          end if
       end do
    end function schema_dataset
+
+   !> The row of environment_datasets for dataset `path` ('/environment/depth'); ''
+   !> when none.
+   pure function schema_environment(path) result(row)
+      character(len=*), intent(in) :: path   !< dataset path
+      character(len=:), allocatable :: row   !< the row, or ''
+      integer :: k
+      row = ''
+      do k = 1, size(environment_datasets)
+         if (schema_field(environment_datasets(k), 2) == path) then
+            row = trim(environment_datasets(k))
+            return
+         end if
+      end do
+   end function schema_environment
 
    !> The header row of CSV table `file`: its column names, comma-separated, in order
    !> ('' for a file the schema does not know).

@@ -10,7 +10,7 @@ module rodyn_motion
    private
    public :: motion_displacement, amplitude_value, ramp_factor, vessel_motion
    public :: vessel_slow_motion, motion_rotation, vessel_offset_rest, vessel_offset_point
-   public :: rotation_z
+   public :: rotation_z, vessel_pose
 
 contains
 
@@ -170,6 +170,26 @@ contains
          end do
       end if
    end function vessel_slow_motion
+
+   !> Pose of a vessel at time t, as motion_displacement moves its points with ramp r
+   !> (the ramp of a *MOTION on it): the reference point X = O + r d_1:3 + Rz(psi) r xi_1:3,
+   !> global, the angles r xi_4:6 of Rv = Rz(yaw) Ry(pitch) Rx(roll) and the heading
+   !> psi = psi0 + r d_psi of the mean axes, so that a point p of vessel axes is at
+   !> X + Rz(psi) Rv p. pose = (x, y, z [m], roll, pitch, yaw, psi [rad]).
+   pure function vessel_pose(ve, t, ramp) result(pose)
+      type(vessel_t), intent(in) :: ve !< vessel
+      real(wp), intent(in) :: t        !< time [s]
+      real(wp), intent(in) :: ramp     !< ramp duration of its *MOTION [s] (0: none)
+      real(wp) :: pose(7)
+      real(wp) :: xi(6), sl(4), r, psi
+      r = ramp_factor(t, ramp)
+      xi = r*vessel_motion(ve, t)
+      sl = r*vessel_slow_motion(ve, t)
+      psi = ve%heading + sl(4)
+      pose(1:3) = vessel_point_position(ve%origin + sl(1:3), psi, xi, [0.0_wp, 0.0_wp, 0.0_wp])
+      pose(4:6) = xi(4:6)
+      pose(7) = psi
+   end function vessel_pose
 
    !> Value of an amplitude at time t (linear interpolation, constant beyond the ends).
    pure real(wp) function amplitude_value(amp, t)

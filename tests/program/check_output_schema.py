@@ -16,7 +16,17 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
   4. a run of RODYN (statics, dynamics, water; CSV and HDF5) writes every table of the
      schema with that header; results.h5 and dynamic.h5 hold exactly the datasets of
      the schema (and /environment), each with the attributes `units` and `description`,
-     equal to the schema's.
+     equal to the schema's;
+  5. the keys of status.txt (rodyn_output_schema's status_keys): docs/output.md's key
+     tables (status.txt, of a dynamic run) list exactly them (parameter.NAME in the
+     text), schema.py has them (STATUS), and the run's status.txt writes only them, in
+     their order (NAME: a table's or a parameter's name);
+  6. the /environment datasets (environment_datasets): the run's results.h5 and
+     dynamic.h5 (a deck with a current and a seabed) write exactly them with the
+     schema's units and description; docs/output.md's Environment table gives each the
+     same unit (current_z as current_z_<k>); schema.py has them (ENVIRONMENT);
+  7. the attributes of groups (and end_held) of the run's results.h5 and dynamic.h5 are
+     exactly those of output_attributes (schema.py: ATTRIBUTES).
 """
 import pathlib
 import re
@@ -33,6 +43,8 @@ def fail(msg):
 def read_schema(dump):
     out = subprocess.run([dump], capture_output=True, text=True, check=True).stdout
     columns, headers, datasets = {}, {}, {}
+    status = []
+    environment, attributes = {}, {}
     for line in out.splitlines():
         kind, *fields = line.split("\t")
         if kind == "COLUMN":
@@ -47,7 +59,131 @@ def read_schema(dump):
             if not description:
                 fail(f"{file} {path}: no description in the schema")
             datasets.setdefault(file, {})[path] = (units, description)
-    return columns, headers, datasets
+        elif kind == "STATUS":
+            key, unit, meaning = fields
+            if not meaning or not unit:
+                fail(f"status.txt {key}: no unit or meaning in the schema")
+            status.append((key, unit, meaning))
+        elif kind == "ENVIRONMENT":
+            files, path, units, description = fields
+            if files != "results.h5, dynamic.h5" or not description:
+                fail(f"{path}: files {files!r} or no description in the schema")
+            environment[path] = (units, description)
+        elif kind == "ATTRIBUTE":
+            file, name, unit, meaning = fields
+            if not meaning or not unit or ":" not in name:
+                fail(f"{file} {name}: no unit or meaning, or not object:attribute")
+            attributes.setdefault(file, {})[name] = (unit, meaning)
+    return columns, headers, datasets, status, environment, attributes
+
+
+def check_attributes(src, attributes, out):
+    """The attributes of the run's HDF5 files against the schema's."""
+    import h5py
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if attributes != schema.ATTRIBUTES:
+        fail("postproc/rodyn_post/schema.py: ATTRIBUTES differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    for name in ("results.h5", "dynamic.h5"):
+        found = set()
+
+        def visit(path, obj):
+            for a in obj.attrs:
+                if isinstance(obj, h5py.Dataset) and a in ("units", "description"):
+                    continue
+                key = re.sub(r"^/(static|dynamic)/LEG(/|$)", r"/\1/LINE\2", path)
+                found.add(f"{key}:{'NAME' if key == '/parameters' else a}")
+        with h5py.File(out / name, "r") as f:
+            visit("/", f)
+            f.visititems(lambda p, o: visit("/" + p, o))
+        if found != set(attributes[name]):
+            fail(f"{out / name}: attributes differ from the schema: not written "
+                 f"{set(attributes[name]) - found}, not in the schema "
+                 f"{found - set(attributes[name])}")
+        print(f"{name}: its {len(found)} attributes are the schema's")
+
+
+def check_environment(src, environment, out):
+    """The /environment datasets of a run and of docs/output.md against the schema."""
+    import h5py
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if environment != schema.ENVIRONMENT:
+        fail("postproc/rodyn_post/schema.py: ENVIRONMENT differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    for name in ("results.h5", "dynamic.h5"):
+        with h5py.File(out / name, "r") as f:
+            found = {"/environment/" + k: (str(d.attrs["units"]), str(d.attrs["description"]))
+                     for k, d in f["environment"].items()}
+        if found != environment:
+            fail(f"{out / name}: /environment differs from the schema: not written "
+                 f"{set(environment) - set(found)}, not in the schema "
+                 f"{set(found) - set(environment)}, other attributes "
+                 f"{[k for k in found if k in environment and found[k] != environment[k]]}")
+    text = (src / "docs" / "output.md").read_text()
+    start = text.index("\n## Environment\n")
+    table = {}
+    for line in text[start:text.index("\n## ", start + 1)].splitlines():
+        m = re.match(r"^\| `([a-z_]+?)(_<k>)?`\s*\|\s*([^|]+?)\s*\|", line)
+        if m:
+            table[m.group(1)] = m.group(3)
+    other = {p: u for p, (u, _) in environment.items()
+             if table.get(p.rsplit("/", 1)[1]) != u}
+    if other:
+        fail(f"docs/output.md, Environment: units differ from the schema's: {other}")
+    print(f"/environment: {len(environment)} datasets in the schema, written with its "
+          "units and descriptions in results.h5 and dynamic.h5, documented")
+
+
+def status_key_pattern(status):
+    """One regular expression per key of the schema (NAME: any name)."""
+    return [re.compile("^" + re.escape(k).replace("NAME", ".+") + "$") for k, _, _ in status]
+
+
+def check_status(src, status, out):
+    """docs/output.md's status.txt key tables and a run's status.txt against the schema."""
+    text = (src / "docs" / "output.md").read_text()
+    keys = [k for k, _, _ in status]
+    documented = []
+    for heading in ("## status.txt", "### status.txt of a dynamic run"):
+        start = text.index("\n" + heading + "\n")
+        end = text.find("\n#", start + 1)
+        in_table = False
+        for line in text[start:end].splitlines():
+            if line.startswith("| key"):
+                in_table = True
+                continue
+            if in_table and line.startswith("|"):
+                documented += re.findall(r"^\| `([^`]+)`", line)
+            elif in_table:
+                in_table = False
+    documented = [k for k in documented if not k.startswith("-")]
+    missing = [k for k in keys if k not in documented and not k.startswith("parameter.")]
+    extra = [k for k in documented if k not in keys]
+    if missing or extra:
+        fail(f"docs/output.md: status.txt keys differ from the schema: not documented "
+             f"{missing}, not in the schema {extra}")
+    if "`parameter.NAME = text`" not in text:
+        fail("docs/output.md: the key parameter.NAME of status.txt is not documented")
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    if tuple(status) != tuple(schema.STATUS):
+        fail("postproc/rodyn_post/schema.py: STATUS differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+    patterns = status_key_pattern(status)
+    last = -1
+    written = [line.partition(" = ")[0] for line in (out / "status.txt").read_text()
+               .splitlines()]
+    for key in written:
+        hits = [i for i, p in enumerate(patterns) if p.match(key)]
+        if not hits:
+            fail(f"{out / 'status.txt'}: key {key!r} is not in the schema")
+        if hits[0] < last:
+            fail(f"{out / 'status.txt'}: key {key!r} out of the schema's order")
+        last = hits[0]
+    print(f"status.txt: {len(keys)} keys in the schema, documented; a run writes "
+          f"{len(written)} keys, all of the schema, in its order")
 
 
 def plain_units(units):
@@ -150,7 +286,7 @@ def check_docs(src, columns, headers, datasets):
 
 def check_readers(src, columns, datasets):
     sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import dynamic, environment, results, schema
+    from rodyn_post import dynamic, environment, results, schema, sea
     py_columns = {f: [(c, u) for c, u, _ in cols] for f, cols in schema.COLUMNS.items()}
     if py_columns != columns or schema.DATASETS != datasets:
         fail("postproc/rodyn_post/schema.py differs from rodyn_output_schema: run "
@@ -169,6 +305,9 @@ def check_readers(src, columns, datasets):
         "dynamic_ends_step.csv": dynamic.ENDS_STEP_HEADER,
         "dynamic_log.csv": dynamic.LOG_HEADER,
     }
+    for file in (sea.WAVES_CSV, sea.WAVES_STEP_CSV, sea.VESSELS_CSV, sea.VESSELS_STEP_CSV,
+                 sea.CONNECTIONS_CSV, sea.CONNECTIONS_STEP_CSV):
+        used[file] = schema.header(file)
     for file, names in used.items():
         schema = [c for c, _ in columns[file]]
         if any(n not in schema for n in names):
@@ -187,6 +326,13 @@ def check_run(src, work, rodyn, headers, datasets):
     text = text.replace("INPUT=../../input/mooring_leg_section.inc", f"INPUT={inc}")
     text = text.replace("TIME=20.0, OUTPUT INTERVAL=0.5", "TIME=0.4, OUTPUT INTERVAL=0.2")
     text = text.replace("HDF5=NO", "HDF5=YES")
+    # a wave probe and the fairlead on a vessel: the sea and vessel tables are written
+    rao = (src / "input" / "fpso_rao.csv").resolve()
+    text = text.replace("*SEABED,", "*CURRENT\n0, 0.5, 20\n-100, 0.1, 0\n*SEABED,")
+    text = text.replace("*STATIC,", "*WAVE PROBE, NAME=P1\n0, 0\n"
+                        f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
+                        "0.0, 0.0, 0.0, 30.0\n"
+                        "*MOTION, LINE=LEG, END=B, TYPE=VESSEL, VESSEL=FPSO, RAMP=0\n*STATIC,")
     deck = work / "schema.inp"
     deck.write_text(text)
     out = work / "out"
@@ -235,13 +381,16 @@ def check_run(src, work, rodyn, headers, datasets):
 def main():
     dump, src, work, rodyn = sys.argv[1:5]
     src, work = pathlib.Path(src).resolve(), pathlib.Path(work).resolve()
-    columns, headers, datasets = read_schema(dump)
+    columns, headers, datasets, status, environment, attributes = read_schema(dump)
     for file, cols in columns.items():
         if headers.get(file) != ",".join(c for c, _ in cols):
             fail(f"{file}: the header {headers.get(file)!r} is not the schema's columns")
     check_docs(src, columns, headers, datasets)
     check_readers(src, columns, datasets)
     check_run(src, work, rodyn, headers, datasets)
+    check_status(src, status, work / "out")
+    check_environment(src, environment, work / "out")
+    check_attributes(src, attributes, work / "out")
     print("OK")
 
 
