@@ -25,7 +25,10 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
 
-from rodyn_post import load_dynamic  # noqa: E402  (installed: bash tools/setup.sh)
+# rodyn_post from this checkout: the peers' virtualenv (run_peers.py) has no copy of its own
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), "postproc"))
+from rodyn_post import load_dynamic  # noqa: E402
 
 DECK = """** peers benchmark (bench/peers): the paper's cable, end A heaves 0.4 m at {f} Hz
 ** with the default 3 s ramp; {elements} elements of order {order}, DT={dt}
