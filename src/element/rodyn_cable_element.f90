@@ -26,6 +26,7 @@ module rodyn_cable_element
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_rule_t
+   use rodyn_rotation, only: norm3
    implicit none
    private
    public :: cable_element_static, cable_element_dynamic, cable_element_energy
@@ -63,7 +64,7 @@ contains
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
          wj = rule%w(g)*0.5_wp*le
          xp = matmul(xe, dn(1:nen))
-         lam = norm2(xp)
+         lam = norm3(xp)
          call tension_law(ea, lam, phi, dphi)
          call add_force(nen, dn(1:nen), wj*phi*xp, fe)
          if (.not. want_k) cycle
@@ -101,8 +102,8 @@ contains
          wj = rule%w(g)*0.5_wp*le
          xp0 = matmul(x0, dn(1:nen))
          xp1 = matmul(x1, dn(1:nen))
-         l0 = norm2(xp0)
-         l1 = norm2(xp1)
+         l0 = norm3(xp0)
+         l1 = norm3(xp1)
          select case (scheme)
          case (scheme_emc)
             xpm = 0.5_wp*(xp0 + xp1)
@@ -117,7 +118,7 @@ contains
             call add_tangent(nen, dn(1:nen), wj, dfg, ke)
          case (scheme_midpoint, scheme_alpha)
             xpm = (1.0_wp - wq)*xp0 + wq*xp1
-            lm = norm2(xpm)
+            lm = norm3(xpm)
             call tension_law(ea, lm, phi, dphi)
             call add_force(nen, dn(1:nen), wj*phi*xpm, fe)
             if (.not. want_k) cycle
@@ -162,7 +163,7 @@ contains
       scale = 0.0_wp
       do g = 1, p
          wj = rule%w(g)*0.5_wp*le
-         lam = norm2(cable_xp(p, le, xe, rule%dn(1:p + 1, g)))
+         lam = norm3(cable_xp(p, le, xe, rule%dn(1:p + 1, g)))
          energy = energy + wj*strain_energy(ea, lam)
          scale = scale + wj*ea*max(lam - 1.0_wp, 0.0_wp)
       end do
@@ -181,7 +182,7 @@ contains
       integer :: g
       do g = 1, p
          xp = cable_xp(p, le, xe, rule%dn(1:p + 1, g))
-         lam = norm2(xp)
+         lam = norm3(xp)
          tension(g) = ea*max(lam - 1.0_wp, 0.0_wp)
          tangent(:, g) = xp/lam
       end do

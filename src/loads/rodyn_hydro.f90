@@ -28,6 +28,7 @@ module rodyn_hydro
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: water_t
    use rodyn_environment, only: fluid_kinematics
+   use rodyn_rotation, only: norm3
    implicit none
    private
    public :: water_section_t, water_env_t, water_point_load, submerged_fraction
@@ -129,7 +130,7 @@ contains
       end if
       wave = .false.
       if (present(wk)) wave = env%wave
-      lam = norm2(xp)
+      lam = norm3(xp)
       t = xp/lam
       ! the projections t t^T and P = I - t t^T enter the derivatives only: the forces
       ! are formed from vectors (a residual without its tangent: 4 iterations in 5 of
@@ -163,7 +164,7 @@ contains
                ur = u - v
                s = dot_product(ur, t)
                un = ur - s*t
-               unm = norm2(un)
+               unm = norm3(un)
                fd = ws%cn*lam*unm*un + ws%ct*lam*abs(s)*s*t
                if (want_k) then
                   ! g = d f_d / d u_r
@@ -223,7 +224,7 @@ contains
       if (.not. env%dynamic .or. (env%mu_ax <= 0.0_wp .and. env%mu_lat <= 0.0_wp)) return
       vt = v - vn*env%n
       ts = t - dot_product(t, env%n)*env%n
-      tsn = norm2(ts)
+      tsn = norm3(ts)
       if (tsn > 0.0_wp) then
          ts = ts/tsn
       else
@@ -231,7 +232,7 @@ contains
       end if
       va = dot_product(vt, ts)
       vl = vt - va*ts
-      vlm = norm2(vl)
+      vlm = norm3(vl)
       ff = -env%mu_ax*nf*va/max(abs(va), env%v_mob)*ts &
            - env%mu_lat*nf*vl/max(vlm, env%v_mob)
       fs = fs + ff
