@@ -75,6 +75,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "bench", "water"))
 import leg  # noqa: E402
+import moordyn_leg  # noqa: E402
 
 RESULTS = os.path.join(ROOT, "bench", "results")
 SUMMARY_CSV = os.path.join(RESULTS, "waves_moordyn.csv")
@@ -95,40 +96,6 @@ MOORDYN_N = [40, 80, 160, 320]
 TRACK_ELEMENTS = 8
 IC_TMAX = 300.0
 CBOT = 3.0e5            # seabed damping [Pa s/m], both sides (--seabed-damping changes it)
-
-MD_DECK = """--------------------- MoorDyn Input File ------------------------------------
-rodyn bench/waves: mooring leg in a regular wave, {n} segments (moordyn_waves.py)
----------------------- LINE TYPES ----------------------------------------------------------------------
-TypeName   Diam    Mass/m     EA     BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      {d!r}   {m!r}   {ea:.6e}   -1.0   0.0   {cd!r}   {ca!r}   {cdax!r}   {caax!r}
----------------------- POINTS ---------------------------------------
-ID   Attachment  X       Y     Z      Mass   Volume  CdA    Ca
-(#)   (word/ID) (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
-1     Fixed      {xa!r}  {ya!r}  {za!r}   0      0       0      0
-2     Coupled    {xb!r}  {yb!r}  {zb!r}   0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (ID)     (ID)      (m)       (-)      (-)
-1     chain       1        2        {length!r}      {n}       -
----------------------- OPTIONS -----------------------------------------
-0             writeLog
-{dt!r}        dtM
-RK2           tScheme
-{g!r}         g
-{rho!r}       rho
-{depth!r}     WtrDpth
-3.0e6         kbot
-{cbot!r}      cbot
-7             WaveKin
-0             ICgenDynamic
-1e-9          threshIC
-{tmax!r}      TmaxIC
-1             disableOutput
-1             disableOutTime
-------------------------- need this line -------------------------------------
-"""
-
 
 def md_dt(n):
     """MoorDyn's dtM for n segments: 0.25 l/c (c = sqrt(EA/m)) rounded down to a divisor
@@ -152,11 +119,11 @@ def write_md_folder(folder, n, components, dt=None):
     """MoorDyn input (leg.dat) and wave_frequencies.txt: components = [(omega, a_re, a_im,
     beta)] with eta = sum |a| sin(w t - k x + arg a)."""
     os.makedirs(folder, exist_ok=True)
-    text = MD_DECK.format(n=n, d=leg.DIAM, m=leg.MASS, ea=leg.EA, cd=leg.CD, ca=leg.CA,
-                          cdax=leg.CDAX, caax=leg.CAAX, xa=leg.ANCHOR[0], ya=leg.ANCHOR[1],
-                          za=leg.ANCHOR[2], xb=leg.FAIRLEAD[0], yb=leg.FAIRLEAD[1],
-                          zb=leg.FAIRLEAD[2], length=leg.LENGTH, dt=dt or md_dt(n), g=leg.G,
-                          rho=leg.RHO, depth=leg.DEPTH, tmax=IC_TMAX, cbot=CBOT)
+    # the still-water leg's MoorDyn input (bench/water/moordyn_leg.py) with WaveKin 7
+    text = moordyn_leg.deck_text(
+        n, dt or md_dt(n), ba=-1.0, cbot=repr(CBOT), wavekin=7, ic_thresh=1e-9, ic_tmax=IC_TMAX,
+        title=f"rodyn bench/waves: mooring leg in a regular wave, {n} segments "
+              "(moordyn_waves.py)")
     path = os.path.join(folder, "leg.dat")
     with open(path, "w") as f:
         f.write(text)
