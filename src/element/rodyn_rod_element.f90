@@ -437,18 +437,30 @@ contains
       real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
       real(wp), intent(out) :: eps(6, max_points) !< strains at the points (0 beyond np)
       real(wp), intent(out) :: xig(max_points)    !< parent coordinates of the points
-      real(wp) :: w(max_points), mask(6, max_points), n(max_nen), dn(max_nen)
-      type(rod_gp_t) :: kin
+      real(wp) :: w(max_points), mask(6, max_points)
       integer :: g, np
       call rod_quadrature(p, np, xig, w, mask)
       eps = 0.0_wp
       do g = 1, np
-         call shape_lagrange(p, xig(g), n(1:p + 1), dn(1:p + 1))
-         dn = dn*2.0_wp/le
-         call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
-         eps(:, g) = rod_strains(kin)
+         eps(:, g) = rod_point_strains(p, le, xe, de, xig(g))
       end do
    end subroutine rod_element_strains
+
+   !> Strains (Gamma, K) at the parent coordinate xi of an element.
+   pure function rod_point_strains(p, le, xe, de, xi) result(eps)
+      integer, intent(in) :: p                    !< element order
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
+      real(wp), intent(in) :: de(3, 3, p + 1)     !< nodal directors
+      real(wp), intent(in) :: xi                  !< parent coordinate [-]
+      real(wp) :: eps(6)
+      real(wp) :: n(max_nen), dn(max_nen)
+      type(rod_gp_t) :: kin
+      call shape_lagrange(p, xi, n(1:p + 1), dn(1:p + 1))
+      dn = dn*2.0_wp/le
+      call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
+      eps = rod_strains(kin)
+   end function rod_point_strains
 
    !> The shear an element of order 3 hides from its quadrature: the largest |Gamma_1|,
    !> |Gamma_2| (less the stress-free ones) at the p extension points, where shear is not
@@ -466,9 +478,7 @@ contains
       real(wp), intent(in) :: limit               !< hidden shear worth a look at seen [-]
       real(wp), intent(out) :: hidden             !< largest shear at the extension points
       real(wp), intent(out) :: seen               !< largest shear at the shear points
-      real(wp) :: xig(max_points), w(max_points), mask(6, max_points), n(max_nen)
-      real(wp) :: dn(max_nen), e(6)
-      type(rod_gp_t) :: kin
+      real(wp) :: xig(max_points), w(max_points), mask(6, max_points), e(6)
       integer :: g, np
       hidden = 0.0_wp
       seen = 0.0_wp
@@ -476,10 +486,7 @@ contains
       if (np == p) return
       do g = 1, np
          if (g == p + 1 .and. hidden <= limit) return
-         call shape_lagrange(p, xig(g), n(1:p + 1), dn(1:p + 1))
-         dn = dn*2.0_wp/le
-         call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
-         e = rod_strains(kin)
+         e = rod_point_strains(p, le, xe, de, xig(g))
          if (g <= p) then
             hidden = max(hidden, abs(e(1) - eps0(1, g)), abs(e(2) - eps0(2, g)))
          else
