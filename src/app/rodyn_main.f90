@@ -15,7 +15,6 @@ program rodyn
    use rodyn_mesh, only: mesh_t, mesh_build
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
-   use rodyn_banded, only: banded_free
    use rodyn_assembly, only: dof_map
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
@@ -44,7 +43,7 @@ program rodyn
    type(outdir_lock_t) :: lock   ! the output folder's lock, released in finish
    type(mesh_t), target :: mesh
    type(state_t), target :: state
-   type(static_problem_t) :: prob
+   type(static_problem_t), allocatable :: prob
    type(run_summary_t) :: summary
    type(line_result_t), allocatable :: lines(:)
    type(state_t), target :: dstate
@@ -132,6 +131,7 @@ program rodyn
       if (.not. opts%quiet) write (output_unit, '(a,i0,a,i0,a)') 'rodyn '//rodyn_version// &
          ': '//opts%deck//': static analysis, ', mesh%n_elements, ' elements, ', &
          n_dof, ' unknowns'
+      allocate (prob)
       call statics_run(prob, model, mesh, state, summary, err, log_unit)
       if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
       ! results of the last converged state, complete or not
@@ -153,8 +153,8 @@ program rodyn
          dstate = state
          r0 = prob%r
       end if
-      ! the static tangent is not needed any more: a dynamic run has its own
-      call banded_free(prob%bm)
+      ! the static problem is not needed any more: a dynamic run has its own workspace
+      deallocate (prob, lines)
    end if
 
    if (model%dynamic%requested) then
