@@ -189,6 +189,12 @@ contains
       opts%force_tol = model%dynamic%force_tol
       opts%disp_tol = model%dynamic%disp_tol
       opts%log_unit = log_unit
+      ! the reused tangent's chord steps Anderson-accelerated (rodyn_anderson); with the
+      ! history correcting what the held tangent misses, a tangent is renewed only when
+      ! an iteration fails to halve the residual (paper's case 1, 20 s: 1.420e9
+      ! instructions against 1.439e9 with the plain chord's 0.25 and 1.565e9 without)
+      opts%anderson = .true.
+      opts%reuse_ratio = 0.5_wp
       dt = model%dynamic%dt
       t_end = model%dynamic%duration
       interval = model%dynamic%output_interval

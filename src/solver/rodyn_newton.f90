@@ -56,6 +56,9 @@ module rodyn_newton
       real(wp) :: roundoff_factor = 1.0e4_wp  !< residual floor allowed, x force_tol
       logical :: reuse_tangent = .false.      !< keep factorised tangents while they work
       real(wp) :: reuse_ratio = 0.25_wp       !< new tangent if rn > reuse_ratio rn_prev
+      !> Anderson acceleration of the reused-tangent iterations (rodyn_anderson), when
+      !> the problem keeps a history for it; not with the line search
+      logical :: anderson = .false.
    end type newton_options_t
 
    !> What one solve did.
@@ -74,6 +77,8 @@ module rodyn_newton
    type, abstract :: newton_problem_t
       logical :: tangent_new = .false.        !< tangent formed, not yet factorised
       logical :: factors_ok = .false.         !< factors of a tangent are held
+      integer :: iteration = 0                !< the iteration under way (1: a new solve)
+      logical :: accelerate = .false.         !< accelerate the chord steps (rodyn_anderson)
    contains
       !> Evaluate the residual at the current configuration (and the tangent).
       procedure(evaluate_iface), deferred :: evaluate
@@ -136,6 +141,7 @@ contains
       logical :: refresh, fresh
       rn_trial = 0.0_wp
       cn_prev = huge(1.0_wp)
+      prob%accelerate = opts%anderson .and. opts%reuse_tangent .and. .not. opts%line_search
       refresh = .not. opts%reuse_tangent .or. .not. prob%factors_ok
       call evaluate(refresh)
       if (has_error(err)) return
@@ -158,6 +164,7 @@ contains
          end if
          fresh = prob%tangent_new
          if (fresh) stats%tangents = stats%tangents + 1
+         prob%iteration = it
          call prob%solve(err)
          if (has_error(err)) return
          stats%iterations = it

@@ -12,6 +12,7 @@ module rodyn_rod_problem
    use rodyn_assembly, only: supports_t, dof_reach
    use rodyn_newton, only: newton_problem_t
    use rodyn_rotation, only: rotation_cayley
+   use rodyn_anderson, only: anderson_t, anderson_clear, anderson_step
    implicit none
    private
    public :: rod_problem_t, rod_problem_init
@@ -29,6 +30,7 @@ module rodyn_rod_problem
       real(wp), allocatable :: x_base(:, :)    !< (3, nn) base of the line search
       real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
       type(banded_t) :: bm                     !< tangent, then its LU factors
+      type(anderson_t) :: aa                   !< history of the accelerated chord steps
       real(wp) :: lref = 1.0_wp                !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp                !< shortest element [m]
       real(wp) :: f_floor = 0.0_wp             !< round-off level of the section forces [N]
@@ -105,10 +107,14 @@ contains
    end function rod_residual_norm
 
    !> du = -K^{-1} rhs (banded LU): a tangent just formed is factorised first, otherwise
-   !> the factors held are used again.
+   !> the factors held are used again. With this%accelerate, du is the Anderson
+   !> correction of the chord step (rodyn_anderson), its history cleared by a new tangent
+   !> or a new solve.
    subroutine rod_solve(this, err)
       class(rod_problem_t), intent(inout) :: this !< problem
       type(error_t), intent(inout) :: err         !< status
+      if (this%accelerate .and. (this%tangent_new .or. this%iteration <= 1)) &
+         call anderson_clear(this%aa)
       if (this%tangent_new) then
          this%tangent_new = .false.
          call banded_factor(this%bm, err, this%sup%first)
@@ -120,6 +126,7 @@ contains
       end if
       this%du = -this%rhs
       call banded_solve(this%bm, this%du, err)
+      if (this%accelerate) call anderson_step(this%aa, this%du)
    end subroutine rod_solve
 
    !> max(|du_x| / L_ref, |du_theta|).
