@@ -469,7 +469,7 @@ contains
    !> (docs/element.md, "Known limits") has shear of order 1 at the former and almost
    !> none at the latter; a true shape, about the same shear at both. Orders 1 and 2
    !> sample every strain at the same points: hidden = 0.
-   pure subroutine rod_hidden_shear(p, le, xe, de, eps0, limit, hidden, seen)
+   pure subroutine rod_hidden_shear(p, le, xe, de, eps0, limit, hidden, seen, rule)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: xe(3, p + 1)        !< nodal positions [m]
@@ -478,15 +478,18 @@ contains
       real(wp), intent(in) :: limit               !< hidden shear worth a look at seen [-]
       real(wp), intent(out) :: hidden             !< largest shear at the extension points
       real(wp), intent(out) :: seen               !< largest shear at the shear points
-      real(wp) :: xig(max_points), w(max_points), mask(6, max_points), e(6)
-      integer :: g, np
+      type(rod_rule_t), intent(in) :: rule        !< rod_rule(p): points, shape functions
+      real(wp) :: dn(max_nen), e(2)
+      type(rod_gp_t) :: kin
+      integer :: g
       hidden = 0.0_wp
       seen = 0.0_wp
-      call rod_quadrature(p, np, xig, w, mask)
-      if (np == p) return
-      do g = 1, np
+      if (rule%np == p) return
+      do g = 1, rule%np
          if (g == p + 1 .and. hidden <= limit) return
-         e = rod_point_strains(p, le, xe, de, xig(g))
+         dn(1:p + 1) = rule%dn(1:p + 1, g)*2.0_wp/le
+         call rod_gp_kinematics_shear(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin)
+         e = rod_strains_shear(kin)
          if (g <= p) then
             hidden = max(hidden, abs(e(1) - eps0(1, g)), abs(e(2) - eps0(2, g)))
          else
@@ -500,7 +503,8 @@ contains
    !> forces N1, N2 are interpolated from the 4 points where shear is integrated. The
    !> effective tension is the spatial contact force n = N_i d_i along the centreline
    !> tangent, n . x'/|x'|; curv holds the curvatures (K1, K2, K3).
-   pure subroutine rod_element_resultants(p, le, c, eps0, xe, de, res, tension, curv, xig)
+   pure subroutine rod_element_resultants(p, le, c, eps0, xe, de, res, tension, curv, xig, &
+                                          rule)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -511,14 +515,19 @@ contains
       real(wp), intent(out) :: tension(p)         !< effective tension [N]
       real(wp), intent(out) :: curv(3, p)         !< curvatures [1/m]
       real(wp), intent(out) :: xig(p)             !< parent coordinates of the points
-      real(wp) :: eps(6, max_points), xq(max_points), w(max_points), mask(6, max_points)
-      real(wp) :: n(max_nen), dn(max_nen), lq(max_nen), nsp(3), sq(6, max_points)
-      type(rod_gp_t) :: kin
+      type(rod_rule_t), intent(in) :: rule        !< rod_rule(p): points, shape functions
+      real(wp) :: eps(6), xq(max_points), lq(max_nen), nsp(3), sq(6, max_points)
+      real(wp) :: dn(max_nen)
+      type(rod_gp_t) :: kin(max_points)
       integer :: g, np, k
-      call rod_element_strains(p, le, xe, de, eps, xq)
-      call rod_quadrature(p, np, xq, w, mask)
+      np = rule%np
+      xq = rule%xi
       do g = 1, np
-         sq(:, g) = c*(eps(:, g) - eps0(:, g))
+         dn(1:p + 1) = rule%dn(1:p + 1, g)*2.0_wp/le
+         call rod_gp_kinematics(p + 1, rule%n(1:p + 1, g), dn(1:p + 1), xe, de, kin(g))
+         eps = rod_strains(kin(g))
+         sq(:, g) = c*(eps - eps0(:, g))
+         if (g <= p) curv(:, g) = eps(4:6)
       end do
       xig = xq(1:p)
       do g = 1, p
@@ -531,12 +540,8 @@ contains
                res(1:2, g) = res(1:2, g) + lq(k)*sq(1:2, p + k)
             end do
          end if
-         curv(:, g) = eps(4:6, g)
-         call shape_lagrange(p, xq(g), n(1:p + 1), dn(1:p + 1))
-         dn = dn*2.0_wp/le
-         call rod_gp_kinematics(p + 1, n(1:p + 1), dn(1:p + 1), xe, de, kin)
-         nsp = res(1, g)*kin%d(:, 1) + res(2, g)*kin%d(:, 2) + res(3, g)*kin%d(:, 3)
-         tension(g) = dot_product(nsp, kin%xp)/norm2(kin%xp)
+         nsp = res(1, g)*kin(g)%d(:, 1) + res(2, g)*kin(g)%d(:, 2) + res(3, g)*kin(g)%d(:, 3)
+         tension(g) = dot_product(nsp, kin(g)%xp)/norm2(kin(g)%xp)
       end do
    contains
       !> Lagrange basis through the m points t evaluated at x.

@@ -505,7 +505,7 @@ contains
             de(:, :, a) = state%d(:, :, node)
          end do
          call rod_hidden_shear(3, mesh%elem_le(e), xe, de, mesh%eps0(:, :, e), hidden_max, &
-                               hidden, seen)
+                               hidden, seen, mesh%rules(3))
          if (hidden <= hidden_max .or. hidden <= 10.0_wp*seen) cycle
          write (msg, '(a,i0,a,f0.2,a,f0.2,a,es8.2,a,es8.2,a)') 'element ', &
             e - mesh%line_first_elem(l) + 1, ' (S = ', mesh%elem_s0(e), ' to ', &

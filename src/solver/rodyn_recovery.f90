@@ -83,7 +83,7 @@ contains
                e0 = eps0_scale*mesh%eps0(:, :, e)
                call rod_element_resultants(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
                                            xe(:, 1:p + 1), de(:, :, 1:p + 1), res(:, 1:p), &
-                                           tens(1:p), curv(:, 1:p), xig(1:p))
+                                           tens(1:p), curv(:, 1:p), xig(1:p), mesh%rules(p))
             end if
             do g = 1, p
                ig = (el - 1)*p + g
