@@ -225,7 +225,7 @@ contains
       real(wp), intent(in) :: mg(:, :, :)         !< moment sums (add_geometric)
       real(wp), intent(in) :: dl(3, 3, nen)       !< nodal directors, test side
       real(wp), intent(in) :: dr(3, 3, nen)       !< nodal directors, increment side
-      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp), intent(inout) :: ke(:, :)         !< element matrix (6 nen square)
       real(wp) :: v(3), st(3, 3), w(3, 3), m(3, 3), tr
       integer :: a, b, ra, rb, i, j
       do b = 1, nen
@@ -293,7 +293,7 @@ contains
       integer, intent(in) :: nf                       !< their number
       real(wp), intent(in) :: blc(:, :), crc(:, :)    !< curvature rows
       integer, intent(in) :: nc                       !< their number
-      real(wp), intent(inout) :: ke(6*nen, 6*nen)     !< element matrix
+      real(wp), intent(inout) :: ke(:, :)             !< element matrix (6 nen square)
       real(wp) :: acc(6), c
       integer :: j, i0, k, jn
       do j = 1, 6*nen

@@ -278,7 +278,7 @@ contains
       real(wp), intent(in) :: dl(3, 3, nen)      !< nodal directors of the test side (rows)
       real(wp), intent(in) :: dr(3, 3, nen)      !< nodal directors of the increment (cols)
       real(wp), intent(in) :: wj                 !< Gauss weight times Jacobian [m]
-      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp), intent(inout) :: ke(:, :)         !< element matrix (6 nen square)
       real(wp) :: skl(3, 3, nen), skr(3, 3, nen), wr(3, 3, nen), st(3, 3), m(3, 3), h, tr, f
       integer :: a, b, i, j, ra, rb
       logical :: forces, moments
@@ -353,7 +353,7 @@ contains
       real(wp), intent(in) :: fq(3, 4, nen)      !< q-forces
       real(wp), intent(in) :: dnode(3, 3, nen)   !< directors being rotated
       real(wp), intent(in) :: scale              !< factor (1 in statics)
-      real(wp), intent(inout) :: ke(6*nen, 6*nen) !< element matrix
+      real(wp), intent(inout) :: ke(:, :)         !< element matrix (6 nen square)
       real(wp) :: blk(3, 3), fd
       integer :: a, i, j, k, r
       do a = 1, nen
