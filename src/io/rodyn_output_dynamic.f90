@@ -29,34 +29,35 @@
 !> HDF5 file format: the default (oldest) one, so that a killed run's file opens
 !> without h5clear (see docs/output.md for what HDF5 allows while the run is live).
 !>
-!> Numbers in the CSV tables are written exactly as by rodyn_output (17 significant
-!> digits, 1.2345678901234567E+05): by rodyn_format (128-bit integers) for 1e-15 <= |x|
-!> <= 1e37 and zero, otherwise through C's strfromd (ISO C23, glibc >= 2.25), about 6
-!> times faster than a Fortran internal write; non-finite values go through the Fortran
-!> write so that they read as in the static tables (NaN, Infinity).
+!> The rows of the line tables (nodes, elements, ends, lines, ends_step) and the
+!> described datasets are made by rodyn_output_table, the table writer the static
+!> output uses too: a line's row heads (line, node, s, ...) are made once at open, and
+!> each frame appends the time, the head and the values; numbers are written by
+!> rodyn_format (17 significant digits, 1.2345678901234567E+05), as in every table.
 module rodyn_output_dynamic
-   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_double, c_null_char
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use rodyn_format, only: format_e17
-   use rodyn_kinds, only: wp, i8, rodyn_version
+   use rodyn_format, only: put_text, put_int, put_real, put_reals
+   use rodyn_kinds, only: wp, i8
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_model, only: model_t, scheme_names, parameter_value_t
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
-      hdf5_flush, hdf5_create_group, hdf5_write_dataset, hdf5_write_attribute, &
-      hdf5_create_series, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series, &
-      hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, hdf5_open_file, &
-      hdf5_append_steps
+      hdf5_flush, hdf5_create_group, hdf5_write_attribute, hdf5_open_series, &
+      hdf5_close_series, hdf5_series_hold, hdf5_series_write_held, hdf5_series_truncate, &
+      hdf5_open_file, hdf5_append_steps
    use rodyn_output, only: output_write_status, output_write_environment, committed_t
    use rodyn_output_schema, only: schema_header
    use rodyn_sea_output, only: sea_scene_t, sea_values_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
       outfile_mark, outfile_close, outfile_abort, outfile_pending, outfile_committed, &
       temp_name, commit_rename, remove_file, outfile_reopen
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, describe_dataset, &
-                                  csv_name, write_environment_h5, wall_tension_of, &
-                                  seabed_force_of, water_fields_fit, touchdown_of, &
-                                  write_parameters_h5
+   use rodyn_output_common, only: text_of, status_of, path_join, one_line, csv_name, &
+                                  write_environment_h5, wall_tension_of, seabed_force_of, &
+                                  touchdown_of, write_parameters_h5
+   use rodyn_output_table, only: line_table_t, line_table, line_rows, line_row_kept, &
+                                 line_row_head, put_line_values, put_end_values, group_name, &
+                                 write_described, create_described_series, write_h5_root, &
+                                 line_result_complete, line_result_fits, &
+                                 bending_curvature_at, row_len
    implicit none
    private
    public :: dynamic_writer_t
@@ -71,6 +72,14 @@ module rodyn_output_dynamic
    character(len=*), parameter :: log_csv = 'dynamic_log.csv'
    character(len=*), parameter :: lines_csv = 'dynamic_lines.csv'
    character(len=*), parameter :: dynamic_h5 = 'dynamic.h5'
+   ! The tables of the lines, laid out by rodyn_output_table (index into line_out_t%head)
+   integer, parameter :: lt_nodes = 1, lt_elements = 2, lt_ends = 3, lt_lines = 4, &
+      lt_ends_step = 5, n_line_tables = 5
+   character(len=*), parameter :: line_csv(n_line_tables) = [character(len=21) :: &
+      nodes_csv, elements_csv, ends_csv, lines_csv, ends_step_csv]
+   ! The members of /dynamic besides the lines' groups (group_name)
+   character(len=*), parameter :: dynamic_members(3) = [character(len=4) :: 'time', &
+      'log', 'sea']
    ! Tables of the sea and the vessels (written only for a scene with probes or vessels)
    integer, parameter :: sf_waves = 1, sf_waves_step = 2, sf_vessels = 3, &
       sf_vessels_step = 4, sf_conn = 5, sf_conn_step = 6, n_sea = 6
@@ -86,13 +95,11 @@ module rodyn_output_dynamic
       'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', &
       'step_probe_elevation', 'step_vessel_motion', 'step_vessel_load', &
       'step_connection_load', 'step_time']
-   character(len=*), parameter :: units_si = 'SI: m, s, kg, N, N m, rad'
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
    integer, parameter :: frame_block = 256  !< frames held for dynamic.h5 at most
    integer, parameter :: hold_bytes = 8*1024*1024 !< and at most this much memory
-   integer, parameter :: row_len = 1024    !< longest CSV row (at most 19 fields)
    integer, parameter :: chunk_bytes = 8192 !< target HDF5 chunk size of the frames
    integer, parameter :: log_chunk = 1024   !< steps per HDF5 chunk of the step log
    real(wp), parameter :: status_interval = 1.0_wp !< least wall time between rewrites
@@ -118,26 +125,16 @@ module rodyn_output_dynamic
       'external_work', 'damping_work', 'total', 'momentum', 'angular_momentum', &
       'hydro_work', 'seabed_work']
 
-   !> C's printf format of a real: as rodyn_output's real_str (17 significant digits,
-   !> an exponent of at least two digits).
-   character(kind=c_char, len=*), parameter :: real_format = c_char_'%.16E'//c_null_char
-
-   interface
-      !> strfromd (ISO C23; glibc >= 2.25): format one double, no varargs.
-      function c_strfromd(str, n, format, fp) bind(c, name='strfromd') result(r)
-         import :: c_char, c_size_t, c_double, c_int
-         character(kind=c_char), intent(out) :: str(*)  !< output, NUL-terminated
-         integer(c_size_t), value :: n                  !< room in str, NUL included
-         character(kind=c_char), intent(in) :: format(*) !< %E / %f / %g / %a format
-         real(c_double), value :: fp                    !< value
-         integer(c_int) :: r                            !< characters (without NUL)
-      end function c_strfromd
-   end interface
 
    !> A string of its own length (rows of an array of texts differ in length).
    type :: text_t
       character(len=:), allocatable :: s !< the text
    end type text_t
+
+   !> The heads of a line's rows in one table (line_row_head), made once at open.
+   type :: heads_t
+      type(text_t), allocatable :: row(:)  !< (line_rows) ',LINE,node,s_m', ...
+   end type heads_t
 
    !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
    !> files hold, and the writer's counters; dynamic_output_open continues from it.
@@ -158,11 +155,8 @@ module rodyn_output_dynamic
    type :: line_out_t
       integer :: nn = 0                              !< nodes
       integer :: ng = 0                              !< integration points
-      logical :: end_held(2) = .false.               !< ends written to dynamic_ends.csv
-      type(text_t), allocatable :: node_head(:)      !< (nn) ',LINE,node,s_m'
-      type(text_t), allocatable :: point_head(:)     !< (ng) ',LINE,element,point,s_m'
-      type(text_t) :: end_head(2)                    !< ',LINE,A' and ',LINE,B'
-      type(text_t) :: line_head                      !< ',LINE'
+      logical :: end_held(2) = .false.               !< ends written to the ends tables
+      type(heads_t) :: head(n_line_tables)           !< its rows' heads in each table
       type(hdf5_series_t) :: series(n_line_series)   !< the line's time histories
       type(hdf5_series_t) :: step_reactions          !< support forces, row per step
       type(hdf5_series_t) :: step_end_tension        !< their magnitudes, row per step
@@ -186,6 +180,7 @@ module rodyn_output_dynamic
       type(out_file_t) :: f_log                      !< dynamic_log.csv
       type(out_file_t) :: f_ends_step                !< dynamic_ends_step.csv
       type(out_file_t) :: f_lines                    !< dynamic_lines.csv
+      type(line_table_t) :: table(n_line_tables)     !< the layouts of the line tables
       type(out_file_t) :: f_sea(n_sea)               !< the tables of sea_csv
       logical :: sea_on(n_sea) = .false.             !< which of them are written
       type(text_t), allocatable :: probe_head(:)     !< (np) ',PROBE,x,y'
@@ -288,16 +283,20 @@ contains
       call system_clock(w%clock_start)
       w%clock_status = w%clock_start
       do i = 1, size(lines)
-         if (.not. line_complete(lines(i))) then
+         if (.not. line_result_complete(lines(i))) then
             call set_error(err, stat_io, where//': results of line '''// &
                trim(lines(i)%name)//''' are missing or of inconsistent sizes')
             return
          end if
       end do
+      do i = 1, n_line_tables
+         w%table(i) = line_table(trim(line_csv(i)), err)
+      end do
+      if (has_error(err)) return
       call output_write_status(dir, w%progress, e, w%deck_file, w%params)  ! makes the folder
       allocate (w%line(size(lines)), w%pending(log_block))
       do i = 1, size(lines)
-         call set_up_line(w%line(i), lines(i))
+         call set_up_line(w%line(i), lines(i), w%table)
       end do
       w%sea_on = .false.
       w%sea_cols = 0
@@ -403,7 +402,7 @@ contains
          return
       end if
       do i = 1, size(lines)
-         if (.not. line_fits(lines(i), w%line(i))) then
+         if (.not. line_result_fits(lines(i), w%line(i)%nn, w%line(i)%ng)) then
             call set_error(err, stat_io, where//': results of line '''// &
                trim(lines(i)%name)//''' are missing or of other sizes than at open')
             return
@@ -489,12 +488,12 @@ contains
          associate (lo => w%line(i))
             if (w%csv) then
                do j = 1, 2
-                  if (.not. lo%end_held(j)) cycle
+                  if (.not. line_row_kept(w%table(lt_ends_step), lo%end_held, j)) cycle
                   n = 0
                   call put_int(row, n, step)
                   call put_real(row, n, time)
-                  call put_text(row, n, lo%end_head(j)%s)
-                  call put_reals(row, n, [reaction(:, j, i), norm2(reaction(1:3, j, i))])
+                  call put_text(row, n, lo%head(lt_ends_step)%row(j)%s)
+                  call put_end_values(w%table(lt_ends_step), reaction(:, j, i), row, n)
                   call outfile_put(w%f_ends_step, row(:n))
                end do
             end if
@@ -540,10 +539,7 @@ contains
       if (.not. w%csv) return
       ns = 0
       call put_int(row, ns, step)
-      call put_text(row, ns, ',')
-      n = ns
-      call format_real(time, row, n)
-      ns = n
+      call put_real(row, ns, time)
       if (w%sea_on(sf_waves)) then
          do k = 1, size(w%probe_head)
             n = ns
@@ -623,19 +619,17 @@ contains
          call hdf5_write_attribute(h5, g, 'connections', names(w%conn_head, 3), err)
          if (size(w%probe_head) > 0) then
             xy = w%probe_xy     ! (2, np): h5py's (np, 2), a row per probe
-            call hdf5_write_dataset(h5, g//'/probe_xy', xy, err)
-            call describe_dataset(h5, dynamic_h5, g//'/probe_xy', err)
+            call write_described(h5, dynamic_h5, g//'/probe_xy', err, x2=xy)
          end if
          do k = 1, n_sea_h5
             if (w%sea_cols(k) == 0) cycle
             if (k == sh_step_time) then
-               call hdf5_create_series_1d(h5, g//'/'//trim(sea_h5_name(k)), err, &
-                                          chunk_steps=log_chunk)
+               call create_described_series(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), &
+                                            0, err, log_chunk)
             else
-               call hdf5_create_series(h5, g//'/'//trim(sea_h5_name(k)), w%sea_cols(k), &
-                  err, chunk_steps=max(8, chunk_bytes/(8*w%sea_cols(k))))
+               call create_described_series(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), &
+                  w%sea_cols(k), err, max(8, chunk_bytes/(8*w%sea_cols(k))))
             end if
-            call describe_dataset(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), err)
          end do
       end associate
    contains
@@ -701,36 +695,22 @@ contains
 
    ! ------------------------------------------------------------------ set-up
 
-   !> The fixed start of each CSV row of a line (after the time column).
-   subroutine set_up_line(lo, r)
-      type(line_out_t), intent(out) :: lo       !< the line's output state
-      type(line_result_t), intent(in) :: r      !< the line at open
-      character(len=row_len) :: row
-      character(len=1), parameter :: end_name(2) = ['A', 'B']
-      integer :: k, n
+   !> A line's sizes and the heads of its rows in each line table (after the leading
+   !> step and time columns; rodyn_output_table).
+   subroutine set_up_line(lo, r, tables)
+      type(line_out_t), intent(out) :: lo            !< the line's output state
+      type(line_result_t), intent(in) :: r           !< the line at open
+      type(line_table_t), intent(in) :: tables(:)    !< (n_line_tables) layouts
+      integer :: k, tb
       lo%nn = size(r%node_s)
       lo%ng = size(r%gp_s)
       lo%end_held = r%end_held
-      allocate (lo%node_head(lo%nn), lo%point_head(lo%ng))
-      do k = 1, lo%nn
-         n = 0
-         call put_text(row, n, ','//csv_name(r%name))
-         call put_int(row, n, k)
-         call put_real(row, n, r%node_s(k))
-         lo%node_head(k)%s = row(:n)
+      do tb = 1, n_line_tables
+         allocate (lo%head(tb)%row(line_rows(tables(tb), r)))
+         do k = 1, size(lo%head(tb)%row)
+            lo%head(tb)%row(k)%s = line_row_head(tables(tb), r, k)
+         end do
       end do
-      do k = 1, lo%ng
-         n = 0
-         call put_text(row, n, ','//csv_name(r%name))
-         call put_int(row, n, r%gp_element(k))
-         call put_int(row, n, r%gp_point(k))
-         call put_real(row, n, r%gp_s(k))
-         lo%point_head(k)%s = row(:n)
-      end do
-      do k = 1, 2
-         lo%end_head(k)%s = ','//csv_name(r%name)//','//end_name(k)
-      end do
-      lo%line_head%s = ','//csv_name(r%name)
    end subroutine set_up_line
 
    !> The sea and vessel tables a scene asks for, and the fixed start of their rows
@@ -802,27 +782,20 @@ contains
       call hdf5_create_file(w%h5, temp_name(w%dir, dynamic_h5), err)
       if (has_error(err)) return
       associate (h5 => w%h5)
-         call hdf5_write_attribute(h5, '/', 'program', 'rodyn', err)
-         call hdf5_write_attribute(h5, '/', 'version', rodyn_version, err)
-         call hdf5_write_attribute(h5, '/', 'deck_file', text_of(model%deck_file), err)
-         call hdf5_write_attribute(h5, '/', 'title', text_of(model%title), err)
-         call hdf5_write_attribute(h5, '/', 'units', units_si, err)
-         call hdf5_write_attribute(h5, '/', 'complete', 0, err)
-         call hdf5_write_attribute(h5, '/', 'status', running, err)
+         call write_h5_root(h5, model, .false., running, err)
          call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
          call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
-         call hdf5_write_dataset(h5, '/deck', text_of(model%deck_text), err)
-         call describe_dataset(h5, dynamic_h5, '/deck', err)
+         call write_described(h5, dynamic_h5, '/deck', err, text=text_of(model%deck_text))
          call hdf5_create_group(h5, '/dynamic', err)
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
             model%dynamic%output_interval, err)
          call write_environment_h5(h5, model, err)
          call write_parameters_h5(h5, model, err)
-         call hdf5_create_series_1d(h5, '/dynamic/time', err, chunk_steps=chunk_bytes/8)
-         call describe_dataset(h5, dynamic_h5, '/dynamic/time', err)
+         call create_described_series(h5, dynamic_h5, '/dynamic/time', 0, err, chunk_bytes/8)
          do i = 1, size(lines)
-            call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i), lines(i), err)
+            call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i, &
+                                dynamic_members), lines(i), err)
          end do
          call create_h5_log(h5, err)
       end associate
@@ -845,7 +818,7 @@ contains
       integer :: i, k, nv
       call hdf5_open_series(w%h5, '/dynamic/time', w%time, err)
       do i = 1, size(lines)
-         g = '/dynamic/'//group_name(lines(i)%name, i)
+         g = '/dynamic/'//group_name(lines(i)%name, i, dynamic_members)
          do k = 1, n_line_series
             call hdf5_open_series(w%h5, g//'/'//trim(line_series_name(k)), &
                w%line(i)%series(k), err)
@@ -929,14 +902,10 @@ contains
       ng = size(r%gp_s)
       call hdf5_create_group(h5, g, err)
       call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
-      call hdf5_write_dataset(h5, g//'/node_s', r%node_s, err)
-      call describe_dataset(h5, dynamic_h5, g//'/node_s', err, line_group=g)
-      call hdf5_write_dataset(h5, g//'/gp_s', r%gp_s, err)
-      call describe_dataset(h5, dynamic_h5, g//'/gp_s', err, line_group=g)
-      call hdf5_write_dataset(h5, g//'/gp_element', r%gp_element, err)
-      call describe_dataset(h5, dynamic_h5, g//'/gp_element', err, line_group=g)
-      call hdf5_write_dataset(h5, g//'/gp_point', r%gp_point, err)
-      call describe_dataset(h5, dynamic_h5, g//'/gp_point', err, line_group=g)
+      call write_described(h5, dynamic_h5, g//'/node_s', err, g, x1=r%node_s)
+      call write_described(h5, dynamic_h5, g//'/gp_s', err, g, x1=r%gp_s)
+      call write_described(h5, dynamic_h5, g//'/gp_element', err, g, i1=r%gp_element)
+      call write_described(h5, dynamic_h5, g//'/gp_point', err, g, i1=r%gp_point)
       call history(g//'/x', nn)
       call history(g//'/y', nn)
       call history(g//'/z', nn)
@@ -952,23 +921,22 @@ contains
       call history(g//'/wall_tension', ng)
       call history(g//'/seabed_normal', nn)
       call history(g//'/seabed_friction', nn)
-      call hdf5_create_series_1d(h5, g//'/step_time', err, chunk_steps=log_chunk)
-      call describe_dataset(h5, dynamic_h5, g//'/step_time', err, line_group=g)
-      call hdf5_create_series(h5, g//'/step_reactions', 12, err, chunk_steps=log_chunk/4)
-      call describe_dataset(h5, dynamic_h5, g//'/step_reactions', err, line_group=g)
+      call create_described_series(h5, dynamic_h5, g//'/step_time', 0, err, log_chunk, g)
+      call create_described_series(h5, dynamic_h5, g//'/step_reactions', 12, err, &
+                                   log_chunk/4, g)
       call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
-      call hdf5_create_series(h5, g//'/step_end_tension', 2, err, chunk_steps=log_chunk)
-      call describe_dataset(h5, dynamic_h5, g//'/step_end_tension', err, line_group=g)
-      call hdf5_create_series_1d(h5, g//'/touchdown_s', err, chunk_steps=chunk_bytes/8)
-      call describe_dataset(h5, dynamic_h5, g//'/touchdown_s', err, line_group=g)
+      call create_described_series(h5, dynamic_h5, g//'/step_end_tension', 2, err, &
+                                   log_chunk, g)
+      call create_described_series(h5, dynamic_h5, g//'/touchdown_s', 0, err, &
+                                   chunk_bytes/8, g)
    contains
       !> An empty history of n values per frame, with its units and description.
       subroutine history(path, n)
          character(len=*), intent(in) :: path         !< dataset path
          integer, intent(in) :: n                     !< values per frame
-         call hdf5_create_series(h5, path, n, err, chunk_steps=max(8, chunk_bytes/(8*n)))
-         call describe_dataset(h5, dynamic_h5, path, err, line_group=g)
+         call create_described_series(h5, dynamic_h5, path, n, err, &
+                                      max(8, chunk_bytes/(8*n)), g)
       end subroutine history
    end subroutine create_h5_line
 
@@ -986,18 +954,15 @@ contains
       do k = 1, size(order)
          call column(order(k), any(order(k) == [lg_step, lg_iterations, lg_cutbacks]))
       end do
-      call hdf5_create_series(h5, g//'momentum', 3, err, chunk_steps=log_chunk)
-      call describe_dataset(h5, dynamic_h5, g//'momentum', err)
-      call hdf5_create_series(h5, g//'angular_momentum', 3, err, chunk_steps=log_chunk)
-      call describe_dataset(h5, dynamic_h5, g//'angular_momentum', err)
+      call create_described_series(h5, dynamic_h5, g//'momentum', 3, err, log_chunk)
+      call create_described_series(h5, dynamic_h5, g//'angular_momentum', 3, err, log_chunk)
    contains
       !> One 1-D dataset of the log.
       subroutine column(k, integers)
          integer, intent(in) :: k                     !< lg_* index
          logical, intent(in) :: integers              !< integer values
-         call hdf5_create_series_1d(h5, g//trim(log_series_name(k)), err, &
-            chunk_steps=log_chunk, integers=integers)
-         call describe_dataset(h5, dynamic_h5, g//trim(log_series_name(k)), err)
+         call create_described_series(h5, dynamic_h5, g//trim(log_series_name(k)), 0, &
+                                      err, log_chunk, integers=integers)
       end subroutine column
    end subroutine create_h5_log
 
@@ -1009,62 +974,39 @@ contains
       type(dynamic_writer_t), intent(inout) :: w   !< open writer
       real(wp), intent(in) :: time                 !< time of the frame [s]
       type(line_result_t), intent(in) :: lines(:)  !< state
-      character(len=row_len) :: row
       character(len=64) :: t
-      real(wp), allocatable :: fn(:), ff(:), tw(:)
-      real(wp) :: vals(8)
-      integer :: nt, n, i, k, j
+      integer :: nt
       nt = 0
-      call format_real(time, t, nt)
-      do i = 1, size(lines)
-         associate (r => lines(i), lo => w%line(i))
-            fn = seabed_force_of(r, 1)
-            ff = seabed_force_of(r, 2)
-            do k = 1, lo%nn
-               n = 0
-               call put_text(row, n, t(:nt)//lo%node_head(k)%s)
-               vals(1:3) = r%node_x(:, k)    ! (a fixed array: no allocation per row)
-               vals(4) = fn(k)
-               vals(5) = ff(k)
-               call put_reals(row, n, vals(1:5))
-               call outfile_put(w%f_nodes, row(:n))
-            end do
-         end associate
-      end do
-      do i = 1, size(lines)
-         associate (r => lines(i), lo => w%line(i))
-            tw = wall_tension_of(r)
-            do k = 1, lo%ng
-               n = 0
-               call put_text(row, n, t(:nt)//lo%point_head(k)%s)
-               vals(1) = r%tension(k)
-               vals(2) = tw(k)
-               vals(3:4) = r%moment(:, k)
-               vals(5) = r%torque(k)
-               vals(6) = bending_curvature_at(r%curvature(:, k))
-               call put_reals(row, n, vals(1:6))
-               call outfile_put(w%f_elements, row(:n))
-            end do
-         end associate
-      end do
-      do i = 1, size(lines)
-         associate (r => lines(i), lo => w%line(i))
-            do j = 1, 2
-               if (.not. lo%end_held(j)) cycle
-               n = 0
-               call put_text(row, n, t(:nt)//lo%end_head(j)%s)
-               call put_reals(row, n, [r%reaction(:, j), norm2(r%reaction(1:3, j))])
-               call outfile_put(w%f_ends, row(:n))
-            end do
-         end associate
-      end do
-      do i = 1, size(lines)
-         n = 0
-         call put_text(row, n, t(:nt)//w%line(i)%line_head%s)
-         call put_reals(row, n, [touchdown_of(lines(i))])
-         call outfile_put(w%f_lines, row(:n))
-      end do
+      call put_real(t, nt, time)
+      call append_rows(w%table(lt_nodes), lt_nodes, w%line, lines, t(:nt), w%f_nodes)
+      call append_rows(w%table(lt_elements), lt_elements, w%line, lines, t(:nt), &
+                       w%f_elements)
+      call append_rows(w%table(lt_ends), lt_ends, w%line, lines, t(:nt), w%f_ends)
+      call append_rows(w%table(lt_lines), lt_lines, w%line, lines, t(:nt), w%f_lines)
    end subroutine write_frame_csv
+
+   !> Append to table f (layout t, table number tb) the rows of every line: `lead`, then
+   !> the row's head made at open, then its values (rodyn_output_table).
+   subroutine append_rows(t, tb, lo, lines, lead, f)
+      type(line_table_t), intent(in) :: t          !< layout
+      integer, intent(in) :: tb                    !< lt_* of the table
+      type(line_out_t), intent(in) :: lo(:)        !< the lines' heads
+      type(line_result_t), intent(in) :: lines(:)  !< state
+      character(len=*), intent(in) :: lead         !< the leading fields ('time')
+      type(out_file_t), intent(inout) :: f         !< the table
+      character(len=row_len) :: row
+      integer :: i, k, n
+      do i = 1, size(lines)
+         do k = 1, size(lo(i)%head(tb)%row)
+            if (.not. line_row_kept(t, lo(i)%end_held, k)) cycle
+            n = 0
+            call put_text(row, n, lead)
+            call put_text(row, n, lo(i)%head(tb)%row(k)%s)
+            call put_line_values(t, lines(i), k, row, n)
+            call outfile_put(f, row(:n))
+         end do
+      end do
+   end subroutine append_rows
 
    !> The frame's values appended to dynamic.h5's series (held in memory until the
    !> next sync).
@@ -1372,145 +1314,7 @@ contains
    end subroutine flush_h5
 
 
-   ! ------------------------------------------------------------------ checks
-
-   !> Whether every array of a line result is allocated with consistent sizes.
-   pure logical function line_complete(r)
-      type(line_result_t), intent(in) :: r  !< line result
-      integer :: nn, ng
-      line_complete = allocated(r%node_s) .and. allocated(r%node_x) .and. &
-         allocated(r%gp_element) .and. allocated(r%gp_point) .and. allocated(r%gp_s) .and. &
-         allocated(r%tension) .and. allocated(r%shear) .and. allocated(r%moment) .and. &
-         allocated(r%torque) .and. allocated(r%curvature)
-      if (.not. line_complete) return
-      nn = size(r%node_s)
-      ng = size(r%gp_s)
-      line_complete = all(shape(r%node_x) == [3, nn]) .and. size(r%gp_element) == ng .and. &
-         size(r%gp_point) == ng .and. line_fits_sizes(r, nn, ng) .and. size(r%node_s) == nn
-   end function line_complete
-
-   !> Whether a frame's line has the sizes the line had at open.
-   pure logical function line_fits(r, lo)
-      type(line_result_t), intent(in) :: r   !< line result of the frame
-      type(line_out_t), intent(in) :: lo     !< the line at open
-      line_fits = allocated(r%node_x) .and. allocated(r%tension) .and. &
-         allocated(r%moment) .and. allocated(r%torque) .and. allocated(r%curvature)
-      if (.not. line_fits) return
-      line_fits = all(shape(r%node_x) == [3, lo%nn]) .and. line_fits_sizes(r, lo%nn, lo%ng)
-   end function line_fits
-
-   !> Whether the integration-point arrays written per frame have ng points.
-   pure logical function line_fits_sizes(r, nn, ng)
-      type(line_result_t), intent(in) :: r  !< line result (arrays allocated)
-      integer, intent(in) :: nn             !< nodes
-      integer, intent(in) :: ng             !< integration points
-      line_fits_sizes = size(r%node_x, 2) == nn .and. size(r%tension) == ng .and. &
-         all(shape(r%moment) == [2, ng]) .and. size(r%torque) == ng .and. &
-         all(shape(r%curvature) == [3, ng]) .and. water_fields_fit(r, nn, ng)
-   end function line_fits_sizes
-
-   ! ------------------------------------------------------------------ text helpers
-
-   !> Append text at row(n+1:).
-   pure subroutine put_text(row, n, text)
-      character(len=*), intent(inout) :: row  !< row being built
-      integer, intent(inout) :: n             !< characters used
-      character(len=*), intent(in) :: text    !< text to append
-      row(n + 1:n + len(text)) = text
-      n = n + len(text)
-   end subroutine put_text
-
-   !> Append an integer field (',' first unless the row is empty), as '(i0)' writes it
-   !> (digits by hand: an internal write costs ~2 us, as much as a whole row).
-   pure subroutine put_int(row, n, i)
-      character(len=*), intent(inout) :: row  !< row being built
-      integer, intent(inout) :: n             !< characters used
-      integer, intent(in) :: i                !< value
-      character(len=12) :: buf
-      integer :: k, j
-      integer(i8) :: v
-      if (n > 0) call put_text(row, n, ',')
-      v = abs(int(i, i8))
-      k = len(buf) + 1
-      do
-         k = k - 1
-         j = int(mod(v, 10_i8))
-         buf(k:k) = achar(iachar('0') + j)
-         v = v/10_i8
-         if (v == 0_i8) exit
-      end do
-      if (i < 0) then
-         k = k - 1
-         buf(k:k) = '-'
-      end if
-      call put_text(row, n, buf(k:))
-   end subroutine put_int
-
-   !> Append a real field (',' first unless the row is empty).
-   subroutine put_real(row, n, x)
-      character(len=*), intent(inout) :: row  !< row being built
-      integer, intent(inout) :: n             !< characters used
-      real(wp), intent(in) :: x               !< value
-      if (n > 0) call put_text(row, n, ',')
-      call format_real(x, row, n)
-   end subroutine put_real
-
-   !> Append real fields, each preceded by ','.
-   subroutine put_reals(row, n, x)
-      character(len=*), intent(inout) :: row  !< row being built
-      integer, intent(inout) :: n             !< characters used (> 0)
-      real(wp), intent(in) :: x(:)            !< values
-      integer :: k
-      do k = 1, size(x)
-         call put_text(row, n, ',')
-         call format_real(x(k), row, n)
-      end do
-   end subroutine put_reals
-
-   !> Write x at row(n+1:) as rodyn_output's real_str does: 17 significant digits, no
-   !> blanks, exponent of two digits unless three are needed (1.2345678901234567E+05).
-   !> row needs 26 free characters.
-   subroutine format_real(x, row, n)
-      real(wp), intent(in) :: x               !< value
-      character(len=*), intent(inout) :: row  !< row being built
-      integer, intent(inout) :: n             !< characters used
-      character(len=32) :: buf
-      integer :: k
-      call format_e17(x, row(n + 1:), k)     ! the same characters, faster
-      if (k > 0) then
-         n = n + k
-         return
-      end if
-      if (ieee_is_finite(x)) then
-         k = c_strfromd(row(n + 1:), int(len(row) - n, c_size_t), real_format, &
-            real(x, c_double))
-         n = n + min(k, len(row) - n - 1)
-      else
-         write (buf, '(es25.16e3)') x
-         call put_text(row, n, trim(adjustl(buf)))
-      end if
-   end subroutine format_real
-
-
-
-   !> HDF5 group name of a line: as in results.h5 (its name, '/' replaced by '_';
-   !> 'line_<i>' if blank), and 'line_<i>' for the names 'time', 'log' and 'sea' used in
-   !> /dynamic (deck names are upper case, so this does not happen from a deck).
-   pure function group_name(name, i) result(s)
-      character(len=*), intent(in) :: name  !< line name
-      integer, intent(in) :: i              !< line number
-      character(len=:), allocatable :: s    !< group name
-      character(len=16) :: buf
-      integer :: k
-      s = trim(name)
-      if (len(s) == 0 .or. s == '.' .or. s == 'time' .or. s == 'log' .or. s == 'sea') then
-         write (buf, '(i0)') i
-         s = 'line_'//trim(buf)
-      end if
-      do k = 1, len(s)
-         if (s(k:k) == '/') s(k:k) = '_'
-      end do
-   end function group_name
+   ! ------------------------------------------------------------------ helpers
 
    !> The time-integration scheme's name ('EMC', ...).
    pure function scheme_name(scheme) result(s)
@@ -1534,8 +1338,8 @@ contains
       seconds_since = real(c - c0, wp)/real(max(rate, 1_i8), wp)
    end function seconds_since
 
-   !> Bending curvature sqrt(K1^2 + K2^2) of each point [1/m], one code path for the
-   !> CSV and the HDF5 file so both hold the same bits.
+   !> Bending curvature sqrt(K1^2 + K2^2) of each point [1/m] (rodyn_output_table's
+   !> bending_curvature_at, that of the CSV tables: both hold the same bits).
    pure function bending_curvature(curv) result(kb)
       real(wp), intent(in) :: curv(:, :)  !< (3, n) curvatures K1, K2, K3 [1/m]
       real(wp) :: kb(size(curv, 2))
@@ -1545,9 +1349,4 @@ contains
       end do
    end function bending_curvature
 
-   !> Bending curvature sqrt(K1^2 + K2^2) of one point [1/m] (bending_curvature's).
-   pure real(wp) function bending_curvature_at(curv)
-      real(wp), intent(in) :: curv(3)     !< curvatures K1, K2, K3 [1/m]
-      bending_curvature_at = hypot(curv(1), curv(2))
-   end function bending_curvature_at
 end module rodyn_output_dynamic

@@ -1,7 +1,8 @@
 !> The one description of rodyn's output: every column of every CSV table, with its
 !> unit and a one-line meaning, in the order written, and every HDF5 dataset with its
-!> units and description. The writers (rodyn_output, rodyn_output_dynamic) take their
-!> header rows and their datasets' `units` and `description` attributes from here; the
+!> units and description. The table writer (rodyn_output_table, used by rodyn_output and
+!> rodyn_output_dynamic) lays out the line tables' rows from these columns, and takes
+!> the header rows and the datasets' `units` and `description` attributes from here; the
 !> Python readers their columns and the units they expect (postproc/rodyn_post/schema.py,
 !> written from this file by tools/gen_output_schema.py); docs/output.md lists the same
 !> tables, columns and datasets with the same units. tests/program/check_output_schema.py
