@@ -89,6 +89,9 @@ module rodyn_dynamics
       !> from the static solution, at rest at their offset (vessel_offset_rest)
       type(vessel_t), allocatable :: vessels(:)
       real(wp), allocatable :: x_held(:, :)    !< (3, nn) prescribed positions at t_n+1 [m]
+      !> (3, 0:2, nn) the inertia's part per unit mass that does not depend on the unknowns
+      !> (inertia_rest), of the position (0) and of the directors d_1, d_2, for the step
+      real(wp), allocatable :: rest(:, :, :)
       real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional damping
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
       real(wp), allocatable :: dx_base(:, :)   !< (3, nn) dx at the base of the line search
@@ -158,7 +161,7 @@ contains
          prob%wf = 1.0_wp - prob%af
       end if
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%fdamp(6, nn), prob%dx(3, nn), &
-                prob%dx_base(3, nn))
+                prob%dx_base(3, nn), prob%rest(3, 0:2, nn))
       prob%x_start = state%x
       prob%x_held = state%x
       allocate (prob%motion_node(0))
@@ -245,6 +248,14 @@ contains
       prob%dt = dt
       call state_copy(prob%s1, prob%s0)
       if (prob%fields0) call step_fields(prob)
+      ! the inertia's constant part, once a step instead of once an iteration
+      do node = 1, prob%mesh%n_nodes
+         prob%rest(:, 0, node) = inertia_rest(prob, prob%s0%v(:, node), node, 0)
+         do i = 1, 2
+            if (prob%inert%md(i, node) == 0.0_wp) cycle
+            prob%rest(:, i, node) = inertia_rest(prob, prob%s0%dd(:, i, node), node, i)
+         end do
+      end do
       ! external forces at the force point: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
@@ -370,21 +381,21 @@ contains
       end if
       wp_ = this%wf
       do node = 1, this%mesh%n_nodes
-         fi = this%inert%m(node)*(c2*this%dx(:, node) - inertia_rest(this%s0%v(:, node), &
-                                                                     node, 0))
+         fi = this%inert%m(node)*(c2*this%dx(:, node) - this%rest(:, 0, node))
          this%fint(1:3, node) = this%fint(1:3, node) + fi
          fx = max(fx, maxval(abs(fi)))
-         kb = 0.0_wp
-         do j = 1, 3
-            kb(j, j) = c2*this%inert%m(node)
-         end do
+         if (want_k) then
+            kb = 0.0_wp
+            do j = 1, 3
+               kb(j, j) = c2*this%inert%m(node)
+            end do
+         end if
          do i = 1, 2
             mi = this%inert%md(i, node)
             if (mi == 0.0_wp) cycle
             d1 = this%s1%d(:, i, node)
             dm = (1.0_wp - wp_)*this%s0%d(:, i, node) + wp_*d1
-            h = mi*(c2*(d1 - this%s0%d(:, i, node)) &
-                    - inertia_rest(this%s0%dd(:, i, node), node, i))
+            h = mi*(c2*(d1 - this%s0%d(:, i, node)) - this%rest(:, i, node))
             this%fint(4:6, node) = this%fint(4:6, node) + cross(dm, h)
             if (.not. want_k) cycle
             ! d(dm x h) = wp (dth x d1) x h + dm x (mi c2 dth x d1)
@@ -424,35 +435,6 @@ contains
          if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
-   contains
-      !> The part of mass * (inertia + damping) per unit mass that does not depend on the
-      !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest). The
-      !> acceleration at t_n (generalized-alpha only: the other schemes' states hold
-      !> none) is node's, of its position (i = 0) or of its director i.
-      pure function inertia_rest(v0, node, i) result(g)
-         real(wp), intent(in) :: v0(3) !< velocity at t_n
-         integer, intent(in) :: node   !< node
-         integer, intent(in) :: i      !< 0: position, 1 or 2: director d_i
-         real(wp) :: g(3)
-         real(wp) :: b, gm, dt, a0(3)
-         if (this%scheme == scheme_alpha) then
-            if (i == 0) then
-               a0 = this%s0%a(:, node)
-            else
-               a0 = this%s0%ad(:, i, node)
-            end if
-            ! (1-am) a1 + am a0 + alpha v_f, a1 = (dq - dt v0 - dt^2 (1/2 - b) a0)/(b dt^2),
-            ! v_f = (1-af) v1 + af v0, v1 = v0 + dt ((1-gm) a0 + gm a1)
-            b = this%beta_n
-            gm = this%gamma_n
-            dt = this%dt
-            g = (1.0_wp - this%am)*(v0/(b*dt) + (0.5_wp - b)/b*a0) - this%am*a0 &
-                - this%alpha*(v0 + (1.0_wp - this%af)*dt*((1.0_wp - gm)*a0 &
-                - gm*(v0/(b*dt) + (0.5_wp - b)/b*a0)))
-         else
-            g = 2.0_wp/this%dt*v0
-         end if
-      end function inertia_rest
    end subroutine dyn_evaluate
 
    !> The water's and seabed's loads of the step (rodyn_water) at the force point of the
@@ -490,6 +472,36 @@ contains
       call assemble_water(this%water, this%mesh, this%sup, this%xf, this%vf, this%af_acc, &
                           this%wf, cv, ca, this%fint, this%bm, want_k)
    end subroutine water_loads_step
+
+   !> The part of mass * (inertia + damping) per unit mass that does not depend on the
+   !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest). The
+   !> acceleration at t_n (generalized-alpha only: the other schemes' states hold
+   !> none) is node's, of its position (i = 0) or of its director i.
+   pure function inertia_rest(this, v0, node, i) result(g)
+      type(dynamic_problem_t), intent(in) :: this !< problem (scheme, step, state at t_n)
+      real(wp), intent(in) :: v0(3) !< velocity at t_n
+      integer, intent(in) :: node   !< node
+      integer, intent(in) :: i      !< 0: position, 1 or 2: director d_i
+      real(wp) :: g(3)
+      real(wp) :: b, gm, dt, a0(3)
+      if (this%scheme == scheme_alpha) then
+         if (i == 0) then
+            a0 = this%s0%a(:, node)
+         else
+            a0 = this%s0%ad(:, i, node)
+         end if
+         ! (1-am) a1 + am a0 + alpha v_f, a1 = (dq - dt v0 - dt^2 (1/2 - b) a0)/(b dt^2),
+         ! v_f = (1-af) v1 + af v0, v1 = v0 + dt ((1-gm) a0 + gm a1)
+         b = this%beta_n
+         gm = this%gamma_n
+         dt = this%dt
+         g = (1.0_wp - this%am)*(v0/(b*dt) + (0.5_wp - b)/b*a0) - this%am*a0 &
+             - this%alpha*(v0 + (1.0_wp - this%af)*dt*((1.0_wp - gm)*a0 &
+             - gm*(v0/(b*dt) + (0.5_wp - b)/b*a0)))
+      else
+         g = 2.0_wp/this%dt*v0
+      end if
+   end function inertia_rest
 
    !> Remember the iterate (positions, directors, step displacement) as the base of the
    !> update.
