@@ -377,7 +377,7 @@ contains
       real(wp), intent(out) :: theta(m)  !< directions relative to the mean [rad]
       integer, parameter :: ng = 20000
       real(wp), allocatable :: cum(:), cumc(:)
-      real(wp) :: f0, f1, h, xmax, c0, c1, clo, chi, elo, ehi
+      real(wp) :: f0, f1, h, xmax, clo, chi, elo, ehi
       integer :: j, k
       theta = 0.0_wp
       xmax = min(pi, 2.0_wp*acos(exp(-40.0_wp/s)))
