@@ -43,14 +43,24 @@ contains
    pure function rotation_cayley(t) result(r)
       real(wp), intent(in) :: t(3) !< rotation vector, |t| = 2 tan(angle/2) [-]
       real(wp) :: r(3, 3)
-      real(wp) :: s(3, 3), c
-      integer :: i
-      s = skew(t)
-      c = 4.0_wp/(4.0_wp + dot_product(t, t))
-      r = c*(s + 0.5_wp*matmul(s, s))
-      do i = 1, 3
-         r(i, i) = r(i, i) + 1.0_wp
+      real(wp) :: c, tt, h
+      integer :: i, j
+      ! skew(t)^2 = t t^T - |t|^2 I: r = I + c (skew(t) + (t t^T - |t|^2 I)/2)
+      tt = dot_product(t, t)
+      c = 4.0_wp/(4.0_wp + tt)
+      h = 0.5_wp*c
+      do j = 1, 3
+         do i = 1, 3
+            r(i, j) = h*t(i)*t(j)
+         end do
+         r(j, j) = r(j, j) + (1.0_wp - h*tt)
       end do
+      r(2, 1) = r(2, 1) + c*t(3)
+      r(1, 2) = r(1, 2) - c*t(3)
+      r(3, 1) = r(3, 1) - c*t(2)
+      r(1, 3) = r(1, 3) + c*t(2)
+      r(3, 2) = r(3, 2) + c*t(1)
+      r(2, 3) = r(2, 3) - c*t(1)
    end function rotation_cayley
 
    !> Inverse Cayley transform: t with cay(t) = R, t = 4 axial(R) / (1 + tr R).
