@@ -53,6 +53,9 @@ H5_LINE_DATASETS = {
 # Datasets of the water physics (optional: absent in results of an older rodyn).
 H5_WATER_DATASETS = {"wall_tension": ("ng",), "seabed_normal": ("nn",),
                      "seabed_friction": ("nn",)}
+# Attributes read of the root, of /static (rodyn_post.schema.ATTRIBUTES has them all).
+H5_ROOT_ATTRIBUTES = ("complete", "status", "title", "version", "deck_file")
+H5_STATIC_ATTRIBUTES = ("load_factor", "increments", "iterations", "cutbacks", "wall_time_s")
 # Keys of status.txt and how to read them.
 STATUS_KEYS = {
     "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
@@ -200,13 +203,11 @@ def _read_h5(path: Path) -> StaticResults:
     except OSError as exc:
         raise RodynResultsError(f"{path}: cannot read as HDF5 ({exc})") from None
     with f:
-        info = {k: _h5_attr(f, k, path)
-                for k in ("complete", "status", "title", "version", "deck_file")}
+        info = {k: _h5_attr(f, k, path) for k in H5_ROOT_ATTRIBUTES}
         static = f.get("static")
         if not isinstance(static, h5py.Group):
             raise RodynResultsError(f"{path}: group /static missing")
-        counters = {k: _h5_attr(static, k, path) for k in
-                    ("load_factor", "increments", "iterations", "cutbacks", "wall_time_s")}
+        counters = {k: _h5_attr(static, k, path) for k in H5_STATIC_ATTRIBUTES}
         lines = []
         for group in static.values():
             if not isinstance(group, h5py.Group):
