@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import RodynResultsError  # noqa: F401  (also importable from here)
-from .schema import DATASETS, header
+from .schema import DATASETS, ENVIRONMENT, header
 
 H5_FILE = "results.h5"
 STATUS_FILE = "status.txt"
@@ -259,17 +259,18 @@ def _h5_dataset(group, key, path):
 
 def h5_units_checked(data, path):
     """A dataset of results.h5 or dynamic.h5 whose `units` attribute is those rodyn_post
-    reads it in (rodyn_post.schema.DATASETS; SI, docs/output.md); RodynResultsError
+    reads it in (rodyn_post.schema.DATASETS, ENVIRONMENT for /environment; SI, degrees
+    for the angles of /environment, docs/output.md); RodynResultsError
     otherwise. A dataset without the attribute (an older rodyn) or not in the schema
     passes."""
     parts = data.name.split("/")
     file = {"static": "results.h5", "dynamic": "dynamic.h5"}.get(parts[1])
-    if file is None or "units" not in data.attrs:
+    if (file is None and parts[1] != "environment") or "units" not in data.attrs:
         return data
     key = data.name
     if len(parts) == 4 and parts[2] not in ("log", "sea"):
         key = f"/{parts[1]}/LINE/{parts[3]}"
-    known = DATASETS[file].get(key)
+    known = (ENVIRONMENT if file is None else DATASETS[file]).get(key)
     units = data.attrs["units"]
     if isinstance(units, bytes):
         units = units.decode("utf-8")
