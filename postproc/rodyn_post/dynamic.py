@@ -78,6 +78,11 @@ H5_LOG_DATASETS = {
 }
 _OPTIONAL_LOG = ("hydro_work", "seabed_work")
 _LOG_INTEGERS = ("step", "iterations", "cutbacks")
+# Attributes read of the root, of /dynamic (at the end of a run): all in
+# rodyn_post.schema.ATTRIBUTES.
+H5_ROOT_ATTRIBUTES = ("complete", "status", "title", "version", "deck_file", "scheme", "dt")
+H5_DYNAMIC_ATTRIBUTES = ("steps", "step_iterations", "step_cutbacks", "time_reached_s",
+                         "wall_time_s")
 # Keys of a dynamic run's status.txt and how to read them (docs/output.md).
 STATUS_KEYS = {
     "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
@@ -386,8 +391,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
     except OSError as exc:
         raise RodynResultsError(f"{path}: cannot read as HDF5 ({exc})") from None
     with f:
-        info = {k: _h5_attr(f, k, path) for k in
-                ("complete", "status", "title", "version", "deck_file", "scheme", "dt")}
+        info = {k: _h5_attr(f, k, path) for k in H5_ROOT_ATTRIBUTES}
         dyn = f.get("dynamic")
         if not isinstance(dyn, h5py.Group):
             raise RodynResultsError(f"{path}: group /dynamic missing")
@@ -428,9 +432,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         finished = "steps" in dyn.attrs
         counters = {}
         if finished:
-            counters = {k: _h5_attr(dyn, k, path) for k in
-                        ("steps", "step_iterations", "step_cutbacks", "time_reached_s",
-                         "wall_time_s")}
+            counters = {k: _h5_attr(dyn, k, path) for k in H5_DYNAMIC_ATTRIBUTES}
     if not lines:
         raise RodynResultsError(f"{path}: no lines in /dynamic")
     step_time, lines = _same_step_rows(step_time, lines)

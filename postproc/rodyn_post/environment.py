@@ -21,17 +21,18 @@ from pathlib import Path
 import numpy as np
 
 from .errors import RodynResultsError
-from .schema import header
+from .schema import ENVIRONMENT, header
 
 ENVIRONMENT_CSV = "environment.csv"
 ENVIRONMENT_HEADER = header(ENVIRONMENT_CSV)  # rodyn_post.schema
-# scalar keys of environment.csv / datasets of /environment: (attribute, unit)
-_SCALARS = {
-    "surface_z": "m", "depth": "m", "density": "kg/m3", "current_ramp": "s",
-    "seabed_slope": "deg", "seabed_slope_dir": "deg", "seabed_stiffness": "N/m3",
-    "seabed_damping": "Pa s/m", "seabed_mu_axial": "-", "seabed_mu_lateral": "-",
-    "seabed_v_mob": "m/s",
-}
+_PROFILE = ("current_z", "current_speed", "current_heading")
+# units of the keys of environment.csv / datasets of /environment, as rodyn_post reads
+# them: the schema's (rodyn_post.schema.ENVIRONMENT); the counts current_levels and
+# seabed are dimensionless. A file that gives another unit is refused.
+KEY_UNITS = {**{p.rsplit("/", 1)[1]: u for p, (u, _) in ENVIRONMENT.items()},
+         "current_levels": "-", "seabed": "-"}
+# scalar keys of environment.csv / datasets of /environment
+_SCALARS = tuple(k for k in KEY_UNITS if k not in _PROFILE + ("current_levels", "seabed"))
 _REQUIRED = ("surface_z", "depth", "density")
 
 
@@ -124,18 +125,19 @@ def environment_of(h5file, path):
     """Environment from an open h5py File (None without /environment)."""
     import h5py
 
+    from .results import h5_units_checked   # each dataset's own units, as the schema's
     group = h5file.get("environment")
     if not isinstance(group, h5py.Group):
         return None
     values = {}
     for key in _SCALARS:
         if isinstance(group.get(key), h5py.Dataset):
-            values[key] = float(group[key][()])
+            values[key] = float(h5_units_checked(group[key], path)[()])
     arrays = {}
-    for key in ("current_z", "current_speed", "current_heading"):
+    for key in _PROFILE:
         data = group.get(key)
-        arrays[key] = (np.asarray(data[...], float).ravel() if isinstance(data, h5py.Dataset)
-                       else np.zeros(0))
+        arrays[key] = (np.asarray(h5_units_checked(data, path)[...], float).ravel()
+                       if isinstance(data, h5py.Dataset) else np.zeros(0))
     seabed = bool(group.attrs.get("seabed", "seabed_slope" in values))
     return _make(values, arrays, seabed, path)
 
@@ -165,19 +167,23 @@ def _read_csv(path: Path) -> Environment:
             where = f"{path}: line {reader.line_num}"
             if len(fields) != 3:
                 raise RodynResultsError(f"{where}: {len(fields)} fields, expected 3")
-            key, text, _unit = fields
+            key, text, unit = fields
             try:
                 value = float(text)
             except ValueError:
                 raise RodynResultsError(f"{where}: {key}: {text!r} is not a number") from None
             head, _, index = key.rpartition("_")
-            if head in ("current_z", "current_speed", "current_heading") and index.isdigit():
+            known = KEY_UNITS.get(head if head in _PROFILE and index.isdigit() else key)
+            if known is not None and unit != known:
+                raise RodynResultsError(f"{where}: {key} is in {unit!r}, rodyn_post reads it "
+                                        f"in {known!r} (docs/output.md)")
+            if head in _PROFILE and index.isdigit():
                 profile.setdefault(head, {})[int(index)] = value
             else:
                 values[key] = value
     n = int(values.get("current_levels", 0))
     arrays = {}
-    for key in ("current_z", "current_speed", "current_heading"):
+    for key in _PROFILE:
         given = profile.get(key, {})
         if sorted(given) != list(range(1, n + 1)):
             raise RodynResultsError(f"{path}: {key}_1 .. {key}_{n} expected "

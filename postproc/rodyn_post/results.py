@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import RodynResultsError  # noqa: F401  (also importable from here)
-from .schema import DATASETS, header
+from .schema import DATASETS, ENVIRONMENT, header
 
 H5_FILE = "results.h5"
 STATUS_FILE = "status.txt"
@@ -53,6 +53,9 @@ H5_LINE_DATASETS = {
 # Datasets of the water physics (optional: absent in results of an older rodyn).
 H5_WATER_DATASETS = {"wall_tension": ("ng",), "seabed_normal": ("nn",),
                      "seabed_friction": ("nn",)}
+# Attributes read of the root, of /static (rodyn_post.schema.ATTRIBUTES has them all).
+H5_ROOT_ATTRIBUTES = ("complete", "status", "title", "version", "deck_file")
+H5_STATIC_ATTRIBUTES = ("load_factor", "increments", "iterations", "cutbacks", "wall_time_s")
 # Keys of status.txt and how to read them.
 STATUS_KEYS = {
     "complete": "bool", "status": "str", "load_factor": "float", "increments": "int",
@@ -200,13 +203,11 @@ def _read_h5(path: Path) -> StaticResults:
     except OSError as exc:
         raise RodynResultsError(f"{path}: cannot read as HDF5 ({exc})") from None
     with f:
-        info = {k: _h5_attr(f, k, path)
-                for k in ("complete", "status", "title", "version", "deck_file")}
+        info = {k: _h5_attr(f, k, path) for k in H5_ROOT_ATTRIBUTES}
         static = f.get("static")
         if not isinstance(static, h5py.Group):
             raise RodynResultsError(f"{path}: group /static missing")
-        counters = {k: _h5_attr(static, k, path) for k in
-                    ("load_factor", "increments", "iterations", "cutbacks", "wall_time_s")}
+        counters = {k: _h5_attr(static, k, path) for k in H5_STATIC_ATTRIBUTES}
         lines = []
         for group in static.values():
             if not isinstance(group, h5py.Group):
@@ -258,17 +259,18 @@ def _h5_dataset(group, key, path):
 
 def h5_units_checked(data, path):
     """A dataset of results.h5 or dynamic.h5 whose `units` attribute is those rodyn_post
-    reads it in (rodyn_post.schema.DATASETS; SI, docs/output.md); RodynResultsError
+    reads it in (rodyn_post.schema.DATASETS, ENVIRONMENT for /environment; SI, degrees
+    for the angles of /environment, docs/output.md); RodynResultsError
     otherwise. A dataset without the attribute (an older rodyn) or not in the schema
     passes."""
     parts = data.name.split("/")
     file = {"static": "results.h5", "dynamic": "dynamic.h5"}.get(parts[1])
-    if file is None or "units" not in data.attrs:
+    if (file is None and parts[1] != "environment") or "units" not in data.attrs:
         return data
     key = data.name
     if len(parts) == 4 and parts[2] not in ("log", "sea"):
         key = f"/{parts[1]}/LINE/{parts[3]}"
-    known = DATASETS[file].get(key)
+    known = (ENVIRONMENT if file is None else DATASETS[file]).get(key)
     units = data.attrs["units"]
     if isinstance(units, bytes):
         units = units.decode("utf-8")

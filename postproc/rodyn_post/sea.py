@@ -140,17 +140,13 @@ def _grouped(path: Path, keys: tuple, with_step: bool, status, warnings: list) -
     return np.array(times[:n], dtype=float), data, steps
 
 
-# /dynamic/sea of dynamic.h5: (frame dataset, step dataset, columns per item)
-_H5 = {"waves": ("probe_elevation", "step_probe_elevation", 1),
-       "vessels": ("vessel_motion", "step_vessel_motion", 7),
-       "vessel_load": ("vessel_load", "step_vessel_load", 12),
-       "connections": ("connection_load", "step_connection_load", 13)}
-
-
 def _read_sea_h5(path: Path, status):
     """The Sea of dynamic.h5's /dynamic/sea (None when it has none): the same columns as
     the CSV tables (x_m, y_m of a probe from probe_xy); frames and steps cut to those
-    status.txt commits (`frames`, and the steps up to the last committed frame's time)."""
+    status.txt commits (`frames`, and the steps up to the last committed frame's time).
+    The layout is the file's own: the items are those its attributes probes, vessels and
+    connections name, each item's columns a dataset's width over their number; these
+    must add up to the columns of the matching table of the schema (RodynResultsError)."""
     import h5py
 
     from .results import _h5_dataset
@@ -177,9 +173,28 @@ def _read_sea_h5(path: Path, status):
         def data(name, n):
             return _h5_dataset(g, name, path)[:n]   # its units checked
 
+        def widths(names, table, lead, *datasets):
+            """Columns per item of each dataset (its width over the items' number),
+            checked against the schema's columns of `table` after `lead` key columns."""
+            out = []
+            for name in datasets:
+                width, rest = divmod(_h5_dataset(g, name, path).shape[1], len(names))
+                if rest or width < 1:
+                    raise RodynResultsError(
+                        f"{path}: /dynamic/sea/{name} has {width * len(names) + rest} "
+                        f"columns, not a multiple of the {len(names)} names {names}")
+                out.append(width)
+            if sum(out) != len(header(table)) - lead:
+                raise RodynResultsError(
+                    f"{path}: /dynamic/sea/{', '.join(datasets)} hold {sum(out)} columns "
+                    f"per item, the schema's {table} {len(header(table)) - lead}")
+            return out
+
         out = {"waves": {}, "vessels": {}, "connections": {}}
         names = split("probes")
         if names:
+            widths(names, WAVES_CSV, 4, "probe_elevation")   # time, probe, x, y lead
+            widths(names, WAVES_CSV, 4, "step_probe_elevation")
             xy = _h5_dataset(g, "probe_xy", path)[...]
             fr, st = data("probe_elevation", n_f), data("step_probe_elevation", n_s)
             for k, name in enumerate(names):
@@ -191,21 +206,25 @@ def _read_sea_h5(path: Path, status):
                     steps=cols(st, n_s))
         names = split("vessels")
         if names:
+            a, b = widths(names, VESSELS_CSV, 2, "vessel_motion", "vessel_load")
+            widths(names, VESSELS_CSV, 2, "step_vessel_motion", "step_vessel_load")
             m, sm = data("vessel_motion", n_f), data("step_vessel_motion", n_s)
             ld, sl = data("vessel_load", n_f), data("step_vessel_load", n_s)
             for k, name in enumerate(names):
                 out["vessels"][name] = SeaSeries(
                     key=(name,), columns=header(VESSELS_CSV)[2:], time=time,
-                    frames=np.column_stack([m[:, 7 * k:7 * k + 7], ld[:, 12 * k:12 * k + 12]]),
+                    frames=np.column_stack([m[:, a * k:a * k + a], ld[:, b * k:b * k + b]]),
                     step=step, step_time=step_time,
-                    steps=np.column_stack([sm[:, 7 * k:7 * k + 7], sl[:, 12 * k:12 * k + 12]]))
+                    steps=np.column_stack([sm[:, a * k:a * k + a], sl[:, b * k:b * k + b]]))
         names = split("connections")
         if names:
+            w, = widths(names, CONNECTIONS_CSV, 4, "connection_load")
+            widths(names, CONNECTIONS_CSV, 4, "step_connection_load")
             c, sc = data("connection_load", n_f), data("step_connection_load", n_s)
             for k, name in enumerate(names):
                 key = tuple(name.split("/"))
                 out["connections"][key] = SeaSeries(
                     key=key, columns=header(CONNECTIONS_CSV)[4:], time=time,
-                    frames=c[:, 13 * k:13 * k + 13], step=step, step_time=step_time,
-                    steps=sc[:, 13 * k:13 * k + 13])
+                    frames=c[:, w * k:w * k + w], step=step, step_time=step_time,
+                    steps=sc[:, w * k:w * k + w])
     return Sea(probes=out["waves"], vessels=out["vessels"], connections=out["connections"])

@@ -48,3 +48,33 @@ def test_units_read_from_the_file(short_run, tmp_path, file, dataset):
         f[f"{group.name}/{name}"].attrs["units"] = "furlong"
     with pytest.raises(RodynResultsError, match="'furlong'"):
         load(folder / file)
+
+
+def test_readers_read_only_what_the_schema_describes():
+    """Every dataset, attribute and status.txt key the readers ask a file for is in the
+    one description of the output (rodyn_post.schema): the HDF5 datasets of a line group
+    and of the step log, the root and group attributes, the status keys."""
+    static = schema.DATASETS["results.h5"]
+    for name in {**results.H5_LINE_DATASETS, **results.H5_WATER_DATASETS}:
+        assert f"/static/LINE/{name}" in static, name
+    dyn = schema.DATASETS["dynamic.h5"]
+    for name in {**dynamic.H5_LINE_DATASETS, **dynamic.H5_WATER_DATASETS}:
+        assert f"/dynamic/LINE/{name}" in dyn, name
+    for name in dynamic.H5_LOG_DATASETS:
+        assert f"/dynamic/log/{name}" in dyn, name
+    for file, objects in (("results.h5", {"/": results.H5_ROOT_ATTRIBUTES,
+                                           "/static": results.H5_STATIC_ATTRIBUTES,
+                                           "/static/LINE": ("name", "touchdown_s"),
+                                           "/static/LINE/reactions": ("end_held",)}),
+                          ("dynamic.h5", {"/": dynamic.H5_ROOT_ATTRIBUTES,
+                                          "/dynamic": dynamic.H5_DYNAMIC_ATTRIBUTES,
+                                          "/dynamic/LINE": ("name",),
+                                          "/dynamic/LINE/reactions": ("end_held",),
+                                          "/dynamic/sea": ("probes", "vessels",
+                                                           "connections")})):
+        for obj, names in objects.items():
+            for name in names:
+                assert f"{obj}:{name}" in schema.ATTRIBUTES[file], (file, obj, name)
+    keys = {key for key, _, _ in schema.STATUS}
+    for module in (results, dynamic):
+        assert set(module.STATUS_KEYS) <= keys, set(module.STATUS_KEYS) - keys

@@ -156,15 +156,7 @@ def test_malformed_table(sea_run, tmp_path):
 def test_hdf5_same_as_csv(sea_run, tmp_path):
     """A run's /dynamic/sea holds the values of the CSV tables, bit for bit; read from it
     when the CSV tables are absent (CSV=NO)."""
-    folder = tmp_path / "h5only"
-    shutil.copytree(sea_run, folder)
-    for path in folder.glob("dynamic_*.csv"):
-        if any(k in path.name for k in ("waves", "vessels", "connections")):
-            path.unlink()
-    text = (folder / "status.txt").read_text()
-    (folder / "status.txt").write_text("".join(
-        line + "\n" for line in text.splitlines()
-        if not any(k in line for k in ("_waves", "_vessels", "_connections"))))
+    folder = _h5_only(sea_run, tmp_path / "h5only")
     csv_sea = load_dynamic(sea_run).sea
     h5_sea = load_dynamic(folder).sea
     for kind in ("probes", "vessels", "connections"):
@@ -177,3 +169,43 @@ def test_hdf5_same_as_csv(sea_run, tmp_path):
             np.testing.assert_array_equal(a[key].time, b[key].time)
             np.testing.assert_array_equal(a[key].step_time, b[key].step_time)
             np.testing.assert_array_equal(a[key].step, b[key].step)
+
+
+def _h5_only(sea_run, folder):
+    """A copy of the run without its sea tables (read from dynamic.h5's /dynamic/sea)."""
+    shutil.copytree(sea_run, folder)
+    for path in folder.glob("dynamic_*.csv"):
+        if any(k in path.name for k in ("waves", "vessels", "connections")):
+            path.unlink()
+    text = (folder / "status.txt").read_text()
+    (folder / "status.txt").write_text("".join(
+        line + "\n" for line in text.splitlines()
+        if not any(k in line for k in ("_waves", "_vessels", "_connections"))))
+    return folder
+
+
+@pytest.mark.parametrize("change", ["two vessel names", "a connection column more"])
+def test_hdf5_layout_is_the_files(sea_run, tmp_path, change):
+    """/dynamic/sea is read by its own layout (issue 12, "Design"): the items its
+    attributes name, each dataset's width split among them, and the columns that gives
+    checked against the schema's tables. A file whose attributes name more vessels than
+    its datasets hold, or whose connection rows have a column the schema has not, is
+    refused naming the dataset (it was read with fixed widths, silently wrong)."""
+    import h5py
+    folder = _h5_only(sea_run, tmp_path / "h5only")
+    with h5py.File(folder / "dynamic.h5", "r+") as f:
+        g = f["dynamic/sea"]
+        if change == "two vessel names":
+            g.attrs["vessels"] = "SHIP, SHIP2"
+            dataset = "vessel_motion"
+        else:
+            for name in ("connection_load", "step_connection_load"):
+                old = g[name]
+                values, attrs = old[...], dict(old.attrs)
+                del g[name]
+                new = g.create_dataset(name, data=np.column_stack(
+                    [values, np.zeros(len(values))]))
+                new.attrs.update(attrs)
+            dataset = "connection_load"
+    with pytest.raises(RodynResultsError, match=dataset):
+        load_dynamic(folder)

@@ -136,6 +136,35 @@ def test_environment_from_h5_equals_csv(tmp_path):
         np.testing.assert_array_equal(getattr(a, key), getattr(b, key))
 
 
+@pytest.mark.parametrize("kind, key", [("h5", "seabed_slope"), ("h5", "current_heading"),
+                                       ("csv", "seabed_slope"), ("csv", "current_heading_2")])
+def test_environment_units_are_the_files(tmp_path, kind, key):
+    """The environment is read in the units the file gives (each /environment dataset's
+    `units` attribute, environment.csv's unit column), checked against the schema's
+    (issue 12, "Design"): an angle the file says is in radians is refused, naming it,
+    not read as degrees."""
+    if kind == "h5":
+        path = tmp_path / "r.h5"
+        with h5py.File(path, "w"):
+            pass
+        write_environment_h5(path)
+        with h5py.File(path, "a") as f:
+            f["environment"][key].attrs["units"] = "deg"
+        assert load_environment(path).seabed_slope == SLOPE      # as written: read
+        with h5py.File(path, "a") as f:
+            f["environment"][key].attrs["units"] = "rad"
+    else:
+        write_environment_csv(tmp_path)
+        path = tmp_path
+        assert load_environment(path).seabed_slope == SLOPE
+        text = (tmp_path / "environment.csv").read_text()
+        line = next(row for row in text.splitlines() if row.startswith(key + ","))
+        assert line.endswith(",deg")
+        (tmp_path / "environment.csv").write_text(text.replace(line, line[:-3] + "rad"))
+    with pytest.raises(RodynResultsError, match=f"{key}.*'rad'"):
+        load_environment(path)
+
+
 def test_dry_folder_has_no_environment_and_bad_one_is_named(tmp_path):
     assert load_environment(tmp_path) is None
     (tmp_path / "environment.csv").write_text("key,value,unit\ndepth,deep,m\n")

@@ -2,12 +2,14 @@
 """Run a command on a deck and check its exit code and error message.
 
 Usage:
-    python3 run_expect.py --exit CODE [--expect TEXT] EXE ARGS... DECK
+    python3 run_expect.py --exit CODE [--expect TEXT] [--no-warning] EXE ARGS... DECK
 
 Runs `EXE ARGS... DECK`, then checks that
   * the exit code is CODE, and
   * stderr contains the text of every `** EXPECT: <text>` line of DECK (and every
-    --expect TEXT given), as a plain substring.
+    --expect TEXT given), as a plain substring, and
+  * with --no-warning, stderr has no ': warning:' (a shipped deck that aliases its
+    motion or writes too few frames to catch its extremes warns: issue 12).
 A DECK that does not exist has no EXPECT lines (used to test a missing deck).
 Prints what it got on a mismatch. Exits 0 on a match, 1 otherwise.
 """
@@ -40,6 +42,8 @@ def main():
                         help="expected exit code")
     parser.add_argument("--expect", action="append", default=[],
                         help="extra text stderr must contain (repeatable)")
+    parser.add_argument("--no-warning", action="store_true",
+                        help="fail when rodyn warns (': warning:' in stderr)")
     parser.add_argument("command", nargs=argparse.REMAINDER,
                         help="EXE ARGS... DECK (the deck is the last argument)")
     args = parser.parse_args()
@@ -61,6 +65,9 @@ def main():
     for text in expected:
         if text not in proc.stderr:
             problems.append(f"stderr lacks: {text}")
+    if args.no_warning and ": warning:" in proc.stderr:
+        problems.append("warns (--no-warning): " + next(
+            line for line in proc.stderr.splitlines() if ": warning:" in line))
 
     if problems:
         print(f"FAIL {deck}")

@@ -26,7 +26,9 @@ every HDF5 dataset (but /environment's) with its unit and meaning. Checks:
      schema's units and description; docs/output.md's Environment table gives each the
      same unit (current_z as current_z_<k>); schema.py has them (ENVIRONMENT);
   7. the attributes of groups (and end_held) of the run's results.h5 and dynamic.h5 are
-     exactly those of output_attributes (schema.py: ATTRIBUTES).
+     exactly those of output_attributes (schema.py: ATTRIBUTES), and docs/output.md's
+     layouts of the two files name exactly those attributes, with the schema's unit
+     where it has one; its text states the `units` and `description` of every dataset.
 """
 import pathlib
 import re
@@ -102,6 +104,99 @@ def check_attributes(src, attributes, out):
                  f"{set(attributes[name]) - found}, not in the schema "
                  f"{found - set(attributes[name])}")
         print(f"{name}: its {len(found)} attributes are the schema's")
+
+
+def layout_block(text, heading):
+    """The first code block (```) after `heading` in docs/output.md: an HDF5 layout."""
+    start = text.index("\n" + heading + "\n")
+    begin = text.index("```\n", start) + 4
+    return text[begin:text.index("```", begin)]
+
+
+ATTRIBUTE_NAMES = re.compile(r"\battributes? ([a-z][a-z0-9_]*(?:, [a-z][a-z0-9_]*)*)"
+                             r"(?![a-z0-9_])")
+
+
+def doc_layout_attributes(block):
+    """{'object:attribute': text} of the attributes a layout of docs/output.md gives:
+    the indented lines under an object line ending 'attributes:' or '...:' after
+    'attributes' (names before a space), 'attribute NAME[, NAME]' in an object's text
+    or its continuation lines, and 'one attribute per deck parameter' (NAME); an
+    object's text 'as in results.h5' (no attributes of its own) is marked REF. The text
+    of an attribute is what follows its names on that line (its type, unit, meaning)."""
+    out, group, current, listing, group_text = {}, None, None, False, ""
+
+    def inline(obj, line):
+        if "attribute per deck" in line:
+            out[f"{obj}:NAME"] = line
+        for m in ATTRIBUTE_NAMES.finditer(line):
+            if m.group(1) == "per":
+                continue
+            for name in m.group(1).split(", "):
+                out[f"{obj}:{name}"] = line[m.end():]
+
+    for line in block.splitlines():
+        if line.startswith("/"):
+            current = group = line.replace("<LINE NAME>", "LINE").split()[0]
+            group_text = line
+            listing = line.rstrip().endswith(":") and "attributes" in line
+            inline(current, line)
+            if "as in results.h5" in line:
+                out[f"{current}:REF"] = line
+            continue
+        member = re.match(r"^    ([a-z][a-z0-9_]*)(?:, [a-z][a-z0-9_]*)*\s+\(", line)
+        if member and group:
+            current, listing = group + "/" + member.group(1), False
+            inline(current, line)
+        elif line.startswith(" " * 30) and current:
+            inline(current, line)
+            listing = listing or (current == group and line.rstrip().endswith(":")
+                                  and "attributes" in group_text)
+        elif listing and line.startswith("    "):
+            m = re.match(r"^    ([a-z][a-z0-9_]*(?:, [a-z][a-z0-9_]*)*)(\s+|$)", line)
+            if m:
+                for name in m.group(1).split(", "):
+                    out[f"{current}:{name}"] = line[m.end():]
+    return out
+
+
+def check_docs_attributes(src, attributes):
+    """docs/output.md's layouts of results.h5 and dynamic.h5 (and the Environment block
+    for /environment) name exactly the attributes of output_attributes, each with its
+    unit where it has one ('[u]' or ', u,' in its text); an object of dynamic.h5 'as in
+    results.h5' takes results.h5's. Every dataset's `units` and `description` are stated
+    in both sections."""
+    text = (src / "docs" / "output.md").read_text()
+    environment = doc_layout_attributes(layout_block(text, "## Environment"))
+    docs = {}
+    for file, heading in (("results.h5", "## results.h5"), ("dynamic.h5", "### dynamic.h5")):
+        found = doc_layout_attributes(layout_block(text, heading))
+        if "/environment:REF" in found or file == "results.h5":
+            found.update(environment)
+        for ref in [k for k in found if k.endswith(":REF")]:
+            obj = ref[:-len(":REF")]
+            found.update({k: v for k, v in docs["results.h5"].items()
+                          if k.startswith(obj + ":")})
+            del found[ref]
+        docs[file] = found
+        schema = attributes[file]
+        if set(found) != set(schema):
+            fail(f"docs/output.md, {file}: attributes differ from the schema "
+                 f"(output_attributes): not documented {sorted(set(schema) - set(found))}, "
+                 f"not in the schema {sorted(set(found) - set(schema))}")
+        for name, (unit, _) in schema.items():
+            if unit != "-" and not re.search(
+                    r"(\[" + re.escape(unit) + r"\]|[,(:]\s*" + re.escape(unit) + r"\s*[,)])",
+                    found[name]):
+                fail(f"docs/output.md, {file}: attribute {name} is in {unit} (the schema); "
+                     f"its text {found[name].strip()!r} does not say so")
+        print(f"docs/output.md: the {len(found)} attributes of {file} as in the schema")
+    section = text[text.index("\n## results.h5\n"):text.index("\n## Dynamic runs\n")]
+    dynamic = text[text.index("\n### dynamic.h5\n"):]
+    if ("two string attributes: `units`" not in section or "`description`" not in section
+            or "a `units` and a `description`\nattribute on every dataset" not in dynamic):
+        fail("docs/output.md: the `units` and `description` attributes of every dataset "
+             "are not stated for results.h5 and dynamic.h5")
 
 
 def check_environment(src, environment, out):
@@ -391,6 +486,7 @@ def main():
     check_status(src, status, work / "out")
     check_environment(src, environment, work / "out")
     check_attributes(src, attributes, work / "out")
+    check_docs_attributes(src, attributes)
     print("OK")
 
 
