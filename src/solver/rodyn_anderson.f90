@@ -31,29 +31,30 @@ module rodyn_anderson
    private
    public :: anderson_t, anderson_init, anderson_clear, anderson_step
 
-   !> The history of one Newton problem (allocated once, outside the Newton loop).
+   !> The history of one Newton problem (allocated once, outside the Newton loop): depth
+   !> slots of (s, df), each either a column held or the pending pair (the last correction
+   !> applied, and in df the chord step it came from, until the next step completes it).
    type :: anderson_t
-      integer :: depth = 0                    !< columns kept at most (0: no acceleration)
-      integer :: m = 0                        !< columns held now
-      integer :: newest = 0                   !< slot of the newest column (ring)
-      logical :: have_last = .false.          !< f_last and s_last belong to this history
+      integer :: depth = 0                    !< slots (0: no acceleration)
+      integer :: m = 0                        !< columns held
+      integer :: cols(8) = 0                  !< their slots, oldest first
+      integer :: pend = 0                     !< slot of the pending pair (0: none)
+      real(wp) :: g(8, 8) = 0.0_wp            !< Gram matrix df_a . df_b of the slots held
       real(wp), allocatable :: s(:, :)        !< (n, depth) corrections applied
       real(wp), allocatable :: df(:, :)       !< (n, depth) changes of the chord step
-      real(wp), allocatable :: f_last(:)      !< (n) the last chord step
-      real(wp), allocatable :: s_last(:)      !< (n) the last correction applied
    end type anderson_t
 
 contains
 
-   !> Allocate the history for n unknowns and `depth` columns (depth 0: none kept).
+   !> Allocate the history for n unknowns and `depth` slots (depth 0: none kept).
    subroutine anderson_init(aa, n, depth)
       type(anderson_t), intent(inout) :: aa !< history
       integer, intent(in) :: n              !< unknowns
-      integer, intent(in) :: depth          !< columns kept (0..8)
+      integer, intent(in) :: depth          !< slots (0..8)
       aa%depth = max(0, min(depth, 8))
-      if (allocated(aa%s)) deallocate (aa%s, aa%df, aa%f_last, aa%s_last)
+      if (allocated(aa%s)) deallocate (aa%s, aa%df)
       if (aa%depth == 0) return
-      allocate (aa%s(n, aa%depth), aa%df(n, aa%depth), aa%f_last(n), aa%s_last(n))
+      allocate (aa%s(n, aa%depth), aa%df(n, aa%depth))
       call anderson_clear(aa)
    end subroutine anderson_init
 
@@ -61,56 +62,80 @@ contains
    pure subroutine anderson_clear(aa)
       type(anderson_t), intent(inout) :: aa !< history
       aa%m = 0
-      aa%newest = 0
-      aa%have_last = .false.
+      aa%pend = 0
    end subroutine anderson_clear
 
    !> Replace the chord step f (in) by the accelerated correction s_k (out), and record
    !> the pair for the next iteration. The caller applies f in full (no line search).
+   !> Only the new column's Gram row is computed; the others are kept.
    pure subroutine anderson_step(aa, f)
       type(anderson_t), intent(inout) :: aa !< history
       real(wp), intent(inout) :: f(:)       !< chord step in, correction out
-      real(wp) :: g(8, 8), gam(8)
-      integer :: i, j, ci, cj
-      logical :: ok
+      real(wp) :: a(8, 8), gam(8), fi, g1
+      integer :: i, j, p, q, m, cj
+      logical :: ok, drop
       if (aa%depth == 0) return
-      if (aa%have_last) then
-         ! the newest column: s_{k-1} and f_k - f_{k-1}
-         aa%newest = mod(aa%newest, aa%depth) + 1
-         aa%m = min(aa%m + 1, aa%depth)
-         aa%s(:, aa%newest) = aa%s_last
-         aa%df(:, aa%newest) = f - aa%f_last
-      end if
-      aa%f_last = f
-      if (aa%m > 0) then
-         do j = 1, aa%m
-            cj = col(j)
-            do i = 1, j
-               ci = col(i)
-               g(i, j) = dot_product(aa%df(:, ci), aa%df(:, cj))
-               g(j, i) = g(i, j)
-            end do
+      m = 0
+      if (aa%pend > 0) then
+         ! complete the pending column: df = f_k - f_{k-1} (f_{k-1} was kept in df)
+         p = aa%pend
+         aa%df(:, p) = f - aa%df(:, p)
+         aa%m = aa%m + 1
+         aa%cols(aa%m) = p
+         m = aa%m
+         do j = 1, m
+            cj = aa%cols(j)
+            aa%g(p, cj) = dot_product(aa%df(:, p), aa%df(:, cj))
+            aa%g(cj, p) = aa%g(p, cj)
             gam(j) = dot_product(aa%df(:, cj), f)
          end do
-         call solve_gram(aa%m, g(1:aa%m, 1:aa%m), gam(1:aa%m), ok)
-         if (ok) then
-            do j = 1, aa%m
-               cj = col(j)
-               f = f - gam(j)*(aa%s(:, cj) + aa%df(:, cj))
+         do j = 1, m
+            do i = 1, m
+               a(i, j) = aa%g(aa%cols(i), aa%cols(j))
             end do
-         else
-            call anderson_clear(aa)     ! dependent columns: start the history again
-            aa%f_last = f
+         end do
+         call solve_gram(m, a(1:m, 1:m), gam(1:m), ok)
+         if (.not. ok) then             ! dependent columns: the plain step, history anew
+            aa%m = 0
+            m = 0
          end if
       end if
-      aa%s_last = f
-      aa%have_last = .true.
+      ! the slot of the new pending pair: a free one, or the oldest column's, dropped
+      ! once this update has used it
+      drop = m == aa%depth
+      if (drop) then
+         q = aa%cols(1)
+         g1 = gam(1)
+         do i = 1, size(f)
+            fi = f(i)
+            f(i) = fi - g1*(aa%s(i, q) + aa%df(i, q))
+            aa%df(i, q) = fi
+         end do
+         aa%cols(1:m - 1) = aa%cols(2:m)
+         aa%m = m - 1
+         gam(1:m - 1) = gam(2:m)
+         m = m - 1
+      else
+         q = free_slot()
+         aa%df(:, q) = f
+      end if
+      do j = 1, m
+         cj = aa%cols(j)
+         f = f - gam(j)*(aa%s(:, cj) + aa%df(:, cj))
+      end do
+      aa%s(:, q) = f
+      aa%pend = q
    contains
-      !> Slot of the j-th column held, oldest first.
-      pure integer function col(j)
-         integer, intent(in) :: j
-         col = mod(aa%newest - aa%m + j - 1 + aa%depth, aa%depth) + 1
-      end function col
+      !> A slot neither held nor pending (there is one while m < depth).
+      pure integer function free_slot()
+         integer :: k
+         do k = 1, aa%depth
+            if (any(aa%cols(1:aa%m) == k)) cycle
+            free_slot = k
+            return
+         end do
+         free_slot = 1
+      end function free_slot
    end subroutine anderson_step
 
    !> Solve the Gram system g x = b in place by elimination without pivoting (g is
