@@ -50,7 +50,7 @@ module rodyn_deck_lexer
    integer, parameter :: min_exponent10 = -100  !< non-zero numbers are at least 10**min_..
    character(len=1), parameter :: lf = achar(10), cr = achar(13), tab = achar(9)
    !> the UTF-8 byte-order mark, EF BB BF
-   character(len=3), parameter :: utf8_bom = achar(239)//achar(187)//achar(191)
+   character(len=3), parameter :: utf8_bom = char(239)//char(187)//char(191)
 
    !> A string of any length (one field of a data line, one line of a file).
    type :: field_t
@@ -1375,7 +1375,7 @@ contains
       integer :: eol
       msg = ''
       if (len(text) >= 2) then
-         if (text(1:2) == achar(255)//achar(254) .or. text(1:2) == achar(254)//achar(255)) &
+         if (text(1:2) == char(255)//char(254) .or. text(1:2) == char(254)//char(255)) &
             then
             msg = 'the file is UTF-16 (it starts with a UTF-16 byte-order mark): save it'// &
                   ' as UTF-8 or ASCII'
