@@ -79,14 +79,24 @@ def read_schema(dump):
     return columns, headers, datasets, status, environment, attributes
 
 
+def python_schema(src):
+    """postproc's generated schema module (rodyn_post.schema) of the source tree src."""
+    sys.path.insert(0, str(src / "postproc"))
+    from rodyn_post import schema
+    return schema
+
+
+def check_generated(what, ours, generated):
+    """One part of the schema as the Fortran dump gives it against rodyn_post.schema's."""
+    if ours != generated:
+        fail(f"postproc/rodyn_post/schema.py: {what} differs from the schema: run "
+             "python3 tools/gen_output_schema.py")
+
+
 def check_attributes(src, attributes, out):
     """The attributes of the run's HDF5 files against the schema's."""
     import h5py
-    sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import schema
-    if attributes != schema.ATTRIBUTES:
-        fail("postproc/rodyn_post/schema.py: ATTRIBUTES differs from the schema: run "
-             "python3 tools/gen_output_schema.py")
+    check_generated("ATTRIBUTES", attributes, python_schema(src).ATTRIBUTES)
     for name in ("results.h5", "dynamic.h5"):
         found = set()
 
@@ -202,11 +212,7 @@ def check_docs_attributes(src, attributes):
 def check_environment(src, environment, out):
     """The /environment datasets of a run and of docs/output.md against the schema."""
     import h5py
-    sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import schema
-    if environment != schema.ENVIRONMENT:
-        fail("postproc/rodyn_post/schema.py: ENVIRONMENT differs from the schema: run "
-             "python3 tools/gen_output_schema.py")
+    check_generated("ENVIRONMENT", environment, python_schema(src).ENVIRONMENT)
     for name in ("results.h5", "dynamic.h5"):
         with h5py.File(out / name, "r") as f:
             found = {"/environment/" + k: (str(d.attrs["units"]), str(d.attrs["description"]))
@@ -261,11 +267,7 @@ def check_status(src, status, out):
              f"{missing}, not in the schema {extra}")
     if "`parameter.NAME = text`" not in text:
         fail("docs/output.md: the key parameter.NAME of status.txt is not documented")
-    sys.path.insert(0, str(src / "postproc"))
-    from rodyn_post import schema
-    if tuple(status) != tuple(schema.STATUS):
-        fail("postproc/rodyn_post/schema.py: STATUS differs from the schema: run "
-             "python3 tools/gen_output_schema.py")
+    check_generated("STATUS", tuple(status), tuple(python_schema(src).STATUS))
     patterns = status_key_pattern(status)
     last = -1
     written = [line.partition(" = ")[0] for line in (out / "status.txt").read_text()
