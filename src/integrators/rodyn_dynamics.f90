@@ -246,6 +246,7 @@ contains
       integer :: node, i
       prob%t0 = t0
       prob%dt = dt
+      prob%base_set = .false.
       call state_copy(prob%s1, prob%s0)
       if (prob%fields0) call step_fields(prob)
       ! the inertia's constant part, once a step instead of once an iteration
@@ -351,7 +352,13 @@ contains
       real(wp) :: fx, mx
       integer :: node, i, j, k
       if (has_error(err)) return
-      if (this%fields0) then
+      ! a tangent formed after a correction takes its stresses from the strains
+      ! linearized from the iterate before (rodyn_rod_dynamic's header, EMC only)
+      if (this%fields0 .and. this%base_set .and. this%scheme == scheme_emc) then
+         call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
+                               this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
+                               this%gp0, this%epsn, this%x_base, this%d_base)
+      else if (this%fields0) then
          call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                                this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
                                this%gp0, this%epsn)
@@ -510,6 +517,7 @@ contains
       this%x_base = this%s1%x
       if (this%mesh%n_cable < this%mesh%n_elements) this%d_base = this%s1%d
       this%dx_base = this%dx
+      this%base_set = .true.
    end subroutine dyn_save_base
 
    !> x = x^n + dx, dx = dx_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.

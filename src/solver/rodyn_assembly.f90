@@ -432,7 +432,7 @@ contains
    !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
    !> The damping forces are also returned in fdamp (for the energy log).
    subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
-                               want_k, gp0, epsn)
+                               want_k, gp0, epsn, x_base, d_base)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: s0         !< state at t_n
@@ -449,6 +449,10 @@ contains
       !> their points for EMC and TRAPEZOIDAL (rod_element_fields), if formed for the step
       type(rod_gp_t), intent(in), optional :: gp0(:, :)
       real(wp), intent(in), optional :: epsn(:, :, :)
+      !> (3, nn), (3, 3, nn): Newton's base, for the stresses of an EMC tangent
+      !> (rodyn_rod_dynamic's header); with gp0 and epsn only
+      real(wp), intent(in), optional :: x_base(:, :), d_base(:, :, :)
+      real(wp) :: xb(3, max_nen), db(3, 3, max_nen)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
       real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
@@ -467,7 +471,19 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
-            if (present(gp0) .and. present(epsn)) then
+            if (want_k .and. present(x_base) .and. present(d_base) .and. present(gp0) &
+                .and. present(epsn)) then
+               do a = 1, nen
+                  xb(:, a) = x_base(:, nodes(a))
+                  db(:, :, a) = d_base(:, :, nodes(a))
+               end do
+               call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                        mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
+                                        x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
+                                        fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
+                                        mesh%rules(p), gp0(:, e), epsn(:, :, e), &
+                                        xb(:, 1:nen), db(:, :, 1:nen))
+            else if (present(gp0) .and. present(epsn)) then
                call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                         mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
                                         x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &

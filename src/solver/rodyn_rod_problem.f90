@@ -29,6 +29,9 @@ module rodyn_rod_problem
       real(wp), allocatable :: du(:)           !< (n_dof) Newton correction
       real(wp), allocatable :: x_base(:, :)    !< (3, nn) base of the line search
       real(wp), allocatable :: d_base(:, :, :) !< (3, 3, nn)
+      !> x_base and d_base hold the iterate that the last correction of this solve
+      !> started from (Newton's base); cleared by a problem when it starts a new solve
+      logical :: base_set = .false.
       type(banded_t) :: bm                     !< tangent, then its LU factors
       type(anderson_t) :: aa                   !< history of the accelerated chord steps
       real(wp) :: lref = 1.0_wp                !< length scale of the criteria [m]
