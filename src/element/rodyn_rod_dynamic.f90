@@ -33,13 +33,12 @@ module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
-   use rodyn_rotation, only: skew
+   use rodyn_rotation, only: skew, cross, rotation_cayley_inverse
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian, rod_project_qforce, &
                                 rod_rotation_geometric, rod_rule_t, max_points, &
                                 rod_gp_kinematics_shear, rod_strains_shear, &
-                                rod_gp_qforce_shear, rod_gp_jacobian_shear, &
-                                rod_linear_increment, rod_linearized_strains
+                                rod_gp_qforce_shear, rod_gp_jacobian_shear
    implicit none
    private
    public :: rod_element_dynamic
@@ -100,7 +99,7 @@ contains
       fq(:, :, 1:nen) = 0.0_wp
       lin = want_k .and. present(xb) .and. present(db) .and. scheme == scheme_emc
       if (lin) then
-         call rod_linear_increment(nen, x1, d1, xb, db, dxl, ddl, dl, lin)
+         call linear_increment(nen, x1, d1, xb, db, dxl, ddl, dl, lin)
          fql(:, :, 1:nen) = 0.0_wp
       end if
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
@@ -168,7 +167,7 @@ contains
                call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
                if (lin) then
-                  sl = rod_linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
+                  sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
                                           dxl(:, 1:nen), ddl(:, :, 1:nen))
                   s(1:2) = cg(1:2)*(0.5_wp*(e0(1:2) + sl(1:2)) - eps0(1:2, g))
                   call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, s(1:2), wj, &
@@ -220,7 +219,7 @@ contains
             call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
             call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             if (lin) then
-               sl = rod_linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
+               sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
                                        dxl(:, 1:nen), ddl(:, :, 1:nen))
                s = cg*(0.5_wp*(e0 + sl) - eps0(:, g))
                call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fql(:, :, 1:nen))
@@ -237,6 +236,58 @@ contains
          call rod_rotation_geometric(nen, fq(:, :, 1:nen), d1, wq, ke(1:nd, 1:nd))
       end if
    end subroutine rod_element_dynamic
+
+   !> The correction from Newton's base (xb, db) to the iterate (x1, d1), linearized:
+   !> dxl = x1 - xb, ddl_i = theta x db_i with theta = cay^-1(d1 db^T) (the Cayley
+   !> parameter of the director update), and dl = db + ddl, per node. Not ok where a
+   !> node turned by 120 degrees or more (1 + tr R <= 1; cay^-1 is singular at 180): such
+   !> an iterate is far from this tangent's purpose, which then keeps its own stresses.
+   pure subroutine linear_increment(nen, x1, d1, xb, db, dxl, ddl, dl, ok)
+      integer, intent(in) :: nen                 !< nodes of the element
+      real(wp), intent(in) :: x1(3, nen)         !< iterate positions [m]
+      real(wp), intent(in) :: d1(3, 3, nen)      !< iterate directors
+      real(wp), intent(in) :: xb(3, nen)         !< base positions [m]
+      real(wp), intent(in) :: db(3, 3, nen)      !< base directors
+      real(wp), intent(out) :: dxl(:, :)         !< (3, >= nen) position increment [m]
+      real(wp), intent(out) :: ddl(:, :, :)      !< (3, 3, >= nen) linearized director increment
+      real(wp), intent(out) :: dl(:, :, :)       !< (3, 3, >= nen) db + ddl
+      logical, intent(out) :: ok                 !< every node turned by less than 120 deg
+      real(wp) :: th(3), r(3, 3)
+      integer :: a, i
+      ok = .true.
+      do a = 1, nen
+         r = matmul(d1(:, :, a), transpose(db(:, :, a)))
+         if (1.0_wp + r(1, 1) + r(2, 2) + r(3, 3) <= 1.0_wp) then
+            ok = .false.
+            return
+         end if
+         th = rotation_cayley_inverse(r)
+         do i = 1, 3
+            ddl(:, i, a) = cross(th, db(:, i, a))
+         end do
+         dl(:, :, a) = db(:, :, a) + ddl(:, :, a)
+         dxl(:, a) = x1(:, a) - xb(:, a)
+      end do
+   end subroutine linear_increment
+
+   !> The strains at a point linearized from the base (module header): eps of the fields
+   !> of (x1, dl) less the quadratic part eps2 of the increment fields (dxl, ddl) alone;
+   !> rod_strains of the increment fields is eps2 with -1 in its axial strain.
+   pure function linearized_strains(nen, n, dn, x1, dl, dxl, ddl) result(eps)
+      integer, intent(in) :: nen                 !< nodes of the element
+      real(wp), intent(in) :: n(nen)             !< shape functions
+      real(wp), intent(in) :: dn(nen)            !< dN/dS [1/m]
+      real(wp), intent(in) :: x1(3, nen)         !< iterate positions [m]
+      real(wp), intent(in) :: dl(3, 3, nen)      !< base directors plus their increment
+      real(wp), intent(in) :: dxl(3, nen)        !< position increment [m]
+      real(wp), intent(in) :: ddl(3, 3, nen)     !< linearized director increment
+      real(wp) :: eps(6)
+      type(rod_gp_t) :: kl, kd
+      call rod_gp_kinematics(nen, n, dn, x1, dl, kl)
+      call rod_gp_kinematics(nen, n, dn, dxl, ddl, kd)
+      eps = rod_strains(kl) - rod_strains(kd)
+      eps(3) = eps(3) - 1.0_wp
+   end function linearized_strains
 
    !> The stress (geometric) stiffness of one point, rod_rod_element's rod_gp_geometric,
    !> summed over the points before it is formed: with the nodal directors the same at

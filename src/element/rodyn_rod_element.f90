@@ -22,7 +22,7 @@
 !>   r_x = f_x,   r_theta = sum_i d_i x f_di.
 module rodyn_rod_element
    use rodyn_kinds, only: wp
-   use rodyn_rotation, only: cross, skew, rotation_cayley_inverse
+   use rodyn_rotation, only: cross, skew
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_nen
    implicit none
    private
@@ -33,7 +33,6 @@ module rodyn_rod_element
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule, rod_hidden_shear
    public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_shear
-   public :: rod_linear_increment, rod_linearized_strains
 
    integer, parameter :: max_points = 7  !< most quadrature points of one element
 
@@ -375,16 +374,7 @@ contains
 
    !> Internal force and consistent tangent of one element in statics: the projected
    !> gradient of the stored energy and its derivative (note sections 2 and 3, statics).
-   !> Given Newton's base (xb, db: the iterate the last correction started from), every
-   !> stress term of the tangent (rod_gp_geometric, and the projection's q-forces) takes
-   !> the stress of the strains linearized from the base, S_lin = C (eps_lin - eps0),
-   !> eps_lin = eps(q_b) + B(q_b) (q - q_b) (rod_linearized_strains): with EA much larger
-   !> than the tension the second-order stretch of a correction would otherwise set the
-   !> tangent's stress (rodyn_rod_dynamic's header, where the same is done over a time
-   !> step). The force, and so the equilibrium found, is unchanged. Static solves of the
-   !> mooring surge deck's rod line: 153 against 89 logged iterations; the lazy-wave
-   !> riser: 256 against 158.
-   pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k, rule, xb, db)
+   pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k, rule)
       integer, intent(in) :: p                     !< element order
       real(wp), intent(in) :: le                   !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                 !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -395,11 +385,7 @@ contains
       real(wp), intent(out) :: ke(:, :)            !< (6(p+1), 6(p+1)) tangent (if want_k)
       logical, intent(in) :: want_k                !< form the tangent
       type(rod_rule_t), intent(in) :: rule         !< rod_rule(p): points, shape functions
-      !> Newton's base, the iterate the last correction started from (header)
-      real(wp), intent(in), optional :: xb(3, p + 1), db(3, 3, p + 1)
       ! fixed-size work arrays: nothing is allocated per call
-      real(wp) :: dxl(3, max_nen), ddl(3, 3, max_nen), dl(3, 3, max_nen), fql(3, 4, max_nen)
-      logical :: lin
       real(wp) :: n(max_nen), dn(max_nen), s(6), wj, cg(6), acc
       real(wp) :: fq(3, 4, max_nen), bt(6, 6*max_nen), cb(6, 6*max_nen)
       type(rod_gp_t) :: kin
@@ -409,11 +395,6 @@ contains
       np = rule%np
       fq(:, :, 1:nen) = 0.0_wp
       if (want_k) ke(1:nd, 1:nd) = 0.0_wp
-      lin = want_k .and. present(xb) .and. present(db)
-      if (lin) then
-         call rod_linear_increment(nen, xe, de, xb, db, dxl, ddl, dl, lin)
-         fql(:, :, 1:nen) = 0.0_wp
-      end if
       do g = 1, np
          n(1:nen) = rule%n(1:nen, g)
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
@@ -441,72 +422,11 @@ contains
                ke(i, j) = ke(i, j) + acc
             end do
          end do
-         if (lin) then          ! the stress of the linearized strains (header)
-            s = cg*(rod_linearized_strains(nen, n(1:nen), dn(1:nen), xe, dl(:, :, 1:nen), &
-                                           dxl(:, 1:nen), ddl(:, :, 1:nen)) - eps0(:, g))
-            call rod_gp_qforce(nen, n(1:nen), dn(1:nen), kin, s, wj, fql(:, :, 1:nen))
-         end if
          call rod_gp_geometric(nen, n(1:nen), dn(1:nen), s, de, de, wj, ke(1:nd, 1:nd))
       end do
       call rod_project_qforce(nen, fq(:, :, 1:nen), de, fe)
-      if (lin) then
-         call rod_rotation_geometric(nen, fql(:, :, 1:nen), de, 1.0_wp, ke(1:nd, 1:nd))
-      else if (want_k) then
-         call rod_rotation_geometric(nen, fq(:, :, 1:nen), de, 1.0_wp, ke(1:nd, 1:nd))
-      end if
+      if (want_k) call rod_rotation_geometric(nen, fq(:, :, 1:nen), de, 1.0_wp, ke(1:nd, 1:nd))
    end subroutine rod_element_static
-
-   !> The correction from Newton's base (xb, db) to the iterate (x1, d1), linearized:
-   !> dxl = x1 - xb, ddl_i = theta x db_i with theta = cay^-1(d1 db^T) (the Cayley
-   !> parameter of the director update), and dl = db + ddl, per node. Not ok where a
-   !> node turned by 120 degrees or more (1 + tr R <= 1; cay^-1 is singular at 180): such
-   !> an iterate is far from this tangent's purpose, which then keeps its own stresses.
-   pure subroutine rod_linear_increment(nen, x1, d1, xb, db, dxl, ddl, dl, ok)
-      integer, intent(in) :: nen                 !< nodes of the element
-      real(wp), intent(in) :: x1(3, nen)         !< iterate positions [m]
-      real(wp), intent(in) :: d1(3, 3, nen)      !< iterate directors
-      real(wp), intent(in) :: xb(3, nen)         !< base positions [m]
-      real(wp), intent(in) :: db(3, 3, nen)      !< base directors
-      real(wp), intent(out) :: dxl(:, :)         !< (3, >= nen) position increment [m]
-      real(wp), intent(out) :: ddl(:, :, :)      !< (3, 3, >= nen) linearized director increment
-      real(wp), intent(out) :: dl(:, :, :)       !< (3, 3, >= nen) db + ddl
-      logical, intent(out) :: ok                 !< every node turned by less than 120 deg
-      real(wp) :: th(3), r(3, 3)
-      integer :: a, i
-      ok = .true.
-      do a = 1, nen
-         r = matmul(d1(:, :, a), transpose(db(:, :, a)))
-         if (1.0_wp + r(1, 1) + r(2, 2) + r(3, 3) <= 1.0_wp) then
-            ok = .false.
-            return
-         end if
-         th = rotation_cayley_inverse(r)
-         do i = 1, 3
-            ddl(:, i, a) = cross(th, db(:, i, a))
-         end do
-         dl(:, :, a) = db(:, :, a) + ddl(:, :, a)
-         dxl(:, a) = x1(:, a) - xb(:, a)
-      end do
-   end subroutine rod_linear_increment
-
-   !> The strains at a point linearized from the base (rod_element_static): eps of the fields
-   !> of (x1, dl) less the quadratic part eps2 of the increment fields (dxl, ddl) alone;
-   !> rod_strains of the increment fields is eps2 with -1 in its axial strain.
-   pure function rod_linearized_strains(nen, n, dn, x1, dl, dxl, ddl) result(eps)
-      integer, intent(in) :: nen                 !< nodes of the element
-      real(wp), intent(in) :: n(nen)             !< shape functions
-      real(wp), intent(in) :: dn(nen)            !< dN/dS [1/m]
-      real(wp), intent(in) :: x1(3, nen)         !< iterate positions [m]
-      real(wp), intent(in) :: dl(3, 3, nen)      !< base directors plus their increment
-      real(wp), intent(in) :: dxl(3, nen)        !< position increment [m]
-      real(wp), intent(in) :: ddl(3, 3, nen)     !< linearized director increment
-      real(wp) :: eps(6)
-      type(rod_gp_t) :: kl, kd
-      call rod_gp_kinematics(nen, n, dn, x1, dl, kl)
-      call rod_gp_kinematics(nen, n, dn, dxl, ddl, kd)
-      eps = rod_strains(kl) - rod_strains(kd)
-      eps(3) = eps(3) - 1.0_wp
-   end function rod_linearized_strains
 
    !> Strains at the quadrature points of one element (the first p are the reduced
    !> Gauss points where results are reported); also used for the stress-free eps0.

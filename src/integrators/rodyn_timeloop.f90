@@ -213,6 +213,7 @@ contains
          good = resume%good
          log = resume%log
          prob%factors_ok = .false.
+         prob%renew_first = .false.
       else
          t = 0.0_wp
          next_frame = interval
@@ -301,6 +302,7 @@ contains
                call on_checkpoint(ls, prob, err)
                if (has_error(err)) return
                prob%factors_ok = .false.   ! as in a run continued from here
+               prob%renew_first = .false.
             end if
             cycle
          end if

@@ -357,7 +357,7 @@ contains
    !> into bm with the rotated nodes' bases applied (note section 3, statics). The
    !> stress-free strains enter scaled by eps0_scale (the static load factor, so that a
    !> built-in curvature is applied gradually; 1 at the end of the analysis).
-   subroutine assemble_static(mesh, sup, state, eps0_scale, fint, bm, want_k, x_base, d_base)
+   subroutine assemble_static(mesh, sup, state, eps0_scale, fint, bm, want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: state      !< configuration
@@ -365,13 +365,10 @@ contains
       real(wp), intent(out) :: fint(:, :)     !< (6, nn) internal forces [N, N m]
       type(banded_t), intent(inout) :: bm     !< tangent (zeroed here if want_k)
       logical, intent(in) :: want_k           !< form the tangent
-      !> (3, nn), (3, 3, nn): Newton's base, for the stresses of the rods' tangent
-      !> (rod_element_static)
-      real(wp), intent(in), optional :: x_base(:, :), d_base(:, :, :)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), xe(3, max_nen)
       real(wp) :: de(3, 3, max_nen), e0(6, max_points), fc(3, max_nen)
-      real(wp) :: kc(3*max_nen, 3*max_nen), xb(3, max_nen), db(3, 3, max_nen)
-      integer :: e, l, p, nen, a
+      real(wp) :: kc(3*max_nen, 3*max_nen)
+      integer :: e, l, p, nen
       fint = 0.0_wp
       if (want_k) then
          bm%ab = 0.0_wp
@@ -391,20 +388,9 @@ contains
                                   want_k)
             else
                e0 = eps0_scale*mesh%eps0(:, :, e)
-               if (want_k .and. present(x_base) .and. present(d_base)) then
-                  do a = 1, nen
-                     xb(:, a) = x_base(:, nodes(a))
-                     db(:, :, a) = d_base(:, :, nodes(a))
-                  end do
-                  call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
-                                          xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
-                                          ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p), &
-                                          xb(:, 1:nen), db(:, :, 1:nen))
-               else
-                  call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
-                                          xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
-                                          ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
-               end if
+               call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), e0, &
+                                       xe(:, 1:nen), de(:, :, 1:nen), fe(:, 1:nen), &
+                                       ke(1:6*nen, 1:6*nen), want_k, mesh%rules(p))
                call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, &
                                     bm, want_k)
             end if

@@ -78,6 +78,10 @@ module rodyn_newton
       logical :: tangent_new = .false.        !< tangent formed, not yet factorised
       logical :: factors_ok = .false.         !< factors of a tangent are held
       integer :: iteration = 0                !< the iteration under way (1: a new solve)
+      !> the last solve begun with an earlier solve's tangent renewed it after its first
+      !> iteration (then this one forms its tangent with that iteration's residual);
+      !> cleared with factors_ok wherever a run must repeat itself (a checkpoint)
+      logical :: renew_first = .false.
       logical :: accelerate = .false.         !< accelerate the chord steps (rodyn_anderson)
    contains
       !> Evaluate the residual at the current configuration (and the tangent).
@@ -179,8 +183,13 @@ contains
          do bt = 0, opts%max_backtracks
             call prob%apply_correction(alpha)
             ! a correction small enough for the quadratic-regime acceptance most likely
-            ! ends the solve: its residual is evaluated alone (a tangent follows if not)
-            call evaluate(.not. opts%reuse_tangent .and. alpha*cn > sqrt(opts%disp_tol))
+            ! ends the solve: its residual is evaluated alone (a tangent follows if not).
+            ! The first correction with an earlier solve's tangent, when the last such
+            ! solve renewed its tangent right after it (below), is evaluated with its
+            ! tangent: one residual evaluation less than forming it after
+            call evaluate((.not. opts%reuse_tangent .and. alpha*cn > sqrt(opts%disp_tol)) &
+                          .or. (it == 1 .and. .not. fresh .and. prob%renew_first .and. &
+                                .not. opts%line_search))
             if (has_error(err)) return
             rn_trial = prob%residual_norm()
             if (.not. ieee_is_finite(rn_trial)) then
@@ -264,6 +273,7 @@ contains
          ! 6.2 iterations and 1.47 tangents a step against 7.3 and 1.40, 3 % fewer
          ! instructions)
          if (it == 1 .and. .not. fresh .and. rn > sqrt(opts%force_tol)) refresh = .true.
+         if (it == 1 .and. .not. fresh) prob%renew_first = refresh
          if (refresh .and. opts%reuse_tangent .and. .not. fresh .and. rn > rn_prev .and. &
              alpha == 1.0_wp) then
             call prob%apply_correction(0.0_wp)

@@ -176,15 +176,8 @@ contains
       type(error_t), intent(inout) :: err            !< status (unused: cannot fail)
       integer :: node
       if (has_error(err)) return
-      ! a tangent formed after a correction takes its stresses from the strains
-      ! linearized from the iterate before (rod_element_static)
-      if (this%base_set) then
-         call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
-                              want_k, this%x_base, this%d_base)
-      else
-         call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
-                              want_k)
-      end if
+      call assemble_static(this%mesh, this%sup, this%state, this%lam, this%fint, this%bm, &
+                           want_k)
       ! seabed contact in full from the start, buoyancy with the weight (bfac), current
       ! drag times lambda
       if (this%water%active) call assemble_water(this%water, this%mesh, this%sup, &
@@ -240,7 +233,6 @@ contains
       class(static_problem_t), intent(inout) :: this !< problem
       this%x_base = this%state%x
       this%d_base = this%state%d
-      this%base_set = .true.
    end subroutine static_save_base
 
    !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (note section 3).
@@ -308,7 +300,6 @@ contains
          call set_factor(stage, lam_try)
          call clear_error(nerr)
          opts%line_search = model%static%line_search .or. retried
-         prob%base_set = .false.          ! no base until the solve's first correction
          call newton_solve(prob, opts, stats, nerr)
          summary%iterations = summary%iterations + stats%iterations
          if (stats%converged .and. .not. has_error(nerr)) then
