@@ -436,7 +436,7 @@ contains
          this%m_extra = mx
          this%ref_pending = .false.
       end if
-      this%r = this%fint - this%fext
+      call difference_values(size(this%r), this%fint, this%fext, this%r)
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
          if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
@@ -514,9 +514,10 @@ contains
    !> update.
    subroutine dyn_save_base(this)
       class(dynamic_problem_t), intent(inout) :: this !< problem
-      this%x_base = this%s1%x
-      if (this%mesh%n_cable < this%mesh%n_elements) this%d_base = this%s1%d
-      this%dx_base = this%dx
+      call copy_values(size(this%x_base), this%s1%x, this%x_base)
+      if (this%mesh%n_cable < this%mesh%n_elements) &
+         call copy_values(size(this%d_base), this%s1%d, this%d_base)
+      call copy_values(size(this%dx_base), this%dx, this%dx_base)
       this%base_set = .true.
    end subroutine dyn_save_base
 
@@ -540,4 +541,23 @@ contains
       end if
       call this%rotate_from_base(alpha, this%s1%d)
    end subroutine dyn_apply_correction
+   !> b = a over n values. Explicit shapes tell the compiler that a and b do not overlap:
+   !> the allocatable components reached through the problem were copied one value at a
+   !> time (case 1: some 16 instructions a value), these in vector moves.
+   pure subroutine copy_values(n, a, b)
+      integer, intent(in) :: n      !< values
+      real(wp), intent(in) :: a(n)  !< source
+      real(wp), intent(out) :: b(n) !< copy
+      b = a
+   end subroutine copy_values
+
+   !> c = a - b over n values (explicit shapes, as copy_values).
+   pure subroutine difference_values(n, a, b, c)
+      integer, intent(in) :: n      !< values
+      real(wp), intent(in) :: a(n)  !< minuend
+      real(wp), intent(in) :: b(n)  !< subtrahend
+      real(wp), intent(out) :: c(n) !< difference
+      c = a - b
+   end subroutine difference_values
+
 end module rodyn_dynamics

@@ -161,12 +161,28 @@ contains
       type(banded_t), intent(inout) :: bm   !< matrix
       integer, intent(in) :: dofs(:)        !< global dof numbers of the element
       real(wp), intent(in) :: ke(:, :)      !< element matrix (size(dofs) square)
-      integer :: i, j, off
-      off = bm%kv
+      integer :: i, j, r, off, nr, lo(size(dofs)), hi(size(dofs))
+      ! runs of consecutive global dofs (a node's 6 or 3 unknowns) are contiguous in a
+      ! band column: each is added as one slice (case 1, 20 s: the whole run 1.137e9 ->
+      ! 1.117e9 instructions against one entry at a time)
+      nr = 0
+      do i = 1, size(dofs)
+         if (nr > 0) then
+            if (dofs(i) == dofs(i - 1) + 1) then
+               hi(nr) = i
+               cycle
+            end if
+         end if
+         nr = nr + 1
+         lo(nr) = i
+         hi(nr) = i
+      end do
       do j = 1, size(dofs)
-         do i = 1, size(dofs)
-            bm%ab(off + dofs(i) - dofs(j), dofs(j)) = &
-               bm%ab(off + dofs(i) - dofs(j), dofs(j)) + ke(i, j)
+         off = bm%kv - dofs(j)
+         do r = 1, nr
+            associate (col => bm%ab(off + dofs(lo(r)):off + dofs(hi(r)), dofs(j)))
+               col = col + ke(lo(r):hi(r), j)
+            end associate
          end do
       end do
    end subroutine banded_add
