@@ -166,7 +166,7 @@ contains
       class(rod_problem_t), intent(in) :: this !< problem
       real(wp), intent(in) :: alpha            !< step length [-]
       real(wp), intent(inout) :: d(:, :, :)    !< (3, 3, nn) directors updated
-      real(wp) :: th(3), rot(3, 3), db(3, 3)
+      real(wp) :: th(3), rot(3, 3)
       integer :: node, k
       if (this%sup%uniform) then      ! (two loops: the rod's layout costs what it did)
          do node = 1, this%mesh%n_nodes
@@ -174,8 +174,7 @@ contains
             th = alpha*this%du(k + 4:k + 6)
             if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
             rot = rotation_cayley(th)
-            db = this%d_base(:, :, node)
-            d(:, :, node) = matmul(rot, db)
+            call turn_directors(rot, this%d_base(:, :, node), d(:, :, node))
          end do
          return
       end if
@@ -188,8 +187,19 @@ contains
          th = alpha*this%du(k + 4:k + 6)
          if (this%sup%rotated(node)) th = matmul(this%sup%basis(:, :, node), th)
          rot = rotation_cayley(th)
-         db = this%d_base(:, :, node)
-         d(:, :, node) = matmul(rot, db)
+         call turn_directors(rot, this%d_base(:, :, node), d(:, :, node))
       end do
    end subroutine rod_rotate_from_base
+
+   !> d = rot db for one node's directors (3 x 3 explicit shapes: as matmul on the
+   !> assumed-shape sections it was some 180 instructions a node, case 1)
+   pure subroutine turn_directors(rot, db, d)
+      real(wp), intent(in) :: rot(3, 3) !< rotation
+      real(wp), intent(in) :: db(3, 3)  !< directors at the base, db(:, i) = d_i
+      real(wp), intent(out) :: d(3, 3)  !< turned directors
+      integer :: i
+      do i = 1, 3
+         d(:, i) = rot(:, 1)*db(1, i) + rot(:, 2)*db(2, i) + rot(:, 3)*db(3, i)
+      end do
+   end subroutine turn_directors
 end module rodyn_rod_problem
