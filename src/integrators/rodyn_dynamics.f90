@@ -32,7 +32,7 @@ module rodyn_dynamics
    use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal, motion_vessel, &
                           vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
-   use rodyn_state, only: state_t, state_allocate, state_copy, state_gather
+   use rodyn_state, only: state_t, state_allocate, state_copy, state_gather, copy_values
    use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields
    use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
@@ -579,17 +579,7 @@ contains
       end do
    end subroutine node_inertia
 
-   !> b = a over n values. Explicit shapes tell the compiler that a and b do not overlap:
-   !> the allocatable components reached through the problem were copied one value at a
-   !> time (case 1: some 16 instructions a value), these in vector moves.
-   pure subroutine copy_values(n, a, b)
-      integer, intent(in) :: n      !< values
-      real(wp), intent(in) :: a(n)  !< source
-      real(wp), intent(out) :: b(n) !< copy
-      b = a
-   end subroutine copy_values
-
-   !> c = a - b over n values (explicit shapes, as copy_values).
+   !> c = a - b over n values (explicit shapes, as rodyn_state's copy_values).
    pure subroutine difference_values(n, a, b, c)
       integer, intent(in) :: n      !< values
       real(wp), intent(in) :: a(n)  !< minuend

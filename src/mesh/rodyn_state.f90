@@ -3,7 +3,7 @@ module rodyn_state
    use rodyn_kinds, only: wp
    implicit none
    private
-   public :: state_t, state_allocate, state_copy, state_gather
+   public :: state_t, state_allocate, state_copy, state_gather, copy_values
 
    !> Configuration and velocities of all nodes.
    type :: state_t
@@ -49,13 +49,40 @@ contains
    subroutine state_copy(src, dst)
       type(state_t), intent(in) :: src    !< state copied
       type(state_t), intent(inout) :: dst !< overwritten
-      dst%x = src%x
-      dst%d = src%d
-      dst%v = src%v
-      dst%dd = src%dd
-      dst%a = src%a
-      dst%ad = src%ad
+      logical :: fits
+      fits = allocated(dst%x) .and. allocated(dst%d) .and. allocated(dst%v) .and. &
+             allocated(dst%dd) .and. allocated(dst%a) .and. allocated(dst%ad)
+      if (fits) fits = size(dst%x) == size(src%x) .and. size(dst%d) == size(src%d) .and. &
+                       size(dst%v) == size(src%v) .and. size(dst%dd) == size(src%dd) .and. &
+                       size(dst%a) == size(src%a) .and. size(dst%ad) == size(src%ad)
+      if (.not. fits) then               ! (re)allocated by the assignments
+         dst%x = src%x
+         dst%d = src%d
+         dst%v = src%v
+         dst%dd = src%dd
+         dst%a = src%a
+         dst%ad = src%ad
+         return
+      end if
+      ! the same shapes (every step): copied as plain sequences, without the assignments'
+      ! shape checks (peers' case-4 run: 1.825e9 -> 1.814e9 instructions)
+      call copy_values(size(src%x), src%x, dst%x)
+      call copy_values(size(src%d), src%d, dst%d)
+      call copy_values(size(src%v), src%v, dst%v)
+      call copy_values(size(src%dd), src%dd, dst%dd)
+      call copy_values(size(src%a), src%a, dst%a)
+      call copy_values(size(src%ad), src%ad, dst%ad)
    end subroutine state_copy
+
+   !> b = a over n values. Explicit shapes tell the compiler that a and b do not overlap:
+   !> allocatable components (of a state, of a problem) assigned whole were copied one
+   !> value at a time (case 1: some 16 instructions a value), these in vector moves.
+   pure subroutine copy_values(n, a, b)
+      integer, intent(in) :: n      !< values
+      real(wp), intent(in) :: a(n)  !< source
+      real(wp), intent(out) :: b(n) !< copy
+      b = a
+   end subroutine copy_values
 
    !> Positions and directors of an element's nodes.
    pure subroutine state_gather(state, nodes, xe, de)

@@ -610,7 +610,9 @@ contains
       real(wp) :: k(6, 6)
       integer :: j, dofs(6), nd
       nd = sup%ndof(node)
-      dofs = [(sup%first(node) + j - 1, j=1, 6)]
+      do j = 1, 6                  ! (a loop: an array constructor allocates)
+         dofs(j) = sup%first(node) + j - 1
+      end do
       if (nd == 3) then            ! no rotation unknowns: the translation block only
          call banded_add(bm, dofs(1:3), kb(1:3, 1:3))
          return

@@ -161,7 +161,8 @@ contains
       type(banded_t), intent(inout) :: bm   !< matrix
       integer, intent(in) :: dofs(:)        !< global dof numbers of the element
       real(wp), intent(in) :: ke(:, :)      !< element matrix (size(dofs) square)
-      integer :: i, j, r, off, nr, lo(size(dofs)), hi(size(dofs)), col, row0
+      integer, parameter :: max_runs = 16   ! (fixed size: automatic arrays are heap ones)
+      integer :: i, j, r, off, nr, lo(max_runs), hi(max_runs), col, row0
       ! runs of consecutive global dofs (a node's 6 or 3 unknowns) are contiguous in a
       ! band column: each is added as one stretch of the column (case 1, 20 s: the whole
       ! run 1.137e9 -> 1.117e9 instructions against one entry at a time; as a loop rather
@@ -174,10 +175,23 @@ contains
                cycle
             end if
          end if
+         if (nr == max_runs) then          ! scattered dofs: one entry at a time
+            nr = -1
+            exit
+         end if
          nr = nr + 1
          lo(nr) = i
          hi(nr) = i
       end do
+      if (nr < 0) then
+         do j = 1, size(dofs)
+            do i = 1, size(dofs)
+               bm%ab(bm%kv + dofs(i) - dofs(j), dofs(j)) = &
+                  bm%ab(bm%kv + dofs(i) - dofs(j), dofs(j)) + ke(i, j)
+            end do
+         end do
+         return
+      end if
       do j = 1, size(dofs)
          col = dofs(j)
          off = bm%kv - col
