@@ -12,7 +12,7 @@ module rodyn_assembly
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_water, only: water_loads_t, water_element, water_attachment
    use rodyn_hydro, only: water_section_t
-   use rodyn_state, only: state_t, state_gather
+   use rodyn_state, only: state_t, state_gather, copy_values
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
                            banded_kept_axpy
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, rod_gp_t
@@ -661,7 +661,9 @@ contains
       integer :: node, j, k, i
       logical :: uni
       uni = sup%uniform
-      ! 6 unknowns a node unless the map says otherwise (uni a local: tested once per node)
+      ! 6 unknowns a node unless the map says otherwise: then rhs is r as one sequence
+      ! (copy_values: the node by node copy took 1.1 % of the peers' case-4 run)
+      if (uni) call copy_values(size(r), r, rhs)
       do node = 1, size(r, 2)
          k = 6*(node - 1)
          if (.not. uni) then
@@ -670,8 +672,8 @@ contains
                rhs(k + 1:k + 3) = r(1:3, node)
                cycle
             end if
+            rhs(k + 1:k + 6) = r(:, node)
          end if
-         rhs(k + 1:k + 6) = r(:, node)
          if (sup%rotated(node)) rhs(k + 4:k + 6) = matmul(transpose(sup%basis(:, :, node)), &
                                                           r(4:6, node))
       end do

@@ -90,11 +90,7 @@ contains
       rm = 0.0_wp
       ! two loops, so that the rod's layout costs what it did before the dof map
       if (this%sup%uniform) then
-         do node = 1, this%mesh%n_nodes
-            k = 6*(node - 1)
-            rf = max(rf, maxval(abs(this%rhs(k + 1:k + 3)), mask=.not. this%sup%held(1:3, node)))
-            rm = max(rm, maxval(abs(this%rhs(k + 4:k + 6)), mask=.not. this%sup%held(4:6, node)))
-         end do
+         call uniform_residual_max(this%mesh%n_nodes, this%rhs, this%sup%held, rf, rm)
       else
          do node = 1, this%mesh%n_nodes
             k = this%sup%first(node) - 1
@@ -139,11 +135,7 @@ contains
       integer :: node, k
       v = 0.0_wp
       if (this%sup%uniform) then
-         do node = 1, this%mesh%n_nodes
-            k = 6*(node - 1)
-            v = max(v, maxval(abs(this%du(k + 1:k + 3)))/this%lref, &
-                    maxval(abs(this%du(k + 4:k + 6))))
-         end do
+         call uniform_correction_max(this%mesh%n_nodes, this%du, this%lref, v)
          return
       end if
       do node = 1, this%mesh%n_nodes
@@ -190,6 +182,33 @@ contains
          call turn_directors(rot, this%d_base(:, :, node), d(:, :, node))
       end do
    end subroutine rod_rotate_from_base
+
+   !> The largest free force and moment entries of a right-hand side with 6 unknowns a
+   !> node (rod_residual_norm). Explicit shapes: on the problem's components the same
+   !> expressions took 1.6 % of the peers' case-4 run.
+   pure subroutine uniform_residual_max(nn, rhs, held, rf, rm)
+      integer, intent(in) :: nn             !< nodes
+      real(wp), intent(in) :: rhs(6, nn)    !< right-hand side
+      logical, intent(in) :: held(6, nn)    !< held dofs
+      real(wp), intent(inout) :: rf, rm     !< largest force, moment [N, N m]
+      integer :: node
+      do node = 1, nn
+         rf = max(rf, maxval(abs(rhs(1:3, node)), mask=.not. held(1:3, node)))
+         rm = max(rm, maxval(abs(rhs(4:6, node)), mask=.not. held(4:6, node)))
+      end do
+   end subroutine uniform_residual_max
+
+   !> The largest scaled correction with 6 unknowns a node (rod_correction_norm).
+   pure subroutine uniform_correction_max(nn, du, lref, v)
+      integer, intent(in) :: nn          !< nodes
+      real(wp), intent(in) :: du(6, nn)  !< correction
+      real(wp), intent(in) :: lref       !< reference length [m]
+      real(wp), intent(inout) :: v       !< largest scaled entry [-]
+      integer :: node
+      do node = 1, nn
+         v = max(v, maxval(abs(du(1:3, node)))/lref, maxval(abs(du(4:6, node))))
+      end do
+   end subroutine uniform_correction_max
 
    !> d = rot db for one node's directors (3 x 3 explicit shapes: as matmul on the
    !> assumed-shape sections it was some 180 instructions a node, case 1)
