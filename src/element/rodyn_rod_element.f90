@@ -279,7 +279,9 @@ contains
       real(wp), intent(in) :: dr(3, 3, nen)      !< nodal directors of the increment (cols)
       real(wp), intent(in) :: wj                 !< Gauss weight times Jacobian [m]
       real(wp), intent(inout) :: ke(:, :)         !< element matrix (6 nen square)
-      real(wp) :: skl(3, 3, nen), skr(3, 3, nen), wr(3, 3, nen), st(3, 3), m(3, 3), h, tr, f
+      ! (fixed sizes: automatic arrays sized by nen are heap ones; bench/alloc_check.sh)
+      real(wp) :: skl(3, 3, max_nen), skr(3, 3, max_nen), wr(3, 3, max_nen), st(3, 3), m(3, 3)
+      real(wp) :: h, tr, f
       integer :: a, b, i, j, ra, rb
       logical :: forces, moments
       forces = any(s(1:3) /= 0.0_wp)

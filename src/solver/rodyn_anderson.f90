@@ -71,7 +71,7 @@ contains
    pure subroutine anderson_step(aa, f)
       type(anderson_t), intent(inout) :: aa !< history
       real(wp), intent(inout) :: f(:)       !< chord step in, correction out
-      real(wp) :: a(8, 8), gam(8), fi, g1
+      real(wp) :: a(64), gam(8), fi, g1   ! a: the m x m Gram matrix, column by column
       integer :: i, j, p, q, m, cj
       logical :: ok, drop
       if (aa%depth == 0) return
@@ -89,12 +89,12 @@ contains
             aa%g(cj, p) = aa%g(p, cj)
             gam(j) = dot_product(aa%df(:, cj), f)
          end do
-         do j = 1, m
+         do j = 1, m      ! (contiguous: a section of an 8 x 8 array was copied to the heap)
             do i = 1, m
-               a(i, j) = aa%g(aa%cols(i), aa%cols(j))
+               a(i + m*(j - 1)) = aa%g(aa%cols(i), aa%cols(j))
             end do
          end do
-         call solve_gram(m, a(1:m, 1:m), gam(1:m), ok)
+         call solve_gram(m, a(1:m*m), gam(1:m), ok)
          if (.not. ok) then             ! dependent columns: the plain step, history anew
             aa%m = 0
             m = 0
@@ -111,9 +111,11 @@ contains
             f(i) = fi - g1*(aa%s(i, q) + aa%df(i, q))
             aa%df(i, q) = fi
          end do
-         aa%cols(1:m - 1) = aa%cols(2:m)
+         do j = 1, m - 1         ! (a loop: the overlapping section copies made heap
+            aa%cols(j) = aa%cols(j + 1)  ! temporaries, bench/alloc_check.sh)
+            gam(j) = gam(j + 1)
+         end do
          aa%m = m - 1
-         gam(1:m - 1) = gam(2:m)
          m = m - 1
       else
          q = free_slot()
