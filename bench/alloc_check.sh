@@ -21,8 +21,10 @@
 # On FAIL the 40-element, 8-increment loaded run (or the 20-step run) is repeated with
 # --xtree-memory=full and the routines that allocate are listed by allocation count.
 #
-# usage: bench/alloc_check.sh [--rodyn PATH] [--keep] [--help]
+# usage: bench/alloc_check.sh [--rodyn PATH] [--quick] [--keep] [--help]
 #   --rodyn PATH   rodyn executable (default: build/rodyn of this repository)
+#   --quick        statics with the 40-element loaded deck only (CTest
+#                  bench_alloc_check_quick, about 15 s)
 #   --keep         keep the temporary folder (decks, valgrind logs, xtree file)
 # exit status: 0 PASS, 1 FAIL, 2 could not run
 set -euo pipefail
@@ -30,9 +32,11 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 rodyn="$root/build/rodyn"
 keep=0
+quick=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --rodyn) rodyn="$2"; shift 2 ;;
+    --quick) quick=1; shift ;;
     --keep) keep=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "unknown option: $1" >&2; exit 2 ;;
@@ -79,8 +83,10 @@ echo
 printf '%-22s %9s %11s %11s %12s\n' case elements increments iterations allocs
 fail=0
 declare -A allocs
-for load in 0 1; do
-  for ne in 10 40; do
+loads="0 1"; meshes="10 40"
+[[ $quick -eq 1 ]] && { loads="1"; meshes="40"; }
+for load in $loads; do
+  for ne in $meshes; do
     for inc in 1 8; do
       name="$([[ $load -eq 1 ]] && echo "paper+20kN" || echo "paper")"
       tag="${name}_n${ne}_inc${inc}"
@@ -100,9 +106,9 @@ for load in 0 1; do
   done
 done
 echo
-for load in 0 1; do
+for load in $loads; do
   name="$([[ $load -eq 1 ]] && echo "paper+20kN" || echo "paper")"
-  for ne in 10 40; do
+  for ne in $meshes; do
     a=${allocs[${name}_n${ne}_inc1]}
     b=${allocs[${name}_n${ne}_inc8]}
     if [[ "$a" == "$b" ]]; then

@@ -7,7 +7,7 @@
 # Usage: bash tools/test.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh
+bash tools/setup.sh --tests
 pfunit="$(bash tools/pfunit.sh)"  # its install prefix
 jobs="$(nproc)"
 
