@@ -100,8 +100,12 @@ contains
       do g = 1, p
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
          wj = rule%w(g)*0.5_wp*le
-         xp0 = matmul(x0, dn(1:nen))
-         xp1 = matmul(x1, dn(1:nen))
+         xp0 = 0.0_wp           ! x' at t_n and t_n+1 (loops: matmul took twice the
+         xp1 = 0.0_wp           ! instructions on the mooring surge deck)
+         do i = 1, nen
+            xp0 = xp0 + x0(:, i)*dn(i)
+            xp1 = xp1 + x1(:, i)*dn(i)
+         end do
          l0 = norm3(xp0)
          l1 = norm3(xp1)
          select case (scheme)

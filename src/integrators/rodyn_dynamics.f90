@@ -459,12 +459,12 @@ contains
          cv = (1.0_wp - this%af)*gm/(b*dt)
          ca = (1.0_wp - this%am)/(b*dt**2)
       else
-         this%vf = this%dx/dt
-         this%af_acc = 2.0_wp*this%dx/dt**2 - 2.0_wp*this%s0%v/dt
+         call trapezoidal_motion(size(this%dx), dt, this%dx, this%s0%v, this%vf, &
+                                 this%af_acc)
          cv = 1.0_wp/dt
          ca = 2.0_wp/dt**2
       end if
-      this%xf = this%s0%x + this%wf*this%dx
+      call force_point(size(this%dx), this%wf, this%s0%x, this%dx, this%xf)
       call assemble_water(this%water, this%mesh, this%sup, this%xf, this%vf, this%af_acc, &
                           this%wf, cv, ca, this%fint, this%bm, want_k)
    end subroutine water_loads_step
@@ -578,6 +578,30 @@ contains
          kb(4:6, 4:6) = kb(4:6, 4:6) + blk
       end do
    end subroutine node_inertia
+
+   !> The velocity and acceleration of the trapezoidal rule over n values, v = dx/dt and
+   !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: on the
+   !> problem's components 51e6 of the mooring surge deck's 2.23e9 instructions).
+   pure subroutine trapezoidal_motion(n, dt, dx, v0, v, a)
+      integer, intent(in) :: n       !< values
+      real(wp), intent(in) :: dt     !< step [s]
+      real(wp), intent(in) :: dx(n)  !< increments [m]
+      real(wp), intent(in) :: v0(n)  !< velocities at t_n [m/s]
+      real(wp), intent(out) :: v(n)  !< velocities [m/s]
+      real(wp), intent(out) :: a(n)  !< accelerations [m/s2]
+      v = dx/dt
+      a = 2.0_wp*dx/dt**2 - 2.0_wp*v0/dt
+   end subroutine trapezoidal_motion
+
+   !> The positions at the force point over n values, xf = x0 + w dx.
+   pure subroutine force_point(n, w, x0, dx, xf)
+      integer, intent(in) :: n       !< values
+      real(wp), intent(in) :: w      !< weight of t_n+1 [-]
+      real(wp), intent(in) :: x0(n)  !< positions at t_n [m]
+      real(wp), intent(in) :: dx(n)  !< increments [m]
+      real(wp), intent(out) :: xf(n) !< positions at the force point [m]
+      xf = x0 + w*dx
+   end subroutine force_point
 
    !> c = a - b over n values (explicit shapes, as rodyn_state's copy_values).
    pure subroutine difference_values(n, a, b, c)
