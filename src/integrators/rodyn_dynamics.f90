@@ -530,6 +530,7 @@ contains
       end if
       call this%rotate_from_base(alpha, this%s1%d)
    end subroutine dyn_apply_correction
+
    !> One node's inertia (and mass-proportional damping) force added to f, mass * (c2 dq
    !> - g0) projected with the directors of the force point (weight wp), and its
    !> derivative kb when want_k (dyn_evaluate). fx is raised to the largest translational

@@ -22,7 +22,7 @@ module rodyn_timeloop
    use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
    use rodyn_rod_element, only: rod_element_energy_scale, max_points
    use rodyn_cable_element, only: cable_element_energy_scale
-   use rodyn_rotation, only: rotation_cayley_inverse
+   use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_shape, only: max_nen
    use rodyn_state, only: state_copy, state_gather
@@ -134,13 +134,15 @@ contains
          ! point loads (external force beyond the weight) and supports (the residual)
          w_ext = w_ext + dot_product(prob%fext(1:3, node) - grav, dx)
          if (any(prob%fext(4:6, node) /= 0.0_wp) .or. prob%sup%held(4, node)) then
-            th = step_rotation(prob%s1%d(:, :, node), prob%s0%d(:, :, node))
+            th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
+                                                   prob%s0%d(:, :, node)))
             w_ext = w_ext + dot_product(prob%fext(4:6, node), th)
             if (prob%sup%held(4, node)) w_ext = w_ext + dot_product(prob%r(4:6, node), th)
          end if
          if (prob%sup%held(1, node)) w_ext = w_ext + dot_product(prob%r(1:3, node), dx)
          if (prob%beta_d > 0.0_wp) then
-            th = step_rotation(prob%s1%d(:, :, node), prob%s0%d(:, :, node))
+            th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
+                                                   prob%s0%d(:, :, node)))
             w_damp = w_damp + dot_product(prob%fdamp(1:3, node), dx) &
                      + dot_product(prob%fdamp(4:6, node), th)
          end if
@@ -153,23 +155,6 @@ contains
          end if
       end do
    end subroutine step_work
-
-   !> A node's rotation over the step, cay^-1(d1 d0^T) (explicit shapes: matmul and
-   !> transpose on the states' sections made temporaries, 48e6 instructions of the
-   !> mooring surge deck's 2.23e9).
-   pure function step_rotation(d1, d0) result(th)
-      real(wp), intent(in) :: d1(3, 3) !< directors at t_n+1
-      real(wp), intent(in) :: d0(3, 3) !< directors at t_n
-      real(wp) :: th(3)                !< rotation vector of the step [rad]
-      real(wp) :: r(3, 3)
-      integer :: i, j
-      do j = 1, 3
-         do i = 1, 3
-            r(i, j) = d1(i, 1)*d0(j, 1) + d1(i, 2)*d0(j, 2) + d1(i, 3)*d0(j, 3)
-         end do
-      end do
-      th = rotation_cayley_inverse(r)
-   end function step_rotation
 
    !> Run the dynamic analysis from the state in prob (time 0, or the checkpoint's with
    !> resume) to model%dynamic%duration. With CHECKPOINT=c of *DYNAMIC, on_checkpoint is

@@ -43,9 +43,8 @@ contains
       state%dd = 0.0_wp
    end subroutine state_allocate
 
-   !> dst = src, field by field into dst's arrays (allocated for the same nodes and
-   !> the same choice of accelerations; no reallocation, unlike an assignment of the
-   !> whole type).
+   !> dst = src, field by field: copied into dst's arrays when they have src's sizes (every
+   !> step), otherwise (re)allocated by assignment (a state not yet allocated).
    subroutine state_copy(src, dst)
       type(state_t), intent(in) :: src    !< state copied
       type(state_t), intent(inout) :: dst !< overwritten

@@ -11,7 +11,7 @@ module rodyn_rotation
    private
    public :: skew, axial, rotation_cayley, rotation_cayley_inverse
    public :: rotation_cayley_tangent, rotation_exp, rotation_log, rotation_frame
-   public :: cross, norm3
+   public :: cross, norm3, relative_rotation
 
 contains
 
@@ -62,6 +62,21 @@ contains
       r(3, 2) = r(3, 2) + c*t(1)
       r(2, 3) = r(2, 3) - c*t(1)
    end function rotation_cayley
+
+   !> The rotation R = D1 D0^T that turns the directors D0 (columns) into D1. (Explicit
+   !> products: matmul(d1, transpose(d0)) on array sections made heap temporaries in
+   !> the time loop.)
+   pure function relative_rotation(d1, d0) result(r)
+      real(wp), intent(in) :: d1(3, 3) !< directors after, d1(:, i) = d_i
+      real(wp), intent(in) :: d0(3, 3) !< directors before
+      real(wp) :: r(3, 3)
+      integer :: i, j
+      do j = 1, 3
+         do i = 1, 3
+            r(i, j) = d1(i, 1)*d0(j, 1) + d1(i, 2)*d0(j, 2) + d1(i, 3)*d0(j, 3)
+         end do
+      end do
+   end function relative_rotation
 
    !> Inverse Cayley transform: t with cay(t) = R, t = 4 axial(R) / (1 + tr R).
    !> Defined for rotation angles below pi.

@@ -18,7 +18,7 @@ module rodyn_assembly
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, rod_gp_t
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_cable_element, only: cable_element_static, cable_element_dynamic
-   use rodyn_rotation, only: cross, rotation_cayley_inverse
+   use rodyn_rotation, only: cross, rotation_cayley_inverse, relative_rotation
    use rodyn_motion, only: amplitude_value
    use rodyn_shape, only: max_nen
    implicit none
@@ -502,8 +502,8 @@ contains
                   xm(:, a) = 0.5_wp*(x0(:, a) + x1(:, a))
                   dm(:, :, a) = 0.5_wp*(d0(:, :, a) + d1(:, :, a))
                   du(6*a - 5:6*a - 3) = x1(:, a) - x0(:, a)
-                  du(6*a - 2:6*a) = rotation_cayley_inverse(matmul(d1(:, :, a), &
-                                                                   transpose(d0(:, :, a))))
+                  du(6*a - 2:6*a) = rotation_cayley_inverse(relative_rotation(d1(:, :, a), &
+                                                                              d0(:, :, a)))
                end do
                call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                        mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
