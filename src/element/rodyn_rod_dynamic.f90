@@ -35,10 +35,10 @@ module rodyn_rod_dynamic
    use rodyn_shape, only: max_nen
    use rodyn_rotation, only: skew, cross, rotation_cayley_inverse
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
-                                rod_gp_jacobian, rod_project_qforce, &
+                                rod_gp_jacobian_row, rod_project_qforce, &
                                 rod_rotation_geometric, rod_rule_t, max_points, &
                                 rod_gp_kinematics_shear, rod_strains_shear, &
-                                rod_gp_qforce_shear, rod_gp_jacobian_shear
+                                rod_gp_qforce_shear
    implicit none
    private
    public :: rod_element_dynamic
@@ -76,7 +76,6 @@ contains
       real(wp) :: sl(6)
       logical :: have0, lin
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
-      real(wp) :: bl(6, 6*max_nen), br(6, 6*max_nen)
       ! the material part's rows of all points: force strains (Gamma) in blt/cr(1:nf),
       ! curvatures (K, no x columns) in blc/crc(1:nc)
       real(wp) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
@@ -135,10 +134,8 @@ contains
                sh = cg(1:2)*(rod_strains_shear(km) - eps0(1:2, g))
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
                if (.not. want_k) cycle
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
-                                          bl(:, 1:nd))
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
+               call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), km, d1, cg, &
+                                 wq*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
                call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
             case (scheme_trapezoidal)
@@ -149,10 +146,8 @@ contains
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), k1, sh1, 0.5_wp*wj, &
                                         fq(:, :, 1:nen))
                if (.not. want_k) cycle
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), &
-                                          bl(:, 1:nd))
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+               call add_material(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), k1, d1, cg, &
+                                 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh1
                call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)
             case default ! scheme_emc
@@ -161,10 +156,8 @@ contains
                sh = cg(1:2)*(0.5_wp*(e0(1:2) + rod_strains_shear(k1)) - eps0(1:2, g))
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
                if (.not. want_k) cycle
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), &
-                                          bl(:, 1:nd))
-               call rod_gp_jacobian_shear(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-               call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+               call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cg, &
+                                 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
                if (lin) then
                   sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
@@ -193,9 +186,8 @@ contains
             s = cg*(rod_strains(km) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, wq*wj, blt, cr, nf, blc, crc, nc)
+            call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), km, d1, cg, &
+                              wq*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s, wq*wj, pg, mg)
          case (scheme_trapezoidal)
             s = cg*(e0 - eps0(:, g))
@@ -203,9 +195,8 @@ contains
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k0, s, 0.5_wp*wj, fq(:, :, 1:nen))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), k1, s1, 0.5_wp*wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), bl(:, 1:nd))
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+            call add_material(nen, n(1:nen), dn(1:nen), k1, dm(:, :, 1:nen), k1, d1, cg, &
+                              0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             call add_geometric(nen, n(1:nen), dn(1:nen), s1, 0.5_wp*wj, pg, mg)
          case default ! scheme_emc
             ! the fields are linear in the nodal values: midpoint = mean of the ends
@@ -215,9 +206,8 @@ contains
             s = cg*(0.5_wp*(e0 + rod_strains(k1)) - eps0(:, g))
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), bl(:, 1:nd))
-            call rod_gp_jacobian(nen, n(1:nen), dn(1:nen), k1, d1, br(:, 1:nd))
-            call add_material(nd, cg, bl, br, 0.5_wp*wj, blt, cr, nf, blc, crc, nc)
+            call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cg, &
+                              0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             if (lin) then
                sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
                                        dxl(:, 1:nen), ddl(:, :, 1:nen))
@@ -359,60 +349,79 @@ contains
    end subroutine geometric_update
 
    !> Append the point's material part f bl^T diag(cg) br, over the strains integrated
-   !> here (cg /= 0), to the rows of the element: bl transposed into blt (force strains)
-   !> or blc (curvatures), f cg br into cr or crc (material_update adds them to ke).
-   pure subroutine add_material(nd, cg, bl, br, f, blt, cr, nf, blc, crc, nc)
-      integer, intent(in) :: nd            !< element unknowns
-      real(wp), intent(in) :: cg(6)        !< stiffness of the strains integrated here
-      real(wp), intent(in) :: bl(:, :)     !< (6, >= nd) test-side strain Jacobian
-      real(wp), intent(in) :: br(:, :)     !< (6, >= nd) increment-side strain Jacobian
-      real(wp), intent(in) :: f            !< weight
-      real(wp), intent(inout) :: blt(:, :), cr(:, :) !< force-strain rows
-      integer, intent(inout) :: nf         !< force-strain rows used
-      real(wp), intent(inout) :: blc(:, :), crc(:, :) !< curvature rows
-      integer, intent(inout) :: nc         !< curvature rows used
-      integer :: k
-      do k = 1, 3
+   !> here (cg /= 0), to the rows of the element: row k of bl (the strain Jacobian of the
+   !> test side: fields kl, nodal directors dl) as column nf of blt (force strains) or,
+   !> its rotation entries only (3 a - 2 .. 3 a for node a), nc of blc (curvatures); f cg(k)
+   !> times row k of br (increment side: kr, dr) as row nf of cr or nc of crc
+   !> (rod_gp_jacobian_row; material_update adds them to ke). Only the
+   !> rows used are formed (a full point of order 3: Gamma3 and the curvatures; a
+   !> shear-only point: Gamma1, Gamma2).
+   pure subroutine add_material(nen, n, dn, kl, dl, kr, dr, cg, f, blt, cr, nf, blc, crc, nc)
+      integer, intent(in) :: nen                 !< nodes of the element
+      real(wp), intent(in) :: n(nen)             !< shape functions
+      real(wp), intent(in) :: dn(nen)            !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kl, kr       !< fields of the test and increment sides
+      real(wp), intent(in) :: dl(3, 3, nen)      !< nodal directors, test side
+      real(wp), intent(in) :: dr(3, 3, nen)      !< nodal directors, increment side
+      real(wp), intent(in) :: cg(6)              !< stiffness of the strains integrated here
+      real(wp), intent(in) :: f                  !< weight
+      real(wp), intent(inout) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
+      integer, intent(inout) :: nf               !< force-strain rows used
+      real(wp), intent(inout) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      integer, intent(inout) :: nc               !< curvature rows used
+      real(wp) :: row(6*max_nen)
+      integer :: k, nd, a
+      nd = 6*nen
+      do k = 1, 6
          if (cg(k) == 0.0_wp) cycle
-         nf = nf + 1
-         blt(1:nd, nf) = bl(k, 1:nd)
-         cr(nf, 1:nd) = (f*cg(k))*br(k, 1:nd)
-      end do
-      do k = 4, 6
-         if (cg(k) == 0.0_wp) cycle
-         nc = nc + 1
-         blc(1:nd, nc) = bl(k, 1:nd)
-         crc(nc, 1:nd) = (f*cg(k))*br(k, 1:nd)
+         call rod_gp_jacobian_row(nen, n, dn, kr, dr, k, row(1:nd))
+         if (k <= 3) then
+            nf = nf + 1
+            call rod_gp_jacobian_row(nen, n, dn, kl, dl, k, blt(1:nd, nf))
+            cr(nf, 1:nd) = (f*cg(k))*row(1:nd)
+         else
+            nc = nc + 1
+            crc(nc, 1:nd) = (f*cg(k))*row(1:nd)
+            call rod_gp_jacobian_row(nen, n, dn, kl, dl, k, row(1:nd))
+            do a = 1, nen                  ! the rotation entries only
+               blc(3*a - 2:3*a, nc) = row(6*a - 2:6*a)
+            end do
+         end if
       end do
    end subroutine add_material
 
-   !> ke += blt(:, 1:nf) cr(1:nf, :) + blc(:, 1:nc) crc(1:nc, :), node block by node
-   !> block with the sums held in registers. The curvatures do not depend on the
-   !> positions: their rows (and columns) of the x unknowns are zero and skipped.
+   !> ke += blt(:, 1:nf) cr(1:nf, :) + blc(:, 1:nc) crc(1:nc, :), column by column and
+   !> row by row down a column (the loop the compiler vectorizes). The curvatures do not
+   !> depend on the positions: blc holds their rotation rows only, and a rotation column
+   !> of ke takes them through its rotation rows gathered into one vector.
    pure subroutine material_update(nen, blt, cr, nf, blc, crc, nc, ke)
       integer, intent(in) :: nen                      !< nodes of the element
-      real(wp), intent(in) :: blt(:, :), cr(:, :)     !< force-strain rows
-      integer, intent(in) :: nf                       !< their number
-      real(wp), intent(in) :: blc(:, :), crc(:, :)    !< curvature rows
-      integer, intent(in) :: nc                       !< their number
-      real(wp), intent(inout) :: ke(:, :)             !< element matrix (6 nen square)
-      real(wp) :: acc(6), c
-      integer :: j, i0, k, jn
+      real(wp), intent(in) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
+      integer, intent(in) :: nf                       !< force-strain rows
+      real(wp), intent(in) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      integer, intent(in) :: nc                       !< curvature rows
+      real(wp), intent(inout) :: ke(6*nen, 6*nen)     !< element matrix
+      real(wp) :: c, kr(3*max_nen)
+      integer :: j, i, k, a
       do j = 1, 6*nen
-         jn = mod(j - 1, 6)                 ! 0..2: an x column, 3..5: a rotation column
-         do i0 = 0, 6*(nen - 1), 6
-            acc = 0.0_wp
-            do k = 1, nf
-               c = cr(k, j)
-               acc = acc + c*blt(i0 + 1:i0 + 6, k)
+         do k = 1, nf
+            c = cr(k, j)
+            do i = 1, 6*nen
+               ke(i, j) = ke(i, j) + c*blt(i, k)
             end do
-            if (jn >= 3) then
-               do k = 1, nc
-                  c = crc(k, j)
-                  acc(4:6) = acc(4:6) + c*blc(i0 + 4:i0 + 6, k)
-               end do
-            end if
-            ke(i0 + 1:i0 + 6, j) = ke(i0 + 1:i0 + 6, j) + acc
+         end do
+         if (mod(j - 1, 6) < 3) cycle       ! an x column: no curvature terms
+         do a = 1, nen
+            kr(3*a - 2:3*a) = ke(6*a - 2:6*a, j)
+         end do
+         do k = 1, nc
+            c = crc(k, j)
+            do i = 1, 3*nen
+               kr(i) = kr(i) + c*blc(i, k)
+            end do
+         end do
+         do a = 1, nen
+            ke(6*a - 2:6*a, j) = kr(3*a - 2:3*a)
          end do
       end do
    end subroutine material_update

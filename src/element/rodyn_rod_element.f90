@@ -32,7 +32,7 @@ module rodyn_rod_element
    public :: rod_element_energy_scale, rod_element_fields
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule, rod_hidden_shear
-   public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_shear
+   public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_row
 
    integer, parameter :: max_points = 7  !< most quadrature points of one element
 
@@ -162,22 +162,6 @@ contains
       end do
    end subroutine rod_gp_qforce_shear
 
-   !> Rows 1 and 2 (Gamma1, Gamma2) of rod_gp_jacobian; the other rows are not set.
-   pure subroutine rod_gp_jacobian_shear(nen, n, dn, kin, dnode, bt)
-      integer, intent(in) :: nen               !< nodes of the element
-      real(wp), intent(in) :: n(nen)           !< shape functions
-      real(wp), intent(in) :: dn(nen)          !< dN/dS [1/m]
-      type(rod_gp_t), intent(in) :: kin        !< fields where B is evaluated
-      real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors defining the rotation
-      real(wp), intent(inout) :: bt(6, 6, nen) !< rows 1:2 set
-      integer :: a, k
-      do a = 1, nen
-         do k = 1, 2
-            bt(k, 1:3, a) = dn(a)*kin%d(:, k)
-            bt(k, 4:6, a) = n(a)*cross(dnode(:, k, a), kin%xp)
-         end do
-      end do
-   end subroutine rod_gp_jacobian_shear
 
    !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3) (note section 1).
    pure function rod_strains(kin) result(eps)
@@ -228,38 +212,58 @@ contains
    end subroutine rod_gp_qforce
 
    !> Projected strain Jacobian bt = B P(dnode): the change of eps at the point for
-   !> u_b = (dx_b, dtheta_b), with nodal directors varied as dd_ib = dtheta_b x dnode_ib.
+   !> u_b = (dx_b, dtheta_b), with nodal directors varied as dd_ib = dtheta_b x dnode_ib
+   !> (rod_gp_jacobian_row, row by row).
    pure subroutine rod_gp_jacobian(nen, n, dn, kin, dnode, bt)
       integer, intent(in) :: nen               !< nodes of the element
       real(wp), intent(in) :: n(nen)           !< shape functions
       real(wp), intent(in) :: dn(nen)          !< dN/dS [1/m]
       type(rod_gp_t), intent(in) :: kin        !< fields where B is evaluated
       real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors defining the rotation
-      real(wp), intent(out) :: bt(6, 6, nen)   !< d eps_k / d u_(j,b): bt(k, j, b)
-      real(wp) :: g1(3), g2(3), g3(3)
-      integer :: a, k
+      real(wp), intent(out) :: bt(6, 6*nen)    !< d eps_k / d u_(j,b): bt(k, 6 (b - 1) + j)
+      real(wp) :: row(6*max_nen)
+      integer :: k
+      do k = 1, 6
+         call rod_gp_jacobian_row(nen, n, dn, kin, dnode, k, row(1:6*nen))
+         bt(k, :) = row(1:6*nen)
+      end do
+   end subroutine rod_gp_jacobian
+
+   !> Row k of the projected strain Jacobian B P(dnode), entry 6 (b - 1) + j for
+   !> u_b = (dx_b, dtheta_b) (dd_ib = dtheta_b x dnode_ib):
+   !>   Gamma_k (k = 1..3):  dx_b: dN_b d_k,   dtheta_b: N_b dnode_kb x x'
+   !>   K_k (k = 4..6, (i, j) = (2, 3), (3, 1), (1, 2)): dx_b: 0,
+   !>     dtheta_b: dnode_ib x g_i + dnode_jb x g_j,
+   !>     g_i = (dN_b d_j - N_b d_j')/2,  g_j = (N_b d_i' - dN_b d_i)/2.
+   !> A shear row (k = 1, 2) reads x' and d_1, d_2 only (rod_gp_kinematics_shear).
+   pure subroutine rod_gp_jacobian_row(nen, n, dn, kin, dnode, k, row)
+      integer, intent(in) :: nen               !< nodes of the element
+      real(wp), intent(in) :: n(nen)           !< shape functions
+      real(wp), intent(in) :: dn(nen)          !< dN/dS [1/m]
+      type(rod_gp_t), intent(in) :: kin        !< fields where B is evaluated
+      real(wp), intent(in) :: dnode(3, 3, nen) !< nodal directors defining the rotation
+      integer, intent(in) :: k                 !< strain (1..6)
+      real(wp), intent(out) :: row(6, nen)     !< row(j, b)
+      real(wp) :: gi(3), gj(3)
+      integer :: b, i, j
       associate (d => kin%d, dp => kin%dp, xp => kin%xp)
-         do a = 1, nen
-            do k = 1, 3
-               bt(k, 1:3, a) = dn(a)*d(:, k)
-               bt(k, 4:6, a) = n(a)*cross(dnode(:, k, a), xp)
-               bt(3 + k, 1:3, a) = 0.0_wp
+         if (k <= 3) then
+            do b = 1, nen
+               row(1:3, b) = dn(b)*d(:, k)
+               row(4:6, b) = n(b)*cross(dnode(:, k, b), xp)
             end do
-            ! K1: derivatives with respect to d2 and d3
-            g2 = 0.5_wp*(dn(a)*d(:, 3) - n(a)*dp(:, 3))
-            g3 = 0.5_wp*(n(a)*dp(:, 2) - dn(a)*d(:, 2))
-            bt(4, 4:6, a) = cross(dnode(:, 2, a), g2) + cross(dnode(:, 3, a), g3)
-            ! K2: derivatives with respect to d3 and d1
-            g3 = 0.5_wp*(dn(a)*d(:, 1) - n(a)*dp(:, 1))
-            g1 = 0.5_wp*(n(a)*dp(:, 3) - dn(a)*d(:, 3))
-            bt(5, 4:6, a) = cross(dnode(:, 3, a), g3) + cross(dnode(:, 1, a), g1)
-            ! K3: derivatives with respect to d1 and d2
-            g1 = 0.5_wp*(dn(a)*d(:, 2) - n(a)*dp(:, 2))
-            g2 = 0.5_wp*(n(a)*dp(:, 1) - dn(a)*d(:, 1))
-            bt(6, 4:6, a) = cross(dnode(:, 1, a), g1) + cross(dnode(:, 2, a), g2)
+            return
+         end if
+         i = mod(k - 3, 3) + 1
+         j = mod(k - 2, 3) + 1
+         do b = 1, nen
+            gi = 0.5_wp*(dn(b)*d(:, j) - n(b)*dp(:, j))
+            gj = 0.5_wp*(n(b)*dp(:, i) - dn(b)*d(:, i))
+            row(1:3, b) = 0.0_wp
+            row(4:6, b) = cross(dnode(:, i, b), gi) + cross(dnode(:, j, b), gj)
          end do
       end associate
-   end subroutine rod_gp_jacobian
+   end subroutine rod_gp_jacobian_row
 
    !> Add wj * P(dl)^T [sum_k s_k d2 eps_k / dq dq] P(dr) to ke: the stress (geometric)
    !> stiffness at one point. The strains are quadratic, so the second derivatives are
