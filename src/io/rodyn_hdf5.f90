@@ -31,6 +31,7 @@ module rodyn_hdf5
       h5tcopy_f, h5tclose_f, h5tset_cset_f, h5tget_cset_f, h5tget_class_f, &
       h5tget_size_f, h5tset_strpad_f, h5tis_variable_str_f, &
       h5pcreate_f, h5pclose_f, h5pset_chunk_f, h5pset_fclose_degree_f, h5pset_file_locking_f, &
+      h5pset_buffer_f, H5P_DATASET_XFER_F, &
       h5pset_link_creation_order_f, h5pset_create_inter_group_f, &
       h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, &
       H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_ACC_RDWR_F, H5F_CLOSE_STRONG_F, &
@@ -49,7 +50,7 @@ module rodyn_hdf5
    public :: hdf5_init, hdf5_finalize
    public :: hdf5_create_file, hdf5_open_file, hdf5_close_file, hdf5_flush
    public :: hdf5_create_group, hdf5_exists
-   public :: hdf5_write_dataset, hdf5_write_attribute
+   public :: hdf5_write_dataset, hdf5_write_attribute, hdf5_write_attributes
    public :: hdf5_read_dataset, hdf5_read_attribute
    public :: hdf5_create_series, hdf5_append_column
    public :: hdf5_series_t, hdf5_create_series_1d, hdf5_open_series, hdf5_close_series
@@ -403,22 +404,30 @@ contains
       character(len=*), parameter :: where = 'hdf5_write_string'
       character(kind=c_char), allocatable, target :: buf(:)
       type(c_ptr), target :: ptr(1)
-      integer(hid_t) :: dset, stype
+      integer(hid_t) :: dset, stype, dxpl
       integer(hsize_t) :: dims(0)
       integer :: stat
       if (has_error(err)) return
       dset = -1
       stype = -1
+      dxpl = -1
       blk: block
          call vlen_string_type(stype, stat)
          if (failed(stat, 'set up string', where, file, path, err)) exit blk
          call create_dataset(file, path, stype, dims, dset, where, err)
          if (has_error(err)) exit blk
+         ! the string is converted on its way to the file, through a buffer HDF5 zeroes
+         ! first: 1 MiB by default, for the one 16-byte pointer written here
+         call h5pcreate_f(H5P_DATASET_XFER_F, dxpl, stat)
+         if (failed(stat, 'set up the writing of', where, file, path, err)) exit blk
+         call h5pset_buffer_f(dxpl, 1024_hsize_t, stat)
+         if (failed(stat, 'set up the writing of', where, file, path, err)) exit blk
          call c_chars(text, buf)
          ptr(1) = c_loc(buf)
-         call h5dwrite_f(dset, stype, c_loc(ptr), stat)
+         call h5dwrite_f(dset, stype, c_loc(ptr), stat, xfer_prp=dxpl)
          if (failed(stat, 'write dataset', where, file, path, err)) exit blk
       end block blk
+      if (dxpl >= 0) call h5pclose_f(dxpl, stat)
       call release(dset)
       call release(stype)
    end subroutine write_string
@@ -780,30 +789,56 @@ contains
       character(len=*), intent(in) :: name  !< attribute name
       character(len=*), intent(in) :: value !< the text
       type(error_t), intent(inout) :: err   !< status
+      call hdf5_write_attributes(file, obj, [name], [value], err, keep_blanks=.true.)
+   end subroutine attr_write_string
+
+   !> Write text attributes names(i) = values(i) (trailing blanks removed, unless
+   !> keep_blanks) on object `obj`, opened once for all of them: opening an object by
+   !> its path is most of what an attribute costs (docs/benchmarks.md).
+   subroutine hdf5_write_attributes(file, obj, names, values, err, keep_blanks)
+      type(hdf5_file_t), intent(in) :: file    !< open file
+      character(len=*), intent(in) :: obj      !< object path ('/' for the root group)
+      character(len=*), intent(in) :: names(:) !< attribute names
+      character(len=*), intent(in) :: values(:) !< their texts
+      type(error_t), intent(inout) :: err      !< status
+      logical, intent(in), optional :: keep_blanks !< write values(i) as given
       character(len=*), parameter :: where = 'hdf5_write_attribute_string'
       character(kind=c_char), allocatable, target :: buf(:)
       type(c_ptr), target :: ptr(1)
       integer(hid_t) :: oid, aid, stype
       integer(hsize_t) :: dims(0)
-      integer :: stat
+      integer :: stat, i
+      logical :: keep
       if (has_error(err)) return
+      keep = .false.
+      if (present(keep_blanks)) keep = keep_blanks
       oid = -1
       aid = -1
       stype = -1
       blk: block
-         call vlen_string_type(stype, stat)
-         if (failed(stat, 'set up string', where, file, obj//'@'//name, err)) exit blk
-         call create_attribute(file, obj, name, stype, dims, oid, aid, where, err)
+         call open_object(file, obj, oid, where, err)
          if (has_error(err)) exit blk
-         call c_chars(value, buf)
-         ptr(1) = c_loc(buf)
-         call h5awrite_f(aid, stype, c_loc(ptr), stat)
-         if (failed(stat, 'write attribute', where, file, obj//'@'//name, err)) exit blk
+         call vlen_string_type(stype, stat)
+         if (failed(stat, 'set up string', where, file, obj, err)) exit blk
+         do i = 1, size(names)
+            call attribute_on(file, oid, obj, trim(names(i)), stype, dims, aid, where, err)
+            if (has_error(err)) exit blk
+            if (keep) then
+               call c_chars(values(i), buf)
+            else
+               call c_chars(trim(values(i)), buf)
+            end if
+            ptr(1) = c_loc(buf)
+            call h5awrite_f(aid, stype, c_loc(ptr), stat)
+            if (failed(stat, 'write attribute', where, file, obj//'@'//trim(names(i)), err)) &
+               exit blk
+            call release(aid)
+         end do
       end block blk
       call release(aid)
       call release(oid)
       call release(stype)
-   end subroutine attr_write_string
+   end subroutine hdf5_write_attributes
 
    !> Write a real scalar attribute.
    subroutine attr_write_real(file, obj, name, value, err)
@@ -1430,16 +1465,43 @@ contains
       integer(hid_t), intent(out) :: aid      !< new attribute
       character(len=*), intent(in) :: where   !< calling routine
       type(error_t), intent(inout) :: err     !< status
+      aid = -1
+      call open_object(file, obj, oid, where, err)
+      if (has_error(err)) return
+      call attribute_on(file, oid, obj, name, ftype, dims, aid, where, err)
+   end subroutine create_attribute
+
+   !> Open object `obj` (a group or dataset path); oid < 0 on failure.
+   subroutine open_object(file, obj, oid, where, err)
+      type(hdf5_file_t), intent(in) :: file   !< open file
+      character(len=*), intent(in) :: obj     !< object path
+      integer(hid_t), intent(out) :: oid      !< open object
+      character(len=*), intent(in) :: where   !< calling routine
+      type(error_t), intent(inout) :: err     !< status
+      integer :: stat
+      call h5oopen_f(file%id, obj, oid, stat)
+      if (stat < 0) oid = -1
+      call check(stat, 'open object', where, file, obj, err)
+   end subroutine open_object
+
+   !> Create attribute `name` of type ftype and shape dims (size 0: scalar) on the open
+   !> object oid (path obj, for messages), replacing one of that name; aid < 0 on failure.
+   subroutine attribute_on(file, oid, obj, name, ftype, dims, aid, where, err)
+      type(hdf5_file_t), intent(in) :: file   !< open file
+      integer(hid_t), intent(in) :: oid       !< open object
+      character(len=*), intent(in) :: obj     !< its path
+      character(len=*), intent(in) :: name    !< attribute name
+      integer(hid_t), intent(in) :: ftype     !< datatype in the file
+      integer(hsize_t), intent(in) :: dims(:) !< shape
+      integer(hid_t), intent(out) :: aid      !< new attribute
+      character(len=*), intent(in) :: where   !< calling routine
+      type(error_t), intent(inout) :: err     !< status
       integer(hid_t) :: space
       integer :: stat
       logical :: exists
-      oid = -1
       aid = -1
       space = -1
       blk: block
-         call h5oopen_f(file%id, obj, oid, stat)
-         if (stat < 0) oid = -1
-         if (failed(stat, 'open object', where, file, obj, err)) exit blk
          call h5aexists_f(oid, name, exists, stat)
          if (failed(stat, 'look up attribute', where, file, obj//'@'//name, err)) exit blk
          if (exists) then
@@ -1459,6 +1521,6 @@ contains
          if (failed(stat, 'create attribute', where, file, obj//'@'//name, err)) exit blk
       end block blk
       call release(space)
-   end subroutine create_attribute
+   end subroutine attribute_on
 
 end module rodyn_hdf5

@@ -7,7 +7,7 @@ module rodyn_output_common
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: model_t
    use rodyn_results, only: line_result_t, run_summary_t
-   use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_dataset, &
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_attributes, hdf5_write_dataset, &
       hdf5_create_group
    use rodyn_error, only: error_t, set_error, stat_io, has_error
    use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment
@@ -96,8 +96,10 @@ contains
       character(len=*), intent(in) :: units         !< units text ('-': none)
       character(len=*), intent(in) :: description   !< one-line description
       type(error_t), intent(inout) :: err           !< status
-      call hdf5_write_attribute(h5, path, 'units', units, err)
-      call hdf5_write_attribute(h5, path, 'description', description, err)
+      character(len=max(len(units), len(description))) :: texts(2)
+      texts(1) = units
+      texts(2) = description
+      call hdf5_write_attributes(h5, path, ['units      ', 'description'], texts, err)
    end subroutine describe
 
    !> Attach to dataset `path` of file `file` the `units` and `description` that
