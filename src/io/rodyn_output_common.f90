@@ -7,8 +7,8 @@ module rodyn_output_common
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: model_t
    use rodyn_results, only: line_result_t, run_summary_t
-   use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_attributes, hdf5_write_dataset, &
-      hdf5_create_group
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_attributes, &
+      hdf5_write_dataset, hdf5_create_group
    use rodyn_error, only: error_t, set_error, stat_io, has_error
    use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment
    use rodyn_outfile, only: path_join
