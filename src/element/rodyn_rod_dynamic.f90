@@ -400,7 +400,7 @@ contains
       integer, intent(in) :: nf                       !< force-strain rows
       real(wp), intent(in) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
       integer, intent(in) :: nc                       !< curvature rows
-      real(wp), intent(inout) :: ke(6*nen, 6*nen)     !< element matrix
+      real(wp), intent(inout) :: ke(:, :)             !< element matrix (6 nen square)
       real(wp) :: c, kr(3*max_nen)
       integer :: j, i, k, a
       do j = 1, 6*nen
