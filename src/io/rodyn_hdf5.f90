@@ -315,11 +315,13 @@ contains
    ! ------------------------------------------------------------------ dataset writers
 
    !> Write a real scalar dataset (h5py: shape ()).
-   subroutine write_real_0d(file, path, x, err)
+   subroutine write_real_0d(file, path, x, err, names, texts)
       type(hdf5_file_t), intent(in) :: file !< open file
       character(len=*), intent(in) :: path  !< absolute dataset path
       real(wp), intent(in) :: x             !< value
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_write_real_0d'
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(0)
@@ -327,7 +329,8 @@ contains
       integer :: stat
       if (has_error(err)) return
       buf(1) = x
-      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err, &
+         names=names, texts=texts)
       if (.not. has_error(err)) then
          call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, buf, [1_hsize_t], stat)
          call check(stat, 'write dataset', where, file, path, err)
@@ -336,18 +339,21 @@ contains
    end subroutine write_real_0d
 
    !> Write a real 1-D dataset.
-   subroutine write_real_1d(file, path, x, err)
+   subroutine write_real_1d(file, path, x, err, names, texts)
       type(hdf5_file_t), intent(in) :: file !< open file
       character(len=*), intent(in) :: path  !< absolute dataset path
       real(wp), intent(in) :: x(:)          !< values
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_write_real_1d'
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(1)
       integer :: stat
       if (has_error(err)) return
       dims = shape(x, kind=hsize_t)
-      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err, &
+         names=names, texts=texts)
       if (.not. has_error(err)) then
          call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
          call check(stat, 'write dataset', where, file, path, err)
@@ -356,18 +362,21 @@ contains
    end subroutine write_real_1d
 
    !> Write a real 2-D dataset; x(m, n) appears in h5py as shape (n, m).
-   subroutine write_real_2d(file, path, x, err)
+   subroutine write_real_2d(file, path, x, err, names, texts)
       type(hdf5_file_t), intent(in) :: file !< open file
       character(len=*), intent(in) :: path  !< absolute dataset path
       real(wp), intent(in) :: x(:, :)       !< values
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_write_real_2d'
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(2)
       integer :: stat
       if (has_error(err)) return
       dims = shape(x, kind=hsize_t)
-      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err)
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, dset, where, err, &
+         names=names, texts=texts)
       if (.not. has_error(err)) then
          call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
          call check(stat, 'write dataset', where, file, path, err)
@@ -376,18 +385,21 @@ contains
    end subroutine write_real_2d
 
    !> Write an integer 1-D dataset.
-   subroutine write_int_1d(file, path, x, err)
+   subroutine write_int_1d(file, path, x, err, names, texts)
       type(hdf5_file_t), intent(in) :: file !< open file
       character(len=*), intent(in) :: path  !< absolute dataset path
       integer, intent(in) :: x(:)           !< values
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_write_int_1d'
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(1)
       integer :: stat
       if (has_error(err)) return
       dims = shape(x, kind=hsize_t)
-      call create_dataset(file, path, H5T_STD_I32LE, dims, dset, where, err)
+      call create_dataset(file, path, H5T_STD_I32LE, dims, dset, where, err, &
+         names=names, texts=texts)
       if (.not. has_error(err)) then
          call h5dwrite_f(dset, H5T_NATIVE_INTEGER, x, dims, stat)
          call check(stat, 'write dataset', where, file, path, err)
@@ -396,11 +408,13 @@ contains
    end subroutine write_int_1d
 
    !> Write a string as a scalar variable-length UTF-8 dataset (any length, newlines kept).
-   subroutine write_string(file, path, text, err)
+   subroutine write_string(file, path, text, err, names, texts)
       type(hdf5_file_t), intent(in) :: file !< open file
       character(len=*), intent(in) :: path  !< absolute dataset path
       character(len=*), intent(in) :: text  !< the text
       type(error_t), intent(inout) :: err   !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_write_string'
       character(kind=c_char), allocatable, target :: buf(:)
       type(c_ptr), target :: ptr(1)
@@ -414,7 +428,8 @@ contains
       blk: block
          call vlen_string_type(stype, stat)
          if (failed(stat, 'set up string', where, file, path, err)) exit blk
-         call create_dataset(file, path, stype, dims, dset, where, err)
+         call create_dataset(file, path, stype, dims, dset, where, err, &
+         names=names, texts=texts)
          if (has_error(err)) exit blk
          ! the string is converted on its way to the file, through a buffer HDF5 zeroes
          ! first: 1 MiB by default, for the one 16-byte pointer written here
@@ -437,12 +452,14 @@ contains
    !> Create an empty extendible real dataset of n_cols rows in Fortran order (h5py
    !> shape (0, n_cols)), chunked, to be grown one column (one h5py row, e.g. one time
    !> step) at a time with hdf5_append_column or hdf5_append_steps.
-   subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps)
+   subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps, names, texts)
       type(hdf5_file_t), intent(in) :: file         !< open file
       character(len=*), intent(in) :: path          !< absolute dataset path
       integer, intent(in) :: n_cols                 !< values per step (h5py columns)
       type(error_t), intent(inout) :: err           !< status
       integer, intent(in), optional :: chunk_steps  !< steps per chunk; default ~64 KiB
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       character(len=*), parameter :: where = 'hdf5_create_series'
       integer :: steps
       if (has_error(err)) return
@@ -454,17 +471,19 @@ contains
       steps = max(1, 8192/n_cols)
       if (present(chunk_steps)) steps = max(1, chunk_steps)
       call create_extendible(file, path, [integer(hsize_t) :: n_cols, 0], H5T_IEEE_F64LE, &
-         steps, where, err)
+         steps, where, err, names, texts)
    end subroutine hdf5_create_series
 
    !> Create an empty extendible 1-D dataset (h5py shape (0,)), one value per step:
    !> real (binary64), or 32-bit integer when `integers` is true.
-   subroutine hdf5_create_series_1d(file, path, err, chunk_steps, integers)
+   subroutine hdf5_create_series_1d(file, path, err, chunk_steps, integers, names, texts)
       type(hdf5_file_t), intent(in) :: file         !< open file
       character(len=*), intent(in) :: path          !< absolute dataset path
       type(error_t), intent(inout) :: err           !< status
       integer, intent(in), optional :: chunk_steps  !< steps per chunk; default 8192
       logical, intent(in), optional :: integers     !< integer values (default: real)
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
       integer(hid_t) :: ftype
       integer :: steps
       if (has_error(err)) return
@@ -475,7 +494,7 @@ contains
          if (integers) ftype = H5T_STD_I32LE
       end if
       call create_extendible(file, path, [integer(hsize_t) :: 0], ftype, steps, &
-         'hdf5_create_series_1d', err)
+         'hdf5_create_series_1d', err, names, texts)
    end subroutine hdf5_create_series_1d
 
    !> Open a dataset made by hdf5_create_series or hdf5_create_series_1d and keep it
@@ -750,7 +769,8 @@ contains
 
    !> Create an empty chunked dataset whose last Fortran dimension (the first in h5py)
    !> is unlimited; dims is the shape with 0 steps, chunks hold chunk_steps steps.
-   subroutine create_extendible(file, path, dims, ftype, chunk_steps, where, err)
+   subroutine create_extendible(file, path, dims, ftype, chunk_steps, where, err, names, &
+                                texts)
       type(hdf5_file_t), intent(in) :: file    !< open file
       character(len=*), intent(in) :: path     !< absolute dataset path
       integer(hsize_t), intent(in) :: dims(:)  !< shape, last extent 0 (Fortran order)
@@ -758,6 +778,8 @@ contains
       integer, intent(in) :: chunk_steps       !< steps per chunk
       character(len=*), intent(in) :: where    !< calling routine
       type(error_t), intent(inout) :: err      !< status
+      character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
+      character(len=*), intent(in), optional :: texts(:) !< their texts
       integer(hid_t) :: dset, dcpl
       integer(hsize_t) :: maxdims(size(dims)), chunk(size(dims))
       integer :: stat, r
@@ -774,7 +796,7 @@ contains
          call h5pset_chunk_f(dcpl, r, chunk, stat)
          if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
          call create_dataset(file, path, ftype, dims, dset, where, err, &
-            maxdims=maxdims, dcpl=dcpl)
+            maxdims=maxdims, dcpl=dcpl, names=names, texts=texts)
       end block blk
       call release(dset)
       call release(dcpl)
@@ -794,7 +816,8 @@ contains
 
    !> Write text attributes names(i) = values(i) (trailing blanks removed, unless
    !> keep_blanks) on object `obj`, opened once for all of them: opening an object by
-   !> its path is most of what an attribute costs (docs/benchmarks.md).
+   !> its path is most of what an attribute costs (docs/benchmarks.md). A new dataset
+   !> takes its attributes at creation instead (the writers' `names`, `texts`).
    subroutine hdf5_write_attributes(file, obj, names, values, err, keep_blanks)
       type(hdf5_file_t), intent(in) :: file    !< open file
       character(len=*), intent(in) :: obj      !< object path ('/' for the root group)
@@ -802,22 +825,35 @@ contains
       character(len=*), intent(in) :: values(:) !< their texts
       type(error_t), intent(inout) :: err      !< status
       logical, intent(in), optional :: keep_blanks !< write values(i) as given
-      character(len=*), parameter :: where = 'hdf5_write_attribute_string'
-      character(kind=c_char), allocatable, target :: buf(:)
-      type(c_ptr), target :: ptr(1)
-      integer(hid_t) :: oid, aid, stype
-      integer(hsize_t) :: dims(0)
-      integer :: stat, i
+      integer(hid_t) :: oid
       logical :: keep
       if (has_error(err)) return
       keep = .false.
       if (present(keep_blanks)) keep = keep_blanks
-      oid = -1
+      call open_object(file, obj, oid, 'hdf5_write_attribute_string', err)
+      if (.not. has_error(err)) call text_attributes(file, oid, obj, names, values, keep, err)
+      call release(oid)
+   end subroutine hdf5_write_attributes
+
+   !> Text attributes names(i) = values(i) (variable-length UTF-8 scalars; trimmed unless
+   !> keep) on the open object oid (path obj, for messages), replacing any of those names.
+   subroutine text_attributes(file, oid, obj, names, values, keep, err)
+      type(hdf5_file_t), intent(in) :: file     !< open file
+      integer(hid_t), intent(in) :: oid         !< open object
+      character(len=*), intent(in) :: obj       !< its path
+      character(len=*), intent(in) :: names(:)  !< attribute names
+      character(len=*), intent(in) :: values(:) !< their texts
+      logical, intent(in) :: keep               !< write values(i) with trailing blanks
+      type(error_t), intent(inout) :: err       !< status
+      character(len=*), parameter :: where = 'hdf5_write_attribute_string'
+      character(kind=c_char), allocatable, target :: buf(:)
+      type(c_ptr), target :: ptr(1)
+      integer(hid_t) :: aid, stype
+      integer(hsize_t) :: dims(0)
+      integer :: stat, i
       aid = -1
       stype = -1
       blk: block
-         call open_object(file, obj, oid, where, err)
-         if (has_error(err)) exit blk
          call vlen_string_type(stype, stat)
          if (failed(stat, 'set up string', where, file, obj, err)) exit blk
          do i = 1, size(names)
@@ -836,9 +872,8 @@ contains
          end do
       end block blk
       call release(aid)
-      call release(oid)
       call release(stype)
-   end subroutine hdf5_write_attributes
+   end subroutine text_attributes
 
    !> Write a real scalar attribute.
    subroutine attr_write_real(file, obj, name, value, err)
@@ -1236,7 +1271,8 @@ contains
 
    !> Create a dataspace of shape dims (size 0: scalar) and a dataset on it, creating
    !> missing parent groups. dset < 0 on failure.
-   subroutine create_dataset(file, path, ftype, dims, dset, where, err, maxdims, dcpl)
+   subroutine create_dataset(file, path, ftype, dims, dset, where, err, maxdims, dcpl, &
+                             names, texts)
       type(hdf5_file_t), intent(in) :: file                   !< open file
       character(len=*), intent(in) :: path                    !< absolute dataset path
       integer(hid_t), intent(in) :: ftype                     !< datatype in the file
@@ -1246,6 +1282,8 @@ contains
       type(error_t), intent(inout) :: err                     !< status
       integer(hsize_t), intent(in), optional :: maxdims(:)    !< maximum shape
       integer(hid_t), intent(in), optional :: dcpl            !< creation property list
+      character(len=*), intent(in), optional :: names(:)      !< text attributes to attach
+      character(len=*), intent(in), optional :: texts(:)      !< their texts
       integer(hid_t) :: space, lcpl
       integer :: stat
       dset = -1
@@ -1266,6 +1304,8 @@ contains
             lcpl_id=lcpl)
          if (stat < 0) dset = -1
          if (failed(stat, 'create dataset', where, file, path, err)) exit blk
+         if (present(names) .and. present(texts)) &
+            call text_attributes(file, dset, path, names, texts, .false., err)
       end block blk
       call release(space)
       call release(lcpl)

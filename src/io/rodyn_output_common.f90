@@ -10,13 +10,17 @@ module rodyn_output_common
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_attributes, &
       hdf5_write_dataset, hdf5_create_group
    use rodyn_error, only: error_t, set_error, stat_io, has_error
-   use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment
+   use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment, row_len
    use rodyn_outfile, only: path_join
    implicit none
    private
-   public :: text_of, status_of, path_join, one_line, describe, describe_dataset, csv_name
+   public :: text_of, status_of, path_join, one_line, describe, csv_name
+   public :: described, dataset_texts
    public :: env_item_t, environment_items, write_environment_h5, write_parameters_h5
    public :: wall_tension_of, seabed_force_of, water_fields_fit, touchdown_of
+
+   !> The text attributes every dataset carries (rodyn_output_schema's fields 3 and 4).
+   character(len=*), parameter :: described(2) = ['units      ', 'description']
 
    !> One entry of the environment (docs/output.md, environment.csv): a key, its value
    !> in the unit given (angles in degrees), and a one-line description.
@@ -99,27 +103,30 @@ contains
       character(len=max(len(units), len(description))) :: texts(2)
       texts(1) = units
       texts(2) = description
-      call hdf5_write_attributes(h5, path, ['units      ', 'description'], texts, err)
+      call hdf5_write_attributes(h5, path, described, texts, err)
    end subroutine describe
 
-   !> Attach to dataset `path` of file `file` the `units` and `description` that
-   !> rodyn_output_schema gives it (a line's dataset: `line_group` its group); a dataset
-   !> the schema does not know is an error (a writer and the schema out of step).
-   subroutine describe_dataset(h5, file, path, err, line_group)
-      type(hdf5_file_t), intent(in) :: h5                  !< open file
+   !> The `units` and `description` (`described`) of dataset `path` of file `file` in
+   !> rodyn_output_schema (a line's dataset: `line_group` its group); a dataset the
+   !> schema does not know is an error (a writer and the schema out of step).
+   subroutine dataset_texts(file, path, texts, err, line_group)
       character(len=*), intent(in) :: file                 !< 'results.h5', 'dynamic.h5'
       character(len=*), intent(in) :: path                 !< dataset path
+      character(len=row_len), intent(out) :: texts(2)      !< units, description
       type(error_t), intent(inout) :: err                  !< status
       character(len=*), intent(in), optional :: line_group !< group of the line, if any
       character(len=:), allocatable :: row
+      texts = ''
+      if (has_error(err)) return
       row = schema_dataset(file, path, line_group)
       if (len(row) == 0) then
          call set_error(err, stat_io, 'describe_dataset: '//path//' of '//file// &
             ' is not in rodyn_output_schema')
          return
       end if
-      call describe(h5, path, schema_field(row, 3), schema_field(row, 4), err)
-   end subroutine describe_dataset
+      texts(1) = schema_field(row, 3)
+      texts(2) = schema_field(row, 4)
+   end subroutine dataset_texts
 
    !> A line name as a CSV field: as given, quoted only if it holds a comma or quote.
    pure function csv_name(name) result(s)

@@ -15,7 +15,7 @@ module rodyn_output_schema
    private
    public :: output_columns, output_datasets, schema_field, schema_header, schema_tables
    public :: schema_dataset, status_keys, environment_datasets, schema_environment
-   public :: output_attributes
+   public :: output_attributes, row_len
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 

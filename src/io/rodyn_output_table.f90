@@ -32,11 +32,12 @@ module rodyn_output_table
    use rodyn_results, only: line_result_t
    use rodyn_format, only: put_text, put_int, put_real, put_reals
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit
-   use rodyn_output_schema, only: output_columns, schema_field, schema_header
+   use rodyn_output_schema, only: output_columns, schema_field, schema_header, &
+      schema_len => row_len
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_create_series, hdf5_create_series_1d
-   use rodyn_output_common, only: csv_name, describe_dataset, touchdown_of, &
-      water_fields_fit, text_of
+   use rodyn_output_common, only: csv_name, touchdown_of, water_fields_fit, text_of, &
+      described, dataset_texts
    implicit none
    private
    public :: line_table_t, line_table, line_rows, line_row_kept, line_row_head
@@ -420,11 +421,13 @@ contains
       real(wp), intent(in), optional :: x2(:, :)           !< real table
       integer, intent(in), optional :: i1(:)               !< integer values
       character(len=*), intent(in), optional :: text       !< a text
-      if (present(x1)) call hdf5_write_dataset(h5, path, x1, err)
-      if (present(x2)) call hdf5_write_dataset(h5, path, x2, err)
-      if (present(i1)) call hdf5_write_dataset(h5, path, i1, err)
-      if (present(text)) call hdf5_write_dataset(h5, path, text, err)
-      call describe_dataset(h5, file, path, err, line_group)
+      character(len=schema_len) :: texts(2)
+      call dataset_texts(file, path, texts, err, line_group)
+      if (has_error(err)) return
+      if (present(x1)) call hdf5_write_dataset(h5, path, x1, err, described, texts)
+      if (present(x2)) call hdf5_write_dataset(h5, path, x2, err, described, texts)
+      if (present(i1)) call hdf5_write_dataset(h5, path, i1, err, described, texts)
+      if (present(text)) call hdf5_write_dataset(h5, path, text, err, described, texts)
    end subroutine write_described
 
    !> An empty time history (rows appended later, rodyn_hdf5's series) of `n_cols` values
@@ -439,12 +442,15 @@ contains
       integer, intent(in) :: chunk_steps                   !< rows per HDF5 chunk
       character(len=*), intent(in), optional :: line_group !< group of the line, if any
       logical, intent(in), optional :: integers            !< 1-D integer series
+      character(len=schema_len) :: texts(2)
+      call dataset_texts(file, path, texts, err, line_group)
+      if (has_error(err)) return
       if (n_cols == 0) then
          call hdf5_create_series_1d(h5, path, err, chunk_steps=chunk_steps, &
-                                    integers=integers)
+                                    integers=integers, names=described, texts=texts)
       else
-         call hdf5_create_series(h5, path, n_cols, err, chunk_steps=chunk_steps)
+         call hdf5_create_series(h5, path, n_cols, err, chunk_steps=chunk_steps, &
+                                 names=described, texts=texts)
       end if
-      call describe_dataset(h5, file, path, err, line_group)
    end subroutine create_described_series
 end module rodyn_output_table
