@@ -64,8 +64,8 @@ contains
       integer, intent(out) :: n               !< characters written (0: not handled)
       real(wp) :: a
       integer(i16) :: m, d, nn, pw, r, half
-      integer(int64) :: d8
-      integer :: e, k, q, s, tries, j, ke
+      integer(int64) :: d8, hi, bits
+      integer :: e, k, q, s, tries, ke
       character(len=17) :: dig
       integer :: jp
       ! 5^q (q <= 31) and 10^q (q <= 27) as tables: the powers of 128-bit integers were a
@@ -88,9 +88,14 @@ contains
          return
       end if
       if (a < 1.0e-15_wp .or. a > 1.0e37_wp) return
-      m = int(scale(fraction(a), digits(a)), i16)       ! a = m 2^e exactly
-      e = exponent(a) - digits(a)
-      k = floor(log10(a))
+      ! a = m 2^e exactly, from the bits of the (normal) binary64: 52 stored bits of m
+      ! below its leading 1, the biased exponent above them; k from 2^(e+52) <= a, at
+      ! most one below floor(log10 a) (the loop corrects it; log10, fraction and scale
+      ! were library calls, half of a number's instructions)
+      bits = transfer(a, bits)
+      m = int(ior(iand(bits, 4503599627370495_int64), 4503599627370496_int64), i16)
+      e = int(shiftr(bits, 52)) - 1075
+      k = floor(real(e + 52, wp)*0.30102999566398120_wp)
       d = 0
       do tries = 1, 4
          q = 16 - k
@@ -125,11 +130,13 @@ contains
          end if
       end do
       if (d < e16 .or. d >= e17) return
+      ! the 17 digits as 1 + 8 + 8, each group of 8 by pairs from a table (two digits a
+      ! division by 100 instead of one a division by 10)
       d8 = int(d, int64)
-      do j = 17, 1, -1
-         dig(j:j) = achar(iachar('0') + int(mod(d8, 10_int64)))
-         d8 = d8/10_int64
-      end do
+      hi = d8/100000000_int64
+      dig(1:1) = achar(iachar('0') + int(hi/100000000_int64))
+      call eight_digits(int(mod(hi, 100000000_int64)), dig(2:9))
+      call eight_digits(int(d8 - hi*100000000_int64), dig(10:17))
       if (x < 0.0_wp) then
          n = 1
          buf(1:1) = '-'
@@ -154,6 +161,24 @@ contains
       buf(n + 2:n + 2) = achar(iachar('0') + mod(ke, 10))
       n = n + 2
    end subroutine format_e17
+
+   !> The 8 decimal digits of v (0 <= v < 10^8, leading zeros kept), two at a time.
+   pure subroutine eight_digits(v, s)
+      integer, intent(in) :: v              !< value
+      character(len=8), intent(out) :: s    !< its digits
+      character(len=*), parameter :: pairs = &
+         '00010203040506070809101112131415161718192021222324252627282930313233343536373839'// &
+         '40414243444546474849505152535455565758596061626364656667686970717273747576777879'// &
+         '8081828384858687888990919293949596979899'
+      integer :: j, w, t, r
+      w = v
+      do j = 7, 1, -2
+         t = w/100
+         r = 2*(w - 100*t)
+         s(j:j + 1) = pairs(r + 1:r + 2)
+         w = t
+      end do
+   end subroutine eight_digits
 
    !> Write x at row(n+1:) in the format of the module header; row needs 26 free
    !> characters.
