@@ -77,9 +77,9 @@ contains
       logical :: have0, lin
       real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), fq(3, 4, max_nen)
       ! the material part's rows of all points: force strains (Gamma) in blt/cr(1:nf),
-      ! curvatures (K, no x columns) in blc/crc(1:nc)
+      ! curvatures (K: no x columns; blc holds the rotation entries only) in blc/crc(1:nc)
       real(wp) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
-      real(wp) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      real(wp) :: blc(3*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
       integer :: nf, nc
       ! the stress (geometric) part of all points, per node pair (add_geometric)
       real(wp) :: pg(3, max_nen, max_nen), mg(3, max_nen, max_nen)
@@ -349,13 +349,13 @@ contains
    end subroutine geometric_update
 
    !> Append the point's material part f bl^T diag(cg) br, over the strains integrated
-   !> here (cg /= 0), to the rows of the element: row k of bl (the strain Jacobian of the
-   !> test side: fields kl, nodal directors dl) as column nf of blt (force strains) or,
-   !> its rotation entries only (3 a - 2 .. 3 a for node a), nc of blc (curvatures); f cg(k)
-   !> times row k of br (increment side: kr, dr) as row nf of cr or nc of crc
-   !> (rod_gp_jacobian_row; material_update adds them to ke). Only the
-   !> rows used are formed (a full point of order 3: Gamma3 and the curvatures; a
-   !> shear-only point: Gamma1, Gamma2).
+   !> here (cg /= 0), to the rows of the element (material_update adds them to ke):
+   !> row k of bl (the strain Jacobian of the test side: fields kl, nodal directors dl)
+   !> as column nf of blt (force strains) or, its rotation entries only (3 a - 2 .. 3 a
+   !> for node a), as column nc of blc (curvatures); f cg(k) times row k of br (the
+   !> increment side: kr, dr) as row nf of cr or nc of crc. Only the rows used are formed
+   !> (rod_gp_jacobian_row): at a full point of order 3 Gamma3 and the curvatures, at a
+   !> shear-only point Gamma1 and Gamma2.
    pure subroutine add_material(nen, n, dn, kl, dl, kr, dr, cg, f, blt, cr, nf, blc, crc, nc)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: n(nen)             !< shape functions
@@ -367,7 +367,7 @@ contains
       real(wp), intent(in) :: f                  !< weight
       real(wp), intent(inout) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
       integer, intent(inout) :: nf               !< force-strain rows used
-      real(wp), intent(inout) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      real(wp), intent(inout) :: blc(3*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
       integer, intent(inout) :: nc               !< curvature rows used
       real(wp) :: row(6*max_nen)
       integer :: k, nd, a
@@ -398,7 +398,7 @@ contains
       integer, intent(in) :: nen                      !< nodes of the element
       real(wp), intent(in) :: blt(6*max_nen, 3*max_points), cr(3*max_points, 6*max_nen)
       integer, intent(in) :: nf                       !< force-strain rows
-      real(wp), intent(in) :: blc(6*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
+      real(wp), intent(in) :: blc(3*max_nen, 3*max_points), crc(3*max_points, 6*max_nen)
       integer, intent(in) :: nc                       !< curvature rows
       real(wp), intent(inout) :: ke(:, :)             !< element matrix (6 nen square)
       real(wp) :: c, kr(3*max_nen)
