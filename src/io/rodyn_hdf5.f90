@@ -442,7 +442,7 @@ contains
          call h5dwrite_f(dset, stype, c_loc(ptr), stat, xfer_prp=dxpl)
          if (failed(stat, 'write dataset', where, file, path, err)) exit blk
       end block blk
-      if (dxpl >= 0) call h5pclose_f(dxpl, stat)
+      call release(dxpl)
       call release(dset)
       call release(stype)
    end subroutine write_string
