@@ -479,7 +479,7 @@ contains
       character(len=*), intent(in) :: path                 !< dataset path in the file
       character(len=*), intent(in), optional :: line_group !< group of the line, if any
       character(len=:), allocatable :: row                 !< the row, or ''
-      character(len=:), allocatable :: key
+      character(len=:), allocatable :: key, needle
       integer :: k
       key = path
       if (present(line_group)) then
@@ -487,6 +487,17 @@ contains
             line_group(:index(line_group, '/', back=.true.))//'LINE'//path(len(line_group) + 1:)
       end if
       row = ''
+      ! the rows as the table writes them, 'file | key | ...', compared in place first
+      ! (cutting every row's fields out took a tenth of a one-step run's instructions);
+      ! then field by field, for a row spaced otherwise
+      needle = file//' | '//key//' |'
+      do k = 1, size(output_datasets)
+         if (len(needle) > row_len) exit
+         if (output_datasets(k)(1:len(needle)) == needle) then
+            row = trim(output_datasets(k))
+            return
+         end if
+      end do
       do k = 1, size(output_datasets)
          if (schema_field(output_datasets(k), 1) == file .and. &
              schema_field(output_datasets(k), 2) == key) then
