@@ -33,7 +33,7 @@ module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
-   use rodyn_rotation, only: skew, cross, rotation_cayley_inverse
+   use rodyn_rotation, only: skew, cross, rotation_cayley_inverse, relative_rotation
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &
                                 rod_gp_jacobian_row, rod_project_qforce, &
                                 rod_rotation_geometric, rod_rule_t, max_points, &
@@ -246,7 +246,7 @@ contains
       integer :: a, i
       ok = .true.
       do a = 1, nen
-         r = matmul(d1(:, :, a), transpose(db(:, :, a)))
+         r = relative_rotation(d1(:, :, a), db(:, :, a))
          if (1.0_wp + r(1, 1) + r(2, 2) + r(3, 3) <= 1.0_wp) then
             ok = .false.
             return
