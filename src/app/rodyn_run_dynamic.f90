@@ -21,7 +21,8 @@ module rodyn_run_dynamic
    use rodyn_output_dynamic, only: dynamic_writer_t, dynamic_output_open, &
                                    dynamic_output_frame, dynamic_output_step, &
                                    dynamic_output_close, dynamic_output_ends_step, &
-                                   dynamic_output_mark, dynamic_output_sea
+                                   dynamic_output_mark, dynamic_output_sea, &
+                                   dynamic_output_keeps_frames
    use rodyn_sea_output, only: sea_scene_t, sea_values_t, sea_scene_build, sea_values
    implicit none
    private
@@ -255,8 +256,11 @@ contains
       if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
       if (has_error(err)) return
       if (t > 0.0_wp) then
-         call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, prob%sup%held, &
-                            frame_lines, prob%water)
+         ! (no results formed for a writer without files: case 1 for 20 s with
+         ! CSV=NO, HDF5=NO, 3 % of its instructions)
+         if (dynamic_output_keeps_frames(writer)) &
+            call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                               prob%sup%held, frame_lines, prob%water)
          frame_waiting = .true.
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &

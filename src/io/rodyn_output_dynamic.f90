@@ -63,7 +63,7 @@ module rodyn_output_dynamic
    public :: dynamic_writer_t
    public :: dynamic_output_open, dynamic_output_frame, dynamic_output_step
    public :: dynamic_output_ends_step, dynamic_output_mark, dynamic_output_mark_t
-   public :: dynamic_output_close, dynamic_output_sea
+   public :: dynamic_output_close, dynamic_output_sea, dynamic_output_keeps_frames
 
    character(len=*), parameter :: nodes_csv = 'dynamic_nodes.csv'
    character(len=*), parameter :: elements_csv = 'dynamic_elements.csv'
@@ -432,6 +432,14 @@ contains
          call set_error(err, e%code, e%message)
       end if
    end subroutine dynamic_output_frame
+
+   !> The writer keeps its frames in a file (CSV or HDF5). A deck that asks for neither
+   !> (*OUTPUT, CSV=NO, HDF5=NO: status.txt only) has no use for a frame's results, and
+   !> its run need not form them (dynamic_output_frame still counts the frame).
+   pure logical function dynamic_output_keeps_frames(w)
+      type(dynamic_writer_t), intent(in) :: w !< writer
+      dynamic_output_keeps_frames = w%csv .or. w%hdf5
+   end function dynamic_output_keeps_frames
 
    !> Append one time step's row: to dynamic_log.csv at once (flushed), to dynamic.h5
    !> with the next frame (or when log_block rows are held).
