@@ -452,7 +452,7 @@ contains
    !> Create an empty extendible real dataset of n_cols rows in Fortran order (h5py
    !> shape (0, n_cols)), chunked, to be grown one column (one h5py row, e.g. one time
    !> step) at a time with hdf5_append_column or hdf5_append_steps.
-   subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps, names, texts)
+   subroutine hdf5_create_series(file, path, n_cols, err, chunk_steps, names, texts, series)
       type(hdf5_file_t), intent(in) :: file         !< open file
       character(len=*), intent(in) :: path          !< absolute dataset path
       integer, intent(in) :: n_cols                 !< values per step (h5py columns)
@@ -460,6 +460,8 @@ contains
       integer, intent(in), optional :: chunk_steps  !< steps per chunk; default ~64 KiB
       character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
       character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
+      !> the new dataset kept open for appending, as hdf5_open_series leaves it
+      type(hdf5_series_t), intent(inout), optional :: series
       character(len=*), parameter :: where = 'hdf5_create_series'
       integer :: steps
       if (has_error(err)) return
@@ -471,12 +473,13 @@ contains
       steps = max(1, 8192/n_cols)
       if (present(chunk_steps)) steps = max(1, chunk_steps)
       call create_extendible(file, path, [integer(hsize_t) :: n_cols, 0], H5T_IEEE_F64LE, &
-         steps, where, err, names, texts)
+         steps, where, err, names, texts, series)
    end subroutine hdf5_create_series
 
    !> Create an empty extendible 1-D dataset (h5py shape (0,)), one value per step:
    !> real (binary64), or 32-bit integer when `integers` is true.
-   subroutine hdf5_create_series_1d(file, path, err, chunk_steps, integers, names, texts)
+   subroutine hdf5_create_series_1d(file, path, err, chunk_steps, integers, names, texts, &
+                                    series)
       type(hdf5_file_t), intent(in) :: file         !< open file
       character(len=*), intent(in) :: path          !< absolute dataset path
       type(error_t), intent(inout) :: err           !< status
@@ -484,6 +487,8 @@ contains
       logical, intent(in), optional :: integers     !< integer values (default: real)
       character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
       character(len=*), intent(in), optional :: texts(:) !< their texts (trailing blanks cut)
+      !> the new dataset kept open for appending, as hdf5_open_series leaves it
+      type(hdf5_series_t), intent(inout), optional :: series
       integer(hid_t) :: ftype
       integer :: steps
       if (has_error(err)) return
@@ -494,7 +499,7 @@ contains
          if (integers) ftype = H5T_STD_I32LE
       end if
       call create_extendible(file, path, [integer(hsize_t) :: 0], ftype, steps, &
-         'hdf5_create_series_1d', err, names, texts)
+         'hdf5_create_series_1d', err, names, texts, series)
    end subroutine hdf5_create_series_1d
 
    !> Open a dataset made by hdf5_create_series or hdf5_create_series_1d and keep it
@@ -770,7 +775,7 @@ contains
    !> Create an empty chunked dataset whose last Fortran dimension (the first in h5py)
    !> is unlimited; dims is the shape with 0 steps, chunks hold chunk_steps steps.
    subroutine create_extendible(file, path, dims, ftype, chunk_steps, where, err, names, &
-                                texts)
+                                texts, series)
       type(hdf5_file_t), intent(in) :: file    !< open file
       character(len=*), intent(in) :: path     !< absolute dataset path
       integer(hsize_t), intent(in) :: dims(:)  !< shape, last extent 0 (Fortran order)
@@ -780,6 +785,9 @@ contains
       type(error_t), intent(inout) :: err      !< status
       character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
       character(len=*), intent(in), optional :: texts(:) !< their texts
+      !> the dataset kept open here, its shape and type as hdf5_open_series reads them
+      !> (opening it again by its path took as many instructions as creating it)
+      type(hdf5_series_t), intent(inout), optional :: series
       integer(hid_t) :: dset, dcpl
       integer(hsize_t) :: maxdims(size(dims)), chunk(size(dims))
       integer :: stat, r
@@ -797,6 +805,17 @@ contains
          if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
          call create_dataset(file, path, ftype, dims, dset, where, err, &
             maxdims=maxdims, dcpl=dcpl, names=names, texts=texts)
+         if (has_error(err) .or. .not. present(series)) exit blk
+         call hdf5_close_series(series, err)
+         series%path = path
+         series%file = file
+         series%rank = r
+         series%n_cols = 1
+         if (r == 2) series%n_cols = dims(1)
+         series%n_steps = 0
+         series%integers = ftype == H5T_STD_I32LE
+         series%id = dset
+         dset = -1
       end block blk
       call release(dset)
       call release(dcpl)

@@ -633,10 +633,11 @@ contains
             if (w%sea_cols(k) == 0) cycle
             if (k == sh_step_time) then
                call create_described_series(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), &
-                                            0, err, log_chunk)
+                                            0, err, log_chunk, series=w%sea_h5(k))
             else
                call create_described_series(h5, dynamic_h5, g//'/'//trim(sea_h5_name(k)), &
-                  w%sea_cols(k), err, max(8, chunk_bytes/(8*w%sea_cols(k))))
+                  w%sea_cols(k), err, max(8, chunk_bytes/(8*w%sea_cols(k))), &
+                  series=w%sea_h5(k))
             end if
          end do
       end associate
@@ -778,7 +779,8 @@ contains
    end subroutine open_csv
 
    !> Create dynamic.h5: root attributes, /deck, each line's static datasets and empty
-   !> time histories, the empty step log; keep the histories open; flush.
+   !> time histories, the empty step log; keep the histories open (from their creation);
+   !> flush.
    subroutine create_h5(w, model, lines, err)
       type(dynamic_writer_t), intent(inout) :: w   !< writer
       type(model_t), intent(in) :: model           !< model
@@ -800,15 +802,16 @@ contains
             model%dynamic%output_interval, err)
          call write_environment_h5(h5, model, err)
          call write_parameters_h5(h5, model, err)
-         call create_described_series(h5, dynamic_h5, '/dynamic/time', 0, err, chunk_bytes/8)
+         call create_described_series(h5, dynamic_h5, '/dynamic/time', 0, err, chunk_bytes/8, &
+                                      series=w%time)
          do i = 1, size(lines)
             call create_h5_line(h5, '/dynamic/'//group_name(lines(i)%name, i, &
-                                dynamic_members), lines(i), err)
+                                dynamic_members), lines(i), w%line(i), err)
          end do
-         call create_h5_log(h5, err)
+         call create_h5_log(h5, w%log, err)
       end associate
       call create_h5_sea(w, err)
-      call open_h5_series(w, lines, err)
+      call hold_h5_series(w, err)
       call flush_h5(w, err)
       if (.not. has_error(err)) then
          call commit_rename(temp_name(w%dir, dynamic_h5), path_join(w%dir, dynamic_h5), err)
@@ -816,14 +819,14 @@ contains
       end if
    end subroutine create_h5
 
-   !> Open every time history of dynamic.h5 (w%h5 open) for appending, and hold the
-   !> frames and the support forces of every step in memory (see the flush policy).
+   !> Open every time history of an existing dynamic.h5 (w%h5 open) for appending, and
+   !> hold the frames and the support forces of every step in memory (hold_h5_series).
    subroutine open_h5_series(w, lines, err)
       type(dynamic_writer_t), intent(inout) :: w   !< writer, w%h5 open
       type(line_result_t), intent(in) :: lines(:)  !< the lines (names)
       type(error_t), intent(inout) :: err          !< status
       character(len=:), allocatable :: g
-      integer :: i, k, nv
+      integer :: i, k
       call hdf5_open_series(w%h5, '/dynamic/time', w%time, err)
       do i = 1, size(lines)
          g = '/dynamic/'//group_name(lines(i)%name, i, dynamic_members)
@@ -843,16 +846,25 @@ contains
          if (w%sea_cols(k) > 0) call hdf5_open_series(w%h5, '/dynamic/sea/'// &
                                                       trim(sea_h5_name(k)), w%sea_h5(k), err)
       end do
+      call hold_h5_series(w, err)
+   end subroutine open_h5_series
+
+   !> Hold the frames and the support forces of every step of the open time histories in
+   !> memory (see the flush policy), to be written in blocks.
+   subroutine hold_h5_series(w, err)
+      type(dynamic_writer_t), intent(inout) :: w   !< writer, its histories open
+      type(error_t), intent(inout) :: err          !< status
+      integer :: i, k, nv
       if (has_error(err)) return
       nv = 1
-      do i = 1, size(lines)
+      do i = 1, size(w%line)
          do k = 1, n_line_series
             nv = nv + int(w%line(i)%series(k)%n_cols)
          end do
       end do
       w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
       call hdf5_series_hold(w%time, w%hold_frames)
-      do i = 1, size(lines)
+      do i = 1, size(w%line)
          do k = 1, n_line_series
             call hdf5_series_hold(w%line(i)%series(k), w%hold_frames)
          end do
@@ -865,7 +877,7 @@ contains
          call hdf5_series_hold(w%sea_h5(k), merge(w%hold_frames, log_block + 2, k < &
                                                   sh_step_elevation))
       end do
-   end subroutine open_h5_series
+   end subroutine hold_h5_series
 
    !> Open the dynamic.h5 of an interrupted run again and cut every time history back
    !> to the rows of the checkpoint `mark` (frames, steps, rows of support forces).
@@ -899,11 +911,13 @@ contains
       call flush_h5(w, err)
    end subroutine reopen_h5
 
-   !> One line's group: its static datasets and its empty time histories.
-   subroutine create_h5_line(h5, g, r, err)
+   !> One line's group: its static datasets and its empty time histories, left open in
+   !> lo for appending.
+   subroutine create_h5_line(h5, g, r, lo, err)
       type(hdf5_file_t), intent(in) :: h5    !< open file
       character(len=*), intent(in) :: g      !< group path
       type(line_result_t), intent(in) :: r   !< the line at open
+      type(line_out_t), intent(inout) :: lo  !< the line's output (its series)
       type(error_t), intent(inout) :: err    !< status
       integer :: nn, ng
       nn = size(r%node_s)
@@ -914,43 +928,45 @@ contains
       call write_described(h5, dynamic_h5, g//'/gp_s', err, g, x1=r%gp_s)
       call write_described(h5, dynamic_h5, g//'/gp_element', err, g, i1=r%gp_element)
       call write_described(h5, dynamic_h5, g//'/gp_point', err, g, i1=r%gp_point)
-      call history(g//'/x', nn)
-      call history(g//'/y', nn)
-      call history(g//'/z', nn)
-      call history(g//'/effective_tension', ng)
-      call history(g//'/moment_1', ng)
-      call history(g//'/moment_2', ng)
-      call history(g//'/torque', ng)
-      call history(g//'/bending_curvature', ng)
-      call history(g//'/reactions', 12)
+      call history(ls_x, nn)
+      call history(ls_y, nn)
+      call history(ls_z, nn)
+      call history(ls_tension, ng)
+      call history(ls_moment_1, ng)
+      call history(ls_moment_2, ng)
+      call history(ls_torque, ng)
+      call history(ls_curvature, ng)
+      call history(ls_reactions, 12)
       call hdf5_write_attribute(h5, g//'/reactions', 'end_held', merge(1, 0, r%end_held), &
          err)
-      call history(g//'/end_tension', 2)
-      call history(g//'/wall_tension', ng)
-      call history(g//'/seabed_normal', nn)
-      call history(g//'/seabed_friction', nn)
-      call create_described_series(h5, dynamic_h5, g//'/step_time', 0, err, log_chunk, g)
+      call history(ls_end_tension, 2)
+      call history(ls_wall_tension, ng)
+      call history(ls_seabed_normal, nn)
+      call history(ls_seabed_friction, nn)
+      call create_described_series(h5, dynamic_h5, g//'/step_time', 0, err, log_chunk, g, &
+                                   series=lo%step_time)
       call create_described_series(h5, dynamic_h5, g//'/step_reactions', 12, err, &
-                                   log_chunk/4, g)
+                                   log_chunk/4, g, series=lo%step_reactions)
       call hdf5_write_attribute(h5, g//'/step_reactions', 'end_held', &
          merge(1, 0, r%end_held), err)
       call create_described_series(h5, dynamic_h5, g//'/step_end_tension', 2, err, &
-                                   log_chunk, g)
-      call create_described_series(h5, dynamic_h5, g//'/touchdown_s', 0, err, &
-                                   chunk_bytes/8, g)
+                                   log_chunk, g, series=lo%step_end_tension)
+      call create_described_series(h5, dynamic_h5, g//'/'//trim(line_series_name(ls_touchdown)), &
+                                   0, err, chunk_bytes/8, g, series=lo%series(ls_touchdown))
    contains
-      !> An empty history of n values per frame, with its units and description.
-      subroutine history(path, n)
-         character(len=*), intent(in) :: path         !< dataset path
+      !> The empty history k (ls_*) of n values per frame, with its units and description.
+      subroutine history(k, n)
+         integer, intent(in) :: k                     !< ls_* index
          integer, intent(in) :: n                     !< values per frame
-         call create_described_series(h5, dynamic_h5, path, n, err, &
-                                      max(8, chunk_bytes/(8*n)), g)
+         call create_described_series(h5, dynamic_h5, g//'/'//trim(line_series_name(k)), n, &
+                                      err, max(8, chunk_bytes/(8*n)), g, series=lo%series(k))
       end subroutine history
    end subroutine create_h5_line
 
    !> /dynamic/log: one empty 1-D dataset per quantity of step_log_t (momenta: 3 columns).
-   subroutine create_h5_log(h5, err)
+   subroutine create_h5_log(h5, log, err)
       type(hdf5_file_t), intent(in) :: h5    !< open file
+      type(hdf5_series_t), intent(inout) :: log(:) !< (n_log_series) left open
       type(error_t), intent(inout) :: err    !< status
       character(len=*), parameter :: g = '/dynamic/log/'
       ! the 1-D datasets in the order created (the order h5py lists them)
@@ -962,15 +978,18 @@ contains
       do k = 1, size(order)
          call column(order(k), any(order(k) == [lg_step, lg_iterations, lg_cutbacks]))
       end do
-      call create_described_series(h5, dynamic_h5, g//'momentum', 3, err, log_chunk)
-      call create_described_series(h5, dynamic_h5, g//'angular_momentum', 3, err, log_chunk)
+      call create_described_series(h5, dynamic_h5, g//trim(log_series_name(lg_momentum)), 3, &
+                                   err, log_chunk, series=log(lg_momentum))
+      call create_described_series(h5, dynamic_h5, &
+                                   g//trim(log_series_name(lg_angular_momentum)), 3, err, &
+                                   log_chunk, series=log(lg_angular_momentum))
    contains
       !> One 1-D dataset of the log.
       subroutine column(k, integers)
          integer, intent(in) :: k                     !< lg_* index
          logical, intent(in) :: integers              !< integer values
          call create_described_series(h5, dynamic_h5, g//trim(log_series_name(k)), 0, &
-                                      err, log_chunk, integers=integers)
+                                      err, log_chunk, integers=integers, series=log(k))
       end subroutine column
    end subroutine create_h5_log
 

@@ -35,7 +35,7 @@ module rodyn_output_table
    use rodyn_output_schema, only: output_columns, schema_field, schema_header, &
       schema_len => row_len
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_dataset, hdf5_write_attribute, &
-      hdf5_create_series, hdf5_create_series_1d
+      hdf5_create_series, hdf5_create_series_1d, hdf5_series_t
    use rodyn_output_common, only: csv_name, touchdown_of, water_fields_fit, text_of, &
       described, dataset_texts
    implicit none
@@ -433,7 +433,7 @@ contains
    !> An empty time history (rows appended later, rodyn_hdf5's series) of `n_cols` values
    !> a row (0: a 1-D series, one value a row) with its units and description.
    subroutine create_described_series(h5, file, path, n_cols, err, chunk_steps, &
-                                      line_group, integers)
+                                      line_group, integers, series)
       type(hdf5_file_t), intent(in) :: h5                  !< open file
       character(len=*), intent(in) :: file                 !< 'dynamic.h5'
       character(len=*), intent(in) :: path                 !< dataset path
@@ -442,15 +442,17 @@ contains
       integer, intent(in) :: chunk_steps                   !< rows per HDF5 chunk
       character(len=*), intent(in), optional :: line_group !< group of the line, if any
       logical, intent(in), optional :: integers            !< 1-D integer series
+      type(hdf5_series_t), intent(inout), optional :: series !< kept open (hdf5_create_series)
       character(len=schema_len) :: texts(2)
       call dataset_texts(file, path, texts, err, line_group)
       if (has_error(err)) return
       if (n_cols == 0) then
          call hdf5_create_series_1d(h5, path, err, chunk_steps=chunk_steps, &
-                                    integers=integers, names=described, texts=texts)
+                                    integers=integers, names=described, texts=texts, &
+                                    series=series)
       else
          call hdf5_create_series(h5, path, n_cols, err, chunk_steps=chunk_steps, &
-                                 names=described, texts=texts)
+                                 names=described, texts=texts, series=series)
       end if
    end subroutine create_described_series
 end module rodyn_output_table
