@@ -29,7 +29,7 @@ module rodyn_rod_element
    public :: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, rod_gp_jacobian
    public :: rod_gp_geometric, rod_project_qforce, rod_rotation_geometric
    public :: rod_element_static, rod_element_strains, rod_element_energy
-   public :: rod_element_energy_scale, rod_element_fields
+   public :: rod_element_energy_scale, rod_element_fields, rod_energy_of_strains
    public :: rod_element_line_load, rod_element_lumped_mass, rod_quadrature, max_points
    public :: rod_element_resultants, rod_rule_t, rod_rule, rod_hidden_shear
    public :: rod_gp_kinematics_shear, rod_strains_shear, rod_gp_qforce_shear, rod_gp_jacobian_row
@@ -594,10 +594,25 @@ contains
       real(wp), intent(out) :: energy             !< stored energy (rod_element_energy) [J]
       real(wp), intent(out) :: scale              !< its round-off scale [J]
       type(rod_rule_t), intent(in) :: rule        !< rod_rule(p)
-      real(wp) :: eps(6, max_points), s(6)
+      real(wp) :: eps(6, max_points)
       type(rod_gp_t) :: kin(max_points)
-      integer :: g
       call rod_element_fields(p, le, xe, de, rule, kin, eps)
+      call rod_energy_of_strains(le, c, eps0, eps, rule, energy, scale)
+   end subroutine rod_element_energy_scale
+
+   !> The stored energy W = 1/2 sum_g w_g (le/2) (eps - eps0)^T C (eps - eps0) of an
+   !> element from its strains at the points (rod_element_fields), and its round-off
+   !> scale sum_g w_g (le/2) |C (eps - eps0)| (rod_element_energy_scale).
+   pure subroutine rod_energy_of_strains(le, c, eps0, eps, rule, energy, scale)
+      real(wp), intent(in) :: le                  !< unstretched element length [m]
+      real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
+      real(wp), intent(in) :: eps0(6, max_points) !< stress-free strains
+      real(wp), intent(in) :: eps(6, max_points)  !< strains at the points
+      type(rod_rule_t), intent(in) :: rule        !< rod_rule(p)
+      real(wp), intent(out) :: energy             !< stored energy [J]
+      real(wp), intent(out) :: scale              !< its round-off scale [J]
+      real(wp) :: s(6)
+      integer :: g
       energy = 0.0_wp
       scale = 0.0_wp
       do g = 1, rule%np
@@ -605,7 +620,7 @@ contains
          energy = energy + 0.25_wp*le*rule%w(g)*sum(s*(eps(:, g) - eps0(:, g)))
          scale = scale + 0.5_wp*le*rule%w(g)*sum(abs(s))
       end do
-   end subroutine rod_element_energy_scale
+   end subroutine rod_energy_of_strains
 
    !> The fields and strains of one element's configuration (x0, d0) at its points: full
    !> fields at the full points, x', d1, d2 at the shear-only points. rod_element_dynamic

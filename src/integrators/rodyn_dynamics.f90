@@ -33,7 +33,9 @@ module rodyn_dynamics
                           vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather, copy_values
-   use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields
+   use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields, &
+                                rod_element_energy_scale, rod_energy_of_strains
+   use rodyn_cable_element, only: cable_element_energy_scale
    use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
@@ -49,7 +51,8 @@ module rodyn_dynamics
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
-   public :: apply_initial_velocities, dynamics_accept_step
+   public :: apply_initial_velocities, dynamics_accept_step, dynamics_strain_energy
+   public :: mesh_strain_energy
 
    !> Columns of the Anderson history of the step's chord iterations (rodyn_anderson):
    !> paper's case 1, 20 s, instructions 1.430e9 / 1.420e9 / 1.419e9 for 2 / 3 / 4
@@ -104,6 +107,11 @@ module rodyn_dynamics
       type(rod_gp_t), allocatable :: gp0(:, :)    !< (max_points, ne)
       real(wp), allocatable :: epsn(:, :, :)      !< (6, max_points, ne)
       logical :: fields0 = .false.              !< gp0 and epsn are used
+      !> gp0 and epsn hold the fields of s1 (dynamics_strain_energy, on a converged
+      !> step) and, once the step is accepted, of the next step's t_n: the energy pass
+      !> and the next step's fields are one pass (paper's case 1, 20 s: 2.7 % of a run)
+      logical :: fields_s1 = .false.
+      logical :: fields_next = .false.
    contains
       procedure :: evaluate => dyn_evaluate
       procedure :: save_base => dyn_save_base
@@ -248,7 +256,9 @@ contains
       prob%dt = dt
       prob%base_set = .false.
       call state_copy(prob%s1, prob%s0)
-      if (prob%fields0) call step_fields(prob)
+      if (prob%fields0 .and. .not. prob%fields_next) call step_fields(prob)
+      prob%fields_next = .false.
+      prob%fields_s1 = .false.
       ! the inertia's constant part, once a step instead of once an iteration
       do node = 1, prob%mesh%n_nodes
          prob%rest(:, 0, node) = inertia_rest(prob, prob%s0%v(:, node), node, 0)
@@ -319,7 +329,60 @@ contains
       prob%f_conv = prob%f_last
       prob%m_conv = prob%m_last
       prob%have_conv = .true.
+      prob%fields_next = prob%fields_s1     ! s1 becomes the next step's t_n
    end subroutine dynamics_accept_step
+
+   !> Stored energy of the whole mesh in the iterate s1 [J] and its round-off scale [J]
+   !> (mesh_strain_energy). With EMC and TRAPEZOIDAL the rods' fields and strains of s1
+   !> are kept in gp0 and epsn (fields_s1): the next step, if this one is accepted,
+   !> starts from them instead of forming them again. For a converged step only: the
+   !> step's own passes no longer read gp0.
+   subroutine dynamics_strain_energy(prob, w, scale)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem (s1 converged)
+      real(wp), intent(out) :: w                     !< stored energy [J]
+      real(wp), intent(out) :: scale                 !< its round-off scale [J]
+      if (prob%fields0) then
+         call mesh_strain_energy(prob%mesh, prob%s1, w, scale, prob%gp0, prob%epsn)
+      else
+         call mesh_strain_energy(prob%mesh, prob%s1, w, scale)
+      end if
+      prob%fields_s1 = prob%fields0
+   end subroutine dynamics_strain_energy
+
+   !> Stored energy of the whole mesh in state s [J] and its round-off scale [J]
+   !> (rod_element_energy_scale, cable_element_energy_scale); with gp and eps, the rods'
+   !> fields and strains at their points are left there (rod_element_fields).
+   subroutine mesh_strain_energy(mesh, s, w, scale, gp, eps)
+      type(mesh_t), intent(in) :: mesh                       !< mesh
+      type(state_t), intent(in) :: s                         !< configuration
+      real(wp), intent(out) :: w                             !< stored energy [J]
+      real(wp), intent(out) :: scale                         !< its round-off scale [J]
+      type(rod_gp_t), intent(inout), optional :: gp(:, :)    !< (max_points, ne) fields
+      real(wp), intent(inout), optional :: eps(:, :, :)      !< (6, max_points, ne) strains
+      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), we, se
+      integer :: e, p
+      w = 0.0_wp
+      scale = 0.0_wp
+      do e = 1, mesh%n_elements
+         p = mesh%line_order(mesh%elem_line(e))
+         call state_gather(s, mesh%elem_nodes(1:p + 1, e), xe, de)
+         if (mesh%elem_cable(e)) then
+            call cable_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(3, e), &
+                                            xe(:, 1:p + 1), mesh%rules(p), we, se)
+         else if (present(gp) .and. present(eps)) then
+            call rod_element_fields(p, mesh%elem_le(e), xe(:, 1:p + 1), de(:, :, 1:p + 1), &
+                                    mesh%rules(p), gp(:, e), eps(:, :, e))
+            call rod_energy_of_strains(mesh%elem_le(e), mesh%elem_c(:, e), &
+                                       mesh%eps0(:, :, e), eps(:, :, e), mesh%rules(p), we, se)
+         else
+            call rod_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(:, e), &
+                                          mesh%eps0(:, :, e), xe(:, 1:p + 1), &
+                                          de(:, :, 1:p + 1), we, se, mesh%rules(p))
+         end if
+         w = w + we
+         scale = scale + se
+      end do
+   end subroutine mesh_strain_energy
 
    !> Close a converged step: velocities by the midpoint relations, or by the Newmark
    !> relations for the generalized-alpha scheme.

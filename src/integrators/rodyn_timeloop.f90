@@ -18,19 +18,16 @@ module rodyn_timeloop
    use rodyn_load_check, only: load_divergence_hint
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_begin_step, dynamics_end_step, &
-                             dynamics_accept_step
+                             dynamics_accept_step, dynamics_strain_energy, mesh_strain_energy
    use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
-   use rodyn_rod_element, only: rod_element_energy_scale, max_points
-   use rodyn_cable_element, only: cable_element_energy_scale
    use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
    use rodyn_results, only: step_log_t, run_summary_t
-   use rodyn_shape, only: max_nen
-   use rodyn_state, only: state_copy, state_gather
+   use rodyn_state, only: state_copy
    use rodyn_mesh, only: mesh_spurious_shape
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: timeloop_run, frame_callback, step_callback, strain_energy, step_energies
+   public :: timeloop_run, frame_callback, step_callback, step_energies
    public :: timeloop_state_t, checkpoint_callback
 
    !> What the time loop carries from one step to the next besides the problem (a
@@ -69,47 +66,34 @@ module rodyn_timeloop
 
 contains
 
-   !> Stored energy of the whole mesh in the iterate state [J], and its round-off scale
-   !> (rod_element_energy_scale) [J].
-   subroutine strain_energy(prob, w, scale)
-      type(dynamic_problem_t), intent(in) :: prob !< problem
-      real(wp), intent(out) :: w                  !< stored energy [J]
-      real(wp), intent(out) :: scale              !< its round-off scale [J]
-      real(wp) :: xe(3, max_nen), de(3, 3, max_nen), we, se
-      integer :: e, l, p
-      w = 0.0_wp
-      scale = 0.0_wp
-      associate (mesh => prob%mesh)
-         do e = 1, mesh%n_elements
-            l = mesh%elem_line(e)
-            p = mesh%line_order(l)
-            call state_gather(prob%s1, mesh%elem_nodes(1:p + 1, e), xe, de)
-            if (mesh%elem_cable(e)) then
-               call cable_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(3, e), &
-                                               xe(:, 1:p + 1), mesh%rules(p), we, se)
-            else
-               call rod_element_energy_scale(p, mesh%elem_le(e), mesh%elem_c(:, e), &
-                                             mesh%eps0(:, :, e), xe(:, 1:p + 1), &
-                                             de(:, :, 1:p + 1), we, se, &
-                                             mesh%rules(p))
-            end if
-            w = w + we
-            scale = scale + se
-         end do
-      end associate
-   end subroutine strain_energy
 
    !> Energies and momenta of the iterate state into log (work terms untouched).
    subroutine step_energies(prob, log)
       type(dynamic_problem_t), intent(in) :: prob !< problem
       type(step_log_t), intent(inout) :: log      !< filled
+      call mesh_strain_energy(prob%mesh, prob%s1, log%strain, log%strain_scale)
+      call other_energies(prob, log)
+   end subroutine step_energies
+
+   !> step_energies of a converged step, whose pass over the rods also keeps their
+   !> fields of s1 for the next step (dynamics_strain_energy).
+   subroutine converged_energies(prob, log)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem (s1 converged)
+      type(step_log_t), intent(inout) :: log         !< filled
+      call dynamics_strain_energy(prob, log%strain, log%strain_scale)
+      call other_energies(prob, log)
+   end subroutine converged_energies
+
+   !> The energies and momenta of step_energies other than the stored energy.
+   subroutine other_energies(prob, log)
+      type(dynamic_problem_t), intent(in) :: prob !< problem
+      type(step_log_t), intent(inout) :: log      !< log%strain filled
       log%kinetic = kinetic_energy(prob%inert, prob%s1)
-      call strain_energy(prob, log%strain, log%strain_scale)
       log%gravity = -sum(prob%loads%gravity*prob%s1%x)
       log%total = log%kinetic + log%strain + log%gravity
       log%momentum = linear_momentum(prob%inert, prob%s1)
       log%angular_momentum = angular_momentum(prob%inert, prob%s1)
-   end subroutine step_energies
+   end subroutine other_energies
 
    !> Work of supports and point loads, and work of damping, over the step just solved.
    subroutine step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
@@ -367,7 +351,7 @@ contains
          call dynamics_end_step(prob)
          call step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
          trial = log
-         call step_energies(prob, trial)
+         call converged_energies(prob, trial)
          if (prob%scheme /= scheme_emc) return
          accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, w_damp, e_tol, &
                                           0.0_wp)
