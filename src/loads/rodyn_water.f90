@@ -160,17 +160,16 @@ contains
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
    !> tangent of their sum with respect to x^{n+1} (module header).
-   pure subroutine water_element(wl, ws, p, le, xf, vf, af, cx, cv, ca, fh, fs, ke, want_k, we)
+   pure subroutine water_element(wl, ws, p, le, q, cx, cv, ca, fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
       integer, intent(in) :: p                 !< element order
       real(wp), intent(in) :: le               !< unstretched length [m]
-      ! (contiguous: the callers pass whole columns of fixed-size arrays; declared so,
-      ! the loops over nodes compile without strides: 1.6 % fewer instructions on the
-      ! mooring surge deck)
-      real(wp), intent(in), contiguous :: xf(:, :) !< (3, p+1) positions at the force point [m]
-      real(wp), intent(in), contiguous :: vf(:, :)         !< (3, p+1) velocities [m/s]
-      real(wp), intent(in), contiguous :: af(:, :)         !< (3, p+1) accelerations [m/s2]
+      !> (9, p+1) each node's position [m], velocity [m/s] and acceleration [m/s2] at the
+      !> force point, one column a node: interpolated to a point as one 9-vector
+      !> (contiguous: the callers pass whole columns of fixed-size arrays; declared so,
+      !> the loops over nodes compile without strides)
+      real(wp), intent(in), contiguous :: q(:, :)
       real(wp), intent(in) :: cx               !< d x_f / d x^{n+1} [-]
       real(wp), intent(in) :: cv               !< d v_f / d x^{n+1} [1/s]
       real(wp), intent(in) :: ca               !< d a_f / d x^{n+1} [1/s2]
@@ -193,10 +192,10 @@ contains
       whole = .false.
       if (wl%env%seabed) then
          do a = 1, nen     ! (loops, not array constructors: those allocate)
-            gapn(a) = dot_product(wl%env%n, xf(:, a)) - wl%env%c0
+            gapn(a) = dot_product(wl%env%n, q(1:3, a)) - wl%env%c0
             gcon(a) = gapn(a)
             if (wl%env%dynamic) gcon(a) = gcon(a) + wl%env%c/wl%env%k* &
-                                          dot_product(wl%env%n, vf(:, a))
+                                          dot_product(wl%env%n, q(4:6, a))
          end do
          if (minval(gcon(1:nen)) <= 0.1_wp*le) then
             ! the polynomial lies between its least and largest Bernstein coefficients:
@@ -222,7 +221,7 @@ contains
             nn(1:nen) = wl%n(1:nen, g, p)
             ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
             wj = wl%w(g, p)*0.5_wp*le
-            call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, &
+            call water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, &
                                  ior(part_water, part_seabed), fh, fs, ke, want_k, we)
          end do
          return
@@ -231,7 +230,7 @@ contains
          nn(1:nen) = wl%n(1:nen, g, p)
          ds(1:nen) = wl%dn(1:nen, g, p)*2.0_wp/le
          wj = wl%w(g, p)*0.5_wp*le
-         call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, part_water, &
+         call water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, part_water, &
                               fh, fs, ke, want_k, we)
       end do
       do k = 1, nparts
@@ -246,7 +245,7 @@ contains
                ds(1:nen) = ds(1:nen)*2.0_wp/le
             end if
             wj = wl%ws4(g)*0.5_wp*(hi(k) - lo(k))*0.5_wp*le
-            call water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, &
+            call water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, &
                                  part_seabed, fh, fs, ke, want_k)
          end do
       end do
@@ -254,14 +253,13 @@ contains
 
    !> Add the load at one point (shape functions nn, their S-derivatives ds, weight wj)
    !> to the element vectors and matrix (module header).
-   pure subroutine water_add_point(wl, ws, nen, xf, vf, af, cx, cv, ca, nn, ds, wj, parts, &
+   pure subroutine water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, parts, &
                                    fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
       integer, intent(in) :: nen               !< nodes of the element
-      real(wp), intent(in), contiguous :: xf(:, :)         !< (3, nen) positions [m]
-      real(wp), intent(in), contiguous :: vf(:, :)         !< (3, nen) velocities [m/s]
-      real(wp), intent(in), contiguous :: af(:, :)         !< (3, nen) accelerations [m/s2]
+      real(wp), intent(in), contiguous :: q(:, :)   !< (9, nen) positions [m], velocities
+                                                    !< [m/s], accelerations [m/s2]
       real(wp), intent(in) :: cx, cv, ca       !< derivatives of x_f, v_f, a_f in x^{n+1}
       real(wp), intent(in), contiguous :: nn(:)            !< (>= nen) shape functions
       real(wp), intent(in), contiguous :: ds(:)            !< (>= nen) their derivatives in S [1/m]
@@ -273,21 +271,20 @@ contains
       logical, intent(in) :: want_k            !< form the tangent
       real(wp), intent(in), optional, contiguous :: we(:, :) !< (7, nen) nodal wave kinematics (read
                                                  !< when wl%wave_on)
-      real(wp) :: wk(7)
+      real(wp) :: wk(7), y(9)
       real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
       real(wp) :: ka(3, 3), kn(3, 3), kd(3, 3), kb(3, 3), c
       integer :: i, j, a
-      ! x, x', v and a at the point, in one pass over the nodes
-      x = 0.0_wp
+      ! x, x', v and a at the point, in one pass over the nodes (x, v, a as one 9-vector)
+      y = 0.0_wp
       xp = 0.0_wp
-      v = 0.0_wp
-      acc = 0.0_wp
       do a = 1, nen
-         x = x + nn(a)*xf(:, a)
-         xp = xp + ds(a)*xf(:, a)
-         v = v + nn(a)*vf(:, a)
-         acc = acc + nn(a)*af(:, a)
+         y = y + nn(a)*q(:, a)
+         xp = xp + ds(a)*q(1:3, a)
       end do
+      x = y(1:3)
+      v = y(4:6)
+      acc = y(7:9)
       ! (one call: with a second one, for waves, this routine and water_element were no
       ! longer inlined into assemble_water, and a run without waves took 5 % more
       ! instructions; wk is read only when env%wave, and only by the water's part)

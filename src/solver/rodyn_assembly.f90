@@ -298,7 +298,7 @@ contains
       logical, intent(in) :: want_k            !< add the tangent
       real(wp) :: fh(3, max_nen), fs(3, max_nen), ke(3*max_nen, 3*max_nen), f(3), k(3, 3)
       type(water_section_t) :: ws
-      real(wp) :: xe(3, max_nen), ve(3, max_nen), ae(3, max_nen), we(7, max_nen)
+      real(wp) :: qe(9, max_nen), we(7, max_nen)
       integer :: e, p, nen, a, j, node, dofs(3*max_nen), i
       wl%fh = 0.0_wp
       wl%fs = 0.0_wp
@@ -306,10 +306,10 @@ contains
          p = mesh%line_order(mesh%elem_line(e))
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e))
-            do a = 1, nen
-               xe(:, a) = xf(:, nodes(a))
-               ve(:, a) = vf(:, nodes(a))
-               ae(:, a) = af(:, nodes(a))
+            do a = 1, nen          ! (rodyn_water: a node's x, v and a as one column)
+               qe(1:3, a) = xf(:, nodes(a))
+               qe(4:6, a) = vf(:, nodes(a))
+               qe(7:9, a) = af(:, nodes(a))
             end do
             if (wl%wave_on) then
                do a = 1, nen
@@ -318,8 +318,7 @@ contains
             end if
             ws = wl%sec(mesh%elem_sec(e))
             if (allocated(wl%bfac)) ws%fb = wl%bfac(mesh%elem_line(e))*ws%fb ! (statics)
-            call water_element(wl, ws, p, mesh%elem_le(e), &
-                               xe(:, 1:nen), ve(:, 1:nen), ae(:, 1:nen), cx, cv, ca, &
+            call water_element(wl, ws, p, mesh%elem_le(e), qe(:, 1:nen), cx, cv, ca, &
                                fh(:, 1:nen), fs(:, 1:nen), ke(1:3*nen, 1:3*nen), want_k, &
                                we(:, 1:nen))
             do a = 1, nen
