@@ -257,7 +257,7 @@ contains
       if (has_error(err)) return
       if (t > 0.0_wp) then
          ! (no results formed for a writer without files: case 1 for 20 s with
-         ! CSV=NO, HDF5=NO, 3 % of its instructions)
+         ! CSV=NO, HDF5=NO, 2.8 % of its instructions)
          if (dynamic_output_keeps_frames(writer)) &
             call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
                                prob%sup%held, frame_lines, prob%water)

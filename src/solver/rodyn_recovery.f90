@@ -119,7 +119,7 @@ contains
       !> p_o A_o - p_i A_i at reduced point g of element e [N]: z from the element's
       !> nodes xe with the rule's shape functions there (both resultant routines give the
       !> rule's first p points; a frame of the mooring surge deck evaluated shape_lagrange
-      !> and a heap temporary for the node heights at each point before: 2.4 % of its run)
+      !> and a heap temporary for the node heights at each point before: 2.3 % of its run)
       real(wp) function pressure_term(e, g, xe)
          integer, intent(in) :: e, g
          real(wp), intent(in) :: xe(:, :)
