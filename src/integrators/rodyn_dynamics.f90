@@ -250,13 +250,16 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: tm
+      real(wp) :: tm, w0, scale0
       integer :: node, i
       prob%t0 = t0
       prob%dt = dt
       prob%base_set = .false.
       call state_copy(prob%s1, prob%s0)
-      if (prob%fields0 .and. .not. prob%fields_next) call step_fields(prob)
+      ! the rods' fields and strains of s0 at their points, unless the accepted step before
+      ! left them (its energy, formed in the same pass, is not needed here)
+      if (prob%fields0 .and. .not. prob%fields_next) &
+         call mesh_strain_energy(prob%mesh, prob%s0, w0, scale0, prob%gp0, prob%epsn)
       prob%fields_next = .false.
       prob%fields_s1 = .false.
       ! the inertia's constant part, once a step instead of once an iteration
@@ -306,22 +309,6 @@ contains
                                                 prob%vessels), prob%d_start(:, :, i))
       end do
    end subroutine dynamics_begin_step
-
-   !> The rods' fields and strains of the state at t_n (prob%s0) at their points.
-   subroutine step_fields(prob)
-      type(dynamic_problem_t), intent(inout) :: prob !< problem
-      real(wp) :: x0(3, max_nen), d0(3, 3, max_nen)
-      integer :: e, p
-      associate (mesh => prob%mesh)
-         do e = 1, mesh%n_elements
-            if (mesh%elem_cable(e)) cycle
-            p = mesh%line_order(mesh%elem_line(e))
-            call state_gather(prob%s0, mesh%elem_nodes(1:p + 1, e), x0, d0)
-            call rod_element_fields(p, mesh%elem_le(e), x0(:, 1:p + 1), d0(:, :, 1:p + 1), &
-                                    mesh%rules(p), prob%gp0(:, e), prob%epsn(:, :, e))
-         end do
-      end associate
-   end subroutine step_fields
 
    !> A step is accepted: its forces become the residual's reference of the next step.
    subroutine dynamics_accept_step(prob)

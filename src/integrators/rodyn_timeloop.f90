@@ -66,7 +66,6 @@ module rodyn_timeloop
 
 contains
 
-
    !> Energies and momenta of the iterate state into log (work terms untouched).
    subroutine step_energies(prob, log)
       type(dynamic_problem_t), intent(in) :: prob !< problem

@@ -535,18 +535,29 @@ contains
          if (failed(stat, 'read type of', where, file, path, err)) exit blk
          call h5tget_class_f(ftype, tclass, stat)
          if (failed(stat, 'read type of', where, file, path, err)) exit blk
-         series%rank = ndims
-         series%n_cols = 1
-         if (ndims == 2) series%n_cols = dims(1)
-         series%n_steps = dims(ndims)
-         series%integers = tclass == H5T_INTEGER_F
-         series%id = dset
+         call series_holds(series, dset, dims(:ndims), tclass == H5T_INTEGER_F)
          dset = -1
       end block blk
       call release(ftype)
       call release(space)
       call release(dset)
    end subroutine hdf5_open_series
+
+   !> The open series takes dataset dset of shape dims (Fortran order, steps last; rank
+   !> 1 or 2) and value type (integers or reals): the one description of what a series
+   !> knows of its dataset, for hdf5_open_series and for a series kept from its creation.
+   pure subroutine series_holds(series, dset, dims, integers)
+      type(hdf5_series_t), intent(inout) :: series !< series (path and file set)
+      integer(hid_t), intent(in) :: dset           !< the open dataset, now the series'
+      integer(hsize_t), intent(in) :: dims(:)      !< its shape
+      logical, intent(in) :: integers              !< integer values
+      series%rank = size(dims)
+      series%n_cols = 1
+      if (size(dims) == 2) series%n_cols = dims(1)
+      series%n_steps = dims(size(dims))
+      series%integers = integers
+      series%id = dset
+   end subroutine series_holds
 
    !> Hold the steps appended to a real series in memory, up to `steps` steps, instead of
    !> writing each append: hdf5_series_write_held writes them as one block (and so do an
@@ -809,12 +820,7 @@ contains
          call hdf5_close_series(series, err)
          series%path = path
          series%file = file
-         series%rank = r
-         series%n_cols = 1
-         if (r == 2) series%n_cols = dims(1)
-         series%n_steps = 0
-         series%integers = ftype == H5T_STD_I32LE
-         series%id = dset
+         call series_holds(series, dset, dims, ftype == H5T_STD_I32LE)
          dset = -1
       end block blk
       call release(dset)

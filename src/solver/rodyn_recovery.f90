@@ -94,7 +94,7 @@ contains
                lines(l)%wall_tension(ig) = tens(g)
                if (present(water)) then
                   if (water%active) lines(l)%wall_tension(ig) = tens(g) + &
-                                                                pressure_term(e, g, xe)
+                                                                pressure_term(e, g)
                end if
                lines(l)%moment(:, ig) = res(4:5, g)
                lines(l)%torque(ig) = res(6, g)
@@ -116,17 +116,14 @@ contains
          end do
       end do
    contains
-      !> p_o A_o - p_i A_i at reduced point g of element e [N]: z from the element's
-      !> nodes xe with the rule's shape functions there (both resultant routines give the
-      !> rule's first p points; a frame of the mooring surge deck evaluated shape_lagrange
-      !> and a heap temporary for the node heights at each point before: 2.3 % of its run)
-      real(wp) function pressure_term(e, g, xe)
+      !> p_o A_o - p_i A_i at reduced point g of element e (order p, nodes xe) [N]: z
+      !> with the rule's shape functions there (both resultant routines give the rule's
+      !> first p points; a frame of the mooring surge deck evaluated shape_lagrange and a
+      !> heap temporary for the node heights at each point before: 2.3 % of its run)
+      real(wp) function pressure_term(e, g)
          integer, intent(in) :: e, g
-         real(wp), intent(in) :: xe(:, :)
          real(wp) :: z, gm, po, pi_
-         integer :: pe
-         pe = mesh%line_order(mesh%elem_line(e))
-         z = dot_product(mesh%rules(pe)%n(1:pe + 1, g), xe(3, 1:pe + 1))
+         z = dot_product(mesh%rules(p)%n(1:p + 1, g), xe(3, 1:p + 1))
          gm = norm2(model%gravity)
          associate (sec => model%sections(mesh%elem_sec(e)))
             po = model%water%density*gm*max(model%water%surface - z, 0.0_wp)
