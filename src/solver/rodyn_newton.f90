@@ -98,6 +98,8 @@ module rodyn_newton
       procedure(base_iface), deferred :: save_base
       !> Configuration <- base updated by alpha times the correction.
       procedure(apply_iface), deferred :: apply_correction
+      !> Estimate of the scaled residual that round-off alone leaves (0: none given).
+      procedure :: residual_floor => no_residual_floor
    end type newton_problem_t
 
    abstract interface
@@ -129,6 +131,14 @@ module rodyn_newton
    end interface
 
 contains
+
+   !> No estimate of the residual's round-off floor: the floor rules of newton_solve
+   !> take 100 force_tol alone.
+   function no_residual_floor(this) result(v)
+      class(newton_problem_t), intent(in) :: this !< problem
+      real(wp) :: v
+      v = merge(0.0_wp, 0.0_wp, this%factors_ok)   ! none, whatever the problem's state
+   end function no_residual_floor
 
    !> Solve the problem from its current configuration. Non-convergence is reported in
    !> stats (the caller cuts the step); err is set only for a failure that a smaller
@@ -247,12 +257,13 @@ contains
          ! ever shorter elements): on the paper's cable, cubic elements, dt = 0.015 s,
          ! 1.9e-8, 7e-8 and 2.2e-7 for 300, 1000 and 3000 elements, where the round-off
          ! rule above took one or two iterations more (and new tangents) to end each step
-         if (alpha == 1.0_wp .and. cn <= opts%disp_tol .and. rn > 0.5_wp*rn_prev &
-             .and. rn <= 1.0e2_wp*opts%force_tol) then
-            if (opts%log_unit >= 0) write (opts%log_unit, '(4x,a)') &
-               'converged to round-off (correction within DISP TOL, residual not falling)'
-            stats%converged = .true.
-            return
+         if (alpha == 1.0_wp .and. cn <= opts%disp_tol .and. rn > 0.5_wp*rn_prev) then
+            if (at_floor(rn)) then
+               if (opts%log_unit >= 0) write (opts%log_unit, '(4x,a)') &
+                  'converged to round-off (correction within DISP TOL, residual not falling)'
+               stats%converged = .true.
+               return
+            end if
          end if
          ! a tangent that no longer contracts the residual fast enough is renewed, at the
          ! iterate before if this reused one made things worse (full step: back to base)
@@ -264,7 +275,9 @@ contains
          ! cubic elements, dt = 0.015 s: the floor is 7e-8 at 1000 elements and 2.2e-7 at
          ! 3000, and 11 and 12 tangents in 20 steps were formed only to confirm it.)
          if (refresh .and. opts%reuse_tangent .and. alpha == 1.0_wp .and. &
-             cn <= 0.1_wp*cn_prev .and. rn <= 1.0e2_wp*opts%force_tol) refresh = .false.
+             cn <= 0.1_wp*cn_prev) then
+            if (at_floor(rn)) refresh = .false.
+         end if
          cn_prev = alpha*cn
          ! the first correction of a solve with an earlier solve's tangent takes the
          ! step's linear part (support motion, inertia) and leaves its nonlinear part;
@@ -284,6 +297,14 @@ contains
          end if
       end do
    contains
+      !> The scaled residual r may be at its round-off floor: within 100 force_tol, or
+      !> within 100 times the problem's estimate of the floor (prob%residual_floor, which
+      !> grows as the elements get shorter; asked only when the first test fails)
+      logical function at_floor(r)
+         real(wp), intent(in) :: r
+         at_floor = r <= 1.0e2_wp*opts%force_tol
+         if (.not. at_floor) at_floor = r <= 1.0e2_wp*prob%residual_floor()
+      end function at_floor
       !> Evaluate the residual, and the tangent if want_k (then to be factorised).
       subroutine evaluate(want_k)
          logical, intent(in) :: want_k
