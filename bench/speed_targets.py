@@ -28,6 +28,15 @@ docs/water.md, 2026-11-25). Rows (names for --skip):
                 300, 1000, 3000 and 10 000 elements (--quick: 100, 1000, 3000): the decks,
                 timing (median of repeats, static-only deck subtracted) and least-squares
                 fit of bench/dynamic_scaling.py. Target <= 1.05 (today 1.16 and 1.22).
+  scaling_instructions
+                the same exponent from instructions instead of wall times: callgrind's
+                count inclusive in run_dynamic (bench/profile_case.py's `callgrind`: the
+                dynamic set-up, the 20 steps, closing the output; the static solve before
+                is not counted) over the steps, cubic and quadratic elements, 100, 1000 and
+                10 000 elements (--quick: 100, 300, 1000); about 10 minutes. Instruction
+                counts repeat exactly, so this fit is free of the timing noise of small
+                meshes, and of the memory hierarchy of large ones (a large mesh's step
+                waits on memory: wall time per instruction grows with n). Needs valgrind.
   memory        memory per cubic element: (peak RSS - peak RSS at 10 elements) / n at
                 10 000 elements (--quick: 3000), the decks and GNU time measurement of
                 bench/memory_scaling.py. Target <= 19 KiB (today 19 KiB). Quadratic
@@ -74,12 +83,15 @@ from memory_scaling import peak_kib  # noqa: E402
 from profile_case import callgrind  # noqa: E402
 
 ROOT = benchlib.ROOT
-ROWS = ["case1", "newton", "instructions", "scaling", "memory", "cable", "peers"]
+ROWS = ["case1", "newton", "instructions", "scaling", "scaling_instructions", "memory", "cable",
+        "peers"]
 ISSUE = "issue 14, 2026-11-24"
 WATER = "docs/water.md, 2026-11-25"
 CASE1_INC = ["input/paper_cable_section.inc"]
 SCALING_SIZES = [100, 300, 1000, 3000, 10000]
 SCALING_SIZES_QUICK = [100, 1000, 3000]
+INSTR_SIZES = [100, 1000, 10000]
+INSTR_SIZES_QUICK = [100, 300, 1000]
 MOORDYN_320_WALL_S = 42.2      # docs/water.md: 320 segments, 2026-11-25, run once
 SURGE_RUNS = [("cable", "CABLE", 3, 24, 0.1), ("rod", "ROD", 3, 30, 0.1)]
 PEERS_TARGET_ERROR = 0.01
@@ -223,6 +235,43 @@ def scaling_rows(rodyn, tmp, sizes):
         name = "cubic" if order == 3 else "quadratic"
         out.append(row(f"cost per step ~ n^b, {name}: b", "<= 1.05", base, ISSUE,
                        b if b == b else None, True, lambda v: v <= 1.05, ".3f", note))
+    return out
+
+
+def scaling_instructions_rows(rodyn, tmp, sizes):
+    """Rows scaling_instructions: dynamic_scaling.py's decks under callgrind, collection
+    in run_dynamic, instructions per step fitted as dynamic_scaling.py fits times."""
+    target = "cost per step ~ n^b in instructions, {}: b"
+    out = []
+    if not (shutil.which("valgrind") and shutil.which("callgrind_annotate")):
+        for name in ("cubic", "quadratic"):
+            out.append(skipped(target.format(name), "<= 1.05", None, ISSUE, ".3f",
+                               "skipped: no valgrind (apt-get install valgrind)"))
+        return out
+    for order in (3, 2):
+        rows = []
+        for n in sizes:
+            work = os.path.join(tmp, f"cg_scaling_p{order}_n{n}")
+            os.makedirs(work)
+            deck = os.path.join(work, "deck.inp")
+            with open(deck, "w") as f:
+                f.write(dynamic_scaling.make_deck(n, order, True))
+            total, _, st = callgrind(rodyn, deck, work)
+            steps = int(st["steps"])
+            rows.append({"elements": n, "failed": False, "per_step": total / steps,
+                         "tangents": int(st["step_tangents"]),
+                         "iterations": int(st["step_iterations"])})
+            print(f"  instructions p={order} n={n}: {total / steps:.4g} a step "
+                  f"({st['step_iterations']} iterations, {st['step_tangents']} tangents)",
+                  file=sys.stderr, flush=True)
+        b = benchlib.fit_exponent(rows, "per_step", dynamic_scaling.FIT_MIN_N)
+        note = (f"n = {', '.join(map(str, sizes))}; per step "
+                + ", ".join(f"{r['per_step']:.3g}" for r in rows) + " instructions; "
+                + "iterations / tangents in 20 steps "
+                + ", ".join(f"{r['iterations']}/{r['tangents']}" for r in rows))
+        name = "cubic" if order == 3 else "quadratic"
+        out.append(row(target.format(name), "<= 1.05", None, ISSUE, b, True,
+                       lambda v: v <= 1.05, ".3f", note))
     return out
 
 
@@ -416,6 +465,9 @@ def main():
         if "scaling" not in skip:
             rows += scaling_rows(rodyn, tmp,
                                  SCALING_SIZES_QUICK if args.quick else SCALING_SIZES)
+        if "scaling_instructions" not in skip:
+            rows += scaling_instructions_rows(
+                rodyn, tmp, INSTR_SIZES_QUICK if args.quick else INSTR_SIZES)
         if "memory" not in skip:
             rows += memory_rows(rodyn, tmp, 3000 if args.quick else 10000)
         if "cable" not in skip:

@@ -127,8 +127,10 @@ contains
    !> (C = GA1, GA2 or EA), a moment one of eps EI / le (unit directors):
    !>   floor = max(eps |x|_max max_e(C/le) / F_ref,  eps max_e(EI/le) / M_ref)
    !> with |x|_max over Newton's base and the references of rod_residual_norm. On the
-   !> paper's cable (cubic elements, dt = 0.015 s) the residuals at which the steps
-   !> stalled were 0.4 to 0.8 of it from 300 to 10 000 elements (1.9e-8 to 8e-7).
+   !> paper's cable (cubic elements, dt = 0.015 s, bench/dynamic_scaling.py's decks) the
+   !> residuals at which the steps stalled were 5 to 11 times it (300 elements: 1.9e-8
+   !> against 3.7e-9; 1000: 7e-8 against 1.24e-8; 10 000: 0.7e-6 to 1.84e-6 against
+   !> 1.7e-7): a node's residual sums the point forces of its elements.
    function rod_residual_floor(this) result(v)
       class(rod_problem_t), intent(in) :: this !< problem
       real(wp) :: v
