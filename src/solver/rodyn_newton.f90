@@ -101,8 +101,8 @@ module rodyn_newton
       procedure(base_iface), deferred :: save_base
       !> Configuration <- base updated by alpha times the correction.
       procedure(apply_iface), deferred :: apply_correction
-      !> Estimate of the scaled residual that round-off alone leaves (0: none given).
-      procedure :: residual_floor => no_residual_floor
+      !> Estimate of the scaled residual that round-off alone leaves (0: none).
+      procedure(norm_iface), deferred :: residual_floor
    end type newton_problem_t
 
    abstract interface
@@ -134,14 +134,6 @@ module rodyn_newton
    end interface
 
 contains
-
-   !> No estimate of the residual's round-off floor: the floor rules of newton_solve
-   !> take 100 force_tol alone.
-   function no_residual_floor(this) result(v)
-      class(newton_problem_t), intent(in) :: this !< problem
-      real(wp) :: v
-      v = merge(0.0_wp, 0.0_wp, this%factors_ok)   ! none, whatever the problem's state
-   end function no_residual_floor
 
    !> Solve the problem from its current configuration. Non-convergence is reported in
    !> stats (the caller cuts the step); err is set only for a failure that a smaller
