@@ -3,7 +3,7 @@
 
 usage: python3 bench/speed_targets.py [--rodyn PATH] [--quick] [--skip ROW [ROW ...]]
                                       [--run-peers] [--csv PATH]
-       (about 2 minutes, --quick 30 s, without --run-peers; writes
+       (about 5 minutes, --quick 1 minute, without --run-peers; writes
         bench/results/speed_targets.csv and prints a markdown table)
 
 One row per target of issue 14 ("Targets" and its cable element), the baseline
@@ -32,8 +32,8 @@ docs/water.md, 2026-11-25). Rows (names for --skip):
                 the same exponent from instructions instead of wall times: callgrind's
                 count inclusive in run_dynamic (bench/profile_case.py's `callgrind`: the
                 dynamic set-up, the 20 steps, closing the output; the static solve before
-                is not counted) over the steps, cubic and quadratic elements, 100, 1000 and
-                10 000 elements (--quick: 100, 300, 1000); about 10 minutes. Instruction
+                is not counted) over the steps, cubic and quadratic elements, the sizes of
+                the row scaling (--quick: 100, 300, 1000); about 4 minutes. Instruction
                 counts repeat exactly, so this fit is free of the timing noise of small
                 meshes, and of the memory hierarchy of large ones (a large mesh's step
                 waits on memory: wall time per instruction grows with n). Needs valgrind.
@@ -90,7 +90,7 @@ WATER = "docs/water.md, 2026-11-25"
 CASE1_INC = ["input/paper_cable_section.inc"]
 SCALING_SIZES = [100, 300, 1000, 3000, 10000]
 SCALING_SIZES_QUICK = [100, 1000, 3000]
-INSTR_SIZES = [100, 1000, 10000]
+INSTR_SIZES = SCALING_SIZES
 INSTR_SIZES_QUICK = [100, 300, 1000]
 MOORDYN_320_WALL_S = 42.2      # docs/water.md: 320 segments, 2026-11-25, run once
 SURGE_RUNS = [("cable", "CABLE", 3, 24, 0.1), ("rod", "ROD", 3, 30, 0.1)]
@@ -259,16 +259,20 @@ def scaling_instructions_rows(rodyn, tmp, sizes):
             total, _, st = callgrind(rodyn, deck, work)
             steps = int(st["steps"])
             rows.append({"elements": n, "failed": False, "per_step": total / steps,
+                         "per_iteration": total / int(st["step_iterations"]),
                          "tangents": int(st["step_tangents"]),
                          "iterations": int(st["step_iterations"])})
             print(f"  instructions p={order} n={n}: {total / steps:.4g} a step "
                   f"({st['step_iterations']} iterations, {st['step_tangents']} tangents)",
                   file=sys.stderr, flush=True)
         b = benchlib.fit_exponent(rows, "per_step", dynamic_scaling.FIT_MIN_N)
+        bi = benchlib.fit_exponent(rows, "per_iteration", dynamic_scaling.FIT_MIN_N)
         note = (f"n = {', '.join(map(str, sizes))}; per step "
                 + ", ".join(f"{r['per_step']:.3g}" for r in rows) + " instructions; "
                 + "iterations / tangents in 20 steps "
-                + ", ".join(f"{r['iterations']}/{r['tangents']}" for r in rows))
+                + ", ".join(f"{r['iterations']}/{r['tangents']}" for r in rows)
+                + f" (instructions per Newton iteration ~ n^{bi:.3f}: the exponent per "
+                "step also holds the iteration counts, which vary with n without a trend)")
         name = "cubic" if order == 3 else "quadratic"
         out.append(row(target.format(name), "<= 1.05", None, ISSUE, b, True,
                        lambda v: v <= 1.05, ".3f", note))
