@@ -253,9 +253,7 @@ def scaling_instructions_rows(rodyn, tmp, sizes):
         for n in sizes:
             work = os.path.join(tmp, f"cg_scaling_p{order}_n{n}")
             os.makedirs(work)
-            deck = os.path.join(work, "deck.inp")
-            with open(deck, "w") as f:
-                f.write(dynamic_scaling.make_deck(n, order, True))
+            deck = benchlib.write_deck(work, "deck", dynamic_scaling.make_deck(n, order, True))
             total, _, st = callgrind(rodyn, deck, work)
             steps = int(st["steps"])
             rows.append({"elements": n, "failed": False, "per_step": total / steps,
