@@ -16,8 +16,9 @@ MODE
               process) is taken over; a live one refuses; the lock is gone after every
               exit (0, 2, 3).
   stale       temporaries of a killed run are removed by the next run into the folder;
-              a run killed (SIGKILL) while it writes leaves status.txt, the CSV tables
-              and dynamic.h5 holding the same frames up to the sizes status.txt gives
+              a run killed (SIGKILL) while it writes (once status.txt says it has
+              committed 1, 2000 and 5000 time steps: no fixed delay) leaves status.txt,
+              the CSV tables and dynamic.h5 holding the same frames up to the sizes status.txt gives
               (frames, committed_bytes.NAME; a kill inside a sync may leave a tail of
               later rows beyond them), and rodyn_post reads exactly those frames, from
               dynamic.h5 and from the CSV tables alike.
@@ -43,6 +44,8 @@ DYN_TABLES = ["dynamic_nodes.csv", "dynamic_elements.csv", "dynamic_ends.csv",
               "dynamic_lines.csv"]
 STATUS_KEYS = ["complete", "status", "load_factor", "increments", "iterations",
                "cutbacks", "wall_time_s"]
+# the kill points of the stale mode: committed time steps of the long deck
+KILL_AFTER_STEPS = (1, 2000, 5000)
 SIZES = ["4k", "8k", "16k", "32k", "64k", "128k", "256k", "512k", "1m", "4m"]
 
 
@@ -408,35 +411,60 @@ def stale(exe, src, work):
         fail(f"stale temporaries not removed: {left}")
     check_folder(out, ref, 0, err, h5py)
     print(f"{len(junk)} stale temporaries removed by the next run")
-    # kill -9 while the run writes: status.txt, CSV tables and dynamic.h5 agree
-    # frames every 10 steps: a Release run writes thousands of steps before the kill, and
-    # reading them all back (twice, CSV and HDF5) cost half a minute
-    long_deck = make_deck(src, work, "killed.inp", 900.0, interval=1.0)
-    long_ref = work / "ref_killed"
+    # kill -9 while the run writes: status.txt, CSV tables and dynamic.h5 agree.
+    # When to kill is decided by what the run has done, never by the clock: the test
+    # watches status.txt and kills once it has committed the given number of time steps.
+    # The deck has 10^6 steps (TIME=1e5 s at DT=0.1 s), so that no machine finishes it in
+    # the moment between reading status.txt and the kill; frames every 10 steps keep
+    # the files small. status.txt moves at each sync (docs/output.md: at the first frame,
+    # every 1024 step rows, or after a second of wall time), so the three kills fall at
+    # the first sync after a step, near step 2048 and near step 5120, whatever the machine's speed.
+    long_deck = make_deck(src, work, "killed.inp", 1.0e5, interval=1.0)
     agree = 0
-    for k, delay in enumerate((1.3, 2.2, 3.1)):
+    for k, target in enumerate(KILL_AFTER_STEPS):
         out = work / f"killed_{k}"
         shutil.rmtree(out, ignore_errors=True)
         p = subprocess.Popen([str(exe), str(long_deck), "-o", str(out), "--quiet"],
                              stderr=subprocess.DEVNULL)
-        time.sleep(delay)
+        seen = wait_for_steps(p, out / "status.txt", target)
         p.send_signal(signal.SIGKILL)
         p.wait()
+        if seen is None:
+            fail(f"killed run: the run ended (exit {p.returncode}) before it committed "
+                 f"{target} steps")
         st = read_status(out / "status.txt")
         if st["complete"] != "false" or st["status"] != "running":
             fail(f"killed run: status.txt says complete = {st['complete']}, "
                  f"status = {st['status']}")
+        if int(st["steps"]) < target:
+            fail(f"killed run: status.txt says {st['steps']} steps after {seen} were seen")
         tail = check_committed(out, st, h5py, src)
         agree += 1
-        print(f"killed after {delay} s: status.txt, tables and dynamic.h5 end at "
-              f"t = {st['time_reached_s']} s, {st['steps']} steps, {st['frames']} frames"
+        print(f"killed once {seen} steps were committed (wanted {target}): status.txt, "
+              f"tables and dynamic.h5 end at t = {st['time_reached_s']} s, "
+              f"{st['steps']} steps, {st['frames']} frames"
               f" ({'an uncommitted tail after them' if tail else 'no tail'})")
         # the next run into the folder cleans up and runs
         code, err = run(exe, deck, out)
         if code != 0:
             fail(f"run after a killed one: exit {code}: {err}")
-    del long_ref
-    print(f"killed runs: files and status.txt agree in {agree} of 3")
+    print(f"killed runs: files and status.txt agree in {agree} of {len(KILL_AFTER_STEPS)}")
+
+
+def wait_for_steps(p, status, target):
+    """Polls status (status.txt of the running process p) until it says `steps` >= target
+    and returns that count; None when p ends first. status.txt is replaced whole by a
+    rename, so a read sees one version or another; a folder not yet made, or a status
+    without a steps line (statics), reads as no steps."""
+    while p.poll() is None:
+        try:
+            m = re.search(r"^steps = (\d+)$", status.read_text(), re.M)
+        except OSError:
+            m = None
+        if m and int(m.group(1)) >= target:
+            return int(m.group(1))
+        time.sleep(0.002)
+    return None
 
 
 def main():
