@@ -302,12 +302,14 @@ def _run_local(specs: List[CaseSpec], jobs: int, on_done, progress: Progress):
 
 def connect(address: str, timeout: float):
     """A dask.distributed Client of the scheduler at `address` (BatchInputError when
-    distributed is missing or the scheduler cannot be reached)."""
+    distributed is missing or the scheduler cannot be reached). Dask is the optional
+    extra rodyn-post[dask], imported here only: local batches run without it."""
     try:
         from distributed import Client
     except ImportError:
-        raise BatchInputError("--scheduler needs Dask: python3 -m pip install "
-                              "'dask[distributed]'") from None
+        raise BatchInputError(f"--scheduler {address}: Dask is not installed (the optional "
+                              "extra rodyn-post[dask]: python3 -m pip install -e "
+                              "'postproc[dask]', or bash tools/setup.sh)") from None
     try:
         return Client(address, timeout=f"{timeout}s")
     except (OSError, TimeoutError) as exc:
