@@ -55,11 +55,12 @@ from .batch_run import (RESULT_FILE, CaseSpec, Running, acquire_lock, clean_temp
                         command_of, quote,
                         lock_is_live, lock_owner, lock_path, read_lock, read_record,
                         release_lock, run_case)
+from .batch_state import (STATE_FILE, adopt_folders, merge_cases, read_state,
+                          state_locked, summary_entries, write_state)
 
 PROG = "rodyn-batch"
 EXIT_CASES_FAILED = 4      # some cases did not complete (the batch itself ran)
 EXIT_INTERRUPTED = 130     # Ctrl-C or SIGTERM: finished cases kept
-STATE_FILE = "batch_cases.json"
 LOG_FILE = "batch.log"
 SUBCOMMANDS = ("run", "summary", "plot", "compare")
 EPILOG = ("exit status: 0 every case complete, 1 bad input (nothing run), 2 bad command "
@@ -256,6 +257,36 @@ def _param_names(cases: List[Case]) -> List[str]:
     return list(names)
 
 
+def _add_to_folder(out: Path, cases: List[Case], hashes: dict, param_names: List[str],
+                   keys: tuple, locked: List[str], token: str):
+    """Add the cases to OUT's case list (batch_state: batches into one folder merge);
+    a case list that cannot be read releases the locks taken and stops the batch.
+    Notes on stderr and in the log name earlier cases kept and cases redefined."""
+    try:
+        with state_locked(out):
+            state = read_state(out)
+            mine = [{"id": c.id, "deck": str(c.deck), "params": c.params,
+                     "hash": hashes[c.id]} for c in cases]
+            state, changed, others = merge_cases(state, mine, param_names, list(keys))
+            others += len(adopt_folders(out, state))
+            write_state(out, state)
+    except BatchInputError:
+        for cid in locked:
+            release_lock(out, cid, token)
+        raise
+    notes = []
+    if others:
+        notes.append(f"{out} holds {others} cases of earlier batches: the summary lists "
+                     f"them with these {len(cases)} ({len(state['cases'])} cases)")
+    if changed:
+        notes.append(f"cases given another deck or parameters than an earlier batch's "
+                     f"(run again): {', '.join(changed[:10])}"
+                     f"{' ...' if len(changed) > 10 else ''}")
+    for note in notes:
+        print(f"{PROG}: note: {note}", file=sys.stderr)
+        _log(out, f"note: {note}")
+
+
 def _ensure_extracted(out: Path, record: dict, keys: tuple) -> dict:
     """A skipped case's record, extracted again when its quantities differ."""
     if tuple(record.get("extract_keys") or ()) == tuple(keys) and record.get("extract"):
@@ -384,7 +415,8 @@ def run_batch(args) -> int:
     entries: Dict[str, dict] = {}
     todo: List[Case] = []
     for case in cases:
-        entry = {"id": case.id, "params": case.params, "record": None}
+        entry = {"id": case.id, "params": case.params, "record": None,
+                 "hash": hashes[case.id]}
         entries[case.id] = entry
         rec = None if args.force else read_record(out / case.id)
         if (rec is not None and rec.get("status") == "complete"
@@ -414,9 +446,7 @@ def run_batch(args) -> int:
                                   f"({lock_owner(info)})")
         locked.append(case.id)
     clean_temporaries(out, locked)
-    state = {"cases": [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases],
-             "parameters": param_names, "extract": list(keys)}
-    (out / STATE_FILE).write_text(json.dumps(state, indent=1), encoding="utf-8")
+    _add_to_folder(out, cases, hashes, param_names, keys, locked, token)
 
     extra = tuple(args.rodyn_arg) or ("--quiet",)
     specs = [CaseSpec(id=c.id, deck=str(c.deck), params=dict(c.params), out=str(out),
@@ -480,7 +510,11 @@ def run_batch(args) -> int:
             entry["status"] = "not run"
             entry["message"] = "batch interrupted" if interrupted else (
                 entry["record"] or {}).get("message", "")
-    csv_path, h5_path = write_summary(out, ordered, param_names, meta)
+    with state_locked(out):                 # every case of the folder (batch_state)
+        state = read_state(out) or {"cases": [], "parameters": param_names}
+        everything = summary_entries(out, state, {e["id"]: e for e in ordered}, token,
+                                     lambda rec: _ensure_extracted(out, rec, keys))
+        csv_path, h5_path = write_summary(out, everything, state["parameters"], meta)
     failed = [e["id"] for e in ordered if (e.get("status") or e["record"]["status"])
               != "complete"]
     _log(out, f"batch {token}: {'interrupted' if interrupted else 'finished'}; "
@@ -500,25 +534,31 @@ def run_batch(args) -> int:
 
 
 def rebuild_summary(args) -> int:
-    """`rodyn-batch summary OUT`: the summary again from the case folders."""
+    """`rodyn-batch summary OUT`: the summary again from the case folders, for every
+    case of the folder (batch_cases.json and the case folders it does not list)."""
     from .batch_summary import write_summary
 
     out = Path(args.output)
-    try:
-        state = json.loads((out / STATE_FILE).read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise BatchInputError(f"{out / STATE_FILE}: cannot read the batch's cases "
-                              f"({getattr(exc, 'strerror', None) or exc})") from None
-    keys = parse_extract(args.extract) if args.extract else tuple(state["extract"])
-    entries = []
-    for case in state["cases"]:
-        rec = read_record(out / case["id"])
-        if rec is not None:
-            rec = _ensure_extracted(out, rec, keys)
-        entries.append({"id": case["id"], "params": case["params"], "record": rec})
-    for path in write_summary(out, entries, state["parameters"],
+    if not out.is_dir():
+        raise BatchInputError(f"{out}: no such batch folder")
+    with state_locked(out):
+        state = read_state(out)
+        if state is None:
+            state = {"cases": [], "parameters": [], "extract": list(DEFAULT_EXTRACT)}
+        adopted = adopt_folders(out, state)
+        if not state["cases"]:
+            raise BatchInputError(f"{out}: no cases ({STATE_FILE} missing and no case "
+                                  f"folder with {RESULT_FILE})")
+        keys = parse_extract(args.extract) if args.extract else tuple(state["extract"])
+        if adopted or args.extract:
+            state["extract"] = list(keys)
+            write_state(out, state)
+        entries = summary_entries(out, state, {}, None,
+                                  lambda rec: _ensure_extracted(out, rec, keys))
+        paths = write_summary(out, entries, state["parameters"],
                               {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
-                               "extract": ",".join(keys)}):
+                               "extract": ",".join(keys)})
+    for path in paths:
         print(path)
     return EXIT_OK
 

@@ -506,3 +506,125 @@ def test_deck_parameters_hash_and_ids(tmp_path):
     cases = grid_cases(["DIR=N/E,S W", "amp=1"], deck, {"DEPTH": "5"})
     assert [c.id for c in cases] == ["DIR=N_E_amp=1", "DIR=S_W_amp=1"]
     assert cases[0].params == {"DEPTH": "5", "DIR": "N/E", "amp": "1"}
+
+
+# --- batches into one folder ----------------------------------------------------------
+
+HEAVE = ROOT / "input" / "batch" / "cable_heave.inp"
+
+
+def _table(path: Path, text: str) -> Path:
+    path.write_text(text)
+    return path
+
+
+def _heave_batch(table: Path, out: Path, *more) -> int:
+    return run_main([HEAVE, "--cases", table, "--set", "DURATION=1", "-o", out,
+                     "--rodyn", RODYN, "--no-progress", "-j", "2", *more])
+
+
+def test_two_case_tables_into_one_folder_merge(tmp_path, capsys):
+    """Two batches with different case tables into one folder: one summary (CSV, HDF5,
+    batch_cases.json, `rodyn-batch summary`) of the cases of both; a case redefined
+    by a later table runs again, the others are kept."""
+    out = tmp_path / "out"
+    first = _table(tmp_path / "first.csv", "id,AMPLITUDE,FREQUENCY\na02_f050,0.2,0.5\n"
+                                           "a04_f066,0.4,0.658\n")
+    second = _table(tmp_path / "second.csv", "id,AMPLITUDE,DT\nb03_dt05,0.3,0.05\n"
+                                             "b03_dt10,0.3,0.1\n")
+    assert _heave_batch(first, out) == 0
+    capsys.readouterr()
+    assert _heave_batch(second, out) == 0
+    ids = ["a02_f050", "a04_f066", "b03_dt05", "b03_dt10"]
+    rows = csv_rows(out / "summary.csv")
+    assert [r["id"] for r in rows] == ids
+    assert "holds 2 cases of earlier batches" in capsys.readouterr().err
+    assert all(r["status"] == "complete" for r in rows)
+    assert [r["FREQUENCY"] for r in rows] == ["0.5", "0.658", "", ""]
+    assert [r["DT"] for r in rows] == ["", "", "0.05", "0.1"]
+    assert [r["skipped"] for r in rows] == ["0"] * 4     # none of them kept by this run
+    summary = read_summary(out)
+    assert list(summary["cases"]["id"]) == ids
+    assert same_values(summary["cases"]["DT"], [math.nan, math.nan, 0.05, 0.1])
+    assert set(np.unique(summary["envelope"]["case"])) == {0, 1, 2, 3}
+    state = json.loads((out / "batch_cases.json").read_text())
+    assert [c["id"] for c in state["cases"]] == ids
+    assert state["parameters"] == ["DURATION", "AMPLITUDE", "FREQUENCY", "DT"]
+    for k, case_id in enumerate(ids):    # each row is its own case folder's extremes
+        scalars = extract_case(out / case_id, DEFAULT_EXTRACT)["scalars"]
+        for key, value in scalars.items():
+            assert same_values(summary["cases"][key][k], value), (case_id, key)
+    (out / "summary.csv").unlink()
+    (out / "summary.h5").unlink()
+    assert run_main(["summary", out]) == 0
+    assert [r["id"] for r in csv_rows(out / "summary.csv")] == ids
+    assert_same_summary(read_summary(out), summary)
+    # a third table redefines a04_f066: it runs again, the other cases are kept
+    kept = {i: (out / i / "batch_case.json").stat().st_mtime_ns for i in ids}
+    third = _table(tmp_path / "third.csv", "id,AMPLITUDE,FREQUENCY\na04_f066,0.4,0.8\n")
+    assert _heave_batch(third, out) == 0
+    assert "another deck or parameters than an earlier batch's (run again): a04_f066" in \
+        capsys.readouterr().err
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert list(rows) == ids and rows["a04_f066"]["FREQUENCY"] == "0.8"
+    assert "--set FREQUENCY=0.8" in (out / "a04_f066" / "command.txt").read_text()
+    for case_id in ("a02_f050", "b03_dt05", "b03_dt10"):
+        assert (out / case_id / "batch_case.json").stat().st_mtime_ns == kept[case_id]
+
+
+def test_summary_brings_back_case_folders_not_listed(tmp_path):
+    """A folder whose batch_cases.json lists only the last batch's cases (as an older
+    rodyn-batch left it): `rodyn-batch summary` adopts the other case folders."""
+    out = tmp_path / "out"
+    first = _table(tmp_path / "first.csv", "id,AMPLITUDE\nc1,0.2\nc2,0.3\n")
+    assert _heave_batch(first, out) == 0
+    state = json.loads((out / "batch_cases.json").read_text())
+    state["cases"] = state["cases"][1:]
+    state["parameters"] = ["AMPLITUDE"]
+    (out / "batch_cases.json").write_text(json.dumps(state))
+    assert run_main(["summary", out]) == 0
+    rows = csv_rows(out / "summary.csv")
+    assert [(r["id"], r["AMPLITUDE"], r["status"]) for r in rows] == [
+        ("c2", "0.3", "complete"), ("c1", "0.2", "complete")]
+    listed = [c["id"] for c in json.loads((out / "batch_cases.json").read_text())["cases"]]
+    assert listed == ["c2", "c1"]
+
+
+def test_second_batch_while_the_first_runs(tmp_path):
+    """A batch into a folder where another batch is running: its summary lists the other
+    batch's cases as running; the batch that ends last writes every case complete.
+    The first batch's rodyn waits for a gate file (no timing decides the order)."""
+    decks = write_decks(tmp_path / "decks", n=2)
+    gate, started = tmp_path / "gate", tmp_path / "started"
+    wrapper = tmp_path / "gated_rodyn"
+    wrapper.write_text(f"#!/bin/sh\n[ \"$1\" = --help ] || {{ touch {started}; "
+                       f"while [ ! -e {gate} ]; do sleep 0.05; done; }}\n"
+                       f"exec {RODYN} \"$@\"\n")
+    wrapper.chmod(0o755)
+    out = tmp_path / "out"
+    env = dict(os.environ, PYTHONPATH=str(POSTPROC))
+    first = subprocess.Popen([sys.executable, "-m", "rodyn_post.batch", *map(str, decks),
+                              "-o", str(out), "-j", "1", "--rodyn", str(wrapper),
+                              "--no-progress"], env=env, stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 120          # a guard against a hang only
+        while not started.exists() and first.poll() is None \
+                and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert started.exists(), first.communicate()
+        table = _table(tmp_path / "b.csv", "id,AMPLITUDE\nb1,0.2\nb2,0.3\n")
+        assert _heave_batch(table, out) == 0
+        rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+        assert list(rows) == ["case00", "case01", "b1", "b2"]
+        assert [rows[i]["status"] for i in rows] == ["running"] * 2 + ["complete"] * 2
+        assert "being run by another batch" in rows["case00"]["message"]
+    finally:
+        gate.touch()
+        _, err = first.communicate(timeout=300)
+    assert first.returncode == 0, err
+    rows = csv_rows(out / "summary.csv")
+    assert [r["id"] for r in rows] == ["case00", "case01", "b1", "b2"]
+    assert all(r["status"] == "complete" for r in rows)
+    assert [c["id"] for c in json.loads((out / "batch_cases.json").read_text())["cases"]] \
+        == ["case00", "case01", "b1", "b2"]
