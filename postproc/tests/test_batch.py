@@ -274,7 +274,9 @@ def test_dask_local_cluster(batch12, cluster, tmp_path):
 
 
 def test_dask_worker_killed_mid_case(cluster, tmp_path):
-    decks = write_decks(tmp_path / "decks", n=4, elements=30, duration=200.0)
+    # cases of 10 000 steps, so that the kill (a few ms after the case's folder appears)
+    # finds the case running on a machine many times faster than this one
+    decks = write_decks(tmp_path / "decks", n=4, elements=30, duration=1000.0)
     out = tmp_path / "out"
     result = {}
     thread = threading.Thread(target=lambda: result.setdefault("code", run_main(
@@ -289,7 +291,7 @@ def test_dask_worker_killed_mid_case(cluster, tmp_path):
                 killed = (tmp.name.split(".tmp-")[0][1:], int(tmp.name.split("-")[1]))
                 os.kill(killed[1], signal.SIGKILL)
                 break
-        time.sleep(0.05)
+        time.sleep(0.002)
     thread.join(120)
     assert killed is not None and not thread.is_alive()
     assert result["code"] == 0
@@ -310,8 +312,8 @@ def test_bad_deck_failing_case_and_time_limit(tmp_path, capsys):
     nan = tmp_path / "decks" / "nan.inp"
     nan.write_text((ROOT / "tests" / "program" / "dynamic_nan.inp").read_text()
                    .replace("../../input/paper_cable_section.inc", str(INCLUDE)))
-    slow = tmp_path / "decks" / "slow.inp"
-    slow.write_text(cable_deck(0.1, 0.5, elements=30, duration=5000.0))
+    slow = tmp_path / "decks" / "slow.inp"     # 10^6 steps: unfinishable in 1.5 s anywhere
+    slow.write_text(cable_deck(0.1, 0.5, elements=30, duration=1.0e5))
     out = tmp_path / "out"
     code = run_main(list(decks) + [bad, nan, slow, "-o", out, "-j", "2", "--timeout", "1.5",
                                    "--rodyn", RODYN, "--no-progress"])
@@ -330,7 +332,7 @@ def test_bad_deck_failing_case_and_time_limit(tmp_path, capsys):
 @pytest.mark.skipif(not Path("/proc/self/cmdline").exists(), reason="needs /proc")
 def test_case_killed_by_a_signal(tmp_path):
     """A rodyn process killed from outside (not by the time limit): status signal."""
-    decks = write_decks(tmp_path / "decks", n=2, elements=30, duration=5000.0)
+    decks = write_decks(tmp_path / "decks", n=2, elements=30, duration=1.0e5)
     out = tmp_path / "out"
     result = {}
     thread = threading.Thread(target=lambda: result.setdefault("code", run_main(
@@ -363,7 +365,9 @@ def _batch_cmd(decks_glob, out):
 
 
 def test_interrupt_and_resume(tmp_path):
-    write_decks(tmp_path / "decks", n=12, elements=30, duration=40.0)
+    # cases of 2000 steps: the interrupt (at most 20 ms after the third case is seen done)
+    # comes long before the twelfth is done, on a machine many times faster than this one
+    write_decks(tmp_path / "decks", n=12, elements=30, duration=200.0)
     pattern = tmp_path / "decks" / "case*.inp"
     env = dict(os.environ, PYTHONPATH=str(POSTPROC))
     out = tmp_path / "out"
@@ -392,7 +396,7 @@ def test_interrupt_and_resume(tmp_path):
 
 
 def test_sigterm_stops_like_ctrl_c(tmp_path):
-    write_decks(tmp_path / "decks", n=6, elements=30, duration=40.0)
+    write_decks(tmp_path / "decks", n=6, elements=30, duration=200.0)
     out = tmp_path / "out"
     proc = subprocess.Popen(_batch_cmd(tmp_path / "decks" / "case*.inp", out),
                             env=dict(os.environ, PYTHONPATH=str(POSTPROC)),
