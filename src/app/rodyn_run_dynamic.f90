@@ -1,7 +1,7 @@
 !> The dynamic analysis as the program runs it: set-up from the start state, the time
 !> loop, and the outputs written while it runs (frames, step log, progress line).
 !> The callbacks of the time loop reach the writer through this module's run context,
-!> which lives for one call of run_dynamic.
+!> which lives for one call of run_dynamic (module variables; docs/architecture.md).
 module rodyn_run_dynamic
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -256,8 +256,7 @@ contains
       if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
       if (has_error(err)) return
       if (t > 0.0_wp) then
-         ! (no results formed for a writer without files: case 1 for 20 s with
-         ! CSV=NO, HDF5=NO, 2.8 % of its instructions)
+         ! (no results formed for a writer without files)
          if (dynamic_output_keeps_frames(writer)) &
             call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
                                prob%sup%held, frame_lines, prob%water)

@@ -1,5 +1,6 @@
 !> The cable element: a line with axial stiffness only (*LINE, ELEMENT=CABLE), for
-!> chain, wire and rope, whose bending and torsion do not matter (docs/element.md).
+!> chain, wire and rope, whose bending and torsion do not matter (docs/element.md;
+!> docs/theory.md section 8, eqs. (61)-(66)).
 !>
 !> Per node a the unknown is the position x_a; positions are interpolated with the
 !> Lagrange functions of order p (the rod's) and, per unit unstretched length S,
@@ -100,8 +101,8 @@ contains
       do g = 1, p
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
          wj = rule%w(g)*0.5_wp*le
-         xp0 = 0.0_wp           ! x' at t_n and t_n+1 (loops: matmul took twice the
-         xp1 = 0.0_wp           ! instructions on the mooring surge deck)
+         xp0 = 0.0_wp           ! x' at t_n and t_n+1 (explicit loops: cheaper than
+         xp1 = 0.0_wp           ! matmul on these small arrays)
          do i = 1, nen
             xp0 = xp0 + x0(:, i)*dn(i)
             xp1 = xp1 + x1(:, i)*dn(i)

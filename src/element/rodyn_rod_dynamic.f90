@@ -1,4 +1,5 @@
-!> Internal force of the director rod over a time step (formulation note sections 3-4),
+!> Internal force of the director rod over a time step (docs/theory.md eqs. (35)-(36),
+!> (44), (54)-(57)),
 !> projected with the midpoint directors d^{n+1/2} = (d^n + d^{n+1})/2, and its tangent
 !> with respect to the unknowns at n+1 (dx, dtheta; dd^{n+1} = dtheta x d^{n+1}):
 !>   EMC          S = C ((eps(q^n) + eps(q^{n+1}))/2 - eps0), B at q^{n+1/2}
@@ -12,11 +13,10 @@
 !> Stresses of the EMC tangent (argument xb, db: Newton's base, the iterate q^k that the
 !> last correction started from). A correction is linear in q, the strains are not: an
 !> iterate q^{k+1} carries besides the strain change B(q^k) dq the second-order part of
-!> it, and with EA >> tension that part sets the stress: on the paper's case 1 the
-!> first iterate of a step had an axial strain of 1.5e-4 at mid-span against 1.5e-6 at
-!> the converged step (an EMC axial force of 6.1e4 N against 471 N). A tangent formed
-!> there has stress terms a hundredfold off, and the reused-tangent iterations after it
-!> contract slowly. With the base given, every stress term of the tangent (the geometric
+!> it, and with EA >> tension that part sets the stress: an early iterate's axial
+!> strain can be orders of magnitude above the converged one. A tangent formed there
+!> has stress terms far off, and the reused-tangent iterations after it contract
+!> slowly. With the base given, every stress term of the tangent (the geometric
 !> sums and the projection's q-forces) takes instead the stress of the strain linearized
 !> from the base,
 !>   eps_lin = eps(q^k) + B(q^k) (q^{k+1} - q^k)_lin = eps(q_l) - eps2(dq_l) (+ e3),
@@ -27,8 +27,8 @@
 !> point stresses being unknowns of their own: eliminated point by point, that
 !> iteration has the same residual and the same material part as this one and differs
 !> only in the stress of the stress terms. The converged step does not change (the
-!> residual is untouched); only the iterates do. Measured on the paper's case 1 (20 s):
-!> 934 iterations and 199 tangents against 1405 and 204.
+!> residual is untouched); only the iterates do, and in fewer iterations
+!> (docs/theory.md eq. (44)).
 module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha

@@ -1,4 +1,5 @@
-!> The director rod element (formulation note sections 1-2; Betsch & Steinmann 2002).
+!> The director rod element (docs/theory.md sections 2 and 4, eqs. (4)-(31); Betsch &
+!> Steinmann 2002).
 !>
 !> Per node a the configuration is q_a = (x_a, d1_a, d2_a, d3_a) and the unknown is
 !> u_a = (dx_a, dtheta_a) with d_i <- cay(dtheta) d_i. Everything is interpolated with
@@ -12,10 +13,8 @@
 !> Gauss points. Order 3 integrates extension, bending and torsion at 3 points and the
 !> shear strains Gamma1, Gamma2 at 4 points: at 3 points one director pattern per
 !> element (a wiggle vanishing at the points) is held by EI alone, and on a
-!> cable-dominated line (EI << T le^2) Newton then ping-pongs and fails. Measured
-!> (docs/element.md): a 1000 m mooring line from its catenary converges in 3 iterations
-!> instead of not at all; the paper's cable with 10 elements lies 8.0e-5 m from the
-!> 80-element shape instead of 3.5e-5 m.
+!> cable-dominated line (EI << T le^2) Newton then ping-pongs and fails; the 4 shear
+!> points remove that pattern (docs/element.md; docs/theory.md eq. (21)).
 !>
 !> Forces are first formed as gradients with respect to q ("q-forces", 12 per node) and
 !> then projected onto the 6 unknowns with the null-space matrix P(d):
@@ -163,7 +162,8 @@ contains
    end subroutine rod_gp_qforce_shear
 
 
-   !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3) (note section 1).
+   !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3), docs/theory.md
+   !> eqs. (4)-(5).
    pure function rod_strains(kin) result(eps)
       type(rod_gp_t), intent(in) :: kin !< fields at the point
       real(wp) :: eps(6)
@@ -179,7 +179,8 @@ contains
    end function rod_strains
 
    !> Add wj * B(q)^T s to the q-forces: the gradient of wj s.eps with respect to the
-   !> nodal x_a and d_ia, with B = d eps / d q evaluated at kin.
+   !> nodal x_a and d_ia, with B = d eps / d q evaluated at kin (docs/theory.md eqs.
+   !> (22)-(23)).
    pure subroutine rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -211,7 +212,8 @@ contains
       end associate
    end subroutine rod_gp_qforce
 
-   !> Projected strain Jacobian bt = B P(dnode): the change of eps at the point for
+   !> Projected strain Jacobian bt = B P(dnode) (docs/theory.md eq. (25)): the change of
+   !> eps at the point for
    !> u_b = (dx_b, dtheta_b), with nodal directors varied as dd_ib = dtheta_b x dnode_ib
    !> (rod_gp_jacobian_row, row by row).
    pure subroutine rod_gp_jacobian(nen, n, dn, kin, dnode, bt)
@@ -266,8 +268,9 @@ contains
    end subroutine rod_gp_jacobian_row
 
    !> Add wj * P(dl)^T [sum_k s_k d2 eps_k / dq dq] P(dr) to ke: the stress (geometric)
-   !> stiffness at one point. The strains are quadratic, so the second derivatives are
-   !> constant blocks (identity times shape-function products). With P(d) = -skew(d):
+   !> stiffness at one point (docs/theory.md eq. (27)). The strains are quadratic, so the
+   !> second derivatives are constant blocks (identity times shape-function products). With
+   !> P(d) = -skew(d):
    !>   x_a - theta_b:      -dN_a N_b skew(sum_k s_k dr_kb)
    !>   theta_a - x_b:       N_a dN_b skew(sum_k s_k dl_ka)
    !>   theta_a - theta_b:  (dN_a N_b - N_a dN_b)/2 (tr(M) I - M),  M = Dr_b S^T Dl_a^T
@@ -338,7 +341,8 @@ contains
       end do
    end subroutine rod_gp_geometric
 
-   !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di.
+   !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di
+   !> (docs/theory.md eqs. (12), (24)).
    pure subroutine rod_project_qforce(nen, fq, dnode, fe)
       integer, intent(in) :: nen               !< nodes of the element
       real(wp), intent(in) :: fq(3, 4, nen)    !< q-forces
@@ -353,7 +357,8 @@ contains
    end subroutine rod_project_qforce
 
    !> Add scale * sum_i [d_i f_di^T - (f_di . d_i) I] to the rotation diagonal blocks:
-   !> the change of the projection d_i x f_di when d_i rotates with the increment.
+   !> the change of the projection d_i x f_di when d_i rotates with the increment
+   !> (docs/theory.md eq. (26), last term).
    pure subroutine rod_rotation_geometric(nen, fq, dnode, scale, ke)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: fq(3, 4, nen)      !< q-forces
@@ -379,7 +384,7 @@ contains
    end subroutine rod_rotation_geometric
 
    !> Internal force and consistent tangent of one element in statics: the projected
-   !> gradient of the stored energy and its derivative (note sections 2 and 3, statics).
+   !> gradient of the stored energy and its derivative (docs/theory.md eqs. (21)-(27)).
    pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k, rule)
       integer, intent(in) :: p                     !< element order
       real(wp), intent(in) :: le                   !< unstretched element length [m]
@@ -504,7 +509,8 @@ contains
       end do
    end subroutine rod_hidden_shear
 
-   !> Stress resultants at the p reduced Gauss points (where results are reported):
+   !> Stress resultants at the p reduced Gauss points (where results are reported;
+   !> docs/theory.md eq. (30)):
    !> res = (N1, N2, N3, M1, M2, M3) with N = C (eps - eps0); for order 3 the shear
    !> forces N1, N2 are interpolated from the 4 points where shear is integrated. The
    !> effective tension is the spatial contact force n = N_i d_i along the centreline
@@ -651,7 +657,8 @@ contains
       end do
    end subroutine rod_element_fields
 
-   !> Consistent nodal forces of a uniform line load q [N/m]: f_a = q int N_a dS,
+   !> Consistent nodal forces of a uniform line load q [N/m] (docs/theory.md eq. (28)):
+   !> f_a = q int N_a dS,
    !> integrated exactly with p+1 Gauss points.
    pure subroutine rod_element_line_load(p, le, q, fa)
       integer, intent(in) :: p              !< element order
@@ -670,8 +677,8 @@ contains
       end do
    end subroutine rod_element_line_load
 
-   !> Row-sum lumped translational mass of one element: m_a = rhoA int N_a dS (note
-   !> section 2). The same weights serve the director inertias E11, E22.
+   !> Row-sum lumped translational mass of one element: m_a = rhoA int N_a dS
+   !> (docs/theory.md eq. (29)). The same weights serve the director inertias E11, E22.
    pure subroutine rod_element_lumped_mass(p, le, rhoa, ma)
       integer, intent(in) :: p              !< element order
       real(wp), intent(in) :: le            !< unstretched element length [m]

@@ -1,5 +1,5 @@
-!> Cross-section properties: the constitutive matrix of the rod (formulation note
-!> section 1) and the defaults derived from the deck's values.
+!> Cross-section properties: the constitutive matrix of the rod (docs/theory.md eq. (6))
+!> and the defaults derived from the deck's values (eq. (10)).
 module rodyn_section
    use rodyn_kinds, only: wp
    use rodyn_model, only: section_t

@@ -1,5 +1,5 @@
 !> Lagrange shape functions of order 1-3 on equally spaced nodes in xi in [-1, 1], and
-!> Gauss-Legendre rules (formulation note section 2). Element nodes are numbered along
+!> Gauss-Legendre rules (docs/theory.md eqs. (19)-(21)). Element nodes are numbered along
 !> the line: node 1 at xi = -1, node p+1 at xi = +1.
 module rodyn_shape
    use rodyn_kinds, only: wp

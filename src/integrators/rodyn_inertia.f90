@@ -1,4 +1,4 @@
-!> Lumped inertia of the director rod (formulation note sections 1-2): kinetic energy
+!> Lumped inertia of the director rod (docs/theory.md eqs. (9), (29), (41)-(42)): kinetic energy
 !> T = 1/2 sum_a [m_a |v_a|^2 + M1_a |d1dot_a|^2 + M2_a |d2dot_a|^2], row-sum lumped from
 !> rhoA and the director inertias E11 = rhoI2 (for d1), E22 = rhoI1 (for d2); d3 carries
 !> none. The mass matrix is constant: all nonlinearity is in the stiffness.
@@ -88,7 +88,7 @@ contains
    end function linear_momentum
 
    !> Total angular momentum about the origin, J = sum x x m v + sum_i d_i x M_i d_i_dot
-   !> (note section 3) [kg m2/s].
+   !> (docs/theory.md eq. (42): what the EMC scheme conserves) [kg m2/s].
    pure function angular_momentum(inert, state) result(j)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< configuration and velocities

@@ -1,4 +1,5 @@
-!> The sea around the lines (docs/water.md): still water level, the seabed plane and the
+!> The sea around the lines (docs/water.md; docs/theory.md eqs. (80)-(81), (94)-(95)):
+!> still water level, the seabed plane and the
 !> water's kinematics. Everything a load needs to know of the water at a point and time
 !> comes through fluid_kinematics, so that waves only add to it.
 !>

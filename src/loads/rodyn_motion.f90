@@ -1,5 +1,6 @@
 !> Time functions of a dynamic run: prescribed motions of held nodes (harmonic per
-!> direction or a displacement table, times a smooth ramp-in) and load amplitudes.
+!> direction or a displacement table, times a smooth ramp-in) and load amplitudes
+!> (docs/theory.md eqs. (81), (102)-(106)).
 module rodyn_motion
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_model, only: motion_t, amplitude_t, motion_harmonic, motion_table, &

@@ -1,4 +1,5 @@
-!> Rigid-body motion of a vessel and of points fixed to it (issue 13, docs/vessels.md).
+!> Rigid-body motion of a vessel and of points fixed to it (docs/vessels.md;
+!> docs/theory.md eqs. (99)-(101)).
 !>
 !> Vessel axes: origin at the vessel's reference point (the RAO origin and RAO phase
 !> origin), x forward, y to port, z up; at rest the reference point is at O (global) and

@@ -1,4 +1,5 @@
-!> The water's and the seabed's loads on the whole mesh (docs/water.md): the point law
+!> The water's and the seabed's loads on the whole mesh (docs/water.md; docs/theory.md
+!> eqs. (72)-(75), (98)): the point law
 !> of rodyn_hydro integrated over each element with Gauss rules of p + 1 points, and the
 !> forces of the point attachments (buoyancy of their volume, drag on Cd A). One path
 !> for statics and dynamics: the caller gives the configuration at the force point and
@@ -11,9 +12,9 @@
 !> the normal force N = (k pen - c v.n) D is positive: gap + c/k v.n is a polynomial of
 !> degree p in xi; its roots in the element are found (sampling and bisection) and each
 !> part in contact is integrated with 4 Gauss points, exact for N N_a up to cubic
-!> elements (with the p + 1 rule alone the touchdown jumps from point to point: measured
-!> on the mooring leg with 40 quadratic elements, fairlead tension 1.0e-4 off against
-!> 1.1e-5). N vanishes at the roots, so their motion adds nothing to the tangent.
+!> elements (with the p + 1 rule alone the touchdown jumps from point to point, and the
+!> fairlead tension with it). N vanishes at the roots, so their motion adds nothing to
+!> the tangent.
 !> Only translational unknowns are loaded. A scene without *WATER builds nothing here.
 !> Waves (rodyn_waves, docs/waves.md): at the start of each time step the wave's
 !> elevation, velocity and acceleration are evaluated once per node, at the node's
@@ -214,8 +215,7 @@ contains
       end if
       ! a cubic element grounded over its whole length: its water rule (p + 1 = 4 Gauss
       ! points) is the seabed's, so water and seabed are taken together at each point
-      ! (one point law, one interpolation; mooring surge deck, 24 cubic cable elements:
-      ! 13 % fewer instructions a run)
+      ! (one point law, one interpolation)
       if (whole .and. wl%ng(p) == 4) then
          do g = 1, 4
             nn(1:nen) = wl%n(1:nen, g, p)
@@ -285,9 +285,8 @@ contains
       x = y(1:3)
       v = y(4:6)
       acc = y(7:9)
-      ! (one call: with a second one, for waves, this routine and water_element were no
-      ! longer inlined into assemble_water, and a run without waves took 5 % more
-      ! instructions; wk is read only when env%wave, and only by the water's part)
+      ! (one call, so that this routine and water_element stay inlined into
+      ! assemble_water; wk is read only when env%wave, and only by the water's part)
       if (wl%env%wave .and. iand(parts, part_water) /= 0) then
          wk = 0.0_wp
          do a = 1, nen
@@ -408,7 +407,8 @@ contains
       end function value_at
    end subroutine contact_parts
 
-   !> Water force on a point attachment (*ATTACHMENT): buoyancy rho_w g V of the
+   !> Water force on a point attachment (*ATTACHMENT; docs/theory.md eq. (74)): buoyancy
+   !> rho_w g V of the
    !> submerged fraction of a sphere of that volume, drag 1/2 rho_w Cd A |u_r| u_r; and
    !> with want_k its derivative with respect to x^{n+1} (c_x, c_v as in water_element).
    !> Its weight is in the gravity loads and its added mass in the inertia. In a wave

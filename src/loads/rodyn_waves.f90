@@ -1,4 +1,5 @@
-!> Linear (Airy) wave kinematics (docs/waves.md): a sea of components i, each of
+!> Linear (Airy) wave kinematics (docs/waves.md; docs/theory.md section 11, eqs.
+!> (82)-(93)): a sea of components i, each of
 !> amplitude A_i = H_i/2, angular frequency omega_i, heading beta_i and phase phi_i, on
 !> water of constant depth d below the still water level z_s. With z' = z - z_s and
 !>   theta_i = k_i (x cos beta_i + y sin beta_i) - omega_i t + phi_i,

@@ -5,7 +5,8 @@
 !>   V(S) = V0 + w S,  T(S) = sqrt(H^2 + V(S)^2)
 !> X is horizontal (along the span), Z upwards (against gravity); H is the horizontal
 !> tension and V0 the vertical tension component at A (positive upwards along the line).
-!> Used to start a line held at both ends (note section 5, zero-tension singularity) and
+!> Used to start a line held at both ends (docs/theory.md eqs. (112)-(115): a start free
+!> of the zero-tension singularity) and
 !> as the reference solution of the catenary verification test.
 !>
 !> With a grounded length (catenary_grounded): the lower end A lies on a horizontal

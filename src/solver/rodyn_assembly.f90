@@ -4,7 +4,8 @@
 !> Unknowns: 6 per node, dof first(a)+j-1: j = 1..3 translation, 4..6 spatial rotation;
 !> a node with cable elements only has the 3 translations (supports_t's dof map).
 !> A hinged node has its rotation unknowns expressed in the basis (axis, b, c) by an
-!> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T.
+!> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T
+!> (docs/theory.md eqs. (47)-(48)).
 module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
@@ -353,7 +354,7 @@ contains
    end subroutine assemble_water
 
    !> Internal force fint (6, nn) in global axes and, if want_k, the tangent assembled
-   !> into bm with the rotated nodes' bases applied (note section 3, statics). The
+   !> into bm with the rotated nodes' bases applied (docs/theory.md eqs. (21)-(27)). The
    !> stress-free strains enter scaled by eps0_scale (the static load factor, so that a
    !> built-in curvature is applied gradually; 1 at the end of the analysis).
    subroutine assemble_static(mesh, sup, state, eps0_scale, fint, bm, want_k)
@@ -425,7 +426,8 @@ contains
    !> Step internal force fint (6, nn) of a time-integration scheme between the states
    !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
    !> t_n+1 (rodyn_rod_dynamic), assembled as in assemble_static.
-   !> Stiffness-proportional Rayleigh damping (beta > 0) adds, element by element,
+   !> Stiffness-proportional Rayleigh damping (beta > 0; docs/theory.md eq. (40)) adds,
+   !> element by element,
    !> f_d = beta/dt K_e(q^{n+1/2}) du_e, du = (x^{n+1} - x^n, theta) with theta the rotation
    !> of the step (inverse Cayley of d^{n+1} d^n^T), K_e the element tangent at the
    !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
@@ -524,7 +526,7 @@ contains
    !> The cable elements' part of assemble_dynamic (same arguments; fint, fdamp and bm
    !> added to, after assemble_dynamic): a separate pass, so that the rod's element keeps
    !> being inlined into assemble_dynamic's loop (with the cable inside it, the compiler
-   !> stopped doing so and a dry rod's step cost 1.5 % more instructions).
+   !> does not inline it).
    subroutine assemble_dynamic_cables(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, &
                                       bm, want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh

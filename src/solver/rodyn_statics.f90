@@ -1,4 +1,4 @@
-!> Static equilibrium (formulation note section 3, "Statics"): residual
+!> Static equilibrium (docs/theory.md section 14, eqs. (107)-(111)): residual
 !> r = f_int(q) - f_ext(lambda) = 0 solved by Newton in load increments, each halved on
 !> failure up to a bounded depth.
 !>
@@ -20,7 +20,7 @@
 !> all transversely isotropic (GA1 = GA2, EI1 = EI2), with no rotation held at any node
 !> and no point moment, can roll about its own centreline, uniformly, without any
 !> change of energy: that roll is a null vector of the static tangent, and its
-!> round-off blew the Newton corrections up to thousands of radians. The iteration
+!> round-off would blow the Newton corrections up to thousands of radians. The iteration
 !> matrix of such a run (not its residual) gets the stiffness k_g d3 d3^T against
 !> rotation about d3 at one node, its middle one, k_g = max(EI, GJ)/le of an element
 !> there. The residual is unchanged and is orthogonal to the null vector, so each
@@ -30,9 +30,9 @@
 !> Self-weight is applied in full from the start on a line that starts as a catenary
 !> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda,
 !> and so is the line's buoyancy (sections and attachments): the weight in water is
-!> ramped, never the weight alone under full buoyancy, which on a free-hanging riser
-!> in a current floated the line up, flipped it, and converged to the unstable
-!> upside-down equilibrium.
+!> ramped, never the weight alone under full buoyancy, which can float a free-hanging
+!> riser in a current up, flip it, and converge to the unstable upside-down
+!> equilibrium.
 module rodyn_statics
    use rodyn_kinds, only: wp
    use rodyn_rotation, only: skew
@@ -251,7 +251,7 @@ contains
       this%d_base = this%state%d
    end subroutine static_save_base
 
-   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (note section 3).
+   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (docs/theory.md eq. (46)).
    subroutine static_apply_correction(this, alpha)
       class(static_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                  !< step length [-]
