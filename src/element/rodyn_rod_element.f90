@@ -58,6 +58,7 @@ module rodyn_rod_element
 contains
 
    !> Quadrature and shape functions of order p (rod_quadrature, shape_lagrange).
+   !> docs/theory.md eqs. (19), (21).
    pure function rod_rule(p) result(rule)
       integer, intent(in) :: p !< element order
       type(rod_rule_t) :: rule
@@ -73,6 +74,7 @@ contains
    !> Quadrature of the stored energy of an element of order p: np points, parent
    !> coordinates xi, weights w, and mask(k, g) = 1 where strain k is integrated at
    !> point g. The first p points are the reduced Gauss points where results are given.
+   !> docs/theory.md eq. (21).
    pure subroutine rod_quadrature(p, np, xi, w, mask)
       integer, intent(in) :: p                   !< element order
       integer, intent(out) :: np                 !< number of points
@@ -94,6 +96,7 @@ contains
    end subroutine rod_quadrature
 
    !> Interpolate x', d_i, d_i' at a point from nodal values.
+   !> docs/theory.md eq. (20).
    pure subroutine rod_gp_kinematics(nen, n, dn, xe, de, kin)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -132,6 +135,7 @@ contains
    end subroutine rod_gp_kinematics_shear
 
    !> Shear strains (Gamma1, Gamma2) of a shear-only point.
+   !> docs/theory.md eq. (4).
    pure function rod_strains_shear(kin) result(eps)
       type(rod_gp_t), intent(in) :: kin !< fields at the point (rod_gp_kinematics_shear)
       real(wp) :: eps(2)
@@ -141,6 +145,7 @@ contains
 
    !> rod_gp_qforce for stresses (N1, N2, 0, 0, 0, 0): on x_a wj dN_a (N1 d_1 + N2 d_2),
    !> on d_ka wj N_a N_k x' (k = 1, 2), nothing on d_3a.
+   !> docs/theory.md eqs. (22)-(23).
    pure subroutine rod_gp_qforce_shear(nen, n, dn, kin, s, wj, fq)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -238,6 +243,7 @@ contains
    !>     dtheta_b: dnode_ib x g_i + dnode_jb x g_j,
    !>     g_i = (dN_b d_j - N_b d_j')/2,  g_j = (N_b d_i' - dN_b d_i)/2.
    !> A shear row (k = 1, 2) reads x' and d_1, d_2 only (rod_gp_kinematics_shear).
+   !> docs/theory.md eq. (25).
    pure subroutine rod_gp_jacobian_row(nen, n, dn, kin, dnode, k, row)
       integer, intent(in) :: nen               !< nodes of the element
       real(wp), intent(in) :: n(nen)           !< shape functions
@@ -441,6 +447,7 @@ contains
 
    !> Strains at the quadrature points of one element (the first p are the reduced
    !> Gauss points where results are reported); also used for the stress-free eps0.
+   !> docs/theory.md eqs. (4)-(5), (8).
    pure subroutine rod_element_strains(p, le, xe, de, eps, xig)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
@@ -572,6 +579,7 @@ contains
    end subroutine rod_element_resultants
 
    !> Stored energy of one element, sum over points of wj/2 (eps-eps0).C(eps-eps0) [J].
+   !> docs/theory.md eq. (21).
    pure function rod_element_energy(p, le, c, eps0, xe, de) result(energy)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
@@ -609,6 +617,7 @@ contains
    !> The stored energy W = 1/2 sum_g w_g (le/2) (eps - eps0)^T C (eps - eps0) of an
    !> element from its strains at the points (rod_element_fields), and its round-off
    !> scale sum_g w_g (le/2) |C (eps - eps0)| (rod_element_energy_scale).
+   !> docs/theory.md eq. (21).
    pure subroutine rod_energy_of_strains(le, c, eps0, eps, rule, energy, scale)
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)

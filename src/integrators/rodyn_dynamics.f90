@@ -122,6 +122,7 @@ module rodyn_dynamics
 contains
 
    !> Build supports, loads, inertia and the workspace; state holds the start (t = 0).
+   !> docs/theory.md eq. (56) (ALPHA parameters).
    subroutine dynamics_setup(prob, model, mesh, state)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       type(model_t), intent(in), target :: model     !< model
@@ -334,6 +335,7 @@ contains
    !> Stored energy of the whole mesh in state s [J] and its round-off scale [J]
    !> (rod_element_energy_scale, cable_element_energy_scale); with gp and eps, the rods'
    !> fields and strains at their points are left there (rod_element_fields).
+   !> docs/theory.md eq. (21), (61).
    subroutine mesh_strain_energy(mesh, s, w, scale, gp, eps)
       type(mesh_t), intent(in) :: mesh                       !< mesh
       type(state_t), intent(in) :: s                         !< configuration
@@ -392,6 +394,7 @@ contains
    !> r1 = c (q1 - q0) - r0 over n values: the rates of the trapezoidal rule, c = 2/dt
    !> (explicit shapes, as copy_values: the compiler then knows the arrays do not overlap
    !> and vectorises the loop)
+   !> docs/theory.md eq. (33).
    pure subroutine trapezoidal_rate(n, c, q1, q0, r0, r1)
       integer, intent(in) :: n       !< values
       real(wp), intent(in) :: c      !< 2/dt [1/s]
@@ -403,6 +406,7 @@ contains
    end subroutine trapezoidal_rate
 
    !> Residual (and tangent): step internal force, inertia, damping, supports.
+   !> docs/theory.md eqs. (37)-(40), (59)-(60).
    subroutine dyn_evaluate(this, want_k, err)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                   !< form the tangent
@@ -519,6 +523,7 @@ contains
    !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest). The
    !> acceleration at t_n (generalized-alpha only: the other schemes' states hold
    !> none) is node's, of its position (i = 0) or of its director i.
+   !> docs/theory.md eqs. (39), (59).
    pure function inertia_rest(this, v0, node, i) result(g)
       type(dynamic_problem_t), intent(in) :: this !< problem (scheme, step, state at t_n)
       real(wp), intent(in) :: v0(3) !< velocity at t_n
@@ -557,6 +562,7 @@ contains
    end subroutine dyn_save_base
 
    !> x = x^n + dx, dx = dx_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.
+   !> docs/theory.md eqs. (32), (46).
    subroutine dyn_apply_correction(this, alpha)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                   !< step length [-]
@@ -629,6 +635,7 @@ contains
    !> The velocity and acceleration of the trapezoidal rule over n values, v = dx/dt and
    !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: the loops
    !> vectorise).
+   !> docs/theory.md eq. (72).
    pure subroutine trapezoidal_motion(n, dt, dx, v0, v, a)
       integer, intent(in) :: n       !< values
       real(wp), intent(in) :: dt     !< step [s]

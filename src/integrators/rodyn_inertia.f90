@@ -23,6 +23,7 @@ module rodyn_inertia
 contains
 
    !> Lump rhoA, E11 = rhoI2 and E22 = rhoI1 element by element.
+   !> docs/theory.md eqs. (29), (75).
    subroutine inertia_build(model, mesh, inert)
       type(model_t), intent(in) :: model     !< model (sections)
       type(mesh_t), intent(in) :: mesh       !< mesh
@@ -60,6 +61,7 @@ contains
    end subroutine inertia_build
 
    !> Kinetic energy [J].
+   !> docs/theory.md eq. (41).
    pure function kinetic_energy(inert, state) result(t)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities
@@ -76,6 +78,7 @@ contains
    end function kinetic_energy
 
    !> Total linear momentum sum m v [kg m/s].
+   !> docs/theory.md eq. (42).
    pure function linear_momentum(inert, state) result(p)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities

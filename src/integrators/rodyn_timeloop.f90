@@ -67,6 +67,7 @@ module rodyn_timeloop
 contains
 
    !> Energies and momenta of the iterate state into log (work terms untouched).
+   !> docs/theory.md eqs. (41)-(42).
    subroutine step_energies(prob, log)
       type(dynamic_problem_t), intent(in) :: prob !< problem
       type(step_log_t), intent(inout) :: log      !< filled
@@ -95,6 +96,7 @@ contains
    end subroutine other_energies
 
    !> Work of supports and point loads, and work of damping, over the step just solved.
+   !> docs/theory.md eq. (43).
    subroutine step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
       type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
       real(wp), intent(out) :: w_ext              !< external work [J]
@@ -145,6 +147,7 @@ contains
    !> the step after it forms a new tangent: a run continued from the checkpoint holds
    !> no factorised tangent, so both runs take the same iterates (tangent reuse makes
    !> the iterate depend on the tangent held).
+   !> docs/theory.md sections 5-7.
    subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
                            after_step, on_checkpoint, resume)
       type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
@@ -388,6 +391,7 @@ contains
    !> in a small vibration under a large prestress it is not small against the energy
    !> exchanged, and without it a sound step would be taken for a spurious root (a taut
    !> wire vibrating at 1e-4 of its length).
+   !> docs/theory.md eq. (43).
    function residual_work(prob) result(b)
       type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
       real(wp) :: b

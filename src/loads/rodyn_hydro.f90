@@ -95,6 +95,7 @@ contains
    !> Water and seabed force per unstretched length at a point (module header): fh from
    !> the water, fs from the seabed; with want_k their derivatives with respect to the
    !> position x, the tangent x', the velocity v and the acceleration a of the line.
+   !> docs/theory.md eqs. (68)-(71), (96)-(97).
    pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k, &
                                     parts, wk)
       type(water_env_t), intent(in) :: env      !< environment

@@ -70,6 +70,7 @@ module rodyn_water
 contains
 
    !> Section constants, Gauss rules and attachment nodes of a scene in water.
+   !> docs/theory.md eq. (67).
    subroutine water_loads_build(model, mesh, wl)
       type(model_t), intent(in) :: model      !< model
       type(mesh_t), intent(in) :: mesh        !< mesh
@@ -140,6 +141,7 @@ contains
    !> and friction on in dynamics; with waves and the nodes' x and v at the start of the
    !> step, the wave kinematics at each node's predicted force point x + h v (module
    !> header), once per node and step.
+   !> docs/theory.md eq. (73).
    subroutine water_set_time(wl, t, dynamic, x, v, h)
       type(water_loads_t), intent(inout) :: wl   !< loads
       real(wp), intent(in) :: t                  !< force time [s]
@@ -161,6 +163,7 @@ contains
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
    !> tangent of their sum with respect to x^{n+1} (module header).
+   !> docs/theory.md eqs. (72)-(73), (98).
    pure subroutine water_element(wl, ws, p, le, q, cx, cv, ca, fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
@@ -253,6 +256,7 @@ contains
 
    !> Add the load at one point (shape functions nn, their S-derivatives ds, weight wj)
    !> to the element vectors and matrix (module header).
+   !> docs/theory.md eq. (73).
    pure subroutine water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, parts, &
                                    fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
@@ -325,6 +329,7 @@ contains
    !>   p = 3: b_1 = (-5 g_1 + 18 g_2 - 9 g_3 + 2 g_4)/6, b_2 = (2 g_1 - 9 g_2 + 18 g_3 - 5 g_4)/6;
    !> b_0 = g_1 and b_p = g_(p+1). The polynomial lies between min b and max b on [-1, 1]
    !> (Farin, "Curves and Surfaces for CAGD", 5th ed., 2002, section 5.1: convex hull).
+   !> docs/theory.md eq. (98).
    pure subroutine bernstein_of_nodal(p, g, b)
       integer, intent(in) :: p          !< order (1 to 3)
       real(wp), intent(in) :: g(:)      !< (p+1) nodal values
@@ -341,6 +346,7 @@ contains
 
    !> The intervals [lo, hi] of xi in [-1, 1] where the polynomial sum N_a(xi) g_a is
    !> negative: sign changes at 8p + 1 sample points, each root refined by bisection.
+   !> docs/theory.md eq. (98).
    pure subroutine contact_parts(p, gn, nparts, lo, hi)
       integer, intent(in) :: p              !< element order
       real(wp), intent(in) :: gn(:)         !< (p+1) nodal values [m]

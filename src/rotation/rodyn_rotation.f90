@@ -24,6 +24,7 @@ contains
    end function cross
 
    !> Skew-symmetric matrix: skew(v) w = v x w.
+   !> docs/theory.md eq. (13).
    pure function skew(v) result(s)
       real(wp), intent(in) :: v(3) !< axial vector
       real(wp) :: s(3, 3)
@@ -33,6 +34,7 @@ contains
    end function skew
 
    !> Axial vector of the skew-symmetric part: axial(A) = vee((A - A^T)/2).
+   !> docs/theory.md eq. (13).
    pure function axial(a) result(v)
       real(wp), intent(in) :: a(3, 3) !< any 3x3 matrix
       real(wp) :: v(3)
@@ -123,6 +125,7 @@ contains
    end function rotation_exp
 
    !> Logarithm of a rotation: phi with exp(phi) = R, |phi| in [0, pi].
+   !> docs/theory.md eq. (18).
    pure function rotation_log(r) result(phi)
       real(wp), intent(in) :: r(3, 3) !< rotation matrix
       real(wp) :: phi(3)

@@ -68,6 +68,7 @@ contains
    !> Replace the chord step f (in) by the accelerated correction s_k (out), and record
    !> the pair for the next iteration. The caller applies f in full (no line search).
    !> Only the new column's Gram row is computed; the others are kept.
+   !> docs/theory.md eq. (53).
    pure subroutine anderson_step(aa, f)
       type(anderson_t), intent(inout) :: aa !< history
       real(wp), intent(inout) :: f(:)       !< chord step in, correction out

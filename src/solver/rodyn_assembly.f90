@@ -215,6 +215,7 @@ contains
 
    !> Load vectors: consistent self-weight m g int N_a dS (m with the contents) plus the
    !> weight of the attachments at their nodes, and the point loads with their amplitudes.
+   !> docs/theory.md eq. (28).
    subroutine loads_build(model, mesh, loads)
       type(model_t), intent(in) :: model  !< model
       type(mesh_t), intent(in) :: mesh    !< mesh
@@ -259,6 +260,7 @@ contains
    !> External force at time t and load factor lam: gravity scaled per line by
    !> gfac(line), point loads by lam a(t) (a their amplitude, 1 without). Statics is
    !> t = 0; a time step passes its force time and lam = gfac = 1.
+   !> docs/theory.md eqs. (28), (106), (109).
    pure subroutine external_force(mesh, loads, gfac, lam, t, fext)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(loads_t), intent(in) :: loads      !< loads
@@ -284,6 +286,7 @@ contains
    !> from the matrix; xf, vf, af the nodes' positions, velocities and accelerations at
    !> the force point, moving with the unknowns by cx, cv, ca. The nodal forces are kept
    !> in wl%fh (water) and wl%fs (seabed).
+   !> docs/theory.md eq. (73).
    subroutine assemble_water(wl, mesh, sup, xf, vf, af, cx, cv, ca, fint, bm, want_k)
       type(water_loads_t), intent(inout) :: wl !< loads (nodal forces updated)
       type(mesh_t), intent(in) :: mesh         !< mesh
@@ -624,6 +627,7 @@ contains
    end subroutine add_node_block
 
    !> k <- T^T k T on the rotation rows and columns of element node a.
+   !> docs/theory.md eq. (48).
    pure subroutine rotate_rows_cols(k, a, t)
       real(wp), intent(inout) :: k(:, :) !< element matrix
       integer, intent(in) :: a           !< element node
@@ -652,6 +656,7 @@ contains
    !> The columns K_fk of moved nodes are kept when the tangent is formed (want_k), so
    !> that a later residual-only evaluation, solved with a reused tangent, moves its gaps
    !> the same way.
+   !> docs/theory.md eq. (47).
    subroutine apply_supports(sup, r, gap, rhs, bm, want_k)
       type(supports_t), intent(in) :: sup   !< supports
       real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
@@ -699,6 +704,7 @@ contains
    !> elements of a line that can roll freely, its middle node and stiffness; node 0 after
    !> the last. With roll_inertia (dynamics: (nn) the inertia of a node's roll, that of
    !> its d1 and d2), a run whose nodes have any is not free: its roll has inertia.
+   !> docs/theory.md eq. (111).
    subroutine roll_gauges(mesh, sup, loads, gauge_node, gauge_k, roll_inertia)
       type(mesh_t), intent(in) :: mesh              !< mesh
       type(supports_t), intent(in) :: sup           !< supports
@@ -751,6 +757,7 @@ contains
 
    !> Add each roll gauge's k_g d3 d3^T to the rotation block of its node (d3 of the
    !> configuration the matrix is formed at); the residual is not touched.
+   !> docs/theory.md eq. (111).
    subroutine add_roll_gauges(sup, gauge_node, gauge_k, d, bm)
       type(supports_t), intent(in) :: sup      !< supports (dof map, node bases)
       integer, intent(in) :: gauge_node(:)     !< node of each gauge, 0 after the last

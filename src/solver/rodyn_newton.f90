@@ -136,6 +136,7 @@ contains
    !> stats (the caller cuts the step); err is set only for a failure that a smaller
    !> step cannot cure (never: singular tangents and NaN are also returned as
    !> non-convergence, with the reason in err for the caller to log or raise).
+   !> docs/theory.md eqs. (45)-(53).
    subroutine newton_solve(prob, opts, stats, err)
       class(newton_problem_t), intent(inout) :: prob !< problem, configuration updated
       type(newton_options_t), intent(in) :: opts     !< controls

@@ -1,6 +1,7 @@
 !> Results of a solved configuration, per line: node positions, stress resultants and
 !> curvatures at the reduced integration points (rod_element_resultants), and the
 !> support reactions at the ends (R = f_int - f_ext at a held node).
+!> docs/theory.md eqs. (30)-(31), (77)-(79).
 module rodyn_recovery
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t

@@ -112,6 +112,7 @@ contains
    !> vessel at rest to the same vessel point with the vessel at its offset,
    !>   X = O + offset_1:3 + Rz(psi0 + offset_psi) p,  p = Rz(psi0)^T (x - O),
    !> and a clamped one (rotations held) is turned by Rz(lam offset_psi) with it.
+   !> docs/theory.md eqs. (103), (105).
    pure subroutine vessel_offsets(model, mesh, state, sup, turn_node, turn_psi, turn_d)
       type(model_t), intent(in) :: model         !< model
       type(mesh_t), intent(in) :: mesh           !< mesh
@@ -145,6 +146,7 @@ contains
    !> Set the load factor lam and the factor cur on the current's velocity: external
    !> forces and the prescribed positions of held nodes (reached by the next Newton step,
    !> see apply_supports).
+   !> docs/theory.md eq. (109) and the list above it.
    subroutine static_set_load_factor(prob, lam, cur)
       type(static_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: lam                   !< load factor [-]
@@ -170,6 +172,7 @@ contains
 
    !> Residual r = f_int - f_water - f_ext - (1 - lambda) r_0 (module header) and, if
    !> want_k, its tangent; the supports applied (apply_supports).
+   !> docs/theory.md eqs. (107)-(108).
    subroutine static_evaluate(this, want_k, err)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< form the tangent
@@ -203,6 +206,7 @@ contains
 
    !> r = f_int - f_ext - (1 - lambda) r0(u), the start's moments turned with their
    !> node, and (want_k) their tangent and the roll gauges (module header).
+   !> docs/theory.md eqs. (108), (111).
    subroutine homotopy_and_gauge(this, want_k)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< add to the tangent
@@ -272,6 +276,7 @@ contains
    !> so no stiffness against swinging about its top: the first Newton step under a
    !> drag load across it turned it by thousands of radians, and the solve ended in the
    !> upside-down equilibrium. With its weight in full first the line is taut.
+   !> docs/theory.md eqs. (109)-(110).
    subroutine statics_solve(prob, model, summary, err, log_unit)
       type(static_problem_t), intent(inout) :: prob !< set-up problem
       type(model_t), intent(in) :: model            !< model (static options)
