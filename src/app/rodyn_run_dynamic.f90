@@ -277,8 +277,8 @@ contains
    !> waiting there, with the same forces): the step
    !> force of step k belongs to its force point t_{k-1} + w h_k (w = 1/2, or 1 - alpha_f
    !> with SCHEME=ALPHA), so written at t_k it would lag by (1 - w) h_k (a first-order
-   !> error in time: 7 % of the top tension's dynamic range on the paper's case 1 at
-   !> dt = 0.1 s against a converged run; linearly interpolated as here, 0.6 %). With the
+   !> error in time, a visible fraction of the top tension's dynamic range at the paper's
+   !> dt = 0.1 s; the interpolation removes most of it). With the
    !> step after the frame (next: its force in prob%r, its length prob%dt) the value is
    !> interpolated between the two force points,
    !>   R(t_k) = R_k + (R_{k+1} - R_k) (1 - w) h_k / ((1 - w) h_k + w h_{k+1}),

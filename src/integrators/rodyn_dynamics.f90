@@ -110,7 +110,7 @@ module rodyn_dynamics
       logical :: fields0 = .false.              !< gp0 and epsn are used
       !> gp0 and epsn hold the fields of s1 (dynamics_strain_energy, on a converged
       !> step) and, once the step is accepted, of the next step's t_n: the energy pass
-      !> and the next step's fields are one pass (paper's case 1, 20 s: 1.5 % of a run)
+      !> and the next step's fields are one pass over the rods, not two
       logical :: fields_s1 = .false.
       logical :: fields_next = .false.
    contains

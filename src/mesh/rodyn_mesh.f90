@@ -482,9 +482,9 @@ contains
    !> A configuration refused when an element of order 3 of a rod line has taken the
    !> spurious shape of its selective quadrature (rod_hidden_shear): shear strain above
    !> hidden_max at its extension points and more than ten times the largest at its shear
-   !> points. Such a shape zig-zags at touch-down; found on the mooring surge deck as a
-   !> rod of EI = 10 N m2 with 26 cubic elements, whose statics converged to it and whose
-   !> dynamics then read a fairlead tension 34 % low (docs/element.md, "Known limits").
+   !> points. Such a shape zig-zags at touch-down, and a run that reaches it reads a far
+   !> too low fairlead tension (a chain of small EI as cubic rods: docs/element.md,
+   !> "Known limits"; tests/program/surge_rod_static.inp).
    !> Returns the reason (empty: none). Statics checks its solution, dynamics each frame.
    function mesh_spurious_shape(model, mesh, state) result(why)
       type(model_t), intent(in) :: model   !< model (line names)

@@ -668,7 +668,7 @@ contains
       logical :: uni
       uni = sup%uniform
       ! 6 unknowns a node unless the map says otherwise: then rhs is r as one sequence
-      ! (copy_values: the node by node copy took 1.1 % of the peers' case-4 run)
+      ! (copy_values: one vector move instead of a node by node copy)
       if (uni) call copy_values(size(r), r, rhs)
       do node = 1, size(r, 2)
          k = 6*(node - 1)

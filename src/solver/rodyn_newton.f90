@@ -247,9 +247,8 @@ contains
          ! the same floor reached earlier: a full correction within DISP TOL that did not
          ! even halve a residual already within 100 FORCE TOL. The residual that round-off
          ! leaves grows with the element count (strains from coordinate differences over
-         ! ever shorter elements): on the paper's cable, cubic elements, dt = 0.015 s,
-         ! 1.9e-8, 7e-8 and 2.2e-7 for 300, 1000 and 3000 elements, where the round-off
-         ! rule above took one or two iterations more (and new tangents) to end each step
+         ! ever shorter elements); on fine meshes the round-off rule above alone would take
+         ! one or two iterations more (and new tangents) to end each step
          if (alpha == 1.0_wp .and. cn <= opts%disp_tol .and. rn > 0.5_wp*rn_prev) then
             if (at_floor(rn)) then
                if (opts%log_unit >= 0) write (opts%log_unit, '(4x,a)') &
