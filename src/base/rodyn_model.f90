@@ -1,6 +1,7 @@
 !> The analysis model as read from the deck: parameters fixed for the whole run.
 !> Everything here has a documented default; the deck reader fills it, the mesh and
-!> solvers read it and never change it (data separated by lifetime, as in BeamDyn).
+!> solvers read it and never change it (data separated by lifetime, as in BeamDyn;
+!> docs/architecture.md). The symbols of its components are those of docs/theory.md.
 module rodyn_model
    use rodyn_kinds, only: wp, g_standard
    implicit none

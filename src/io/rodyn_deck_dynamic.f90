@@ -45,7 +45,7 @@ contains
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
    !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme
-   !> (formulation note, sections 3 and 4), Newton controls and the checkpoint interval.
+   !> (docs/theory.md sections 5 and 7), Newton controls and the checkpoint interval.
    !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8
    !> (1 otherwise: no numerical damping).
    subroutine read_dynamic_card(deck, ic, model, pend, err)

@@ -489,7 +489,7 @@ contains
       row = ''
       ! every row begins 'file | key |' (test_output's test_schema_rows_found holds the
       ! table to it): compared in place, not field by field (cutting every row's fields
-      ! out took a tenth of a one-step run's instructions)
+      ! out would cost a good part of a short run)
       needle = file//' | '//key//' |'
       if (len(needle) > row_len) return
       do k = 1, size(output_datasets)

@@ -1,6 +1,7 @@
 !> Finite element mesh of the lines: nodes, elements, arc lengths, section stiffness,
 !> the stress-free strains at the integration points and the initial configuration
-!> (formulation note section 2; section 5 for the catenary start).
+!> (docs/theory.md eqs. (8), (19)-(21); section 14, eqs. (112)-(115), for the catenary
+!> start).
 !>
 !> Nodes of all lines are numbered consecutively, line after line, each line from
 !> end A (S = 0) to end B (S = L); an element of order p has p+1 equally spaced nodes.
@@ -427,10 +428,9 @@ contains
       !> moves it
       !> (supports_build). With the touchdown inside an element the jump of curvature
       !> there makes the interpolated x' miss the nodal tangents by ~1e-2, which the
-      !> shear and axial stiffness turn into start forces of 1e6 N; the homotopy of the
-      !> statics then drives the line on the seabed into compression (measured on the
-      !> mooring leg: 45, 50, 60 quadratic elements did not converge, 40 and 160, whose
-      !> nodes fall near the touchdown, did).
+      !> shear and axial stiffness turn into large start forces; the homotopy of the
+      !> statics can then drive the line on the seabed into compression and fail to
+      !> converge on meshes whose nodes fall away from the touchdown.
       subroutine snap_touchdown()
          real(wp) :: lbn, sn, vf, h, lo, hi, f
          integer :: kk, it
@@ -482,9 +482,9 @@ contains
    !> A configuration refused when an element of order 3 of a rod line has taken the
    !> spurious shape of its selective quadrature (rod_hidden_shear): shear strain above
    !> hidden_max at its extension points and more than ten times the largest at its shear
-   !> points. Such a shape zig-zags at touch-down; found on the mooring surge deck as a
-   !> rod of EI = 10 N m2 with 26 cubic elements, whose statics converged to it and whose
-   !> dynamics then read a fairlead tension 34 % low (docs/element.md, "Known limits").
+   !> points. Such a shape zig-zags at touch-down, and a run that reaches it reads a far
+   !> too low fairlead tension (a chain of small EI as cubic rods: docs/element.md,
+   !> "Known limits"; tests/program/surge_rod_static.inp).
    !> Returns the reason (empty: none). Statics checks its solution, dynamics each frame.
    function mesh_spurious_shape(model, mesh, state) result(why)
       type(model_t), intent(in) :: model   !< model (line names)

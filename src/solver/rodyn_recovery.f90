@@ -1,6 +1,7 @@
 !> Results of a solved configuration, per line: node positions, stress resultants and
 !> curvatures at the reduced integration points (rod_element_resultants), and the
 !> support reactions at the ends (R = f_int - f_ext at a held node).
+!> docs/theory.md eqs. (30)-(31), (77)-(79).
 module rodyn_recovery
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t
@@ -33,7 +34,8 @@ contains
 
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
-   !> In water (docs/water.md): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
+   !> In water (docs/water.md; docs/theory.md eqs. (77)-(79), where the sign convention
+   !> is discussed): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
    !> points, p_o = rho_w g (z_s - z) below the surface (0 above), p_i = p_ref + rho_i g
    !> (z_ref - z); the seabed's normal and friction force per length at the nodes (the
    !> point law at the node, tangent d3); the touchdown, the largest arc length where the
@@ -118,8 +120,7 @@ contains
    contains
       !> p_o A_o - p_i A_i at reduced point g of element e (order p, nodes xe) [N]: z
       !> with the rule's shape functions there (both resultant routines give the rule's
-      !> first p points; a frame of the mooring surge deck evaluated shape_lagrange and a
-      !> heap temporary for the node heights at each point before: 2.3 % of its run)
+      !> first p points; no shape_lagrange call and no heap temporary per point)
       real(wp) function pressure_term(e, g)
          integer, intent(in) :: e, g
          real(wp) :: z, gm, po, pi_
