@@ -284,8 +284,8 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                        'shear forces, columns N1 along d1, N2 along d2'),
                 '/static/LINE/torque': ('N m', 'torsional moment M3 about d3'),
                 '/static/LINE/wall_tension': ('N',
-                                              'wall (true) tension, T_eff + p_o A_o - p_i '
-                                              'A_i, positive in tension')},
+                                              'wall (true) tension, T_eff + p_i A_i - p_o '
+                                              'A_o, positive in tension')},
  'dynamic.h5': {'/deck': ('-', 'full text of the input deck, includes expanded'),
                 '/dynamic/LINE/bending_curvature': ('1/m',
                                                     'total bending curvature sqrt(K1^2 + '
@@ -341,8 +341,8 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                               'largest arc length in contact with the '
                                               'seabed, -1 when none; one value per frame'),
                 '/dynamic/LINE/wall_tension': ('N',
-                                               'wall (true) tension, T_eff + p_o A_o - p_i '
-                                               'A_i, positive in tension; row per frame'),
+                                               'wall (true) tension, T_eff + p_i A_i - p_o '
+                                               'A_o, positive in tension; row per frame'),
                 '/dynamic/LINE/x': ('m', 'x of the nodes (global axes); row per frame'),
                 '/dynamic/LINE/y': ('m', 'y of the nodes (global axes); row per frame'),
                 '/dynamic/LINE/z': ('m', 'z of the nodes (global axes); row per frame'),

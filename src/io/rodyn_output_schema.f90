@@ -351,7 +351,7 @@ module rodyn_output_schema
          'N2 along d2', &
       'results.h5 | /static/LINE/torque | N m | torsional moment M3 about d3', &
       'results.h5 | /static/LINE/wall_tension | N | wall (true) tension, T_eff '// &
-         '+ p_o A_o - p_i A_i, positive in tension', &
+         '+ p_i A_i - p_o A_o, positive in tension', &
       'dynamic.h5 | /deck | - | full text of the input deck, includes expanded', &
       'dynamic.h5 | /dynamic/LINE/bending_curvature | 1/m | total bending '// &
          'curvature sqrt(K1^2 + K2^2); row per frame', &
@@ -392,7 +392,7 @@ module rodyn_output_schema
       'dynamic.h5 | /dynamic/LINE/touchdown_s | m | largest arc length in '// &
          'contact with the seabed, -1 when none; one value per frame', &
       'dynamic.h5 | /dynamic/LINE/wall_tension | N | wall (true) tension, T_eff '// &
-         '+ p_o A_o - p_i A_i, positive in tension; row per frame', &
+         '+ p_i A_i - p_o A_o, positive in tension; row per frame', &
       'dynamic.h5 | /dynamic/LINE/x | m | x of the nodes (global axes); row per '// &
          'frame', &
       'dynamic.h5 | /dynamic/LINE/y | m | y of the nodes (global axes); row per '// &

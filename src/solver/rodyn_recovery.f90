@@ -118,7 +118,8 @@ contains
          end do
       end do
    contains
-      !> p_o A_o - p_i A_i at reduced point g of element e (order p, nodes xe) [N]: z
+      !> p_i A_i - p_o A_o at reduced point g of element e (order p, nodes xe) [N], the
+      !> wall tension less the effective (docs/theory.md (77)-(79)): z
       !> with the rule's shape functions there (both resultant routines give the rule's
       !> first p points; no shape_lagrange call and no heap temporary per point)
       real(wp) function pressure_term(e, g)
@@ -129,7 +130,7 @@ contains
          associate (sec => model%sections(mesh%elem_sec(e)))
             po = model%water%density*gm*max(model%water%surface - z, 0.0_wp)
             pi_ = sec%p_i + sec%rho_i*gm*(sec%z_pi - z)
-            pressure_term = po*0.25_wp*pi*max(sec%db, 0.0_wp)**2 - pi_*0.25_wp*pi*sec%id**2
+            pressure_term = pi_*0.25_wp*pi*sec%id**2 - po*0.25_wp*pi*max(sec%db, 0.0_wp)**2
          end associate
       end function pressure_term
       !> Seabed force per length at the nodes of line l and its touchdown.

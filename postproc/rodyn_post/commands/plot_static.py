@@ -168,7 +168,7 @@ def wall_figure(results):
     ax.grid(True, linewidth=0.5, alpha=0.5)
     ax.legend(loc="best", fontsize=8)
     fig.suptitle(run_title(results, "wall and effective tension "
-                                    "(T_eff = T_wall - p_o A_o + p_i A_i)"))
+                                    "(T_eff = T_wall - p_i A_i + p_o A_o)"))
     return fig
 
 
