@@ -259,8 +259,8 @@ contains
                ! the run before the frame is written
                why = mesh_spurious_shape(model, prob%mesh, prob%s1)
                if (len(why) > 0) then
-                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s '
-                  why = trim(msg)//why//'; the frames before it are written (the shape '// &
+                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s,'
+                  why = trim(msg)//' '//why//'; the frames before it are written (the shape '// &
                         'may have formed after the last of them)'
                   call set_error(err, stat_numerical, why)
                   summary%status = why

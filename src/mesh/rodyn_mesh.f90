@@ -21,7 +21,7 @@ module rodyn_mesh
    use rodyn_memory, only: memory_estimate, memory_physical, memory_text
    implicit none
    private
-   public :: mesh_spurious_shape
+   public :: mesh_spurious_shape, fix_leading_dots
    public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
@@ -344,7 +344,7 @@ contains
       type(catenary_t) :: cat
       integer :: k, node
       logical :: grounded, b_low
-      character(len=200) :: msg
+      character(len=320) :: msg
       associate (ld => model%lines(l))
          chord = ld%end_b - ld%end_a
          dist = norm2(chord)
@@ -361,9 +361,20 @@ contains
          if (mesh%line_catenary(l) .and. dist < ld%length*(1.0_wp - 1.0e-12_wp)) then
             ! slack line held at both ends: needs weight and a horizontal span to hang
             if (w <= 0.0_wp .or. span < 1.0e-9_wp*ld%length) then
-               write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its held ends' // &
-                  ' but cannot hang as a catenary (weightless, or ends vertically above' // &
-                  ' each other): no static shape to start from'
+               if (w < 0.0_wp) then
+                  write (msg, '(3a,es10.3,a)') 'line ', trim(ld%name), ' is slack between'// &
+                     ' its held ends but buoyant (mean weight in water ', w, ' N/m < 0:'// &
+                     ' it floats up; check the water DENSITY, the section masses and'// &
+                     ' BUOYANCY DIAMETER): no hanging catenary to start from'
+               else if (w == 0.0_wp) then
+                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+                     ' held ends but weightless in its medium (no gravity, or its weight'// &
+                     ' balanced by buoyancy): no hanging catenary to start from'
+               else
+                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+                     ' held ends, which are vertically above each other: no catenary'// &
+                     ' to start from'
+               end if
                call set_error(err, stat_input, line_at(model, l)//': error: *LINE: '// &
                               trim(msg))
                return
@@ -511,11 +522,34 @@ contains
             e - mesh%line_first_elem(l) + 1, ' (S = ', mesh%elem_s0(e), ' to ', &
             mesh%elem_s0(e) + mesh%elem_le(e), ' m) has taken a spurious shape: shear'// &
             ' strain ', hidden, ' between its shear points, ', seen, ' at them'
-         why = 'line '//trim(model%lines(l)%name)//', '//trim(msg)//' (a mode of '// &
-               'cubic rod elements that only the bending stiffness holds: use '// &
-               'ELEMENT=CABLE for a line without bending stiffness, or another '// &
-               'element count; docs/element.md, "Known limits")'
+         why = 'line '//trim(model%lines(l)%name)//', '//fix_leading_dots(trim(msg))// &
+               ' (a mode of cubic rod elements that only the bending stiffness holds '// &
+               'against; it forms where the line is bent or sheared far more than its '// &
+               'bending stiffness resists: a line of negligible bending stiffness (use '// &
+               'ELEMENT=CABLE), too few elements, or loads that deform it violently '// &
+               '(damping, drag, motions): check them; docs/element.md, "Known limits")'
          return
       end do
    end function mesh_spurious_shape
+
+   !> The text with a 0 before every '.' that follows a blank or '(' or '-' (f0.d writes
+   !> 0.25 as '.25').
+   pure function fix_leading_dots(text) result(out)
+      character(len=*), intent(in) :: text   !< text with numbers written by f0.d
+      character(len=:), allocatable :: out   !< the numbers with their leading zero
+      integer :: k
+      out = ''
+      do k = 1, len(text)
+         if (text(k:k) == '.' .and. k < len(text)) then
+            if (scan(text(k + 1:k + 1), '0123456789') == 1) then
+               if (k == 1) then
+                  out = out//'0'
+               else if (scan(text(k - 1:k - 1), ' (-=') == 1) then
+                  out = out//'0'
+               end if
+            end if
+         end if
+         out = out//text(k:k)
+      end do
+   end function fix_leading_dots
 end module rodyn_mesh

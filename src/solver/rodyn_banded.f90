@@ -296,7 +296,7 @@ contains
       type(error_t), intent(inout) :: err       !< status
       integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
       integer :: info, node
-      character(len=160) :: msg
+      character(len=240) :: msg
       ! an overflowed state, not a mechanism: say so rather than blame the supports (the
       ! diagonal only: n values, against n kl ku operations of the factorisation)
       if (.not. all(ieee_is_finite(bm%ab(bm%kv, :)))) then
@@ -322,10 +322,13 @@ contains
             node = count(first <= abs(info))
             write (msg, '(a,i0,a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
                ': singular stiffness at node ', node, ', dof ', abs(info) - first(node) + 1, &
-               ' (a mechanism: check the supports)'
+               ' (a mechanism, or a stiffness swamped by a far larger one: check the'// &
+               ' supports, and loads or coefficients of absurd size)'
          else
             write (msg, '(a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
-               ': singular stiffness at dof ', abs(info), ' (a mechanism: check the supports)'
+               ': singular stiffness at dof ', abs(info), ' (a mechanism, or a stiffness'// &
+               ' swamped by a far larger one: check the supports, and loads or'// &
+               ' coefficients of absurd size)'
          end if
          call set_error(err, stat_numerical, trim(msg))
          return
