@@ -12,7 +12,7 @@ program rodyn
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names
    use rodyn_deck, only: deck_read
-   use rodyn_mesh, only: mesh_t, mesh_build
+   use rodyn_mesh, only: mesh_t, mesh_build, fix_leading_dots
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_assembly, only: dof_map
@@ -38,6 +38,7 @@ program rodyn
    end interface
 
    type(cli_options_t) :: opts
+   character(len=160) :: line  ! a line of the terminal summary
    type(error_t) :: err, out_err
    type(model_t) :: model
    type(outdir_lock_t) :: lock   ! the output folder's lock, released in finish
@@ -141,10 +142,12 @@ program rodyn
          write (error_unit, '(a)') out_err%message
          if (.not. has_error(err)) call finish(stat_io)
       end if
-      if (.not. opts%quiet .and. summary%complete) write (output_unit, &
-         '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', summary%increments, &
-         ' increment(s), ', summary%iterations, ' iterations, ', summary%cutbacks, &
-         ' cut-backs, ', summary%wall_time, ' s'
+      if (.not. opts%quiet .and. summary%complete) then
+         write (line, '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', &
+            summary%increments, ' increment(s), ', summary%iterations, ' iterations, ', &
+            summary%cutbacks, ' cut-backs, ', summary%wall_time, ' s'
+         write (output_unit, '(a)') fix_leading_dots(trim(line))
+      end if
       if (has_error(err)) then
          if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
          call finish(err%code)

@@ -21,7 +21,7 @@ module rodyn_mesh
    use rodyn_memory, only: memory_estimate, memory_physical, memory_text
    implicit none
    private
-   public :: mesh_spurious_shape, fix_leading_dots
+   public :: mesh_spurious_shape, fix_leading_dots, mesh_cable_like_rods
    public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
@@ -531,6 +531,41 @@ contains
          return
       end do
    end function mesh_spurious_shape
+
+   !> A hint for a failed statics: the first line of rod elements whose bending stiffness
+   !> is negligible, EI < 1e-4 T_ref l_e^2 in one of its elements (a bending length
+   !> sqrt(EI/T_ref) under a hundredth of the element), T_ref = |w| L the line's weight
+   !> (in water when wet). Such a line is a cable (chain, wire, fibre rope): as rods its
+   !> stiffness matrix is near singular in bending. Returns '' when every line is fine.
+   function mesh_cable_like_rods(model, mesh) result(hint)
+      type(model_t), intent(in) :: model    !< model (lines, water, gravity)
+      type(mesh_t), intent(in) :: mesh      !< mesh (element stiffness and lengths)
+      character(len=:), allocatable :: hint !< '' or the hint
+      real(wp), parameter :: ratio_min = 1.0e-4_wp  ! EI / (T_ref l_e^2) of a rod line
+      real(wp) :: w, ea, tref, ratio, worst
+      integer :: l, e
+      character(len=120) :: buf
+      hint = ''
+      do l = 1, size(model%lines)
+         call line_mean_weight(model, mesh, l, w, ea)
+         tref = abs(w)*model%lines(l)%length
+         if (.not. tref > 0.0_wp) cycle
+         worst = huge(1.0_wp)
+         do e = mesh%line_first_elem(l), mesh%line_first_elem(l) + &
+                model%lines(l)%n_elements - 1
+            if (mesh%elem_cable(e)) cycle
+            ratio = min(mesh%elem_c(4, e), mesh%elem_c(5, e))/(tref*mesh%elem_le(e)**2)
+            worst = min(worst, ratio)
+         end do
+         if (worst >= ratio_min) cycle
+         write (buf, '(es8.1)') worst
+         hint = 'line '//trim(model%lines(l)%name)//' is made of rod elements whose '// &
+                'bending stiffness is negligible (EI / (weight x length x element '// &
+                'length^2) down to '//trim(adjustl(buf))//'): a chain, wire or rope wants '// &
+                'ELEMENT=CABLE on its *LINE (docs/element.md)'
+         return
+      end do
+   end function mesh_cable_like_rods
 
    !> The text with a 0 before every '.' that follows a blank or '(' or '-' (f0.d writes
    !> 0.25 as '.25').

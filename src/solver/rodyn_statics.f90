@@ -40,7 +40,7 @@ module rodyn_statics
    use rodyn_model, only: model_t, motion_vessel
    use rodyn_motion, only: vessel_offset_point, rotation_z
    use rodyn_load_check, only: load_divergence_hint
-   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape
+   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
@@ -290,7 +290,7 @@ contains
       integer :: level, stage, n_stages
       logical :: retried, staged
       character(len=200) :: msg
-      character(len=:), allocatable :: why
+      character(len=:), allocatable :: why, hint
       opts%max_iterations = model%static%max_iterations
       opts%force_tol = model%static%force_tol
       opts%disp_tol = model%static%disp_tol
@@ -355,6 +355,8 @@ contains
             why = load_divergence_hint(model)
             if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
             if (len(why) > 0) why = ' ('//why//')'
+            hint = mesh_cable_like_rods(model, prob%mesh)
+            if (len(hint) > 0) why = why//'; '//hint
             call set_error(err, stat_numerical, trim(msg)//why)
             summary%status = trim(msg)//why
             summary%complete = .false.
