@@ -415,8 +415,8 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                            '/dynamic/sea: 0, then the end of each step'),
                 '/dynamic/time': ('s', 'time of each output frame')}}
 
-STATUS = (('complete', '-', 'true if the analysis reached its end, else false'),
- ('status', '-', 'one line: complete, or what failed (running while it runs)'),
+STATUS = (('complete', '-', 'true when all the deck asks for is done, else false'),
+ ('status', '-', 'complete, running, statics complete, dynamics to run, or what failed'),
  ('load_factor', '-', 'static load factor reached (1 for a complete static run)'),
  ('increments', '-', 'static load increments converged'),
  ('iterations', '-', 'Newton iterations of the static analysis'),
@@ -458,9 +458,10 @@ ATTRIBUTES = {'results.h5': {'/:program': ('-', 'program name: rodyn'),
                 '/:deck_file': ('-', 'path of the main deck file'),
                 '/:title': ('-', '*HEADING title'),
                 '/:units': ('-', 'the unit system: SI (m, s, kg, N, N m, rad)'),
-                '/:complete': ('-', '1 if the analysis reached its end, else 0'),
+                '/:complete': ('-', '1 if the static analysis reached its end, else 0'),
                 '/:status': ('-',
-                             'one line: complete, or what failed (running while it runs)'),
+                             'the static analysis: complete, or what failed (running while '
+                             'it runs)'),
                 '/static:load_factor': ('-', 'static load factor reached'),
                 '/static:increments': ('-', 'load increments converged'),
                 '/static:iterations': ('-', 'Newton iterations in total'),

@@ -216,8 +216,9 @@ module rodyn_output_schema
    !> (NAME: one key per table or deck parameter). rodyn_output's output_write_status
    !> writes them; docs/output.md lists the same keys (check_output_schema.py).
    character(len=row_len), parameter :: status_keys(*) = [character(len=row_len) :: &
-      'status.txt | complete | - | true if the analysis reached its end, else false', &
-      'status.txt | status | - | one line: complete, or what failed (running while it runs)', &
+      'status.txt | complete | - | true when all the deck asks for is done, else false', &
+      'status.txt | status | - | complete, running, statics complete, dynamics to run, '// &
+      'or what failed', &
       'status.txt | load_factor | - | static load factor reached (1 for a complete static run)', &
       'status.txt | increments | - | static load increments converged', &
       'status.txt | iterations | - | Newton iterations of the static analysis', &
@@ -279,8 +280,9 @@ module rodyn_output_schema
       'results.h5 | /:deck_file | - | path of the main deck file', &
       'results.h5 | /:title | - | *HEADING title', &
       'results.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
-      'results.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
-      'results.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'results.h5 | /:complete | - | 1 if the static analysis reached its end, else 0', &
+      'results.h5 | /:status | - | the static analysis: complete, or what failed '// &
+      '(running while it runs)', &
       'results.h5 | /static:load_factor | - | static load factor reached', &
       'results.h5 | /static:increments | - | load increments converged', &
       'results.h5 | /static:iterations | - | Newton iterations in total', &
