@@ -55,7 +55,8 @@ module rodyn_output_schema
       'static_reactions.csv | tension_N | N | magnitude of the support force', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
-      'static_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &
+         'the last node in contact and the next); -1 when none', &
       'environment.csv | key | - | name of the quantity', &
       'environment.csv | value | - | its value, in the unit of the row', &
       'environment.csv | unit | - | unit of the value', &
@@ -81,7 +82,8 @@ module rodyn_output_schema
       'dynamic_elements.csv | curvature_per_m | 1/m | total bending curvature', &
       'dynamic_lines.csv | time_s | s | time of the frame', &
       'dynamic_lines.csv | line | - | line name', &
-      'dynamic_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'dynamic_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &
+         'the last node in contact and the next); -1 when none', &
       'dynamic_ends.csv | time_s | s | time of the frame', &
       'dynamic_ends.csv | line | - | line name', &
       'dynamic_ends.csv | end | - | A (S = 0) or B (S = L)', &
@@ -289,7 +291,8 @@ module rodyn_output_schema
       'results.h5 | /static:cutbacks | - | increment halvings', &
       'results.h5 | /static:wall_time_s | s | solve wall time', &
       'results.h5 | /static/LINE:name | - | the line name', &
-      'results.h5 | /static/LINE:touchdown_s | m | largest S on the seabed; -1 when none', &
+      'results.h5 | /static/LINE:touchdown_s | m | largest S in contact with the seabed '// &
+         '(between the last node in contact and the next); -1 when none', &
       'results.h5 | /static/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
       'results.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
       'results.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)', &
