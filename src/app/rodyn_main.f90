@@ -18,7 +18,7 @@ program rodyn
    use rodyn_assembly, only: dof_map
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
-   use rodyn_output, only: output_write_static, output_write_status
+   use rodyn_output, only: output_write_static, output_write_status, status_dynamics_pending
    use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
    use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_read
@@ -96,6 +96,15 @@ program rodyn
    ! --restart: the checkpoint is read and checked before anything is computed
    if (opts%restart .and. .not. model%dynamic%requested) call set_error(err, stat_input, &
       'rodyn: error: --restart: '//opts%deck//' has no *DYNAMIC: there is no run to continue')
+   ! a run stopped between its statics and its dynamics (status.txt says the dynamics
+   ! are still to run) has no checkpoint of its dynamics: the whole deck runs again
+   if (opts%restart .and. .not. has_error(err)) then
+      if (status_dynamics_pending(opts%outdir)) then
+         opts%restart = .false.
+         if (.not. opts%quiet) write (output_unit, '(a)') 'rodyn: --restart '// &
+            opts%outdir//': the dynamics have not started (status.txt): running the deck'
+      end if
+   end if
    if (opts%restart) call checkpoint_read(opts%outdir, model, state, ck, err)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
