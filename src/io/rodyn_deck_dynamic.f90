@@ -179,8 +179,9 @@ contains
          ! damping ratio ALPHA/(2 omega) + BETA omega/2 (docs/deck.md, *DAMPING)
          call check_at_most(card, 'ALPHA', model%dynamic%rayleigh_alpha, max_alpha, ' 1/s', &
                             'the mass-proportional term alone damps every mode below '// &
-                            int_str(nint(max_alpha/(4.0_wp*pi)))//' Hz beyond critical (damping '// &
-                            'ratio ALPHA/(2 omega) > 1); a ratio zeta at omega is ALPHA = '// &
+                            int_str(nint(max_alpha/(4.0_wp*pi)))//' Hz beyond critical '// &
+                            '(damping ratio ALPHA/(2 omega) > 1); a ratio zeta at omega '// &
+                            'is ALPHA = '// &
                             '2 zeta omega', err)
          call check_at_most(card, 'BETA', model%dynamic%rayleigh_beta, max_beta, ' s', &
                             'the stiffness-proportional term alone damps every mode of '// &

@@ -368,8 +368,8 @@ contains
                      ' BUOYANCY DIAMETER): no hanging catenary to start from'
                else if (w == 0.0_wp) then
                   write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
-                     ' held ends but weightless in its medium (no gravity, or its weight'// &
-                     ' balanced by buoyancy): no hanging catenary to start from'
+                     ' held ends but weightless (no mass, no gravity, or a weight balanced'// &
+                     ' exactly by buoyancy): no hanging catenary to start from'
                else
                   write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
                      ' held ends, which are vertically above each other: no catenary'// &
