@@ -135,6 +135,8 @@ def load_static(path) -> StaticResults:
         raise RodynResultsError(f"{path}: no such results folder")
     status_path = path / STATUS_FILE
     status = _read_status(status_path) if status_path.is_file() else None
+    if status is not None:
+        status["dynamic"] = _read_key_values(status_path).get("dynamic") == "true"
     if (path / H5_FILE).is_file():
         results = _read_h5(path / H5_FILE)
         if status is None or _same_run(results, status):
@@ -148,11 +150,13 @@ def load_static(path) -> StaticResults:
 
 
 def _same_run(results: StaticResults, status: dict) -> bool:
-    """Whether results.h5 and status.txt come from the same run (same counters)."""
-    def stamp(r):
-        return (r["load_factor"], r["increments"], r["iterations"], r["cutbacks"],
-                r["wall_time_s"])
-    return stamp(vars(results)) == stamp(status)
+    """Whether results.h5 and status.txt come from the same run (the statics' counters
+    and wall time; a dynamic run's status.txt gives the wall time of the statics and the
+    time loop together, so for it the counters alone)."""
+    keys = ["load_factor", "increments", "iterations", "cutbacks"]
+    if not status.get("dynamic"):
+        keys.append("wall_time_s")
+    return all(vars(results)[k] == status[k] for k in keys)
 
 
 def _make_line(name, arrays, where) -> LineStatic:

@@ -225,3 +225,26 @@ def test_real_run_all(short_run, tmp_path, capsys):
     assert last["time"] == res.time[20]
     static = read_vtp(folder / "paraview" / "static.vtp")
     np.testing.assert_array_equal(static["points"], load_static(folder).line("CABLE").node_xyz)
+
+
+def test_hdf5_only_run_plots_as_csv_run(short_run, tmp_path, capsys):
+    """A run with *OUTPUT, CSV=NO (results.h5, dynamic.h5 and status.txt only) is
+    plotted by plot_all and converted by to_paraview as the same run with CSV tables:
+    the same files, the same CSV tables of the plots and the same ParaView files."""
+    h5_only = tmp_path / "h5_only"
+    shutil.copytree(short_run, h5_only, ignore=shutil.ignore_patterns("*.csv"))
+    assert not list(h5_only.glob("*.csv"))
+    both = tmp_path / "both"
+    shutil.copytree(short_run, both)
+    for folder in (both, h5_only):
+        assert plot_all.main([str(folder), "--dpi", "30", "--paraview"]) == 0, \
+            capsys.readouterr().err
+    made = {p.relative_to(both) for p in both.rglob("*")
+            if not (short_run / p.relative_to(both)).exists()}
+    made_h5 = {p.relative_to(h5_only) for p in h5_only.rglob("*")
+               if not (short_run / p.relative_to(h5_only)).exists()}
+    assert made == made_h5 and any(p.suffix == ".png" for p in made)
+    for rel in made:
+        if rel.suffix in (".csv", ".vtp", ".pvd"):
+            assert (both / rel).read_bytes() == (h5_only / rel).read_bytes(), rel
+    assert read_vtp(h5_only / "paraview" / "static.vtp")["points"].shape[0] > 2
