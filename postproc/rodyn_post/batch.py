@@ -190,7 +190,8 @@ def _run_parser() -> argparse.ArgumentParser:
 def _summary_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog=f"{PROG} summary", description=(
         "Write OUT/summary.csv and OUT/summary.h5 again from the case folders (the "
-        "cases of the last run in OUT/batch_cases.json); cases extracted with other "
+        "cases of every batch run into OUT, in OUT/batch_cases.json); cases extracted "
+        "with other "
         "quantities are extracted again."), epilog=EPILOG)
     p.add_argument("output", metavar="OUT")
     p.add_argument("--extract", default=None, metavar="LIST",
@@ -412,9 +413,11 @@ def run_batch(args) -> int:
                                   f"({lock_owner(info)})")
         locked.append(case.id)
     clean_temporaries(out, locked)
-    state = {"cases": [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases],
-             "parameters": param_names, "extract": list(keys)}
-    (out / STATE_FILE).write_text(json.dumps(state, indent=1), encoding="utf-8")
+    with _state_lock(out):
+        earlier = _merge_state(out, cases, keys)
+    if earlier:
+        print(f"{PROG}: {out} holds {earlier} case(s) of another batch: the summary lists "
+              f"them with this batch's {len(cases)}", file=sys.stderr)
 
     extra = tuple(args.rodyn_arg) or ("--quiet",)
     specs = [CaseSpec(id=c.id, deck=str(c.deck), params=dict(c.params), out=str(out),
@@ -478,7 +481,13 @@ def run_batch(args) -> int:
             entry["status"] = "not run"
             entry["message"] = "batch interrupted" if interrupted else (
                 entry["record"] or {}).get("message", "")
-    csv_path, h5_path = write_summary(out, ordered, param_names, meta)
+    with _state_lock(out):
+        # the folder's cases as they stand now: another batch may have added some
+        state = _read_state(out) or {"cases": [], "parameters": param_names}
+        mine = {e["id"]: e for e in ordered}
+        listed = [mine.get(c["id"]) or _other_entry(out, c, keys, token)
+                  for c in state["cases"]]
+        csv_path, h5_path = write_summary(out, listed, state["parameters"], meta)
     failed = [e["id"] for e in ordered if (e.get("status") or e["record"]["status"])
               != "complete"]
     _log(out, f"batch {token}: {'interrupted' if interrupted else 'finished'}; "
@@ -495,6 +504,66 @@ def run_batch(args) -> int:
               file=sys.stderr)
         return EXIT_CASES_FAILED
     return EXIT_OK
+
+
+# --- the folder's cases: every batch run into it -----------------------------------------
+
+class _state_lock:
+    """An exclusive lock (flock of the folder itself: no file is left behind) while the
+    folder's list of cases (batch_cases.json) and the summary are read and written."""
+
+    def __init__(self, out: Path):
+        self.path = Path(out)
+
+    def __enter__(self):
+        import fcntl
+        self.fd = os.open(self.path, os.O_RDONLY)
+        fcntl.flock(self.fd, fcntl.LOCK_EX)
+        return self
+
+    def __exit__(self, *exc):
+        import fcntl
+        fcntl.flock(self.fd, fcntl.LOCK_UN)
+        os.close(self.fd)
+
+
+def _read_state(out: Path) -> Optional[dict]:
+    """batch_cases.json, None when absent or unreadable."""
+    try:
+        state = json.loads((Path(out) / STATE_FILE).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return state if isinstance(state, dict) and isinstance(state.get("cases"), list) else None
+
+
+def _merge_state(out: Path, cases: List[Case], keys: tuple) -> int:
+    """Write batch_cases.json as the folder's cases: those of earlier batches that this
+    one does not define again, then this batch's (a case id given again takes its new
+    definition); parameters in order of first use. Returns how many earlier cases stay."""
+    state = _read_state(out) or {"cases": [], "parameters": []}
+    ids = {c.id for c in cases}
+    kept = [c for c in state["cases"] if c.get("id") not in ids]
+    merged = kept + [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases]
+    names: Dict[str, None] = dict.fromkeys(state.get("parameters") or [])
+    for c in merged:
+        names.update(dict.fromkeys(c.get("params") or {}))
+    new = {"cases": merged, "parameters": list(names), "extract": list(keys)}
+    (Path(out) / STATE_FILE).write_text(json.dumps(new, indent=1), encoding="utf-8")
+    return len(kept)
+
+
+def _other_entry(out: Path, case: dict, keys: tuple, token: str) -> dict:
+    """The summary entry of a case of another batch: its published record, else
+    'running' while another batch holds its lock, else 'not run'."""
+    entry = {"id": case["id"], "params": case.get("params") or {}, "record": None}
+    rec = read_record(out / case["id"])
+    if rec is not None:
+        entry["record"] = _ensure_extracted(out, rec, keys)
+    elif lock_is_live(read_lock(lock_path(out, case["id"])), token):
+        entry["status"], entry["message"] = "running", "being run by another batch"
+    else:
+        entry["status"], entry["message"] = "not run", "defined by another batch"
+    return entry
 
 
 def rebuild_summary(args) -> int:

@@ -510,3 +510,46 @@ def test_deck_parameters_hash_and_ids(tmp_path):
     cases = grid_cases(["DIR=N/E,S W", "amp=1"], deck, {"DEPTH": "5"})
     assert [c.id for c in cases] == ["DIR=N_E_amp=1", "DIR=S_W_amp=1"]
     assert cases[0].params == {"DEPTH": "5", "DIR": "N/E", "amp": "1"}
+
+
+# --- two batches into one folder ---------------------------------------------------------
+
+def test_two_batches_into_one_folder_merge(tmp_path, capsys):
+    """A second batch with another case table into the same folder: the summary, the
+    summary's HDF5 file and batch_cases.json list the cases of both batches, and
+    `rodyn-batch summary OUT` gives them again; a case id defined again takes its new
+    definition (run again), the other earlier cases are kept as they were."""
+    first = write_decks(tmp_path / "a", n=3)
+    second = []
+    for k, amp in enumerate((0.15, 0.25)):
+        path = tmp_path / "b" / f"other{k}.inp"
+        path.parent.mkdir(exist_ok=True)
+        path.write_text(cable_deck(amp, 0.7))
+        second.append(path)
+    redefined = tmp_path / "b" / "case02.inp"            # same id as a case of the first
+    redefined.write_text(cable_deck(0.35, 0.9))
+    out = tmp_path / "out"
+    assert run_main(first + ["-o", out, "--rodyn", RODYN, "--no-progress"]) == 0
+    before = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert run_main(second + [redefined, "-o", out, "--rodyn", RODYN,
+                              "--no-progress"]) == 0
+    assert "holds 2 case(s) of another batch" in capsys.readouterr().err
+    want = ["case00", "case01", "other0", "other1", "case02"]
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert sorted(rows) == sorted(want)
+    assert all(r["status"] == "complete" for r in rows.values())
+    for cid in ("case00", "case01"):               # the earlier cases, as they were
+        assert rows[cid]["CABLE.end_A_tension_max_N"] == before[cid][
+            "CABLE.end_A_tension_max_N"]
+    assert rows["case02"]["skipped"] == "0"        # its deck changed: run again
+    assert (rows["case02"]["CABLE.end_A_tension_max_N"]
+            != before["case02"]["CABLE.end_A_tension_max_N"])
+    state = json.loads((out / "batch_cases.json").read_text())
+    assert [c["id"] for c in state["cases"]] == want
+    assert sorted(read_summary(out)["cases"]["id"]) == sorted(want)
+    merged = read_summary(out)
+    (out / "summary.csv").unlink()
+    (out / "summary.h5").unlink()
+    assert run_main(["summary", out]) == 0
+    assert sorted(r["id"] for r in csv_rows(out / "summary.csv")) == sorted(want)
+    assert_same_summary(read_summary(out), merged)
