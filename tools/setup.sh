@@ -2,9 +2,9 @@
 # Install what rodyn needs on a Debian machine, only what is missing:
 # gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface, m4 (to build pFUnit for
 # the tests: tools/pfunit.sh) (Debian packages),
-# numpy, matplotlib, scipy, h5py, pytest for the post-processing (PyPI), and the
-# post-processing package itself (postproc/, editable: its console commands go on the
-# PATH).
+# numpy, matplotlib, h5py for the post-processing, pytest and scipy for the tests, Dask
+# for batches beyond one machine (PyPI), and the post-processing package itself
+# (postproc/, editable, with its extra 'dask': its console commands go on the PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -58,9 +58,9 @@ assert {e.name: e.value for e in dist.entry_points if e.group == "console_script
 assert dist.version == re.search(r'^version\s*=\s*"([^"]+)"', text, re.M).group(1)
 EOF
 then
-  echo "setup: installing the post-processing package from postproc/ (pip install -e)"
-  python3 -m pip install -q -e postproc 2>/dev/null ||
-    python3 -m pip install -q --break-system-packages -e postproc
+  echo "setup: installing the post-processing package from postproc/ (pip install -e, with Dask)"
+  python3 -m pip install -q -e 'postproc[dask]' 2>/dev/null ||
+    python3 -m pip install -q --break-system-packages -e 'postproc[dask]'
   if command -v pyenv >/dev/null 2>&1; then pyenv rehash; fi  # shims of the new commands
 fi
 command -v rodyn-plot-all >/dev/null 2>&1 ||
