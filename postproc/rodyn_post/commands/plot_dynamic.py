@@ -46,7 +46,8 @@ from matplotlib.figure import Figure
 
 from rodyn_post import cli, load_dynamic  # cli: the Agg backend (never needs a display)
 from rodyn_post.cli import dynamic_title as run_title
-from rodyn_post.environment import current_inset, draw_sea, elevation_range
+from rodyn_post.environment import (current_inset, draw_sea, elevation_range,
+                                    fit_elevation, scale_note)
 from rodyn_post.errors import InputError as PlotInputError
 from rodyn_post.quantities import matching_static, window_mask
 
@@ -199,14 +200,15 @@ def snapshots_figure(results, frames, envelope=None):
         y = float(np.mean([line.y[f].mean() for line in results.lines for f in shown]))
         draw_sea(ax, env, elevation_range(xs), y)
         current_inset(ax, env)
-    ax.set_aspect("equal", adjustable="datalim")
+    exaggeration = fit_elevation(ax)
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
     ax.grid(True, linewidth=0.5, alpha=0.5)
     ax.legend(loc="best", fontsize=7, ncol=2 if len(frames) > 5 else 1)
     span = results.time[frames[-1]] - results.time[frames[0]] if frames else 0.0
     fig.suptitle(run_title(results, f"dynamic configurations, x-z elevation "
-                                    f"({len(frames)} frames over {span:.4g} s)"))
+                                    f"({len(frames)} frames over {span:.4g} s"
+                                    f"{scale_note(exaggeration)})"))
     return fig
 
 

@@ -16,7 +16,8 @@ OUT_DIR (default: the results folder) and prints the paths written:
                    tension_max_N, moment_*_Nm, curvature_*_per_m; one row per
                    integration point of each line
 
---quantity picks the panels (default: tension moment curvature) among tension,
+--quantity picks the panels (default: tension moment curvature; tension alone when every
+line is of cable elements, which have no bending) among tension,
 wall_tension, moment, curvature, torque (at the integration points) and seabed_normal,
 x, y, z (at the nodes); one panel and three CSV columns each, in the order given.
 
@@ -30,7 +31,7 @@ OUTPUT INTERVAL sees more.
 import sys
 
 from rodyn_post import cli, load_dynamic
-from rodyn_post.quantities import (QUANTITIES, RANGE_QUANTITIES, STATS,
+from rodyn_post.quantities import (BENDING, QUANTITIES, RANGE_QUANTITIES, STATS, has_bending,
                                    check_window, matching_static, pick_line, point_values,
                                    range_stats, window_mask)
 
@@ -125,6 +126,8 @@ def main(argv=None):
         lines = [pick_line(results, args.line)] if args.line else list(results.lines)
         cli.warn_dynamic(PROG, results)
         keys = list(dict.fromkeys(args.quantity))
+        if keys == list(RANGE_QUANTITIES) and not any(has_bending(ln) for ln in lines):
+            keys = [k for k in keys if k not in BENDING]   # cable elements: none to show
         table = range_table(results, lines, args.window, keys)
         out = cli.output_dir(args, results.folder)
         print(cli.save_figure(range_figure(results, table, args.window, keys), out / PNG,

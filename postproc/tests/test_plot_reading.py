@@ -1,0 +1,99 @@
+"""Plots an engineer reads at a glance, on a mooring leg of cable elements in 100 m of
+water (input/mooring_surge.inp, 6 s): what each figure holds, not its pixels.
+
+- the x-z elevations fill their axes: a 400 m leg in 100 m of water is drawn with z
+  exaggerated (and the title says so), not as a thin band between equal axes;
+- the seabed's legend gives its depth, not the plane of its trace;
+- a line of cable elements gets no bending moment or curvature panel (it has none);
+- the animation shows the sea surface and the seabed.
+"""
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+from designed import REPO
+from test_plot_static import rodyn_exe
+from rodyn_post import load_dynamic, load_static
+from rodyn_post.commands import animate, plot_dynamic, plot_history, plot_static, range_graph
+
+
+@pytest.fixture(scope="module")
+def leg(tmp_path_factory):
+    exe = rodyn_exe()
+    work = tmp_path_factory.mktemp("leg")
+    text = (REPO / "input" / "mooring_surge.inp").read_text()
+    text, n = re.subn(r"TIME=120\.0, OUTPUT INTERVAL=0\.1", "TIME=6.0, OUTPUT INTERVAL=0.5",
+                      text)
+    assert n == 1
+    shutil.copy(REPO / "input" / "mooring_leg_section.inc", work)
+    (work / "leg.inp").write_text(text)
+    run = subprocess.run([str(exe), str(work / "leg.inp"), "-o", str(work / "out"),
+                          "--quiet"], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    return work / "out"
+
+
+def drawn_z(ax):
+    """z range of everything drawn (lines and collections) on an elevation."""
+    return ax.dataLim.intervaly
+
+
+def test_elevations_fill_their_axes(leg):
+    static = load_static(leg)
+    dynamic = load_dynamic(leg)
+    figures = [plot_static.shape_figure(static),
+               plot_dynamic.snapshots_figure(dynamic, [0, len(dynamic.time) - 1],
+                                             list(range(len(dynamic.time))))]
+    for fig in figures:
+        ax = fig.axes[0]
+        fig.canvas.draw()
+        z0, z1 = drawn_z(ax)
+        lo, hi = ax.get_ylim()
+        assert lo >= z0 - 0.1 * (z1 - z0) and hi <= z1 + 0.1 * (z1 - z0), (lo, hi, z0, z1)
+        assert "z exaggerated" in fig._suptitle.get_text()
+        labels = ax.get_legend_handles_labels()[1]
+        assert "seabed, z = -100 m" in labels
+        assert not any("y =" in label for label in labels)
+
+
+def test_paper_cable_keeps_equal_axes(short_run):
+    fig = plot_static.shape_figure(load_static(short_run))
+    assert fig.axes[0].get_aspect() == 1.0
+    assert "exaggerated" not in fig._suptitle.get_text()
+
+
+def test_cable_lines_have_no_bending_panels(leg, tmp_path):
+    assert plot_history.main([str(leg), "-o", str(tmp_path)]) == 0
+    header = (tmp_path / "history_LEG.csv").read_text().splitlines()[0]
+    assert "tension_top_N" in header and "z_top_m" in header
+    assert "moment" not in header and "curvature" not in header
+    assert range_graph.main([str(leg), "-o", str(tmp_path)]) == 0
+    header = (tmp_path / "range_graph.csv").read_text().splitlines()[0]
+    assert "tension" in header and "moment" not in header and "curvature" not in header
+    fig = plot_static.tension_figure(load_static(leg))
+    assert len(fig.axes) == 1 and "bending" not in fig.axes[0].get_ylabel()
+    # asked for, a quantity is drawn all the same
+    assert plot_history.main([str(leg), "-o", str(tmp_path), "--quantity", "moment"]) == 0
+    assert "moment_top_Nm" in (tmp_path / "history_LEG.csv").read_text().splitlines()[0]
+
+
+def test_rod_lines_keep_bending_panels(short_run, tmp_path):
+    assert plot_history.main([str(short_run), "-o", str(tmp_path)]) == 0
+    header = (tmp_path / "history_CABLE.csv").read_text().splitlines()[0]
+    assert "moment_top_Nm" in header and "curvature_top_per_m" in header
+    fig = plot_static.tension_figure(load_static(short_run))
+    assert len(fig.axes) == 2
+
+
+def test_animation_shows_sea_and_seabed(leg):
+    results = load_dynamic(leg)
+    fig, _, _ = animate.animation_figure(results, animate.animation_frames(results))
+    labels = fig.axes[0].get_legend_handles_labels()[1]
+    assert any(label.startswith("sea surface") for label in labels)
+    assert any(label.startswith("seabed") for label in labels)
+    z = np.concatenate([ln.get_ydata() for ln in fig.axes[0].lines
+                        if ln.get_label().startswith(("sea surface", "seabed"))])
+    assert z.max() == 0.0 and z.min() == -100.0
