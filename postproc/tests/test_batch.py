@@ -182,6 +182,11 @@ def test_plot_against_parameter(tmp_path):
     assert run_main(["plot", tmp_path, "--y", "tension_max_N", "--x", "HS", "--by",
                      "DIR", "-o", tmp_path / "p.png"]) == 0
     assert (tmp_path / "p.png").is_file()
+    # the axis names the quantity and its unit once, not the column's name
+    from rodyn_post.batch_plot import plot_column
+    from rodyn_post.batch_summary import read_summary
+    fig = plot_column(read_summary(tmp_path), "L.tension_max_N", "HS", "DIR")
+    assert fig.axes[0].get_ylabel() == "L: tension max [kN]"
 
 
 def test_parameter_grid_equals_lone_runs(tmp_path):

@@ -97,3 +97,22 @@ def test_animation_shows_sea_and_seabed(leg):
     z = np.concatenate([ln.get_ydata() for ln in fig.axes[0].lines
                         if ln.get_label().startswith(("sea surface", "seabed"))])
     assert z.max() == 0.0 and z.min() == -100.0
+
+
+def test_compare_title_fits_the_figure(leg):
+    """rodyn-compare's title (heading, what, the reference and its errors) is wrapped
+    to the figure's width: every line of it inside the figure."""
+    from rodyn_post.commands.compare import comparison_figure
+    from rodyn_post.quantities import QUANTITIES
+    x = np.linspace(0.0, 10.0, 11)
+    title = ("Mooring leg surged 5 m at the fairlead, period 12 s\nLEG: support tension "
+             "|F| at end B (top)\nvs a_reference_export_with_a_long_name.csv: max |error| "
+             "1.234 kN, rms 0.5678 kN, 2.35 % of the reference range")
+    result = type("R", (), {"overlap": (0.0, 10.0), "x": x, "error": 0.0 * x})()
+    fig = comparison_figure(title, QUANTITIES["end_tension"], "time [s]", (x, x), (x, x),
+                            result, ("rodyn", "reference"))
+    fig.canvas.draw()
+    box = fig._suptitle.get_window_extent()
+    width = fig.get_size_inches()[0] * fig.dpi
+    assert box.x0 >= 0.0 and box.x1 <= width, (box, width)
+    assert fig._suptitle.get_text().count("\n") >= 3
