@@ -5,7 +5,9 @@ water (input/mooring_surge.inp, 6 s): what each figure holds, not its pixels.
   exaggerated (and the title says so), not as a thin band between equal axes;
 - the seabed's legend gives its depth, not the plane of its trace;
 - a line of cable elements gets no bending moment or curvature panel (it has none);
-- the animation shows the sea surface and the seabed.
+- the animation shows the sea surface and the seabed;
+- a history of many periods (the paper's case 1 for 70 s: 46 periods) is drawn as its
+  range per bin of two periods beside a zoom on its last five periods, not as a block.
 """
 import re
 import shutil
@@ -116,3 +118,30 @@ def test_compare_title_fits_the_figure(leg):
     width = fig.get_size_inches()[0] * fig.dpi
     assert box.x0 >= 0.0 and box.x1 <= width, (box, width)
     assert fig._suptitle.get_text().count("\n") >= 3
+
+
+def test_long_history_band_and_zoom(tmp_path):
+    exe = rodyn_exe()
+    text = (REPO / "input" / "paper_case1.inp").read_text()
+    text, n = re.subn(r"TIME=900\.0", "TIME=70.0", text)
+    assert n == 1
+    shutil.copy(REPO / "input" / "paper_cable_section.inc", tmp_path)
+    (tmp_path / "c1.inp").write_text(text)
+    run = subprocess.run([str(exe), str(tmp_path / "c1.inp"), "-o", str(tmp_path / "out"),
+                          "--quiet"], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    results = load_dynamic(tmp_path / "out")
+    period = 1.0 / 0.658
+    for fig in (plot_dynamic.tension_figure(results), plot_dynamic.energy_figure(results)):
+        assert len(fig.axes) == 4                           # two rows, whole run and zoom
+        whole, zoom = fig.axes[0], fig.axes[1]
+        assert whole.collections and not whole.lines         # the band, no 700-point curve
+        t0, t1 = zoom.lines[0].get_xdata()[[0, -1]]
+        assert t1 == results.time[-1] and 4.9 * period <= t1 - t0 <= 5.1 * period
+        lo, hi = whole.collections[0].get_paths()[0].get_extents().intervaly
+        tension = results.line("CABLE").end_tension[:, 0] / 1e3
+        if "tension" in whole.get_ylabel():
+            assert lo == tension.min() and hi == tension.max()
+    short = load_dynamic(tmp_path / "out")
+    short_fig = plot_dynamic.tension_figure(short, window=(50.0, 70.0))   # 13 periods
+    assert len(short_fig.axes) == 2 and short_fig.axes[0].lines
