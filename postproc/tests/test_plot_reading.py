@@ -145,3 +145,36 @@ def test_long_history_band_and_zoom(tmp_path):
     short = load_dynamic(tmp_path / "out")
     short_fig = plot_dynamic.tension_figure(short, window=(50.0, 70.0))   # 13 periods
     assert len(short_fig.axes) == 2 and short_fig.axes[0].lines
+
+
+def test_range_graph_starts_after_the_ramp(leg, tmp_path):
+    """The leg's surge ramps in over 12 s; run for 6 s it never ends its ramp (whole
+    run); the paper's case 2 ramps over 3 s: its default window starts there."""
+    results = load_dynamic(leg)
+    assert results.ramp_s == 12.0
+    exe = rodyn_exe()
+    text = (REPO / "input" / "paper_case2.inp").read_text()
+    text, n = re.subn(r"TIME=15\.0", "TIME=6.0", text)
+    assert n == 1
+    shutil.copy(REPO / "input" / "paper_cable_section.inc", tmp_path)
+    (tmp_path / "c2.inp").write_text(text)
+    run = subprocess.run([str(exe), str(tmp_path / "c2.inp"), "-o", str(tmp_path / "out"),
+                          "--quiet"], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    c2 = load_dynamic(tmp_path / "out")
+    assert c2.ramp_s == 3.0
+    assert range_graph.main([str(tmp_path / "out"), "-o", str(tmp_path / "g")]) == 0
+    rows = np.genfromtxt(tmp_path / "g" / "range_graph.csv", delimiter=",", names=True,
+                         dtype=None, encoding="utf-8")
+    after = c2.time >= 3.0 - 1e-9
+    line = c2.line("CABLE")
+    assert np.array_equal(rows["tension_max_N"], line.effective_tension[after].max(axis=0))
+    assert np.allclose(rows["tension_mean_N"], line.effective_tension[after].mean(axis=0),
+                       rtol=1e-12)
+    assert not np.allclose(rows["tension_mean_N"], line.effective_tension.mean(axis=0),
+                           rtol=1e-6)
+    assert range_graph.main([str(tmp_path / "out"), "-o", str(tmp_path / "w"),
+                             "--window", "0", "6"]) == 0
+    whole = np.genfromtxt(tmp_path / "w" / "range_graph.csv", delimiter=",", names=True,
+                          dtype=None, encoding="utf-8")
+    assert np.array_equal(whole["tension_max_N"], line.effective_tension.max(axis=0))

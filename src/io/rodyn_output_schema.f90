@@ -307,6 +307,8 @@ module rodyn_output_schema
       'dynamic.h5 | /:dt | s | *DYNAMIC DT', &
       'dynamic.h5 | /dynamic:duration_s | s | *DYNAMIC TIME', &
       'dynamic.h5 | /dynamic:output_interval_s | s | *DYNAMIC OUTPUT INTERVAL', &
+      'dynamic.h5 | /dynamic:ramp_s | s | longest ramp-in of the motions, waves '// &
+         'and current (0: none)', &
       'dynamic.h5 | /dynamic:frames | - | frames written (at close)', &
       'dynamic.h5 | /dynamic:steps | - | time steps completed (at close)', &
       'dynamic.h5 | /dynamic:time_reached_s | s | last time reached (at close)', &

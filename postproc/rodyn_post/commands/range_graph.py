@@ -5,8 +5,10 @@ the quantities of --quantity).
     rodyn-range-graph [RESULTS] [-o OUT_DIR] [--window T0 T1]
                       [--line NAME] [--quantity Q ...] [--dpi 150]
 
-RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
-OUT_DIR (default: the results folder) and prints the paths written:
+RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. The window is
+--window, else from the end of the run's longest ramp-in (of its motions, waves and
+current: dynamic.h5's /dynamic ramp_s; the start-up is not the response) to its end.
+Writes into OUT_DIR (default: the results folder) and prints the paths written:
 
   range_graph.png  three panels against the unstretched arc length S from end A:
                    effective tension [kN], bending moment |M| [kN m], bending
@@ -125,6 +127,8 @@ def main(argv=None):
         check_window(results, args.window)
         lines = [pick_line(results, args.line)] if args.line else list(results.lines)
         cli.warn_dynamic(PROG, results)
+        if args.window is None and 0.0 < results.ramp_s < results.time[-1]:
+            args.window = (results.ramp_s, float(results.time[-1]))   # after the ramp-in
         keys = list(dict.fromkeys(args.quantity))
         if keys == list(RANGE_QUANTITIES) and not any(has_bending(ln) for ln in lines):
             keys = [k for k in keys if k not in BENDING]   # cable elements: none to show
