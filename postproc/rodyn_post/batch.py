@@ -307,8 +307,9 @@ def connect(address: str, timeout: float):
     try:
         from distributed import Client
     except ImportError:
-        raise BatchInputError("--scheduler needs Dask: python3 -m pip install "
-                              "'dask[distributed]'") from None
+        raise BatchInputError("--scheduler needs Dask, the optional extra of "
+                              "rodyn-post: python3 -m pip install -e 'postproc[dask]' "
+                              "(or 'dask[distributed]')") from None
     try:
         return Client(address, timeout=f"{timeout}s")
     except (OSError, TimeoutError) as exc:
