@@ -307,8 +307,9 @@ def connect(address: str, timeout: float):
     try:
         from distributed import Client
     except ImportError:
-        raise BatchInputError("--scheduler needs Dask: python3 -m pip install "
-                              "'dask[distributed]'") from None
+        raise BatchInputError("--scheduler needs Dask, the optional extra of "
+                              "rodyn-post: python3 -m pip install -e 'postproc[dask]' "
+                              "(or 'dask[distributed]')") from None
     try:
         return Client(address, timeout=f"{timeout}s")
     except (OSError, TimeoutError) as exc:
@@ -536,11 +537,30 @@ def _read_state(out: Path) -> Optional[dict]:
     return state if isinstance(state, dict) and isinstance(state.get("cases"), list) else None
 
 
+def _unlisted_cases(out: Path, listed) -> List[dict]:
+    """Case folders of OUT holding a batch's record (batch_case.json of their own id)
+    that batch_cases.json does not list: cases of a batch whose list was replaced by a
+    later batch's (rodyn-batch kept only the last batch's list before it merged them)."""
+    found = []
+    for path in sorted(Path(out).glob(f"*/{RESULT_FILE}")):
+        folder = path.parent
+        if folder.name in listed or folder.name.startswith("."):
+            continue
+        rec = read_record(folder)
+        if rec is not None and rec.get("id") == folder.name:
+            found.append({"id": folder.name, "deck": str(rec.get("deck", "")),
+                          "params": dict(rec.get("params") or {})})
+    return found
+
+
 def _merge_state(out: Path, cases: List[Case], keys: tuple) -> int:
     """Write batch_cases.json as the folder's cases: those of earlier batches that this
-    one does not define again, then this batch's (a case id given again takes its new
-    definition); parameters in order of first use. Returns how many earlier cases stay."""
+    one does not define again (listed, or found as case folders the list lacks), then
+    this batch's (a case id given again takes its new definition); parameters in order
+    of first use. Returns how many earlier cases stay."""
     state = _read_state(out) or {"cases": [], "parameters": []}
+    state["cases"] = state["cases"] + _unlisted_cases(
+        out, {c.get("id") for c in state["cases"]})
     ids = {c.id for c in cases}
     kept = [c for c in state["cases"] if c.get("id") not in ids]
     merged = kept + [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases]
@@ -571,21 +591,20 @@ def rebuild_summary(args) -> int:
     from .batch_summary import write_summary
 
     out = Path(args.output)
-    try:
-        state = json.loads((out / STATE_FILE).read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
+    if _read_state(out) is None:
         raise BatchInputError(f"{out / STATE_FILE}: cannot read the batch's cases "
-                              f"({getattr(exc, 'strerror', None) or exc})") from None
-    keys = parse_extract(args.extract) if args.extract else tuple(state["extract"])
-    entries = []
-    for case in state["cases"]:
-        rec = read_record(out / case["id"])
-        if rec is not None:
-            rec = _ensure_extracted(out, rec, keys)
-        entries.append({"id": case["id"], "params": case["params"], "record": rec})
-    for path in write_summary(out, entries, state["parameters"],
+                              "(missing or not a batch's list)")
+    with _state_lock(out):
+        state = _read_state(out)
+        keys = (parse_extract(args.extract) if args.extract
+                else tuple(state.get("extract") or DEFAULT_EXTRACT))
+        _merge_state(out, [], keys)     # takes in case folders the list lacks
+        state = _read_state(out)
+        entries = [_other_entry(out, case, keys, "") for case in state["cases"]]
+        paths = write_summary(out, entries, state["parameters"],
                               {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
-                               "extract": ",".join(keys)}):
+                               "extract": ",".join(keys)})
+    for path in paths:
         print(path)
     return EXIT_OK
 

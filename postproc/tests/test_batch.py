@@ -558,3 +558,63 @@ def test_two_batches_into_one_folder_merge(tmp_path, capsys):
     assert run_main(["summary", out]) == 0
     assert sorted(r["id"] for r in csv_rows(out / "summary.csv")) == sorted(want)
     assert_same_summary(read_summary(out), merged)
+
+
+def _param_deck(tmp_path: Path) -> Path:
+    deck = tmp_path / "param.inp"
+    text = cable_deck(0.4, 0.658).replace("Z, 0.4, 0.658, 0.0", "Z, <AMP>, <FREQ>, 0.0")
+    deck.write_text(text.replace("*HEADING", "*PARAMETER\nAMP = 0.4\nFREQ = 0.658\n"
+                                             "*HEADING"))
+    return deck
+
+
+def test_two_case_tables_at_once_and_a_list_of_the_last_batch_only(tmp_path):
+    """Two case tables of one deck run into one folder at once: both exit 0 and the
+    summary lists the cases of both with the values of each table run alone. A folder
+    whose batch_cases.json lists only the last batch's cases (as rodyn-batch wrote it
+    when it kept only the last batch's list): `rodyn-batch summary OUT` and a further
+    batch take the other case folders in again."""
+    deck = _param_deck(tmp_path)
+    first, second = tmp_path / "first.csv", tmp_path / "second.csv"
+    first.write_text("id,AMP\na1,0.1\na2,0.2\n")
+    second.write_text("id,FREQ\nf1,0.5\nf2,0.8\nf3,0.7\n")
+    common = ["-j", "2", "--rodyn", RODYN, "--no-progress"]
+    out, alone = tmp_path / "out", tmp_path / "alone"
+    env = dict(os.environ, PYTHONPATH=str(POSTPROC))
+    procs = [subprocess.Popen([sys.executable, "-m", "rodyn_post.batch", str(deck),
+                               "--cases", str(t), "-o", str(out), *common], env=env,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for t in (first, second)]
+    for proc in procs:
+        _, err = proc.communicate(timeout=600)
+        assert proc.returncode == 0, err
+    ids = ["a1", "a2", "f1", "f2", "f3"]
+    summary = read_summary(out)
+    assert sorted(summary["cases"]["id"]) == ids
+    assert list(summary["cases"]["status"]) == ["complete"] * 5
+    assert sorted(summary["columns"][1:3]) == ["AMP", "FREQ"]
+    row = {cid: k for k, cid in enumerate(summary["cases"]["id"])}
+    for table, where in ((first, alone / "1"), (second, alone / "2")):
+        assert run_main([deck, "--cases", table, "-o", where, *common]) == 0
+        part = read_summary(where)
+        for k, cid in enumerate(part["cases"]["id"]):
+            for col in part["columns"]:
+                if col not in TIMING_COLUMNS + ("skipped", "AMP", "FREQ"):
+                    assert same_values(summary["cases"][col][row[cid]],
+                                       part["cases"][col][k]), (cid, col)
+    state = json.loads((out / "batch_cases.json").read_text())
+    state["cases"] = [c for c in state["cases"] if c["id"].startswith("f")]
+    (out / "batch_cases.json").write_text(json.dumps(state))
+    (out / "summary.csv").unlink()
+    assert run_main(["summary", out]) == 0
+    rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+    assert sorted(rows) == ids and rows["a2"]["AMP"] == "0.2"
+    assert all(r["status"] == "complete" for r in rows.values())
+    assert sorted(c["id"] for c in json.loads((out / "batch_cases.json").read_text())
+                  ["cases"]) == ids
+    state["cases"] = state["cases"][:1]               # again, then one more batch
+    (out / "batch_cases.json").write_text(json.dumps(state))
+    more = tmp_path / "more.csv"
+    more.write_text("id,AMP\nm1,0.3\n")
+    assert run_main([deck, "--cases", more, "-o", out, *common]) == 0
+    assert sorted(r["id"] for r in csv_rows(out / "summary.csv")) == sorted(ids + ["m1"])

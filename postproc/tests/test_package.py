@@ -100,3 +100,26 @@ def test_commands_read_through_the_readers():
     offenders = [path.name for path in sorted(folder.glob("*.py"))
                  if own_readers.search(path.read_text(encoding="utf-8"))]
     assert not offenders, offenders
+
+
+def test_dask_and_scipy_optional():
+    """The package and a local batch import neither Dask nor scipy; --scheduler
+    without Dask is refused in one line naming the extra rodyn-post[dask]."""
+    code = (
+        "import sys\n"
+        "sys.modules['distributed'] = sys.modules['dask'] = sys.modules['scipy'] = None\n"
+        "import rodyn_post, rodyn_post.batch, rodyn_post.commands.plot_all\n"
+        "import rodyn_post.commands.to_paraview, rodyn_post.commands.range_graph\n"
+        "sys.exit(rodyn_post.batch.main(['x.inp', '-o', 'o', '--scheduler', 'tcp://h:1',"
+        " '--rodyn', sys.executable]))\n")
+    import os
+    import sys
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        Path(tmp, "x.inp").write_text("*HEADING\nx\n")
+        done = subprocess.run([sys.executable, "-c", code], cwd=tmp, capture_output=True,
+                              text=True, env=dict(os.environ, PYTHONPATH=str(POSTPROC)))
+    assert done.returncode == 1, done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1 and "--scheduler needs Dask" in lines[0], done.stderr
+    assert "postproc[dask]" in lines[0]
