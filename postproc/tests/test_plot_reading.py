@@ -22,20 +22,25 @@ from rodyn_post import load_dynamic, load_static
 from rodyn_post.commands import animate, plot_dynamic, plot_history, plot_static, range_graph
 
 
-@pytest.fixture(scope="module")
-def leg(tmp_path_factory):
+def shortened_run(work, deck, include, pattern, replacement):
+    """Run input/<deck> with `pattern` replaced (once) into work/out (skipped without
+    RODYN_EXE); returns the results folder."""
     exe = rodyn_exe()
-    work = tmp_path_factory.mktemp("leg")
-    text = (REPO / "input" / "mooring_surge.inp").read_text()
-    text, n = re.subn(r"TIME=120\.0, OUTPUT INTERVAL=0\.1", "TIME=6.0, OUTPUT INTERVAL=0.5",
-                      text)
+    text, n = re.subn(pattern, replacement, (REPO / "input" / deck).read_text())
     assert n == 1
-    shutil.copy(REPO / "input" / "mooring_leg_section.inc", work)
-    (work / "leg.inp").write_text(text)
-    run = subprocess.run([str(exe), str(work / "leg.inp"), "-o", str(work / "out"),
-                          "--quiet"], capture_output=True, text=True, timeout=300)
+    shutil.copy(REPO / "input" / include, work)
+    (work / deck).write_text(text)
+    run = subprocess.run([str(exe), str(work / deck), "-o", str(work / "out"), "--quiet"],
+                         capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     return work / "out"
+
+
+@pytest.fixture(scope="module")
+def leg(tmp_path_factory):
+    return shortened_run(tmp_path_factory.mktemp("leg"), "mooring_surge.inp",
+                         "mooring_leg_section.inc", r"TIME=120\.0, OUTPUT INTERVAL=0\.1",
+                         "TIME=6.0, OUTPUT INTERVAL=0.5")
 
 
 def drawn_z(ax):
@@ -121,16 +126,9 @@ def test_compare_title_fits_the_figure(leg):
 
 
 def test_long_history_band_and_zoom(tmp_path):
-    exe = rodyn_exe()
-    text = (REPO / "input" / "paper_case1.inp").read_text()
-    text, n = re.subn(r"TIME=900\.0", "TIME=70.0", text)
-    assert n == 1
-    shutil.copy(REPO / "input" / "paper_cable_section.inc", tmp_path)
-    (tmp_path / "c1.inp").write_text(text)
-    run = subprocess.run([str(exe), str(tmp_path / "c1.inp"), "-o", str(tmp_path / "out"),
-                          "--quiet"], capture_output=True, text=True, timeout=300)
-    assert run.returncode == 0, run.stderr
-    results = load_dynamic(tmp_path / "out")
+    out = shortened_run(tmp_path, "paper_case1.inp", "paper_cable_section.inc",
+                        r"TIME=900\.0", "TIME=70.0")
+    results = load_dynamic(out)
     period = 1.0 / 0.658
     for fig in (plot_dynamic.tension_figure(results), plot_dynamic.energy_figure(results)):
         assert len(fig.axes) == 4                           # two rows, whole run and zoom
@@ -142,7 +140,7 @@ def test_long_history_band_and_zoom(tmp_path):
         tension = results.line("CABLE").end_tension[:, 0] / 1e3
         if "tension" in whole.get_ylabel():
             assert lo == tension.min() and hi == tension.max()
-    short = load_dynamic(tmp_path / "out")
+    short = load_dynamic(out)
     short_fig = plot_dynamic.tension_figure(short, window=(50.0, 70.0))   # 13 periods
     assert len(short_fig.axes) == 2 and short_fig.axes[0].lines
 
@@ -152,18 +150,11 @@ def test_range_graph_starts_after_the_ramp(leg, tmp_path):
     run); the paper's case 2 ramps over 3 s: its default window starts there."""
     results = load_dynamic(leg)
     assert results.ramp_s == 12.0
-    exe = rodyn_exe()
-    text = (REPO / "input" / "paper_case2.inp").read_text()
-    text, n = re.subn(r"TIME=15\.0", "TIME=6.0", text)
-    assert n == 1
-    shutil.copy(REPO / "input" / "paper_cable_section.inc", tmp_path)
-    (tmp_path / "c2.inp").write_text(text)
-    run = subprocess.run([str(exe), str(tmp_path / "c2.inp"), "-o", str(tmp_path / "out"),
-                          "--quiet"], capture_output=True, text=True, timeout=300)
-    assert run.returncode == 0, run.stderr
-    c2 = load_dynamic(tmp_path / "out")
+    out = shortened_run(tmp_path, "paper_case2.inp", "paper_cable_section.inc",
+                        r"TIME=15\.0", "TIME=6.0")
+    c2 = load_dynamic(out)
     assert c2.ramp_s == 3.0
-    assert range_graph.main([str(tmp_path / "out"), "-o", str(tmp_path / "g")]) == 0
+    assert range_graph.main([str(out), "-o", str(tmp_path / "g")]) == 0
     rows = np.genfromtxt(tmp_path / "g" / "range_graph.csv", delimiter=",", names=True,
                          dtype=None, encoding="utf-8")
     after = c2.time >= 3.0 - 1e-9
@@ -173,7 +164,7 @@ def test_range_graph_starts_after_the_ramp(leg, tmp_path):
                        rtol=1e-12)
     assert not np.allclose(rows["tension_mean_N"], line.effective_tension.mean(axis=0),
                            rtol=1e-6)
-    assert range_graph.main([str(tmp_path / "out"), "-o", str(tmp_path / "w"),
+    assert range_graph.main([str(out), "-o", str(tmp_path / "w"),
                              "--window", "0", "6"]) == 0
     whole = np.genfromtxt(tmp_path / "w" / "range_graph.csv", delimiter=",", names=True,
                           dtype=None, encoding="utf-8")
