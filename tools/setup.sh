@@ -2,16 +2,17 @@
 # Install what rodyn needs on a Debian machine, only what is missing:
 # gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface, m4 (to build pFUnit for
 # the tests: tools/pfunit.sh) (Debian packages),
-# numpy, matplotlib, scipy, h5py, pytest for the post-processing (PyPI), and the
-# post-processing package itself (postproc/, editable: its console commands go on the
-# PATH).
+# numpy, matplotlib, h5py for the post-processing, pytest and scipy for the tests, Dask
+# for batches beyond one machine (PyPI), and the post-processing package itself
+# (postproc/, editable, with its extra 'dask': its console commands go on the PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev m4)
 # --tests (tools/test.sh): also valgrind, for the allocation check of the Newton loops
-# (bench/alloc_check.sh, CTest bench_alloc_check_quick)
-[ "${1:-}" = "--tests" ] && debs+=(valgrind)
+# (bench/alloc_check.sh, CTest bench_alloc_check_quick), and strace, which stops a run at
+# a chosen system call (tests/program/check_status_gap.py)
+[ "${1:-}" = "--tests" ] && debs+=(valgrind strace)
 # python3 and pip may come from elsewhere (pyenv): ask Debian only when absent
 command -v python3 >/dev/null 2>&1 || debs+=(python3)
 python3 -m pip --version >/dev/null 2>&1 || debs+=(python3-pip)
@@ -57,9 +58,9 @@ assert {e.name: e.value for e in dist.entry_points if e.group == "console_script
 assert dist.version == re.search(r'^version\s*=\s*"([^"]+)"', text, re.M).group(1)
 EOF
 then
-  echo "setup: installing the post-processing package from postproc/ (pip install -e)"
-  python3 -m pip install -q -e postproc 2>/dev/null ||
-    python3 -m pip install -q --break-system-packages -e postproc
+  echo "setup: installing the post-processing package from postproc/ (pip install -e, with Dask)"
+  python3 -m pip install -q -e 'postproc[dask]' 2>/dev/null ||
+    python3 -m pip install -q --break-system-packages -e 'postproc[dask]'
   if command -v pyenv >/dev/null 2>&1; then pyenv rehash; fi  # shims of the new commands
 fi
 command -v rodyn-plot-all >/dev/null 2>&1 ||

@@ -55,12 +55,11 @@ from .batch_run import (RESULT_FILE, CaseSpec, Running, acquire_lock, clean_temp
                         command_of, quote,
                         lock_is_live, lock_owner, lock_path, read_lock, read_record,
                         release_lock, run_case)
-from .batch_state import (STATE_FILE, adopt_folders, merge_cases, read_state,
-                          state_locked, summary_entries, write_state)
 
 PROG = "rodyn-batch"
 EXIT_CASES_FAILED = 4      # some cases did not complete (the batch itself ran)
 EXIT_INTERRUPTED = 130     # Ctrl-C or SIGTERM: finished cases kept
+STATE_FILE = "batch_cases.json"
 LOG_FILE = "batch.log"
 SUBCOMMANDS = ("run", "summary", "plot", "compare")
 EPILOG = ("exit status: 0 every case complete, 1 bad input (nothing run), 2 bad command "
@@ -191,7 +190,8 @@ def _run_parser() -> argparse.ArgumentParser:
 def _summary_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog=f"{PROG} summary", description=(
         "Write OUT/summary.csv and OUT/summary.h5 again from the case folders (the "
-        "cases of the last run in OUT/batch_cases.json); cases extracted with other "
+        "cases of every batch run into OUT, in OUT/batch_cases.json); cases extracted "
+        "with other "
         "quantities are extracted again."), epilog=EPILOG)
     p.add_argument("output", metavar="OUT")
     p.add_argument("--extract", default=None, metavar="LIST",
@@ -257,36 +257,6 @@ def _param_names(cases: List[Case]) -> List[str]:
     return list(names)
 
 
-def _add_to_folder(out: Path, cases: List[Case], hashes: dict, param_names: List[str],
-                   keys: tuple, locked: List[str], token: str):
-    """Add the cases to OUT's case list (batch_state: batches into one folder merge);
-    a case list that cannot be read releases the locks taken and stops the batch.
-    Notes on stderr and in the log name earlier cases kept and cases redefined."""
-    try:
-        with state_locked(out):
-            state = read_state(out)
-            mine = [{"id": c.id, "deck": str(c.deck), "params": c.params,
-                     "hash": hashes[c.id]} for c in cases]
-            state, changed, others = merge_cases(state, mine, param_names, list(keys))
-            others += len(adopt_folders(out, state))
-            write_state(out, state)
-    except BatchInputError:
-        for cid in locked:
-            release_lock(out, cid, token)
-        raise
-    notes = []
-    if others:
-        notes.append(f"{out} holds {others} cases of earlier batches: the summary lists "
-                     f"them with these {len(cases)} ({len(state['cases'])} cases)")
-    if changed:
-        notes.append(f"cases given another deck or parameters than an earlier batch's "
-                     f"(run again): {', '.join(changed[:10])}"
-                     f"{' ...' if len(changed) > 10 else ''}")
-    for note in notes:
-        print(f"{PROG}: note: {note}", file=sys.stderr)
-        _log(out, f"note: {note}")
-
-
 def _ensure_extracted(out: Path, record: dict, keys: tuple) -> dict:
     """A skipped case's record, extracted again when its quantities differ."""
     if tuple(record.get("extract_keys") or ()) == tuple(keys) and record.get("extract"):
@@ -333,14 +303,13 @@ def _run_local(specs: List[CaseSpec], jobs: int, on_done, progress: Progress):
 
 def connect(address: str, timeout: float):
     """A dask.distributed Client of the scheduler at `address` (BatchInputError when
-    distributed is missing or the scheduler cannot be reached). Dask is the optional
-    extra rodyn-post[dask], imported here only: local batches run without it."""
+    distributed is missing or the scheduler cannot be reached)."""
     try:
         from distributed import Client
     except ImportError:
-        raise BatchInputError(f"--scheduler {address}: Dask is not installed (the optional "
-                              "extra rodyn-post[dask]: python3 -m pip install -e "
-                              "'postproc[dask]', or bash tools/setup.sh)") from None
+        raise BatchInputError("--scheduler needs Dask, the optional extra of "
+                              "rodyn-post: python3 -m pip install -e 'postproc[dask]' "
+                              "(or 'dask[distributed]')") from None
     try:
         return Client(address, timeout=f"{timeout}s")
     except (OSError, TimeoutError) as exc:
@@ -415,8 +384,7 @@ def run_batch(args) -> int:
     entries: Dict[str, dict] = {}
     todo: List[Case] = []
     for case in cases:
-        entry = {"id": case.id, "params": case.params, "record": None,
-                 "hash": hashes[case.id]}
+        entry = {"id": case.id, "params": case.params, "record": None}
         entries[case.id] = entry
         rec = None if args.force else read_record(out / case.id)
         if (rec is not None and rec.get("status") == "complete"
@@ -446,7 +414,11 @@ def run_batch(args) -> int:
                                   f"({lock_owner(info)})")
         locked.append(case.id)
     clean_temporaries(out, locked)
-    _add_to_folder(out, cases, hashes, param_names, keys, locked, token)
+    with _state_lock(out):
+        earlier = _merge_state(out, cases, keys)
+    if earlier:
+        print(f"{PROG}: {out} holds {earlier} case(s) of another batch: the summary lists "
+              f"them with this batch's {len(cases)}", file=sys.stderr)
 
     extra = tuple(args.rodyn_arg) or ("--quiet",)
     specs = [CaseSpec(id=c.id, deck=str(c.deck), params=dict(c.params), out=str(out),
@@ -510,11 +482,13 @@ def run_batch(args) -> int:
             entry["status"] = "not run"
             entry["message"] = "batch interrupted" if interrupted else (
                 entry["record"] or {}).get("message", "")
-    with state_locked(out):                 # every case of the folder (batch_state)
-        state = read_state(out) or {"cases": [], "parameters": param_names}
-        everything = summary_entries(out, state, {e["id"]: e for e in ordered}, token,
-                                     lambda rec: _ensure_extracted(out, rec, keys))
-        csv_path, h5_path = write_summary(out, everything, state["parameters"], meta)
+    with _state_lock(out):
+        # the folder's cases as they stand now: another batch may have added some
+        state = _read_state(out) or {"cases": [], "parameters": param_names}
+        mine = {e["id"]: e for e in ordered}
+        listed = [mine.get(c["id"]) or _other_entry(out, c, keys, token)
+                  for c in state["cases"]]
+        csv_path, h5_path = write_summary(out, listed, state["parameters"], meta)
     failed = [e["id"] for e in ordered if (e.get("status") or e["record"]["status"])
               != "complete"]
     _log(out, f"batch {token}: {'interrupted' if interrupted else 'finished'}; "
@@ -533,28 +507,100 @@ def run_batch(args) -> int:
     return EXIT_OK
 
 
+# --- the folder's cases: every batch run into it -----------------------------------------
+
+class _state_lock:
+    """An exclusive lock (flock of the folder itself: no file is left behind) while the
+    folder's list of cases (batch_cases.json) and the summary are read and written."""
+
+    def __init__(self, out: Path):
+        self.path = Path(out)
+
+    def __enter__(self):
+        import fcntl
+        self.fd = os.open(self.path, os.O_RDONLY)
+        fcntl.flock(self.fd, fcntl.LOCK_EX)
+        return self
+
+    def __exit__(self, *exc):
+        import fcntl
+        fcntl.flock(self.fd, fcntl.LOCK_UN)
+        os.close(self.fd)
+
+
+def _read_state(out: Path) -> Optional[dict]:
+    """batch_cases.json, None when absent or unreadable."""
+    try:
+        state = json.loads((Path(out) / STATE_FILE).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return state if isinstance(state, dict) and isinstance(state.get("cases"), list) else None
+
+
+def _unlisted_cases(out: Path, listed) -> List[dict]:
+    """Case folders of OUT holding a batch's record (batch_case.json of their own id)
+    that batch_cases.json does not list: cases of a batch whose list was replaced by a
+    later batch's (rodyn-batch kept only the last batch's list before it merged them)."""
+    found = []
+    for path in sorted(Path(out).glob(f"*/{RESULT_FILE}")):
+        folder = path.parent
+        if folder.name in listed or folder.name.startswith("."):
+            continue
+        rec = read_record(folder)
+        if rec is not None and rec.get("id") == folder.name:
+            found.append({"id": folder.name, "deck": str(rec.get("deck", "")),
+                          "params": dict(rec.get("params") or {})})
+    return found
+
+
+def _merge_state(out: Path, cases: List[Case], keys: tuple) -> int:
+    """Write batch_cases.json as the folder's cases: those of earlier batches that this
+    one does not define again (listed, or found as case folders the list lacks), then
+    this batch's (a case id given again takes its new definition); parameters in order
+    of first use. Returns how many earlier cases stay."""
+    state = _read_state(out) or {"cases": [], "parameters": []}
+    state["cases"] = state["cases"] + _unlisted_cases(
+        out, {c.get("id") for c in state["cases"]})
+    ids = {c.id for c in cases}
+    kept = [c for c in state["cases"] if c.get("id") not in ids]
+    merged = kept + [{"id": c.id, "deck": str(c.deck), "params": c.params} for c in cases]
+    names: Dict[str, None] = dict.fromkeys(state.get("parameters") or [])
+    for c in merged:
+        names.update(dict.fromkeys(c.get("params") or {}))
+    new = {"cases": merged, "parameters": list(names), "extract": list(keys)}
+    (Path(out) / STATE_FILE).write_text(json.dumps(new, indent=1), encoding="utf-8")
+    return len(kept)
+
+
+def _other_entry(out: Path, case: dict, keys: tuple, token: str) -> dict:
+    """The summary entry of a case of another batch: its published record, else
+    'running' while another batch holds its lock, else 'not run'."""
+    entry = {"id": case["id"], "params": case.get("params") or {}, "record": None}
+    rec = read_record(out / case["id"])
+    if rec is not None:
+        entry["record"] = _ensure_extracted(out, rec, keys)
+    elif lock_is_live(read_lock(lock_path(out, case["id"])), token):
+        entry["status"], entry["message"] = "running", "being run by another batch"
+    else:
+        entry["status"], entry["message"] = "not run", "defined by another batch"
+    return entry
+
+
 def rebuild_summary(args) -> int:
-    """`rodyn-batch summary OUT`: the summary again from the case folders, for every
-    case of the folder (batch_cases.json and the case folders it does not list)."""
+    """`rodyn-batch summary OUT`: the summary again from the case folders."""
     from .batch_summary import write_summary
 
     out = Path(args.output)
-    if not out.is_dir():
-        raise BatchInputError(f"{out}: no such batch folder")
-    with state_locked(out):
-        state = read_state(out)
-        if state is None:
-            state = {"cases": [], "parameters": [], "extract": list(DEFAULT_EXTRACT)}
-        adopted = adopt_folders(out, state)
-        if not state["cases"]:
-            raise BatchInputError(f"{out}: no cases ({STATE_FILE} missing and no case "
-                                  f"folder with {RESULT_FILE})")
-        keys = parse_extract(args.extract) if args.extract else tuple(state["extract"])
-        if adopted or args.extract:
-            state["extract"] = list(keys)
-            write_state(out, state)
-        entries = summary_entries(out, state, {}, None,
-                                  lambda rec: _ensure_extracted(out, rec, keys))
+    if _read_state(out) is None:
+        raise BatchInputError(f"{out / STATE_FILE}: cannot read the batch's cases "
+                              "(missing or not a batch's list)")
+    with _state_lock(out):
+        state = _read_state(out)
+        keys = (parse_extract(args.extract) if args.extract
+                else tuple(state.get("extract") or DEFAULT_EXTRACT))
+        _merge_state(out, [], keys)     # takes in case folders the list lacks
+        state = _read_state(out)
+        entries = [_other_entry(out, case, keys, "") for case in state["cases"]]
         paths = write_summary(out, entries, state["parameters"],
                               {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
                                "extract": ",".join(keys)})

@@ -12,7 +12,7 @@ one place), and returns plain numbers:
   over all frames at the points the quantity lives on (the range graph of the case).
 
 The end tensions' extremes come from the support forces written every step when the
-run wrote them (rodyn since issue 12: they then do not depend on the frame interval),
+run wrote them (they then do not depend on the frame interval),
 else from the frames. The quantities (`--extract`, EXTRACT_KEYS): end_tension,
 tension, wall_tension, moment, curvature (with the minimum bend radius), torque, seabed
 (seabed normal force and touchdown range; only for a run with a seabed). Newton statistics come from

@@ -64,6 +64,19 @@ def _unit(column: str):
     return 1.0, "-"
 
 
+def column_label(column: str) -> str:
+    """A summary column as an axis reads it: its line, then the quantity in words,
+    without the unit suffix of its name ('LEG.end_B_tension_max_N' -> 'LEG: end B
+    tension max'); the unit follows in brackets where it is used."""
+    line, _, name = column.rpartition(".")
+    for suffix in sorted(SCALES, key=len, reverse=True):
+        if name.endswith("_" + suffix):
+            name = name[:-len(suffix) - 1]
+            break
+    words = name.replace("_", " ")
+    return f"{line}: {words}" if line else words
+
+
 def _as_float(values):
     try:
         return np.array([float(v) for v in values]), True
@@ -95,11 +108,11 @@ def plot_column(summary: dict, ycol: str, xparam: str, by: str = None):
         ax.plot(xs[order], ys[order] * scale, "o-", markersize=4,
                 label=None if g is None else f"{by} = {g}")
     ax.set_xlabel(xparam)
-    ax.set_ylabel(f"{ycol} [{unit}]")
+    ax.set_ylabel(f"{column_label(ycol)} [{unit}]")
     finish_axes(ax, legend=by is not None)
     left = int((~ok).sum())
-    fig.suptitle(f"{ycol} against {xparam}" + (f" ({left} cases not complete left out)"
-                                               if left else ""))
+    fig.suptitle(f"{column_label(ycol)} against {xparam}"
+                 + (f" ({left} cases not complete left out)" if left else ""))
     return fig
 
 

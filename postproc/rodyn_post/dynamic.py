@@ -224,6 +224,7 @@ class DynamicResults:
     step_time: np.ndarray = field(default_factory=lambda: np.zeros(0))
     # (ns1,) s, times of the support forces of every step: 0, then each step's end
     sea: object = field(default=None)  # sea.Sea: probes, vessels, connections; None: none
+    ramp_s: float = 0.0      # longest ramp-in of motions, waves, current [s]; 0 from CSV
 
     def line(self, name: str) -> LineDynamic:
         """The line called `name` (KeyError if there is none)."""
@@ -430,6 +431,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         environment = environment_of(f, path)
         deck = f["deck"].asstr()[()] if isinstance(f.get("deck"), h5py.Dataset) else ""
         finished = "steps" in dyn.attrs
+        ramp = float(dyn.attrs.get("ramp_s", 0.0))
         counters = {}
         if finished:
             counters = {k: _h5_attr(dyn, k, path) for k in H5_DYNAMIC_ATTRIBUTES}
@@ -455,7 +457,7 @@ def _read_h5(path: Path, status) -> DynamicResults:
         dt=float(info["dt"]), title=str(info["title"]), deck=str(deck),
         version=str(info["version"]), deck_file=str(info["deck_file"]),
         folder=path.parent, source=path, environment=environment,
-        step_time=step_time, warnings=tuple(warnings))
+        step_time=step_time, warnings=tuple(warnings), ramp_s=ramp)
 
 
 def _committed_h5(time, log, step_time, lines, status, path, warnings) -> tuple:

@@ -220,6 +220,30 @@ def elevation_range(xs, margin=0.1):
     return lo - pad, hi + pad
 
 
+def fit_elevation(ax, box_ratio=1.5, max_ratio=3.0):
+    """Scale an x-z elevation to what is drawn on it: equal axes when the drawing is at
+    most max_ratio times as wide as it is high; else z exaggerated so that the drawing
+    fills an axes box box_ratio times as wide as high (a mooring leg hundreds of metres
+    long in a shallower sea would otherwise be a thin band). Returns the exaggeration
+    of z (1 for equal axes)."""
+    (x0, x1), (z0, z1) = ax.dataLim.intervalx, ax.dataLim.intervaly
+    width, height = x1 - x0, max(z1 - z0, 1e-9)
+    if width <= max_ratio * height:
+        ax.set_aspect("equal", adjustable="datalim")
+        return 1.0
+    exaggeration = width / (box_ratio * height)
+    pad = 0.04 * height
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(z0 - pad, z1 + pad)
+    ax.set_aspect(exaggeration, adjustable="box")
+    return exaggeration
+
+
+def scale_note(exaggeration):
+    """Text for a title: '' for equal axes, else the vertical exaggeration."""
+    return "" if exaggeration == 1.0 else f", z exaggerated {exaggeration:.2g}x"
+
+
 def draw_sea(ax, env, x_range, y=0.0):
     """Draw the still water level (z = surface, blue) and the seabed's trace in the
     plane y = const (brown, shaded below) on an x-z elevation, over x_range widened to
@@ -241,8 +265,12 @@ def draw_sea(ax, env, x_range, y=0.0):
     trace = seabed_trace(env, x_range, y)
     if trace is not None:
         xb, zb = trace
+        if env.seabed_slope == 0.0:
+            label = f"seabed, z = {env.mudline_z:g} m"
+        else:
+            label = f"seabed ({env.seabed_slope:g}° slope), its trace at y = {y:.4g} m"
         bed, = ax.plot(xb, zb, "-", color="saddlebrown", linewidth=1.5, zorder=0.5,
-                       label=f"seabed (y = {y:g} m)")
+                       label=label)
         bed.set_gid(SEABED_GID)
         ax.fill_between(xb, zb, zb - 0.03 * max(env.depth, 1.0), color="tan", alpha=0.5,
                         zorder=0.4, linewidth=0)

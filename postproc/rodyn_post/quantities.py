@@ -56,6 +56,16 @@ RANGE_QUANTITIES = ("tension", "moment", "curvature")   # the riser range graph
 STATS = ("min", "mean", "max")
 
 
+BENDING = ("moment", "curvature")  # quantities a line of cable elements does not have
+
+
+def has_bending(line):
+    """Whether a line has bending moments or curvatures: a line of cable elements has
+    none (rodyn writes them as zeros at every point and frame)."""
+    return bool(np.any(line.moment_1) or np.any(line.moment_2)
+                or np.any(line.bending_curvature))
+
+
 def quantity(key: str) -> Quantity:
     if key not in QUANTITIES:
         raise InputError(f"unknown quantity {key!r} (known: {', '.join(QUANTITIES)})")

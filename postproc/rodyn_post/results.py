@@ -124,8 +124,7 @@ def load_static(path) -> StaticResults:
     """Read the static results in folder `path` (or in the results.h5 file `path`).
 
     results.h5 is used when present, unless status.txt shows that it was left by an
-    earlier run (docs/output.md: old files are not deleted) and the CSV tables are
-    there; otherwise the CSV tables. A run written with CSV=NO reads from results.h5.
+    earlier run (docs/output.md: old files are not deleted); otherwise the CSV tables.
     """
     path = Path(path)
     if path.is_file():
@@ -136,10 +135,11 @@ def load_static(path) -> StaticResults:
         raise RodynResultsError(f"{path}: no such results folder")
     status_path = path / STATUS_FILE
     status = _read_status(status_path) if status_path.is_file() else None
-    have_csv = (path / NODES_CSV).is_file()
+    if status is not None:
+        status["dynamic"] = _read_key_values(status_path).get("dynamic") == "true"
     if (path / H5_FILE).is_file():
         results = _read_h5(path / H5_FILE)
-        if status is None or not have_csv or _same_run(results, status):
+        if status is None or _same_run(results, status):
             return results
     elif not (path / NODES_CSV).is_file():
         raise RodynResultsError(f"{path}: no rodyn results here (neither {H5_FILE} "
@@ -150,13 +150,13 @@ def load_static(path) -> StaticResults:
 
 
 def _same_run(results: StaticResults, status: dict) -> bool:
-    """Whether results.h5 and status.txt come from the same run (same counters, and the
-    same wall time for a static run; a dynamic run's status.txt gives the wall time of
-    the whole run, results.h5 that of its statics)."""
-    def stamp(r):
-        wall = () if status.get("dynamic") else (r["wall_time_s"],)
-        return (r["load_factor"], r["increments"], r["iterations"], r["cutbacks"]) + wall
-    return stamp(vars(results)) == stamp(status)
+    """Whether results.h5 and status.txt come from the same run (the statics' counters
+    and wall time; a dynamic run's status.txt gives the wall time of the statics and the
+    time loop together, so for it the counters alone)."""
+    keys = ["load_factor", "increments", "iterations", "cutbacks"]
+    if not status.get("dynamic"):
+        keys.append("wall_time_s")
+    return all(vars(results)[k] == status[k] for k in keys)
 
 
 def _make_line(name, arrays, where) -> LineStatic:
@@ -288,8 +288,7 @@ def h5_units_checked(data, path):
 
 def _read_status(path: Path, keys: dict = None) -> dict:
     """status.txt as a dict of typed values for `keys` (name -> 'str', 'int', 'float' or
-    'bool'; default STATUS_KEYS), and `dynamic` (bool: a dynamic run's). Shared by the
-    static and the dynamic reader."""
+    'bool'; default STATUS_KEYS). Shared by the static and the dynamic reader."""
     keys = STATUS_KEYS if keys is None else keys
     raw = _read_key_values(path)
     status = {}
@@ -304,7 +303,6 @@ def _read_status(path: Path, keys: dict = None) -> dict:
                 status[key] = {"str": str, "int": int, "float": float}[kind](value)
         except (KeyError, ValueError):
             raise RodynResultsError(f"{path}: {key} = {value!r} is not a valid {kind}") from None
-    status.setdefault("dynamic", raw.get("dynamic") == "true")   # a dynamic run's status
     return status
 
 

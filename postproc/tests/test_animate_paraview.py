@@ -5,7 +5,6 @@ script that applies; on the synthetic run of designed.py and, with RODYN_EXE, on
 of the paper's case 2.
 """
 import shutil
-from pathlib import Path
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -228,46 +227,24 @@ def test_real_run_all(short_run, tmp_path, capsys):
     np.testing.assert_array_equal(static["points"], load_static(folder).line("CABLE").node_xyz)
 
 
-def _surge_run(work, csv):
-    """A short, coarse input/mooring_surge.inp (30 elements, 3 s) written with CSV=YES
-    or CSV=NO (HDF5 only) into work/<csv|h5>; returns the folder."""
-    import subprocess
-    from designed import REPO
-    from test_plot_static import rodyn_exe
-    inc = REPO / "input" / "mooring_leg_section.inc"
-    text = (REPO / "input" / "mooring_surge.inp").read_text()
-    for old, new in (("ELEMENTS=120", "ELEMENTS=30"), ("TIME=120.0", "TIME=3.0"),
-                     ("INPUT=mooring_leg_section.inc", f"INPUT={inc}"),
-                     ("*OUTPUT, CSV=YES, HDF5=YES",
-                      f"*OUTPUT, CSV={'YES' if csv else 'NO'}, HDF5=YES")):
-        assert old in text, old
-        text = text.replace(old, new)
-    name = "csv" if csv else "h5"
-    deck = work / f"{name}.inp"
-    deck.write_text(text)
-    run = subprocess.run([str(rodyn_exe()), str(deck), "-o", str(work / name), "--quiet"],
-                         capture_output=True, text=True, timeout=300)
-    assert run.returncode == 0, run.stderr
-    return work / name
-
-
-def test_hdf5_only_run_plotted_and_converted(tmp_path, capsys):
-    """A run written with CSV=NO (results.h5 and dynamic.h5 only) gives every plot of
-    plot_all and the ParaView files, and the same data (range graph, histories, .vtp)
-    as the same run written with CSV=YES."""
-    both, h5 = _surge_run(tmp_path, True), _surge_run(tmp_path, False)
-    assert not list(h5.glob("*.csv")) and (h5 / "results.h5").is_file()
-    written = {}
-    for folder in (both, h5):
-        assert plot_all.main([str(folder), "--dpi", "30", "--paraview"]) == 0
-        written[folder] = sorted(str(Path(p).relative_to(folder))
-                                 for p in capsys.readouterr().out.split())
-    assert written[both] == written[h5]
-    assert {"static_shape.png", "static_tension.png", "static_seabed.png",
-            "dynamic_tension.png", "range_graph.png", "history_LEG.png",
-            "paraview/static.vtp", "paraview/dynamic.pvd"} <= set(written[h5])
-    data = [p for p in written[h5] if not p.endswith(".png")]
-    vtp = sorted(p.name for p in (h5 / "paraview").glob("*.vtp"))
-    assert len(vtp) == 32                  # the static shape and 31 frames
-    for name in data + [f"paraview/{p}" for p in vtp]:
-        assert (h5 / name).read_bytes() == (both / name).read_bytes(), name
+def test_hdf5_only_run_plots_as_csv_run(short_run, tmp_path, capsys):
+    """A run with *OUTPUT, CSV=NO (results.h5, dynamic.h5 and status.txt only) is
+    plotted by plot_all and converted by to_paraview as the same run with CSV tables:
+    the same files, the same CSV tables of the plots and the same ParaView files."""
+    h5_only = tmp_path / "h5_only"
+    shutil.copytree(short_run, h5_only, ignore=shutil.ignore_patterns("*.csv"))
+    assert not list(h5_only.glob("*.csv"))
+    both = tmp_path / "both"
+    shutil.copytree(short_run, both)
+    for folder in (both, h5_only):
+        assert plot_all.main([str(folder), "--dpi", "30", "--paraview"]) == 0, \
+            capsys.readouterr().err
+    made = {p.relative_to(both) for p in both.rglob("*")
+            if not (short_run / p.relative_to(both)).exists()}
+    made_h5 = {p.relative_to(h5_only) for p in h5_only.rglob("*")
+               if not (short_run / p.relative_to(h5_only)).exists()}
+    assert made == made_h5 and any(p.suffix == ".png" for p in made)
+    for rel in made:
+        if rel.suffix in (".csv", ".vtp", ".pvd"):
+            assert (both / rel).read_bytes() == (h5_only / rel).read_bytes(), rel
+    assert read_vtp(h5_only / "paraview" / "static.vtp")["points"].shape[0] > 2

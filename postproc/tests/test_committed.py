@@ -1,4 +1,4 @@
-"""A run killed inside a sync (issue 12, docs/output.md "What is on disk, and when"):
+"""A run killed inside a sync (docs/output.md "What is on disk, and when"):
 status.txt records what was committed (`frames`, `steps`, `committed_bytes.NAME` of each
 CSV table); the data files may hold an uncommitted tail beyond it. rodyn_post reads
 exactly the committed frames and steps, from dynamic.h5 and from the CSV tables alike,

@@ -1,4 +1,4 @@
-"""The support forces of every step (issue 12): read from dynamic.h5 and from
+"""The support forces of every step: read from dynamic.h5 and from
 dynamic_ends_step.csv alike, and used by the batch extraction for the ends' extremes,
 so that they do not depend on the frame interval. A run of the paper's case 1 for 8 s
 with a frame every 0.5 s (3 frames a period of the 0.658 Hz motion) by RODYN_EXE."""

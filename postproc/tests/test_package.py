@@ -9,7 +9,6 @@ import importlib.util
 import re
 import shutil
 import subprocess
-import sys
 import sysconfig
 from pathlib import Path
 
@@ -103,65 +102,24 @@ def test_commands_read_through_the_readers():
     assert not offenders, offenders
 
 
-def _requirement_names(items):
-    """The distribution names (with extras) of requirement strings, lower case."""
-    return {re.match(r"\s*([A-Za-z0-9_.\-]+(\[[\w,]+\])?)", item).group(1).lower()
-            for item in items}
-
-
-def _pyproject_lists():
-    """(dependencies, {extra: [requirements]}) of pyproject.toml, read by hand (tomllib is
-    Python 3.11+): each list is a run of quoted strings in [project] and
-    [project.optional-dependencies]."""
-    text = (POSTPROC / "pyproject.toml").read_text(encoding="utf-8")
-    deps = re.search(r"^dependencies = \[(.*?)^\]", text, re.M | re.S).group(1)
-    extras_text = re.search(r"^\[project\.optional-dependencies\]\n(.*?)(?=^\[)", text,
-                            re.M | re.S).group(1)
-    extras = {name: re.findall(r'"([^"]+)"', body) for name, body in
-              re.findall(r"^(\w+) = \[(.*?)\]\s*(?:#[^\n]*)?$", extras_text, re.M | re.S)}
-    return re.findall(r'"([^"]+)"', deps), extras
-
-
-def test_dependencies_plain_test_and_dask():
-    """A plain install is numpy, matplotlib and h5py; scipy (used by a verification
-    script of the tests only) is in the `test` extra, Dask in the `dask` extra; and
-    requirements.txt (what tools/setup.sh installs) is the union of the three sets."""
-    deps, extras = _pyproject_lists()
-    assert _requirement_names(deps) == {"numpy", "matplotlib", "h5py"}
-    assert _requirement_names(extras["test"]) == {"pytest", "scipy"}
-    assert _requirement_names(extras["dask"]) == {"dask[distributed]"}
-    lines = [line.split("#")[0].strip() for line in
-             (POSTPROC / "requirements.txt").read_text(encoding="utf-8").splitlines()]
-    assert _requirement_names([x for x in lines if x]) == _requirement_names(
-        deps + extras["test"] + extras["dask"])
-    importers = [p.name for p in sorted((POSTPROC / "rodyn_post").rglob("*.py"))
-                 if re.search(r"^\s*(import|from)\s+(scipy|dask|distributed)\b",
-                              p.read_text(encoding="utf-8"), re.M)
-                 and p.name != "batch.py"]
-    assert not importers, importers
-
-
-def test_package_imports_without_dask_and_scipy(tmp_path):
-    """Every module of rodyn_post imports with dask, distributed and scipy absent, and a
-    local batch lists its cases; --scheduler then says which extra is missing (exit 1)."""
-    deck = tmp_path / "a.inp"
-    deck.write_text("*HEADING\nx\n")
-    code = f"""
-import importlib, pkgutil, sys
-for name in ("dask", "distributed", "scipy"):
-    sys.modules[name] = None                 # 'import name' raises ImportError
-import rodyn_post, rodyn_post.commands
-for info in pkgutil.walk_packages(rodyn_post.__path__, "rodyn_post."):
-    importlib.import_module(info.name)
-from rodyn_post import batch
-argv = [{str(deck)!r}, "-o", {str(tmp_path / 'out')!r}, "--rodyn", sys.executable]
-assert batch.main(argv + ["--list"]) == 0
-sys.exit(batch.main(argv + ["--scheduler", "tcp://127.0.0.1:1"]))
-"""
-    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=120, cwd=tmp_path)
-    assert run.returncode == 1, run.stderr
-    assert run.stdout.startswith("a\trun\t"), run.stdout
-    err = run.stderr.strip()
-    assert len(err.splitlines()) == 1, err
-    assert "Dask is not installed" in err and "rodyn-post[dask]" in err, err
+def test_dask_and_scipy_optional():
+    """The package and a local batch import neither Dask nor scipy; --scheduler
+    without Dask is refused in one line naming the extra rodyn-post[dask]."""
+    code = (
+        "import sys\n"
+        "sys.modules['distributed'] = sys.modules['dask'] = sys.modules['scipy'] = None\n"
+        "import rodyn_post, rodyn_post.batch, rodyn_post.commands.plot_all\n"
+        "import rodyn_post.commands.to_paraview, rodyn_post.commands.range_graph\n"
+        "sys.exit(rodyn_post.batch.main(['x.inp', '-o', 'o', '--scheduler', 'tcp://h:1',"
+        " '--rodyn', sys.executable]))\n")
+    import os
+    import sys
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        Path(tmp, "x.inp").write_text("*HEADING\nx\n")
+        done = subprocess.run([sys.executable, "-c", code], cwd=tmp, capture_output=True,
+                              text=True, env=dict(os.environ, PYTHONPATH=str(POSTPROC)))
+    assert done.returncode == 1, done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1 and "--scheduler needs Dask" in lines[0], done.stderr
+    assert "postproc[dask]" in lines[0]

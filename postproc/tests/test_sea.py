@@ -184,7 +184,7 @@ def _h5_only(sea_run, folder):
 
 @pytest.mark.parametrize("change", ["two vessel names", "a connection column more"])
 def test_hdf5_layout_is_the_files(sea_run, tmp_path, change):
-    """/dynamic/sea is read by its own layout (issue 12, "Design"): the items its
+    """/dynamic/sea is read by its own layout: the items its
     attributes name, each dataset's width split among them, and the columns that gives
     checked against the schema's tables. A file whose attributes name more vessels than
     its datasets hold, or whose connection rows have a column the schema has not, is

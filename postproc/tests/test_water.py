@@ -141,7 +141,7 @@ def test_environment_from_h5_equals_csv(tmp_path):
 def test_environment_units_are_the_files(tmp_path, kind, key):
     """The environment is read in the units the file gives (each /environment dataset's
     `units` attribute, environment.csv's unit column), checked against the schema's
-    (issue 12, "Design"): an angle the file says is in radians is refused, naming it,
+    (the schema): an angle the file says is in radians is refused, naming it,
     not read as degrees."""
     if kind == "h5":
         path = tmp_path / "r.h5"

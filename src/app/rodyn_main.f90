@@ -12,13 +12,13 @@ program rodyn
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names
    use rodyn_deck, only: deck_read
-   use rodyn_mesh, only: mesh_t, mesh_build
+   use rodyn_mesh, only: mesh_t, mesh_build, fix_leading_dots
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_assembly, only: dof_map
    use rodyn_recovery, only: recover_static
    use rodyn_results, only: line_result_t, run_summary_t
-   use rodyn_output, only: output_write_static, output_write_status
+   use rodyn_output, only: output_write_static, output_write_status, status_dynamics_pending
    use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
    use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_read
@@ -38,6 +38,7 @@ program rodyn
    end interface
 
    type(cli_options_t) :: opts
+   character(len=160) :: line  ! a line of the terminal summary
    type(error_t) :: err, out_err
    type(model_t) :: model
    type(outdir_lock_t) :: lock   ! the output folder's lock, released in finish
@@ -95,6 +96,15 @@ program rodyn
    ! --restart: the checkpoint is read and checked before anything is computed
    if (opts%restart .and. .not. model%dynamic%requested) call set_error(err, stat_input, &
       'rodyn: error: --restart: '//opts%deck//' has no *DYNAMIC: there is no run to continue')
+   ! a run stopped between its statics and its dynamics (status.txt says the dynamics
+   ! are still to run) has no checkpoint of its dynamics: the whole deck runs again
+   if (opts%restart .and. .not. has_error(err)) then
+      if (status_dynamics_pending(opts%outdir)) then
+         opts%restart = .false.
+         if (.not. opts%quiet) write (output_unit, '(a)') 'rodyn: --restart '// &
+            opts%outdir//': the dynamics have not started (status.txt): running the deck'
+      end if
+   end if
    if (opts%restart) call checkpoint_read(opts%outdir, model, state, ck, err)
    if (has_error(err)) then
       write (error_unit, '(a)') err%message
@@ -141,10 +151,12 @@ program rodyn
          write (error_unit, '(a)') out_err%message
          if (.not. has_error(err)) call finish(stat_io)
       end if
-      if (.not. opts%quiet .and. summary%complete) write (output_unit, &
-         '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', summary%increments, &
-         ' increment(s), ', summary%iterations, ' iterations, ', summary%cutbacks, &
-         ' cut-backs, ', summary%wall_time, ' s'
+      if (.not. opts%quiet .and. summary%complete) then
+         write (line, '(a,i0,a,i0,a,i0,a,f0.3,a)') 'static solution: ', &
+            summary%increments, ' increment(s), ', summary%iterations, ' iterations, ', &
+            summary%cutbacks, ' cut-backs, ', summary%wall_time, ' s'
+         write (output_unit, '(a)') fix_leading_dots(trim(line))
+      end if
       if (has_error(err)) then
          if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
          call finish(err%code)

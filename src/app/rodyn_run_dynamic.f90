@@ -1,7 +1,7 @@
 !> The dynamic analysis as the program runs it: set-up from the start state, the time
 !> loop, and the outputs written while it runs (frames, step log, progress line).
 !> The callbacks of the time loop reach the writer through this module's run context,
-!> which lives for one call of run_dynamic.
+!> which lives for one call of run_dynamic (module variables; docs/architecture.md).
 module rodyn_run_dynamic
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -256,8 +256,7 @@ contains
       if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
       if (has_error(err)) return
       if (t > 0.0_wp) then
-         ! (no results formed for a writer without files: case 1 for 20 s with
-         ! CSV=NO, HDF5=NO, 2.8 % of its instructions)
+         ! (no results formed for a writer without files)
          if (dynamic_output_keeps_frames(writer)) &
             call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
                                prob%sup%held, frame_lines, prob%water)
@@ -278,8 +277,8 @@ contains
    !> waiting there, with the same forces): the step
    !> force of step k belongs to its force point t_{k-1} + w h_k (w = 1/2, or 1 - alpha_f
    !> with SCHEME=ALPHA), so written at t_k it would lag by (1 - w) h_k (a first-order
-   !> error in time: 7 % of the top tension's dynamic range on the paper's case 1 at
-   !> dt = 0.1 s against a converged run; linearly interpolated as here, 0.6 %). With the
+   !> error in time, a visible fraction of the top tension's dynamic range at the paper's
+   !> dt = 0.1 s; the interpolation removes most of it). With the
    !> step after the frame (next: its force in prob%r, its length prob%dt) the value is
    !> interpolated between the two force points,
    !>   R(t_k) = R_k + (R_{k+1} - R_k) (1 - w) h_k / ((1 - w) h_k + w h_{k+1}),

@@ -1,6 +1,7 @@
 !> The analysis model as read from the deck: parameters fixed for the whole run.
 !> Everything here has a documented default; the deck reader fills it, the mesh and
-!> solvers read it and never change it (data separated by lifetime, as in BeamDyn).
+!> solvers read it and never change it (data separated by lifetime, as in BeamDyn;
+!> docs/architecture.md). The symbols of its components are those of docs/theory.md.
 module rodyn_model
    use rodyn_kinds, only: wp, g_standard
    implicit none
@@ -15,6 +16,7 @@ module rodyn_model
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table, motion_vessel
    public :: vessel_t, vessel_rao_t, vessel_from_rao, vessel_from_table
+   public :: model_ramp
    public :: rao_interp_complex, rao_interp_polar
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
@@ -372,4 +374,23 @@ module rodyn_model
       type(output_options_t) :: output
       type(parameter_value_t), allocatable :: parameters(:) !< *PARAMETER values, in order
    end type model_t
+
+contains
+
+   !> The longest ramp-in of what drives the dynamics [s]: harmonic and table *MOTIONs,
+   !> the waves and the current (0 when nothing ramps). Results before its end hold the
+   !> start-up, not the steady response (the default window of range graphs starts here).
+   pure function model_ramp(model) result(ramp)
+      type(model_t), intent(in) :: model  !< the model
+      real(wp) :: ramp                    !< [s]
+      integer :: i
+      ramp = 0.0_wp
+      if (allocated(model%motions)) then
+         do i = 1, size(model%motions)
+            ramp = max(ramp, model%motions(i)%ramp)
+         end do
+      end if
+      if (model%waves%present) ramp = max(ramp, model%waves%ramp)
+      if (model%water%present) ramp = max(ramp, model%water%cur_ramp)
+   end function model_ramp
 end module rodyn_model

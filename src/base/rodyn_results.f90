@@ -1,5 +1,6 @@
 !> Results handed from the solvers to the output writers: plain arrays per line,
-!> in SI units, with nothing the writers have to recompute.
+!> in SI units, with nothing the writers have to recompute (resultants, effective and
+!> wall tension: docs/theory.md eqs. (30)-(31), (77)-(79)).
 module rodyn_results
    use rodyn_kinds, only: wp
    use rodyn_model, only: name_len
@@ -34,7 +35,7 @@ module rodyn_results
    end type line_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and
-   !> momentum (formulation note section 3: what the EMC scheme conserves).
+   !> momentum (docs/theory.md eqs. (41)-(43): what the EMC scheme conserves).
    type :: step_log_t
       integer :: step = 0                       !< step number (1, 2, ...)
       real(wp) :: time = 0.0_wp                 !< time at the end of the step [s]

@@ -1,5 +1,6 @@
 !> The cable element: a line with axial stiffness only (*LINE, ELEMENT=CABLE), for
-!> chain, wire and rope, whose bending and torsion do not matter (docs/element.md).
+!> chain, wire and rope, whose bending and torsion do not matter (docs/element.md;
+!> docs/theory.md section 8, eqs. (61)-(66)).
 !>
 !> Per node a the unknown is the position x_a; positions are interpolated with the
 !> Lagrange functions of order p (the rod's) and, per unit unstretched length S,
@@ -42,6 +43,7 @@ contains
    !> smaller than slack_floor EA, in the matrix only (not in the force): it would
    !> otherwise be singular wherever a stretch of line starts slack or unstretched (the
    !> grounded part of a leg's start); the equilibrium found is the same.
+   !> docs/theory.md eqs. (61)-(62).
    pure subroutine cable_element_static(p, le, ea, xe, fe, ke, want_k, rule, slack_axial)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
@@ -77,6 +79,7 @@ contains
 
    !> Step internal force fe (3, p+1) of one element for a scheme (module header) and
    !> its tangent with respect to x_n+1.
+   !> docs/theory.md eqs. (63)-(66).
    pure subroutine cable_element_dynamic(p, le, ea, x0, x1, scheme, wf, fe, ke, want_k, rule)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
@@ -100,8 +103,8 @@ contains
       do g = 1, p
          dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
          wj = rule%w(g)*0.5_wp*le
-         xp0 = 0.0_wp           ! x' at t_n and t_n+1 (loops: matmul took twice the
-         xp1 = 0.0_wp           ! instructions on the mooring surge deck)
+         xp0 = 0.0_wp           ! x' at t_n and t_n+1 (explicit loops: cheaper than
+         xp1 = 0.0_wp           ! matmul on these small arrays)
          do i = 1, nen
             xp0 = xp0 + x0(:, i)*dn(i)
             xp1 = xp1 + x1(:, i)*dn(i)
@@ -140,6 +143,7 @@ contains
    end subroutine cable_element_dynamic
 
    !> Stored energy of one element, sum over the points of wj W(lambda) [J].
+   !> docs/theory.md eq. (61).
    pure function cable_element_energy(p, le, ea, xe, rule) result(energy)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
@@ -174,6 +178,7 @@ contains
    end subroutine cable_element_energy_scale
 
    !> Tension N = EA max(lambda - 1, 0) [N] and the unit tangent at the p points.
+   !> docs/theory.md eq. (61).
    pure subroutine cable_element_tension(p, le, ea, xe, rule, tension, tangent)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
@@ -208,12 +213,14 @@ contains
    end function cable_xp
 
    !> W(lambda) = 1/2 EA max(lambda - 1, 0)^2 [J/m].
+   !> docs/theory.md eq. (61).
    pure real(wp) function strain_energy(ea, lam)
       real(wp), intent(in) :: ea, lam
       strain_energy = 0.5_wp*ea*max(lam - 1.0_wp, 0.0_wp)**2
    end function strain_energy
 
    !> phi = N/lambda and dphi/dlambda.
+   !> docs/theory.md eqs. (61)-(62).
    pure subroutine tension_law(ea, lam, phi, dphi)
       real(wp), intent(in) :: ea, lam
       real(wp), intent(out) :: phi, dphi
@@ -227,6 +234,7 @@ contains
    end subroutine tension_law
 
    !> scale * d(phi x')/dx' = scale (phi I + dphi x' x'^T / lambda).
+   !> docs/theory.md eq. (62).
    pure subroutine law_tangent(xp, lam, phi, dphi, scale, dfg)
       real(wp), intent(in) :: xp(3), lam, phi, dphi, scale
       real(wp), intent(out) :: dfg(3, 3)
@@ -240,6 +248,7 @@ contains
    !> N_hat of the EMC step (module header) and dN_hat/dlambda_n+1. Where both
    !> stretches are taut the closed form; where they are close, the midpoint limit
    !> W'(lambda_m)/lambda_m; otherwise the difference quotient.
+   !> docs/theory.md eq. (63).
    pure subroutine discrete_gradient(ea, l0, l1, nh, dnh)
       real(wp), intent(in) :: ea, l0, l1
       real(wp), intent(out) :: nh, dnh

@@ -1,4 +1,5 @@
-!> Internal force of the director rod over a time step (formulation note sections 3-4),
+!> Internal force of the director rod over a time step (docs/theory.md eqs. (35)-(36),
+!> (44), (54)-(57)),
 !> projected with the midpoint directors d^{n+1/2} = (d^n + d^{n+1})/2, and its tangent
 !> with respect to the unknowns at n+1 (dx, dtheta; dd^{n+1} = dtheta x d^{n+1}):
 !>   EMC          S = C ((eps(q^n) + eps(q^{n+1}))/2 - eps0), B at q^{n+1/2}
@@ -12,11 +13,10 @@
 !> Stresses of the EMC tangent (argument xb, db: Newton's base, the iterate q^k that the
 !> last correction started from). A correction is linear in q, the strains are not: an
 !> iterate q^{k+1} carries besides the strain change B(q^k) dq the second-order part of
-!> it, and with EA >> tension that part sets the stress: on the paper's case 1 the
-!> first iterate of a step had an axial strain of 1.5e-4 at mid-span against 1.5e-6 at
-!> the converged step (an EMC axial force of 6.1e4 N against 471 N). A tangent formed
-!> there has stress terms a hundredfold off, and the reused-tangent iterations after it
-!> contract slowly. With the base given, every stress term of the tangent (the geometric
+!> it, and with EA >> tension that part sets the stress: an early iterate's axial
+!> strain can be orders of magnitude above the converged one. A tangent formed there
+!> has stress terms far off, and the reused-tangent iterations after it contract
+!> slowly. With the base given, every stress term of the tangent (the geometric
 !> sums and the projection's q-forces) takes instead the stress of the strain linearized
 !> from the base,
 !>   eps_lin = eps(q^k) + B(q^k) (q^{k+1} - q^k)_lin = eps(q_l) - eps2(dq_l) (+ e3),
@@ -27,8 +27,8 @@
 !> point stresses being unknowns of their own: eliminated point by point, that
 !> iteration has the same residual and the same material part as this one and differs
 !> only in the stress of the stress terms. The converged step does not change (the
-!> residual is untouched); only the iterates do. Measured on the paper's case 1 (20 s):
-!> 934 iterations and 199 tangents against 1405 and 204.
+!> residual is untouched); only the iterates do, and in fewer iterations
+!> (docs/theory.md eq. (44)).
 module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
    use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
@@ -46,6 +46,7 @@ module rodyn_rod_dynamic
 contains
 
    !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
+   !> docs/theory.md eqs. (35), (44), (54)-(57).
    pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, wf, fe, ke, &
                                        want_k, rule, gp0, epsn, xb, db)
       integer, intent(in) :: p                    !< element order
@@ -232,6 +233,7 @@ contains
    !> parameter of the director update), and dl = db + ddl, per node. Not ok where a
    !> node turned by 120 degrees or more (1 + tr R <= 1; cay^-1 is singular at 180): such
    !> an iterate is far from this tangent's purpose, which then keeps its own stresses.
+   !> docs/theory.md eq. (44).
    pure subroutine linear_increment(nen, x1, d1, xb, db, dxl, ddl, dl, ok)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: x1(3, nen)         !< iterate positions [m]
@@ -263,6 +265,7 @@ contains
    !> The strains at a point linearized from the base (module header): eps of the fields
    !> of (x1, dl) less the quadratic part eps2 of the increment fields (dxl, ddl) alone;
    !> rod_strains of the increment fields is eps2 with -1 in its axial strain.
+   !> docs/theory.md eq. (44).
    pure function linearized_strains(nen, n, dn, x1, dl, dxl, ddl) result(eps)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: n(nen)             !< shape functions
@@ -285,6 +288,7 @@ contains
    !>   pg(k, a, b) = sum_g f dN_a N_b s_k          (k = 1..3, contact forces)
    !>   mg(:, a, b) = sum_g f (dN_a N_b - N_a dN_b)/2 (s_4, s_5, s_6)   (moments)
    !> (geometric_update forms them once per element, not once per point).
+   !> docs/theory.md eq. (27).
    pure subroutine add_geometric(nen, n, dn, s, f, pg, mg)
       integer, intent(in) :: nen                     !< nodes of the element
       real(wp), intent(in) :: n(nen)                 !< shape functions
@@ -311,6 +315,7 @@ contains
    !>   theta_a - x_b:       skew(sum_k pg(k, b, a) dl_ka)
    !>   theta_a - theta_b:   tr(M) I - M,  M = Dr_b skew(mg(:, a, b)) Dl_a^T
    !> (Dl_a, Dr_b: the nodal directors as columns, test side and increment side).
+   !> docs/theory.md eq. (27).
    pure subroutine geometric_update(nen, pg, mg, dl, dr, ke)
       integer, intent(in) :: nen                  !< nodes of the element
       real(wp), intent(in) :: pg(:, :, :)         !< force sums (add_geometric)
@@ -356,6 +361,7 @@ contains
    !> increment side: kr, dr) as row nf of cr or nc of crc. Only the rows used are formed
    !> (rod_gp_jacobian_row): at a full point of order 3 Gamma3 and the curvatures, at a
    !> shear-only point Gamma1 and Gamma2.
+   !> docs/theory.md eq. (26).
    pure subroutine add_material(nen, n, dn, kl, dl, kr, dr, cg, f, blt, cr, nf, blc, crc, nc)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: n(nen)             !< shape functions

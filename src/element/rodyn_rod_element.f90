@@ -1,4 +1,5 @@
-!> The director rod element (formulation note sections 1-2; Betsch & Steinmann 2002).
+!> The director rod element (docs/theory.md sections 2 and 4, eqs. (4)-(31); Betsch &
+!> Steinmann 2002).
 !>
 !> Per node a the configuration is q_a = (x_a, d1_a, d2_a, d3_a) and the unknown is
 !> u_a = (dx_a, dtheta_a) with d_i <- cay(dtheta) d_i. Everything is interpolated with
@@ -12,10 +13,8 @@
 !> Gauss points. Order 3 integrates extension, bending and torsion at 3 points and the
 !> shear strains Gamma1, Gamma2 at 4 points: at 3 points one director pattern per
 !> element (a wiggle vanishing at the points) is held by EI alone, and on a
-!> cable-dominated line (EI << T le^2) Newton then ping-pongs and fails. Measured
-!> (docs/element.md): a 1000 m mooring line from its catenary converges in 3 iterations
-!> instead of not at all; the paper's cable with 10 elements lies 8.0e-5 m from the
-!> 80-element shape instead of 3.5e-5 m.
+!> cable-dominated line (EI << T le^2) Newton then ping-pongs and fails; the 4 shear
+!> points remove that pattern (docs/element.md; docs/theory.md eq. (21)).
 !>
 !> Forces are first formed as gradients with respect to q ("q-forces", 12 per node) and
 !> then projected onto the 6 unknowns with the null-space matrix P(d):
@@ -59,6 +58,7 @@ module rodyn_rod_element
 contains
 
    !> Quadrature and shape functions of order p (rod_quadrature, shape_lagrange).
+   !> docs/theory.md eqs. (19), (21).
    pure function rod_rule(p) result(rule)
       integer, intent(in) :: p !< element order
       type(rod_rule_t) :: rule
@@ -74,6 +74,7 @@ contains
    !> Quadrature of the stored energy of an element of order p: np points, parent
    !> coordinates xi, weights w, and mask(k, g) = 1 where strain k is integrated at
    !> point g. The first p points are the reduced Gauss points where results are given.
+   !> docs/theory.md eq. (21).
    pure subroutine rod_quadrature(p, np, xi, w, mask)
       integer, intent(in) :: p                   !< element order
       integer, intent(out) :: np                 !< number of points
@@ -95,6 +96,7 @@ contains
    end subroutine rod_quadrature
 
    !> Interpolate x', d_i, d_i' at a point from nodal values.
+   !> docs/theory.md eq. (20).
    pure subroutine rod_gp_kinematics(nen, n, dn, xe, de, kin)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -133,6 +135,7 @@ contains
    end subroutine rod_gp_kinematics_shear
 
    !> Shear strains (Gamma1, Gamma2) of a shear-only point.
+   !> docs/theory.md eq. (4).
    pure function rod_strains_shear(kin) result(eps)
       type(rod_gp_t), intent(in) :: kin !< fields at the point (rod_gp_kinematics_shear)
       real(wp) :: eps(2)
@@ -142,6 +145,7 @@ contains
 
    !> rod_gp_qforce for stresses (N1, N2, 0, 0, 0, 0): on x_a wj dN_a (N1 d_1 + N2 d_2),
    !> on d_ka wj N_a N_k x' (k = 1, 2), nothing on d_3a.
+   !> docs/theory.md eqs. (22)-(23).
    pure subroutine rod_gp_qforce_shear(nen, n, dn, kin, s, wj, fq)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -163,7 +167,8 @@ contains
    end subroutine rod_gp_qforce_shear
 
 
-   !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3) (note section 1).
+   !> Material strains eps = (Gamma1, Gamma2, Gamma3, K1, K2, K3), docs/theory.md
+   !> eqs. (4)-(5).
    pure function rod_strains(kin) result(eps)
       type(rod_gp_t), intent(in) :: kin !< fields at the point
       real(wp) :: eps(6)
@@ -179,7 +184,8 @@ contains
    end function rod_strains
 
    !> Add wj * B(q)^T s to the q-forces: the gradient of wj s.eps with respect to the
-   !> nodal x_a and d_ia, with B = d eps / d q evaluated at kin.
+   !> nodal x_a and d_ia, with B = d eps / d q evaluated at kin (docs/theory.md eqs.
+   !> (22)-(23)).
    pure subroutine rod_gp_qforce(nen, n, dn, kin, s, wj, fq)
       integer, intent(in) :: nen              !< nodes of the element
       real(wp), intent(in) :: n(nen)          !< shape functions
@@ -211,7 +217,8 @@ contains
       end associate
    end subroutine rod_gp_qforce
 
-   !> Projected strain Jacobian bt = B P(dnode): the change of eps at the point for
+   !> Projected strain Jacobian bt = B P(dnode) (docs/theory.md eq. (25)): the change of
+   !> eps at the point for
    !> u_b = (dx_b, dtheta_b), with nodal directors varied as dd_ib = dtheta_b x dnode_ib
    !> (rod_gp_jacobian_row, row by row).
    pure subroutine rod_gp_jacobian(nen, n, dn, kin, dnode, bt)
@@ -236,6 +243,7 @@ contains
    !>     dtheta_b: dnode_ib x g_i + dnode_jb x g_j,
    !>     g_i = (dN_b d_j - N_b d_j')/2,  g_j = (N_b d_i' - dN_b d_i)/2.
    !> A shear row (k = 1, 2) reads x' and d_1, d_2 only (rod_gp_kinematics_shear).
+   !> docs/theory.md eq. (25).
    pure subroutine rod_gp_jacobian_row(nen, n, dn, kin, dnode, k, row)
       integer, intent(in) :: nen               !< nodes of the element
       real(wp), intent(in) :: n(nen)           !< shape functions
@@ -266,8 +274,9 @@ contains
    end subroutine rod_gp_jacobian_row
 
    !> Add wj * P(dl)^T [sum_k s_k d2 eps_k / dq dq] P(dr) to ke: the stress (geometric)
-   !> stiffness at one point. The strains are quadratic, so the second derivatives are
-   !> constant blocks (identity times shape-function products). With P(d) = -skew(d):
+   !> stiffness at one point (docs/theory.md eq. (27)). The strains are quadratic, so the
+   !> second derivatives are constant blocks (identity times shape-function products). With
+   !> P(d) = -skew(d):
    !>   x_a - theta_b:      -dN_a N_b skew(sum_k s_k dr_kb)
    !>   theta_a - x_b:       N_a dN_b skew(sum_k s_k dl_ka)
    !>   theta_a - theta_b:  (dN_a N_b - N_a dN_b)/2 (tr(M) I - M),  M = Dr_b S^T Dl_a^T
@@ -338,7 +347,8 @@ contains
       end do
    end subroutine rod_gp_geometric
 
-   !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di.
+   !> Project q-forces onto the unknowns: r_x = f_x, r_theta = sum_i d_i x f_di
+   !> (docs/theory.md eqs. (12), (24)).
    pure subroutine rod_project_qforce(nen, fq, dnode, fe)
       integer, intent(in) :: nen               !< nodes of the element
       real(wp), intent(in) :: fq(3, 4, nen)    !< q-forces
@@ -353,7 +363,8 @@ contains
    end subroutine rod_project_qforce
 
    !> Add scale * sum_i [d_i f_di^T - (f_di . d_i) I] to the rotation diagonal blocks:
-   !> the change of the projection d_i x f_di when d_i rotates with the increment.
+   !> the change of the projection d_i x f_di when d_i rotates with the increment
+   !> (docs/theory.md eq. (26), last term).
    pure subroutine rod_rotation_geometric(nen, fq, dnode, scale, ke)
       integer, intent(in) :: nen                 !< nodes of the element
       real(wp), intent(in) :: fq(3, 4, nen)      !< q-forces
@@ -379,7 +390,7 @@ contains
    end subroutine rod_rotation_geometric
 
    !> Internal force and consistent tangent of one element in statics: the projected
-   !> gradient of the stored energy and its derivative (note sections 2 and 3, statics).
+   !> gradient of the stored energy and its derivative (docs/theory.md eqs. (21)-(27)).
    pure subroutine rod_element_static(p, le, c, eps0, xe, de, fe, ke, want_k, rule)
       integer, intent(in) :: p                     !< element order
       real(wp), intent(in) :: le                   !< unstretched element length [m]
@@ -436,6 +447,7 @@ contains
 
    !> Strains at the quadrature points of one element (the first p are the reduced
    !> Gauss points where results are reported); also used for the stress-free eps0.
+   !> docs/theory.md eqs. (4)-(5), (8).
    pure subroutine rod_element_strains(p, le, xe, de, eps, xig)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
@@ -504,7 +516,8 @@ contains
       end do
    end subroutine rod_hidden_shear
 
-   !> Stress resultants at the p reduced Gauss points (where results are reported):
+   !> Stress resultants at the p reduced Gauss points (where results are reported;
+   !> docs/theory.md eq. (30)):
    !> res = (N1, N2, N3, M1, M2, M3) with N = C (eps - eps0); for order 3 the shear
    !> forces N1, N2 are interpolated from the 4 points where shear is integrated. The
    !> effective tension is the spatial contact force n = N_i d_i along the centreline
@@ -566,6 +579,7 @@ contains
    end subroutine rod_element_resultants
 
    !> Stored energy of one element, sum over points of wj/2 (eps-eps0).C(eps-eps0) [J].
+   !> docs/theory.md eq. (21).
    pure function rod_element_energy(p, le, c, eps0, xe, de) result(energy)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
@@ -603,6 +617,7 @@ contains
    !> The stored energy W = 1/2 sum_g w_g (le/2) (eps - eps0)^T C (eps - eps0) of an
    !> element from its strains at the points (rod_element_fields), and its round-off
    !> scale sum_g w_g (le/2) |C (eps - eps0)| (rod_element_energy_scale).
+   !> docs/theory.md eq. (21).
    pure subroutine rod_energy_of_strains(le, c, eps0, eps, rule, energy, scale)
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -651,7 +666,8 @@ contains
       end do
    end subroutine rod_element_fields
 
-   !> Consistent nodal forces of a uniform line load q [N/m]: f_a = q int N_a dS,
+   !> Consistent nodal forces of a uniform line load q [N/m] (docs/theory.md eq. (28)):
+   !> f_a = q int N_a dS,
    !> integrated exactly with p+1 Gauss points.
    pure subroutine rod_element_line_load(p, le, q, fa)
       integer, intent(in) :: p              !< element order
@@ -670,8 +686,8 @@ contains
       end do
    end subroutine rod_element_line_load
 
-   !> Row-sum lumped translational mass of one element: m_a = rhoA int N_a dS (note
-   !> section 2). The same weights serve the director inertias E11, E22.
+   !> Row-sum lumped translational mass of one element: m_a = rhoA int N_a dS
+   !> (docs/theory.md eq. (29)). The same weights serve the director inertias E11, E22.
    pure subroutine rod_element_lumped_mass(p, le, rhoa, ma)
       integer, intent(in) :: p              !< element order
       real(wp), intent(in) :: le            !< unstretched element length [m]

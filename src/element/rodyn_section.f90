@@ -1,5 +1,5 @@
-!> Cross-section properties: the constitutive matrix of the rod (formulation note
-!> section 1) and the defaults derived from the deck's values.
+!> Cross-section properties: the constitutive matrix of the rod (docs/theory.md eq. (6))
+!> and the defaults derived from the deck's values (eq. (10)).
 module rodyn_section
    use rodyn_kinds, only: wp
    use rodyn_model, only: section_t
@@ -10,6 +10,7 @@ module rodyn_section
 contains
 
    !> Diagonal of C = diag(GA1, GA2, EA, EI1, EI2, GJ), W = 1/2 (eps - eps0).C(eps - eps0).
+   !> docs/theory.md eqs. (6)-(7).
    pure function section_stiffness(sec) result(c)
       type(section_t), intent(in) :: sec !< section with its defaults resolved
       real(wp) :: c(6)
@@ -18,6 +19,7 @@ contains
 
    !> Rotary inertia per length about a diameter of a solid circular section,
    !> rho I = m D^2 / 16 [kg m] (0 when no outer diameter is given).
+   !> docs/theory.md eq. (10).
    pure function section_default_rotary_inertia(mass, od) result(rhoi)
       real(wp), intent(in) :: mass !< mass per length [kg/m]
       real(wp), intent(in) :: od   !< outer diameter [m]

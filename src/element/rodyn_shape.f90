@@ -1,5 +1,5 @@
 !> Lagrange shape functions of order 1-3 on equally spaced nodes in xi in [-1, 1], and
-!> Gauss-Legendre rules (formulation note section 2). Element nodes are numbered along
+!> Gauss-Legendre rules (docs/theory.md eqs. (19)-(21)). Element nodes are numbered along
 !> the line: node 1 at xi = -1, node p+1 at xi = +1.
 module rodyn_shape
    use rodyn_kinds, only: wp
@@ -13,6 +13,7 @@ module rodyn_shape
 contains
 
    !> Lagrange polynomials N_a(xi) and dN_a/dxi for an element of order p.
+   !> docs/theory.md eq. (19).
    pure subroutine shape_lagrange(p, xi, n, dn)
       integer, intent(in) :: p            !< element order (1, 2 or 3)
       real(wp), intent(in) :: xi          !< parent coordinate in [-1, 1]
@@ -42,6 +43,7 @@ contains
    end subroutine shape_lagrange
 
    !> Gauss-Legendre points and weights on [-1, 1], 1 to 4 points.
+   !> docs/theory.md eq. (21).
    pure subroutine gauss_rule(ng, xi, w)
       integer, intent(in) :: ng          !< number of points (1..4)
       real(wp), intent(out) :: xi(ng)    !< abscissae

@@ -1,19 +1,20 @@
-!> One time step of the rod dynamics (formulation note section 3), solved by Newton:
+!> One time step of the rod dynamics (docs/theory.md sections 5 and 7), solved by Newton:
 !> for every free node a, with velocities updated by the midpoint relations
 !>   v^{n+1} = 2/dt (x^{n+1} - x^n) - v^n,    ddot_i^{n+1} = 2/dt (d_i^{n+1} - d_i^n) - ddot_i^n,
 !> the residual
 !>   r_x = m_a (v^{n+1} - v^n)/dt + f_x - f_ext(t_{n+1/2}) + alpha m_a (x^{n+1} - x^n)/dt
 !>   r_theta = sum_i d_i^{n+1/2} x [M_ia (ddot_i^{n+1} - ddot_i^n)/dt
 !>             + alpha M_ia (d_i^{n+1} - d_i^n)/dt] + f_theta - m_ext(t_{n+1/2})
-!> vanishes (f: the step internal force of the scheme, rodyn_rod_dynamic; alpha: Rayleigh
-!> mass-proportional damping). Held nodes follow their prescribed position at t_{n+1}; a
-!> clamped end on a vessel also its prescribed directors d_i^{n+1} = Q(t_{n+1}) d_i(0), Q
-!> the vessel's turn since rest (rodyn_motion's motion_rotation), set in the predictor and
-!> kept by its held rotation unknowns.
-!> The rotation rows are projected with the midpoint directors, so Lagrange multipliers of
-!> the orthonormality constraints never appear (discrete null-space method).
+!> vanishes (eqs. (37)-(39); f: the step internal force of the scheme, rodyn_rod_dynamic;
+!> alpha: Rayleigh mass-proportional damping). Held nodes follow their prescribed position
+!> at t_{n+1}; a clamped end on a vessel also its prescribed directors d_i^{n+1} =
+!> Q(t_{n+1}) d_i(0), Q the vessel's turn since rest (rodyn_motion's motion_rotation), set
+!> in the predictor and kept by its held rotation unknowns. The rotation rows are projected
+!> with the midpoint directors, so Lagrange multipliers of the orthonormality constraints
+!> never appear (discrete null-space method).
 !>
-!> SCHEME=ALPHA is the generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993)
+!> SCHEME=ALPHA is the generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993;
+!> docs/theory.md eqs. (56)-(60))
 !> on the director coordinates, whose mass matrix is constant: inertia at t_{n+1-alpha_m},
 !> forces at q_f = alpha_f q^n + (1 - alpha_f) q^{n+1} (projection with its directors),
 !> Newmark updates a^{n+1} = (q^{n+1} - q^n - dt v^n - dt^2 (1/2 - beta) a^n)/(beta dt^2),
@@ -24,8 +25,8 @@
 !> undamped average-acceleration rule.
 !> The step displacement dx = x^{n+1} - x^n is carried as such (predictor plus Newton
 !> corrections), never recovered as a difference of positions: far from the origin that
-!> difference loses eps |x| / dt of velocity per step (measured on a rod flying away
-!> from the origin: angular momentum drift growing like n^3, 2.7e-10 after 5000 steps).
+!> difference loses eps |x| / dt of velocity per step, and the angular momentum of a rod
+!> flying away from the origin would drift.
 module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -54,8 +55,8 @@ module rodyn_dynamics
    public :: apply_initial_velocities, dynamics_accept_step, dynamics_strain_energy
    public :: mesh_strain_energy
 
-   !> Columns of the Anderson history of the step's chord iterations (rodyn_anderson):
-   !> paper's case 1, 20 s, instructions 1.430e9 / 1.420e9 / 1.419e9 for 2 / 3 / 4
+   !> Columns of the Anderson history of the step's chord iterations (rodyn_anderson;
+   !> docs/theory.md eq. (53)); deeper histories gain little (docs/benchmarks.md)
    integer, parameter :: anderson_depth = 3
 
    !> The step problem and its workspace (allocated once in dynamics_setup).
@@ -109,7 +110,7 @@ module rodyn_dynamics
       logical :: fields0 = .false.              !< gp0 and epsn are used
       !> gp0 and epsn hold the fields of s1 (dynamics_strain_energy, on a converged
       !> step) and, once the step is accepted, of the next step's t_n: the energy pass
-      !> and the next step's fields are one pass (paper's case 1, 20 s: 1.5 % of a run)
+      !> and the next step's fields are one pass over the rods, not two
       logical :: fields_s1 = .false.
       logical :: fields_next = .false.
    contains
@@ -121,6 +122,7 @@ module rodyn_dynamics
 contains
 
    !> Build supports, loads, inertia and the workspace; state holds the start (t = 0).
+   !> docs/theory.md eq. (56) (ALPHA parameters).
    subroutine dynamics_setup(prob, model, mesh, state)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       type(model_t), intent(in), target :: model     !< model
@@ -130,8 +132,8 @@ contains
       call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
       call anderson_init(prob%aa, prob%sup%n_dof, anderson_depth)
-      ! the step tangent is factorised without pivoting (rodyn_banded; paper's case 1,
-      ! 20 s: 15 % fewer instructions, the same iterations)
+      ! the step tangent is factorised without pivoting (rodyn_banded's header: cheaper,
+      ! and stable for the mass-dominated step tangent)
       call banded_set_pivoting(prob%bm, .false.)
       prob%model => model
       prob%s1 => state
@@ -234,18 +236,12 @@ contains
    !> Start a step from t0 to t0 + dt: remember the state at t_n, set the loads at the
    !> midpoint and the prescribed positions at t_n+1, and predict the iterate by the state
    !> at t_n (the paper's predictor), but at the nodes of cable elements alone (three
-   !> unknowns, no directors), which start from x^n + dt v^n. Extrapolating predictors are
-   !> worse for rods: under EMC a
-   !> stiff mode with omega dt >> 1 changes sign every step, so x^n + dt v^n, or x^n plus
-   !> the last step's displacement, predicts it with the wrong sign. Measured on the
-   !> paper's case 1 (20 s, dt = 0.1 s): 200 steps with 962 Newton iterations and no
-   !> halving with this predictor; 500 and 483 sub-steps with 8594 and 8210 iterations
-   !> and over 200 halvings with those two (later, with the tangent rules of rodyn_newton,
-   !> x^n + dt v^n at the positions alone: 1560 iterations and 400 tangents against 1231
-   !> and 293). Cable nodes have no directors that the predicted positions would shear,
-   !> and there it pays: the mooring surge deck with 24 cubic cable elements at
-   !> dt = 0.1 s, 1200 steps: 5404 iterations and 1236 tangents against 6188 and 1769
-   !> (x^n + dx^n: 5787 and 1433).
+   !> unknowns, no directors), which start from x^n + dt v^n (docs/theory.md eq. (33)).
+   !> Extrapolating predictors are worse for rods: under EMC a stiff mode with
+   !> omega dt >> 1 changes sign every step, so x^n + dt v^n, or x^n plus the last step's
+   !> displacement, predicts it with the wrong sign and Newton needs many more iterations
+   !> and step halvings. Cable nodes have no directors that the predicted positions would
+   !> shear, and there the extrapolation saves iterations and tangents.
    subroutine dynamics_begin_step(prob, t0, dt)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
@@ -339,6 +335,7 @@ contains
    !> Stored energy of the whole mesh in state s [J] and its round-off scale [J]
    !> (rod_element_energy_scale, cable_element_energy_scale); with gp and eps, the rods'
    !> fields and strains at their points are left there (rod_element_fields).
+   !> docs/theory.md eq. (21), (61).
    subroutine mesh_strain_energy(mesh, s, w, scale, gp, eps)
       type(mesh_t), intent(in) :: mesh                       !< mesh
       type(state_t), intent(in) :: s                         !< configuration
@@ -371,8 +368,8 @@ contains
       end do
    end subroutine mesh_strain_energy
 
-   !> Close a converged step: velocities by the midpoint relations, or by the Newmark
-   !> relations for the generalized-alpha scheme.
+   !> Close a converged step: velocities by the midpoint relations (docs/theory.md eq.
+   !> (33)), or by the Newmark relations for the generalized-alpha scheme (eq. (58)).
    subroutine dynamics_end_step(prob)
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp) :: c, bdt2
@@ -395,8 +392,9 @@ contains
    end subroutine dynamics_end_step
 
    !> r1 = c (q1 - q0) - r0 over n values: the rates of the trapezoidal rule, c = 2/dt
-   !> (explicit shapes, as copy_values: the whole-array expression on the states'
-   !> components took some 34 instructions a value on the peers' case-4 run)
+   !> (explicit shapes, as copy_values: the compiler then knows the arrays do not overlap
+   !> and vectorises the loop)
+   !> docs/theory.md eq. (33).
    pure subroutine trapezoidal_rate(n, c, q1, q0, r0, r1)
       integer, intent(in) :: n       !< values
       real(wp), intent(in) :: c      !< 2/dt [1/s]
@@ -408,6 +406,7 @@ contains
    end subroutine trapezoidal_rate
 
    !> Residual (and tangent): step internal force, inertia, damping, supports.
+   !> docs/theory.md eqs. (37)-(40), (59)-(60).
    subroutine dyn_evaluate(this, want_k, err)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                   !< form the tangent
@@ -464,8 +463,8 @@ contains
       ! of the last converged step (for the first step, of its first evaluation). Taken
       ! from each iterate they grow with a diverging iterate's own forces, its scaled
       ! residual then stays near 1 whatever happens, and an iterate far from the solution
-      ! could pass as converged (measured: steps accepted with energy jumps of 4e7 J when
-      ! the paper's cable is heaved 2 m at 2 Hz, bench/decks/violent_2m_2hz.inp). Those
+      ! could pass as converged (as on the paper's cable heaved 2 m at 2 Hz,
+      ! bench/decks/violent_2m_2hz.inp). Those
       ! of the predictor would not do either: its inertia term 2 m v^n / dt is no force
       ! of the motion, and the tolerance it sets is loose.
       this%f_last = fx
@@ -484,7 +483,8 @@ contains
    end subroutine dyn_evaluate
 
    !> The water's and seabed's loads of the step (rodyn_water) at the force point of the
-   !> scheme: x_f = x^n + w dx, with the scheme's velocity and acceleration there,
+   !> scheme (docs/theory.md eq. (72)): x_f = x^n + w dx, with the scheme's velocity and
+   !> acceleration there,
    !>   midpoint family: v_f = dx/dt, a_f = (v^{n+1} - v^n)/dt = 2 dx/dt^2 - 2 v^n/dt
    !>   generalized-alpha: v_f = (1 - af) v^{n+1} + af v^n, a_f = (1 - am) a^{n+1} + am a^n
    !> and their derivatives with respect to x^{n+1} (c_v, c_a), so that the tangent holds
@@ -523,6 +523,7 @@ contains
    !> unknowns: with dq = q^{n+1} - q^n the force is mass * (c2 dq - rest). The
    !> acceleration at t_n (generalized-alpha only: the other schemes' states hold
    !> none) is node's, of its position (i = 0) or of its director i.
+   !> docs/theory.md eqs. (39), (59).
    pure function inertia_rest(this, v0, node, i) result(g)
       type(dynamic_problem_t), intent(in) :: this !< problem (scheme, step, state at t_n)
       real(wp), intent(in) :: v0(3) !< velocity at t_n
@@ -561,6 +562,7 @@ contains
    end subroutine dyn_save_base
 
    !> x = x^n + dx, dx = dx_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base.
+   !> docs/theory.md eqs. (32), (46).
    subroutine dyn_apply_correction(this, alpha)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                   !< step length [-]
@@ -584,8 +586,8 @@ contains
    !> One node's inertia (and mass-proportional damping) force added to f, mass * (c2 dq
    !> - g0) projected with the directors of the force point (weight wp), and its
    !> derivative kb when want_k (dyn_evaluate). fx is raised to the largest translational
-   !> inertia force. (Explicit shapes: written in dyn_evaluate's loop on the problem's
-   !> components, the peers' case-4 run took 1.866e9 instructions, now 1.847e9.)
+   !> inertia force (docs/theory.md eqs. (37)-(39), (59)). Explicit shapes, so that the
+   !> compiler sees plain arrays rather than the problem's components.
    pure subroutine node_inertia(m, md, c2, wp_, dx, rest, d0, d1, f, fx, kb, want_k)
       real(wp), intent(in) :: m            !< translational mass [kg]
       real(wp), intent(in) :: md(2)        !< director inertias [kg m2]
@@ -631,8 +633,9 @@ contains
    end subroutine node_inertia
 
    !> The velocity and acceleration of the trapezoidal rule over n values, v = dx/dt and
-   !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: on the
-   !> problem's components 51e6 of the mooring surge deck's 2.23e9 instructions).
+   !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: the loops
+   !> vectorise).
+   !> docs/theory.md eq. (72).
    pure subroutine trapezoidal_motion(n, dt, dx, v0, v, a)
       integer, intent(in) :: n       !< values
       real(wp), intent(in) :: dt     !< step [s]

@@ -1,4 +1,4 @@
-!> Lumped inertia of the director rod (formulation note sections 1-2): kinetic energy
+!> Lumped inertia of the director rod (docs/theory.md eqs. (9), (29), (41)-(42)): kinetic energy
 !> T = 1/2 sum_a [m_a |v_a|^2 + M1_a |d1dot_a|^2 + M2_a |d2dot_a|^2], row-sum lumped from
 !> rhoA and the director inertias E11 = rhoI2 (for d1), E22 = rhoI1 (for d2); d3 carries
 !> none. The mass matrix is constant: all nonlinearity is in the stiffness.
@@ -23,6 +23,7 @@ module rodyn_inertia
 contains
 
    !> Lump rhoA, E11 = rhoI2 and E22 = rhoI1 element by element.
+   !> docs/theory.md eqs. (29), (75).
    subroutine inertia_build(model, mesh, inert)
       type(model_t), intent(in) :: model     !< model (sections)
       type(mesh_t), intent(in) :: mesh       !< mesh
@@ -60,6 +61,7 @@ contains
    end subroutine inertia_build
 
    !> Kinetic energy [J].
+   !> docs/theory.md eq. (41).
    pure function kinetic_energy(inert, state) result(t)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities
@@ -76,6 +78,7 @@ contains
    end function kinetic_energy
 
    !> Total linear momentum sum m v [kg m/s].
+   !> docs/theory.md eq. (42).
    pure function linear_momentum(inert, state) result(p)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities
@@ -88,7 +91,7 @@ contains
    end function linear_momentum
 
    !> Total angular momentum about the origin, J = sum x x m v + sum_i d_i x M_i d_i_dot
-   !> (note section 3) [kg m2/s].
+   !> (docs/theory.md eq. (42): what the EMC scheme conserves) [kg m2/s].
    pure function angular_momentum(inert, state) result(j)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< configuration and velocities

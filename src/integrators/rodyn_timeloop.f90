@@ -1,7 +1,7 @@
 !> Time stepping of a dynamic run: steps of DT (a failed step is retried once with the
 !> energy line search, then halved, at most CUTBACKS times in a row, growing back after
 !> two good sub-steps), outputs at the frame times,
-!> and the energy and momentum balance of every step (formulation note section 3).
+!> and the energy and momentum balance of every step (docs/theory.md eqs. (41)-(43)).
 !>
 !> Energy bookkeeping: total = kinetic + strain + gravity potential (-sum f_g . x).
 !> External work sums what the supports (prescribed motions) and the point loads did to
@@ -67,6 +67,7 @@ module rodyn_timeloop
 contains
 
    !> Energies and momenta of the iterate state into log (work terms untouched).
+   !> docs/theory.md eqs. (41)-(42).
    subroutine step_energies(prob, log)
       type(dynamic_problem_t), intent(in) :: prob !< problem
       type(step_log_t), intent(inout) :: log      !< filled
@@ -95,6 +96,7 @@ contains
    end subroutine other_energies
 
    !> Work of supports and point loads, and work of damping, over the step just solved.
+   !> docs/theory.md eq. (43).
    subroutine step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
       type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
       real(wp), intent(out) :: w_ext              !< external work [J]
@@ -145,6 +147,7 @@ contains
    !> the step after it forms a new tangent: a run continued from the checkpoint holds
    !> no factorised tangent, so both runs take the same iterates (tangent reuse makes
    !> the iterate depend on the tangent held).
+   !> docs/theory.md sections 5-7.
    subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
                            after_step, on_checkpoint, resume)
       type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
@@ -174,8 +177,8 @@ contains
       opts%log_unit = log_unit
       ! the reused tangent's chord steps Anderson-accelerated (rodyn_anderson); with the
       ! history correcting what the held tangent misses, a tangent is renewed only when
-      ! an iteration fails to halve the residual (paper's case 1, 20 s: 1.420e9
-      ! instructions against 1.439e9 with the plain chord's 0.25 and 1.565e9 without)
+      ! an iteration fails to halve the residual (a looser rule than the plain chord
+      ! iteration's 0.25, since the history keeps the iteration contracting)
       opts%anderson = .true.
       opts%reuse_ratio = 0.5_wp
       dt = model%dynamic%dt
@@ -219,9 +222,9 @@ contains
          h = dt*0.5_wp**level
          t1 = min(t + h, t_end, next_frame)
          ! a remainder of less than half a step before the next output time (or the end) is
-         ! shared with the step before it: no step is cut down to a sliver (a step of 1e-5 s
-         ! after steps of 0.1 s gave a top tension of 27.9 kN instead of 7 kN, the inertia of
-         ! the unresolved axial vibration averaged over too short a time)
+         ! shared with the step before it: no step is cut down to a sliver (over a sliver
+         ! the inertia of the unresolved axial vibration is averaged over too short a time,
+         ! and the tension of that step is far off)
          if (min(t_end, next_frame) - t > h + tol_t .and. &
              min(t_end, next_frame) - t < 1.5_wp*h) t1 = t + 0.5_wp*(min(t_end, next_frame) - t)
          if (next_frame - t1 < tol_t) t1 = next_frame
@@ -256,8 +259,8 @@ contains
                ! the run before the frame is written
                why = mesh_spurious_shape(model, prob%mesh, prob%s1)
                if (len(why) > 0) then
-                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s '
-                  why = trim(msg)//why//'; the frames before it are written (the shape '// &
+                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s,'
+                  why = trim(msg)//' '//why//'; the frames before it are written (the shape '// &
                         'may have formed after the last of them)'
                   call set_error(err, stat_numerical, why)
                   summary%status = why
@@ -365,8 +368,8 @@ contains
       end subroutine solve_step
       !> One step past the end, only for the support forces of the last frame: they are
       !> interpolated between the step forces on both sides of the frame time, like
-      !> every other frame's (extrapolated from the steps before, the paper's case 1
-      !> wrote a top tension 2.6 % of its range off at t = 12 s with dt = 0.1 s).
+      !> every other frame's (extrapolated from the steps before, the last frame's
+      !> support forces would be off by a visible fraction of their range).
       !> The step is solved like the others (for EMC, its energy identity checked),
       !> handed to after_step at t_end + h, and then undone: the state returned is the
       !> one at t_end, and the step is not counted in the summary. The motions are
@@ -386,8 +389,9 @@ contains
    !> step: 2 sum over nodes of |r_x| |x^n+1 - x^n| + |r_theta| phi, free unknowns
    !> only (phi the angle the node turned in the step). EMC's energy identity holds up to this work:
    !> in a small vibration under a large prestress it is not small against the energy
-   !> exchanged, and a sound step was taken for a spurious root (a taut wire vibrating at
-   !> 1e-4 of its length stopped after 6 halvings with 250 steps a period).
+   !> exchanged, and without it a sound step would be taken for a spurious root (a taut
+   !> wire vibrating at 1e-4 of its length).
+   !> docs/theory.md eq. (43).
    function residual_work(prob) result(b)
       type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
       real(wp) :: b
@@ -418,12 +422,11 @@ contains
    !> EMC's discrete energy identity over one converged step: the change of total energy
    !> equals the work of supports and loads less the damping work, up to the Newton
    !> tolerance (the work the residual left does, residual_work, and tol of the energy
-   !> exchanged). Measured on the paper's case 1 (9000 steps) the mismatch is below 1e-7
+   !> exchanged; docs/theory.md eq. (43)). A converged step keeps it to a small fraction
    !> of the largest energy exchanged in the step (change of kinetic, strain or gravity
    !> energy, or the work); a root of the step equations far from the motion, which a
    !> line search can reach after wandering, breaks it by the order of the exchange
-   !> itself (1.9 in a step of the paper's cable heaved 2 m at 2 Hz, after which the
-   !> run accepted steps adding up to 9e9 J). Such a step is treated as not converged.
+   !> itself. Such a step is treated as not converged.
    logical function energy_identity_holds(before, after, w_ext, w_damp, tol, slack)
       type(step_log_t), intent(in) :: before  !< energies at t_n
       type(step_log_t), intent(in) :: after   !< energies at t_n+1

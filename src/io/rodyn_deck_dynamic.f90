@@ -20,7 +20,8 @@ module rodyn_deck_dynamic
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
-                                 location, resolve_line, node_count, node_number, node_label
+                                 location, resolve_line, node_count, node_number, node_label, &
+                                 check_at_most
    implicit none
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
@@ -33,6 +34,9 @@ module rodyn_deck_dynamic
    real(wp), parameter :: min_steps_per_period = 10.0_wp   !< steps a shortest period
    real(wp), parameter :: min_frames_per_period = 10.0_wp  !< frames a shortest period
    real(wp), parameter :: rho_inf_alpha = 0.8_wp  !< default RHO INF with SCHEME=ALPHA [-]
+   ! Rayleigh coefficients beyond which every mode a line analysis shows is overdamped
+   real(wp), parameter :: max_alpha = 1.0e3_wp    !< largest *DAMPING ALPHA [1/s]
+   real(wp), parameter :: max_beta = 1.0e3_wp     !< largest *DAMPING BETA [s]
    character(len=*), parameter :: what_amp = 't, value'          !< *AMPLITUDE columns
    character(len=*), parameter :: what_table = 't, ux, uy, uz'   !< *MOTION table columns
    character(len=*), parameter :: what_harm = &                  !< *MOTION harmonic line
@@ -45,7 +49,7 @@ contains
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
    !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme
-   !> (formulation note, sections 3 and 4), Newton controls and the checkpoint interval.
+   !> (docs/theory.md sections 5 and 7), Newton controls and the checkpoint interval.
    !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8
    !> (1 otherwise: no numerical damping).
    subroutine read_dynamic_card(deck, ic, model, pend, err)
@@ -172,6 +176,18 @@ contains
          end if
          call get_bounded(card, 'ALPHA', model%dynamic%rayleigh_alpha, .false., err)
          call get_bounded(card, 'BETA', model%dynamic%rayleigh_beta, .false., err)
+         ! damping ratio ALPHA/(2 omega) + BETA omega/2 (docs/deck.md, *DAMPING)
+         call check_at_most(card, 'ALPHA', model%dynamic%rayleigh_alpha, max_alpha, ' 1/s', &
+                            'the mass-proportional term alone damps every mode below '// &
+                            int_str(nint(max_alpha/(4.0_wp*pi)))//' Hz beyond critical '// &
+                            '(damping ratio ALPHA/(2 omega) > 1); a ratio zeta at omega '// &
+                            'is ALPHA = '// &
+                            '2 zeta omega', err)
+         call check_at_most(card, 'BETA', model%dynamic%rayleigh_beta, max_beta, ' s', &
+                            'the stiffness-proportional term alone damps every mode of '// &
+                            'period below '//int_str(nint(pi*max_beta))//' s beyond critical '// &
+                            '(damping ratio BETA omega/2 > 1); a ratio zeta at omega is '// &
+                            'BETA = 2 zeta/omega', err)
       end associate
    end subroutine read_damping_card
 

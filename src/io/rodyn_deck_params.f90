@@ -183,6 +183,9 @@ contains
       if (err%code /= 0) return
       p%is_number = .true.
       p%text = param_number_text(p%value)
+      ! an integer literal is substituted as written: a message about it (an integer out
+      ! of range) then quotes what the user typed, not its rounded real value
+      if (verify(text, digits10) == 0) p%text = text
    end subroutine param_value
 
    !> Evaluate an arithmetic expression of numbers and numeric parameters (grammar in

@@ -15,7 +15,8 @@ module rodyn_deck_support
    private
    public :: ref_t, pending_t, max_cutbacks, max_elements
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
-   public :: check_once, get_node, get_bounded, get_tolerance, data_check, param_fail
+   public :: check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
+   public :: param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
@@ -135,6 +136,24 @@ contains
          call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
       end if
    end subroutine get_bounded
+
+   !> A value no physical model has: refused when above vmax, with `why` (the physical
+   !> meaning of the bound, ending the message).
+   subroutine check_at_most(card, name, value, vmax, unit, why, err)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      real(wp), intent(in) :: value        !< its value
+      real(wp), intent(in) :: vmax         !< largest value accepted
+      character(len=*), intent(in) :: unit !< unit of value and vmax ('' when none)
+      character(len=*), intent(in) :: why  !< why no larger value is meaningful
+      type(error_t), intent(inout) :: err  !< status
+
+      if (has_error(err)) return
+      if (value > vmax) then
+         call param_fail(card, name, name//' = '//real_str(value)//unit//' is beyond '// &
+                         real_str(vmax)//unit//': '//why, err)
+      end if
+   end subroutine check_at_most
 
    !> Optional tolerance parameter, 0 < value < 1.
    subroutine get_tolerance(card, name, value, err)

@@ -16,9 +16,17 @@ module rodyn_deck_water
                                card_data_real, real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
                                  data_check, param_fail, location, resolve_line, &
-                                 resolve_section
+                                 resolve_section, check_at_most
    implicit none
    private
+
+   !> densest water accepted [kg/m3]: beyond any liquid
+   real(wp), parameter :: max_water_density = 2.0e4_wp
+   !> largest drag or added-mass coefficient accepted [-]
+   real(wp), parameter :: max_coefficient = 100.0_wp
+   character(len=*), parameter :: coeff_why = 'no section has such a drag or added-mass '// &
+      'coefficient (a cylinder: CDN about 1.2, CAN 1; a studless chain on its nominal '// &
+      'diameter: CDN 2.4, CDA 1.15)'
    public :: read_water_card, read_current_card, read_seabed_card, read_segment_card
    public :: read_attachment_card, read_section_hydro, resolve_segments, validate_water
 
@@ -60,6 +68,9 @@ contains
          end if
          call card_get_real(card, 'SURFACE', w%surface, err)
          call get_bounded(card, 'DENSITY', w%density, .true., err)
+         call check_at_most(card, 'DENSITY', w%density, max_water_density, ' kg/m3', &
+                            'denser than any liquid (mercury: 13 546 kg/m3; sea water '// &
+                            'about 1025 kg/m3)', err)
          if (has_error(err)) return
          w%present = .true.
          model%seabed%present = .true.
@@ -280,6 +291,10 @@ contains
       call get_bounded(card, 'CDA', sec%cda, .false., err)
       call get_bounded(card, 'CAN', sec%can, .false., err)
       call get_bounded(card, 'CAA', sec%caa, .false., err)
+      call check_at_most(card, 'CDN', sec%cdn, max_coefficient, '', coeff_why, err)
+      call check_at_most(card, 'CDA', sec%cda, max_coefficient, '', coeff_why, err)
+      call check_at_most(card, 'CAN', sec%can, max_coefficient, '', coeff_why, err)
+      call check_at_most(card, 'CAA', sec%caa, max_coefficient, '', coeff_why, err)
       call get_bounded(card, 'ID', sec%id, .false., err)
       call get_bounded(card, 'CONTENTS DENSITY', sec%rho_i, .false., err)
       if (has_error(err)) return

@@ -15,7 +15,7 @@
 !> those ranges (|x| below about 1e-15 or above 1e37, subnormals, Inf, NaN) are left to
 !> format_real (format_e17 returns n = 0), which uses C's strfromd (ISO C23, glibc >=
 !> 2.25) for the finite ones: about 6 times faster than a Fortran internal write, the
-!> same characters as '(es25.16e3)' with a two-digit exponent where it fits. Measured
+!> same characters as '(es25.16e3)' with a two-digit exponent where it fits. Checked
 !> against strfromd and that write: the same characters for every value tested
 !> (tests/unit/test_format.pf).
 module rodyn_format
@@ -68,8 +68,8 @@ contains
       integer :: e, k, q, s, tries, ke
       character(len=17) :: dig
       integer :: jp
-      ! 5^q (q <= 31) and 10^q (q <= 27) as tables: the powers of 128-bit integers were a
-      ! library call each (mooring surge deck: 1.2 % of a run's instructions)
+      ! 5^q (q <= 31) and 10^q (q <= 27) as tables: the powers of 128-bit integers are a
+      ! library call each
       integer(i16), parameter :: pow5(0:31) = [(5_i16**jp, jp=0, 31)]
       integer(i16), parameter :: pow10(0:27) = [(10_i16**jp, jp=0, 27)]
       integer(i16), parameter :: e16 = 10_i16**16, e17 = 10_i16**17
@@ -91,7 +91,7 @@ contains
       ! a = m 2^e exactly, from the bits of the (normal) binary64: 52 stored bits of m
       ! below its leading 1, the biased exponent above them; k from 2^(e+52) <= a, at
       ! most one below floor(log10 a) (the loop corrects it; log10, fraction and scale
-      ! were library calls, half of a number's instructions)
+      ! are library calls, which this avoids)
       bits = transfer(a, bits)
       m = int(ior(iand(bits, 4503599627370495_int64), 4503599627370496_int64), i16)
       e = int(shiftr(bits, 52)) - 1075

@@ -756,7 +756,7 @@ contains
             exit blk
          ! the memory space has the shape of the file selection: HDF5 then copies the
          ! block as a whole instead of iterating over a 1-D to 2-D match element by
-         ! element (mooring surge deck: 3.6e8 instructions in 9 syncs before)
+         ! element
          call h5screate_simple_f(r, count(3 - r:), mspace, stat)
          if (failed(stat, 'select in dataset', where, series%file, series%path, err)) &
             exit blk
@@ -797,7 +797,7 @@ contains
       character(len=*), intent(in), optional :: names(:) !< text attributes of the dataset
       character(len=*), intent(in), optional :: texts(:) !< their texts
       !> the dataset kept open here, its shape and type as hdf5_open_series reads them
-      !> (opening it again by its path took as many instructions as creating it)
+      !> (opening it again by its path would cost as much as creating it)
       type(hdf5_series_t), intent(inout), optional :: series
       integer(hid_t) :: dset, dcpl
       integer(hsize_t) :: maxdims(size(dims)), chunk(size(dims))

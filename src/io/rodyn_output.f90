@@ -8,7 +8,9 @@
 !> ('.static_nodes.csv.tmp') and renamed into place only when written whole and closed
 !> without error (rodyn_outfile, which checks every write), so a reader never sees a
 !> half-written file. The folder is created (with its parents) if missing. status.txt
-!> is written last and says complete = true only when every file was written.
+!> is written last and says complete = true only when every file was written and the
+!> deck has nothing left to do: after the statics of a deck with *DYNAMIC it says
+!> complete = false, status = status_dynamics_to_run (docs/output.md, "status.txt").
 module rodyn_output
    use rodyn_kinds, only: i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
@@ -29,7 +31,11 @@ module rodyn_output
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
-   public :: committed_t
+   public :: committed_t, status_dynamics_to_run, status_dynamics_pending
+
+   !> status.txt's status after the statics of a deck with *DYNAMIC, until its dynamics
+   !> start (complete = false): what the deck still has to do.
+   character(len=*), parameter :: status_dynamics_to_run = 'statics complete, dynamics to run'
 
    !> The committed size of a table that grows while a run goes: status.txt's key
    !> 'committed_bytes.<name>' (docs/output.md). A reader trusts the first `bytes` bytes
@@ -53,7 +59,10 @@ contains
 
    !> Write the static results into folder `dir`: the CSV tables and results.h5 as
    !> model%output asks, then status.txt (always). With summary%complete false the
-   !> lines hold the last converged state and status.txt says how far the run got.
+   !> lines hold the last converged state and status.txt says how far the run got. A
+   !> deck with *DYNAMIC is not complete when its statics are: status.txt then says
+   !> complete = false, status = status_dynamics_to_run (results.h5's root attributes
+   !> describe the static analysis the file holds, complete or not).
    !> Works even when err already holds an error (a failed analysis still writes its
    !> outputs); an output failure is then recorded only if err was clear.
    subroutine output_write_static(dir, model, lines, summary, err)
@@ -96,6 +105,11 @@ contains
             if (merge(model%output%hdf5, model%output%csv, j == size(order))) &
                call remove_file(path_join(dir, trim(order(j))))
          end do
+      end if
+      ! the statics of a deck with *DYNAMIC done: the dynamics remain to be run
+      if (s%complete .and. model%dynamic%requested) then
+         s%complete = .false.
+         s%status = status_dynamics_to_run
       end if
       call output_write_status(dir, s, e_status, deck_file=text_of(model%deck_file), &
                                params=model%parameters)
@@ -173,6 +187,33 @@ contains
          call set_error(err, e%code, e%message)
       end if
    end subroutine output_write_status
+
+   !> Whether status.txt in folder `dir` says that the statics of a deck with *DYNAMIC
+   !> are done and its dynamics have not started (complete = false, status =
+   !> status_dynamics_to_run): a run killed between the two. False when the file is
+   !> missing or unreadable.
+   logical function status_dynamics_pending(dir)
+      character(len=*), intent(in) :: dir   !< output folder
+      character(len=512) :: line
+      logical :: there, incomplete, to_run
+      integer :: u, stat
+      status_dynamics_pending = .false.
+      inquire (file=path_join(dir, status_txt), exist=there)
+      if (.not. there) return
+      open (newunit=u, file=path_join(dir, status_txt), action='read', status='old', &
+            iostat=stat)
+      if (stat /= 0) return
+      incomplete = .false.
+      to_run = .false.
+      do
+         read (u, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (line == 'complete = false') incomplete = .true.
+         if (line == 'status = '//status_dynamics_to_run) to_run = .true.
+      end do
+      close (u)
+      status_dynamics_pending = incomplete .and. to_run
+   end function status_dynamics_pending
 
    !> Write environment.csv into folder `dir` (key, value, unit rows of the sea, current
    !> and seabed; docs/output.md) when the model has water; for a dry model remove an

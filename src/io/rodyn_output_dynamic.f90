@@ -38,7 +38,7 @@ module rodyn_output_dynamic
    use rodyn_format, only: put_text, put_int, put_real, put_reals
    use rodyn_kinds, only: wp, i8
    use rodyn_error, only: error_t, set_error, has_error, stat_io
-   use rodyn_model, only: model_t, scheme_names, parameter_value_t
+   use rodyn_model, only: model_t, scheme_names, parameter_value_t, model_ramp
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_file, hdf5_close_file, &
       hdf5_flush, hdf5_create_group, hdf5_write_attribute, hdf5_open_series, &
@@ -800,6 +800,7 @@ contains
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
             model%dynamic%output_interval, err)
+         call hdf5_write_attribute(h5, '/dynamic', 'ramp_s', model_ramp(model), err)
          call write_environment_h5(h5, model, err)
          call write_parameters_h5(h5, model, err)
          call create_described_series(h5, dynamic_h5, '/dynamic/time', 0, err, chunk_bytes/8, &

@@ -55,7 +55,8 @@ module rodyn_output_schema
       'static_reactions.csv | tension_N | N | magnitude of the support force', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
-      'static_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &
+         'the last node in contact and the next); -1 when none', &
       'environment.csv | key | - | name of the quantity', &
       'environment.csv | value | - | its value, in the unit of the row', &
       'environment.csv | unit | - | unit of the value', &
@@ -81,7 +82,8 @@ module rodyn_output_schema
       'dynamic_elements.csv | curvature_per_m | 1/m | total bending curvature', &
       'dynamic_lines.csv | time_s | s | time of the frame', &
       'dynamic_lines.csv | line | - | line name', &
-      'dynamic_lines.csv | touchdown_s_m | m | largest S on the seabed; -1 when none', &
+      'dynamic_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &
+         'the last node in contact and the next); -1 when none', &
       'dynamic_ends.csv | time_s | s | time of the frame', &
       'dynamic_ends.csv | line | - | line name', &
       'dynamic_ends.csv | end | - | A (S = 0) or B (S = L)', &
@@ -216,8 +218,9 @@ module rodyn_output_schema
    !> (NAME: one key per table or deck parameter). rodyn_output's output_write_status
    !> writes them; docs/output.md lists the same keys (check_output_schema.py).
    character(len=row_len), parameter :: status_keys(*) = [character(len=row_len) :: &
-      'status.txt | complete | - | true if the analysis reached its end, else false', &
-      'status.txt | status | - | one line: complete, or what failed (running while it runs)', &
+      'status.txt | complete | - | true when all the deck asks for is done, else false', &
+      'status.txt | status | - | complete, running, statics complete, dynamics to run, '// &
+      'or what failed', &
       'status.txt | load_factor | - | static load factor reached (1 for a complete static run)', &
       'status.txt | increments | - | static load increments converged', &
       'status.txt | iterations | - | Newton iterations of the static analysis', &
@@ -279,15 +282,17 @@ module rodyn_output_schema
       'results.h5 | /:deck_file | - | path of the main deck file', &
       'results.h5 | /:title | - | *HEADING title', &
       'results.h5 | /:units | - | the unit system: SI (m, s, kg, N, N m, rad)', &
-      'results.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
-      'results.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
+      'results.h5 | /:complete | - | 1 if the static analysis reached its end, else 0', &
+      'results.h5 | /:status | - | the static analysis: complete, or what failed '// &
+      '(running while it runs)', &
       'results.h5 | /static:load_factor | - | static load factor reached', &
       'results.h5 | /static:increments | - | load increments converged', &
       'results.h5 | /static:iterations | - | Newton iterations in total', &
       'results.h5 | /static:cutbacks | - | increment halvings', &
       'results.h5 | /static:wall_time_s | s | solve wall time', &
       'results.h5 | /static/LINE:name | - | the line name', &
-      'results.h5 | /static/LINE:touchdown_s | m | largest S on the seabed; -1 when none', &
+      'results.h5 | /static/LINE:touchdown_s | m | largest S in contact with the seabed '// &
+         '(between the last node in contact and the next); -1 when none', &
       'results.h5 | /static/LINE/reactions:end_held | - | 1 where end A, B is held, else 0', &
       'results.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
       'results.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)', &
@@ -302,6 +307,8 @@ module rodyn_output_schema
       'dynamic.h5 | /:dt | s | *DYNAMIC DT', &
       'dynamic.h5 | /dynamic:duration_s | s | *DYNAMIC TIME', &
       'dynamic.h5 | /dynamic:output_interval_s | s | *DYNAMIC OUTPUT INTERVAL', &
+      'dynamic.h5 | /dynamic:ramp_s | s | longest ramp-in of the motions, waves '// &
+         'and current (0: none)', &
       'dynamic.h5 | /dynamic:frames | - | frames written (at close)', &
       'dynamic.h5 | /dynamic:steps | - | time steps completed (at close)', &
       'dynamic.h5 | /dynamic:time_reached_s | s | last time reached (at close)', &
@@ -351,7 +358,7 @@ module rodyn_output_schema
          'N2 along d2', &
       'results.h5 | /static/LINE/torque | N m | torsional moment M3 about d3', &
       'results.h5 | /static/LINE/wall_tension | N | wall (true) tension, T_eff '// &
-         '+ p_o A_o - p_i A_i, positive in tension', &
+         '+ p_i A_i - p_o A_o, positive in tension', &
       'dynamic.h5 | /deck | - | full text of the input deck, includes expanded', &
       'dynamic.h5 | /dynamic/LINE/bending_curvature | 1/m | total bending '// &
          'curvature sqrt(K1^2 + K2^2); row per frame', &
@@ -392,7 +399,7 @@ module rodyn_output_schema
       'dynamic.h5 | /dynamic/LINE/touchdown_s | m | largest arc length in '// &
          'contact with the seabed, -1 when none; one value per frame', &
       'dynamic.h5 | /dynamic/LINE/wall_tension | N | wall (true) tension, T_eff '// &
-         '+ p_o A_o - p_i A_i, positive in tension; row per frame', &
+         '+ p_i A_i - p_o A_o, positive in tension; row per frame', &
       'dynamic.h5 | /dynamic/LINE/x | m | x of the nodes (global axes); row per '// &
          'frame', &
       'dynamic.h5 | /dynamic/LINE/y | m | y of the nodes (global axes); row per '// &
@@ -489,7 +496,7 @@ contains
       row = ''
       ! every row begins 'file | key |' (test_output's test_schema_rows_found holds the
       ! table to it): compared in place, not field by field (cutting every row's fields
-      ! out took a tenth of a one-step run's instructions)
+      ! out would cost a good part of a short run)
       needle = file//' | '//key//' |'
       if (len(needle) > row_len) return
       do k = 1, size(output_datasets)

@@ -1,4 +1,5 @@
-!> The sea around the lines (docs/water.md): still water level, the seabed plane and the
+!> The sea around the lines (docs/water.md; docs/theory.md eqs. (80)-(81), (94)-(95)):
+!> still water level, the seabed plane and the
 !> water's kinematics. Everything a load needs to know of the water at a point and time
 !> comes through fluid_kinematics, so that waves only add to it.
 !>
@@ -19,6 +20,7 @@ module rodyn_environment
 contains
 
    !> Height of the seabed plane under (x, y) [m].
+   !> docs/theory.md eq. (94).
    pure real(wp) function seabed_z(model, x, y)
       type(model_t), intent(in) :: model !< model (water and seabed)
       real(wp), intent(in) :: x          !< [m]
@@ -30,6 +32,7 @@ contains
    end function seabed_z
 
    !> Outward (upward) unit normal of the seabed plane.
+   !> docs/theory.md eq. (94).
    pure function seabed_normal(sb) result(n)
       type(seabed_t), intent(in) :: sb !< seabed
       real(wp) :: n(3)
@@ -39,6 +42,7 @@ contains
    end function seabed_normal
 
    !> Distance of x above the seabed plane, along its normal [m] (< 0: penetration).
+   !> docs/theory.md eq. (95).
    pure real(wp) function seabed_gap(model, n, x)
       type(model_t), intent(in) :: model !< model
       real(wp), intent(in) :: n(3)       !< seabed_normal
@@ -47,6 +51,7 @@ contains
    end function seabed_gap
 
    !> Ramp factor of the current at time t (1 without a ramp) [-].
+   !> docs/theory.md eq. (81).
    pure real(wp) function current_factor(water, t)
       type(water_t), intent(in) :: water !< water
       real(wp), intent(in) :: t          !< time [s]
@@ -55,6 +60,7 @@ contains
 
    !> Velocity u and acceleration a of the water at point x and time t, and du/dx
    !> (u_i,j), for the Morison loads; r = current_factor(water, t) passed in.
+   !> docs/theory.md eq. (80).
    pure subroutine fluid_kinematics(water, r, x, u, dudx, a)
       type(water_t), intent(in) :: water !< water (current profile)
       real(wp), intent(in) :: r          !< current ramp factor [-]

@@ -8,6 +8,7 @@
 !> (m^2 mod 2n) before the cosine, so that it keeps its digits for long records. Every
 !> twiddle factor is a cosine and sine of its own (no recurrence). O(n log n); the error
 !> is a few eps log2 n of sum |x|.
+!> It gives the components of an elevation record, docs/theory.md eq. (93).
 module rodyn_fft
    use rodyn_kinds, only: wp, i8, pi, two_pi
    implicit none

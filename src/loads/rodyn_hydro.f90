@@ -1,5 +1,6 @@
-!> Distributed loads of the water and the seabed at one point of a line (docs/water.md),
-!> per unit UNSTRETCHED length, with their derivatives for the Newton tangent.
+!> Distributed loads of the water and the seabed at one point of a line (docs/water.md;
+!> docs/theory.md eqs. (67)-(71), (96)-(97)), per unit UNSTRETCHED length, with their
+!> derivatives for the Newton tangent.
 !>
 !> With t = x'/|x'| the unit tangent, lambda = |x'| the stretch, u the water velocity,
 !> a_w its acceleration, v and a the line's velocity and acceleration, u_r = u - v:
@@ -71,7 +72,7 @@ module rodyn_hydro
 contains
 
    !> Submerged fraction phi(h) of a circle of radius r whose centre is h below the
-   !> surface, and dphi/dh (module header).
+   !> surface, and dphi/dh (module header; docs/theory.md eq. (69)).
    pure subroutine submerged_fraction(h, r, phi, dphi)
       real(wp), intent(in) :: h     !< depth of the centre below the surface [m]
       real(wp), intent(in) :: r     !< radius [m]
@@ -94,6 +95,7 @@ contains
    !> Water and seabed force per unstretched length at a point (module header): fh from
    !> the water, fs from the seabed; with want_k their derivatives with respect to the
    !> position x, the tangent x', the velocity v and the acceleration a of the line.
+   !> docs/theory.md eqs. (68)-(71), (96)-(97).
    pure subroutine water_point_load(env, ws, x, xp, v, acc, fh, fs, kx, kxp, kv, ka, want_k, &
                                     parts, wk)
       type(water_env_t), intent(in) :: env      !< environment
@@ -173,8 +175,8 @@ contains
                   g = ws%cn*lam*mm3(gn, pm) + 2.0_wp*ws%ct*lam*abs(s)*tt
                   kvd = -g
                   kxd = mm3(g, dudx)
-                  ! (named 3 x 3 locals: matmul of array expressions took heap
-                  ! temporaries, 0.9 million malloc/free pairs on the mooring surge deck)
+                  ! (named 3 x 3 locals: matmul of array expressions would take heap
+                  ! temporaries at every point)
                   m = outer(t, ur)
                   kxpd = ws%cn*(unm*outer(un, t) - mm3(mm3(gn, m + s*eye), pm)) &
                          + ws%ct*(abs(s)*s*tt + mm3(2.0_wp*abs(s)*m + abs(s)*s*eye, pm))
@@ -261,12 +263,12 @@ contains
 
    !> Seabed normal force per unstretched length N = D (k pen - c v.n), pen = -gap
    !> (c = 0 in statics), wherever it is positive, and its derivatives in the gap and in
-   !> v.n; N <= 0: no contact. A line coming down at v.n < 0 meets the damper c/k |v.n|
-   !> above the plane (0.1 s times the speed with the defaults), so that N grows from 0
-   !> without a jump: with the damper engaged only below the plane, N jumped from 0 to
-   !> c |v.n| D at the plane (360 times the weight of a line landing at 1.4 m/s) and the
-   !> steps of an inclined line touching down failed (tests/verification/
-   !> test_water_dynamics.pf, found there).
+   !> v.n; N <= 0: no contact (docs/theory.md eq. (96)). A line coming down at v.n < 0
+   !> meets the damper c/k |v.n| above the plane (0.1 s times the speed with the
+   !> defaults), so that N grows from 0 without a jump: a damper engaged only below the
+   !> plane would make N jump from 0 to c |v.n| D at the plane, many times the weight of a
+   !> landing line, and the steps of an inclined line touching down would fail
+   !> (tests/verification/test_water_dynamics.pf).
    pure subroutine seabed_normal_force(env, dc, gap, vn, nf, dn_dgap, dn_dvn)
       type(water_env_t), intent(in) :: env !< environment
       real(wp), intent(in) :: dc           !< contact width D [m]

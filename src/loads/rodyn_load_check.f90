@@ -1,7 +1,8 @@
 !> Why a solve that failed may have diverged: point loads beyond anything the lines can
 !> carry. A force F on a line of axial stiffness EA strains it by about F/EA; beyond a
 !> strain of 10 (the line ten times its length) no equilibrium is within reach of the
-!> solvers, which then overflow (a load of 1e99 N was blamed on "a mechanism").
+!> solvers, which then overflow; the message then names the load, not a mechanism.
+!> (The strain is Gamma_3 of docs/theory.md eq. (4), or the cable's lambda - 1, eq. (61).)
 module rodyn_load_check
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, end_b

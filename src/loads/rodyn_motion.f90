@@ -1,5 +1,6 @@
 !> Time functions of a dynamic run: prescribed motions of held nodes (harmonic per
-!> direction or a displacement table, times a smooth ramp-in) and load amplitudes.
+!> direction or a displacement table, times a smooth ramp-in) and load amplitudes
+!> (docs/theory.md eqs. (81), (102)-(106)).
 module rodyn_motion
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_model, only: motion_t, amplitude_t, motion_harmonic, motion_table, &
@@ -16,6 +17,7 @@ contains
 
    !> Ramp-in r(t) = (1 - cos(pi t / T))/2 for t < T, 1 after; r = 1 when T = 0.
    !> r(0) = r'(0) = 0, so a motion multiplied by it starts from rest.
+   !> docs/theory.md eq. (81).
    pure real(wp) function ramp_factor(t, ramp)
       real(wp), intent(in) :: t     !< time [s]
       real(wp), intent(in) :: ramp  !< ramp duration T [s]
@@ -35,6 +37,7 @@ contains
    !> vessel_slow_motion) moves its reference point to O + r d(t) and turns it to
    !> psi0 + r d_psi(t), the wave-frequency motion xi acting about them:
    !>   X = O + r d + Rz(psi0 + r d_psi) (r xi_1:3 + Rv(r xi_4:6) p).
+   !> docs/theory.md eqs. (102), (104).
    pure function motion_displacement(mo, t, vessels, x0) result(u)
       type(motion_t), intent(in) :: mo !< motion
       real(wp), intent(in) :: t        !< time [s]
@@ -76,6 +79,7 @@ contains
    !> the vessel's rotation (as in motion_displacement: ramp r, slow heading d_psi, motion
    !> xi, composed exactly) times the transpose of its rotation at rest; Q = I when the
    !> vessel is at rest. The identity for the other motions (translations only).
+   !> docs/theory.md eq. (105).
    pure function motion_rotation(mo, t, vessels) result(q)
       type(motion_t), intent(in) :: mo !< motion
       real(wp), intent(in) :: t        !< time [s]
@@ -111,6 +115,7 @@ contains
    !> Where the vessel point at x (the vessel at rest) is with the vessel at its static
    !> offset, lam of it (statics' load factor):
    !>   X = O + lam offset_1:3 + Rz(psi0 + lam offset_psi) p,  p = Rz(psi0)^T (x - O).
+   !> docs/theory.md eq. (103).
    pure function vessel_offset_point(ve, x, lam) result(xo)
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: x(3)     !< position at rest [m]
@@ -136,6 +141,7 @@ contains
    !> reference point, in vessel axes: from its RAOs in the sea (the response factors
    !> set up before the run, times the sea's ramp), or its table (linear interpolation,
    !> constant beyond the ends).
+   !> docs/theory.md eq. (100).
    pure function vessel_motion(ve, t) result(xi)
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
@@ -156,6 +162,7 @@ contains
    !> drift, harmonic d(t) = offset + a sin(2 pi t/T_d + phi_d) (x, y [m], z [m], heading
    !> [rad]; a = 0 in z; none when T_d = 0) or from its table (linear interpolation,
    !> constant beyond the ends).
+   !> docs/theory.md eq. (101).
    pure function vessel_slow_motion(ve, t) result(d)
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
@@ -192,6 +199,7 @@ contains
    end function vessel_pose
 
    !> Value of an amplitude at time t (linear interpolation, constant beyond the ends).
+   !> docs/theory.md eq. (106).
    pure real(wp) function amplitude_value(amp, t)
       type(amplitude_t), intent(in) :: amp !< amplitude table
       real(wp), intent(in) :: t            !< time [s]

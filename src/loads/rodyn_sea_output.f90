@@ -1,7 +1,8 @@
-!> What a dynamic run reports of its sea and vessels (docs/output.md, "Waves and
-!> vessels"): the wave elevation at the points of *WAVE PROBE, the pose of each vessel
-!> and the forces its line ends put on it, at a time t from the support forces r of
-!> that time. Computed only for a scene that has probes or vessels (sea_scene_build).
+!> What a dynamic run reports of its sea and vessels (docs/output.md, "Waves and vessels";
+!> docs/theory.md eqs. (83), (99)): the wave elevation at the points of *WAVE PROBE, the
+!> pose of each vessel and the forces its line ends put on it, at a time t from the support
+!> forces r of that time. Computed only for a scene that has probes or vessels
+!> (sea_scene_build).
 !>
 !> Elevation at probe (x, y): eta(x, y, t) of the run's sea, ramp included (rodyn_waves).
 !>

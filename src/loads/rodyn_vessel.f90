@@ -1,4 +1,5 @@
-!> Rigid-body motion of a vessel and of points fixed to it (issue 13, docs/vessels.md).
+!> Rigid-body motion of a vessel and of points fixed to it (docs/vessels.md;
+!> docs/theory.md eqs. (99)-(101)).
 !>
 !> Vessel axes: origin at the vessel's reference point (the RAO origin and RAO phase
 !> origin), x forward, y to port, z up; at rest the reference point is at O (global) and
@@ -38,6 +39,7 @@ module rodyn_vessel
 contains
 
    !> Rv = Rz(yaw) Ry(pitch) Rx(roll) (module header): the rotation of vessel axes.
+   !> docs/theory.md eq. (99).
    pure function vessel_rotation(angles) result(r)
       real(wp), intent(in) :: angles(3) !< roll, pitch, yaw [rad]
       real(wp) :: r(3, 3)
@@ -54,6 +56,7 @@ contains
    end function vessel_rotation
 
    !> X = O + R0 (xi_1:3 + Rv(xi_4:6) p) (module header).
+   !> docs/theory.md eq. (99).
    pure function vessel_point_position(origin, psi0, xi, p) result(x)
       real(wp), intent(in) :: origin(3) !< reference point at rest, global [m]
       real(wp), intent(in) :: psi0      !< heading of the vessel at rest [rad]
@@ -80,6 +83,7 @@ contains
 
    !> H_k(T, gamma), k = 1..6: the table interpolated bilinearly in period T and relative
    !> heading gamma (periodic); zero outside the table's periods.
+   !> docs/theory.md eq. (100).
    pure function vessel_rao_value(rao, period, gamma) result(h)
       type(vessel_rao_t), intent(in) :: rao !< table
       real(wp), intent(in) :: period        !< wave period [s]
@@ -149,6 +153,7 @@ contains
    end function vessel_rao_value
 
    !> c_kj = a_j H_k(2 pi / omega_j, beta_j - psi0) exp(i phi_j) (module header).
+   !> docs/theory.md eq. (100).
    pure subroutine vessel_coefficients(rao, psi0, amp, omega, beta, phi, c)
       type(vessel_rao_t), intent(in) :: rao  !< displacement RAOs
       real(wp), intent(in) :: psi0           !< vessel heading at rest [rad]
@@ -165,6 +170,7 @@ contains
    end subroutine vessel_coefficients
 
    !> xi_k(t) = Re sum_j c_kj exp(i omega_j t) (module header).
+   !> docs/theory.md eq. (100).
    pure function vessel_harmonic_motion(c, omega, t) result(xi)
       complex(wp), intent(in) :: c(:, :)  !< (6, nc) vessel_coefficients
       real(wp), intent(in) :: omega(:)    !< (nc) angular frequencies [rad/s]

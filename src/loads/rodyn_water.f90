@@ -1,4 +1,5 @@
-!> The water's and the seabed's loads on the whole mesh (docs/water.md): the point law
+!> The water's and the seabed's loads on the whole mesh (docs/water.md; docs/theory.md
+!> eqs. (72)-(75), (98)): the point law
 !> of rodyn_hydro integrated over each element with Gauss rules of p + 1 points, and the
 !> forces of the point attachments (buoyancy of their volume, drag on Cd A). One path
 !> for statics and dynamics: the caller gives the configuration at the force point and
@@ -11,9 +12,9 @@
 !> the normal force N = (k pen - c v.n) D is positive: gap + c/k v.n is a polynomial of
 !> degree p in xi; its roots in the element are found (sampling and bisection) and each
 !> part in contact is integrated with 4 Gauss points, exact for N N_a up to cubic
-!> elements (with the p + 1 rule alone the touchdown jumps from point to point: measured
-!> on the mooring leg with 40 quadratic elements, fairlead tension 1.0e-4 off against
-!> 1.1e-5). N vanishes at the roots, so their motion adds nothing to the tangent.
+!> elements (with the p + 1 rule alone the touchdown jumps from point to point, and the
+!> fairlead tension with it). N vanishes at the roots, so their motion adds nothing to
+!> the tangent.
 !> Only translational unknowns are loaded. A scene without *WATER builds nothing here.
 !> Waves (rodyn_waves, docs/waves.md): at the start of each time step the wave's
 !> elevation, velocity and acceleration are evaluated once per node, at the node's
@@ -69,6 +70,7 @@ module rodyn_water
 contains
 
    !> Section constants, Gauss rules and attachment nodes of a scene in water.
+   !> docs/theory.md eq. (67).
    subroutine water_loads_build(model, mesh, wl)
       type(model_t), intent(in) :: model      !< model
       type(mesh_t), intent(in) :: mesh        !< mesh
@@ -139,6 +141,7 @@ contains
    !> and friction on in dynamics; with waves and the nodes' x and v at the start of the
    !> step, the wave kinematics at each node's predicted force point x + h v (module
    !> header), once per node and step.
+   !> docs/theory.md eq. (73).
    subroutine water_set_time(wl, t, dynamic, x, v, h)
       type(water_loads_t), intent(inout) :: wl   !< loads
       real(wp), intent(in) :: t                  !< force time [s]
@@ -160,6 +163,7 @@ contains
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
    !> tangent of their sum with respect to x^{n+1} (module header).
+   !> docs/theory.md eqs. (72)-(73), (98).
    pure subroutine water_element(wl, ws, p, le, q, cx, cv, ca, fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
       type(water_section_t), intent(in) :: ws  !< section constants
@@ -214,8 +218,7 @@ contains
       end if
       ! a cubic element grounded over its whole length: its water rule (p + 1 = 4 Gauss
       ! points) is the seabed's, so water and seabed are taken together at each point
-      ! (one point law, one interpolation; mooring surge deck, 24 cubic cable elements:
-      ! 13 % fewer instructions a run)
+      ! (one point law, one interpolation)
       if (whole .and. wl%ng(p) == 4) then
          do g = 1, 4
             nn(1:nen) = wl%n(1:nen, g, p)
@@ -253,6 +256,7 @@ contains
 
    !> Add the load at one point (shape functions nn, their S-derivatives ds, weight wj)
    !> to the element vectors and matrix (module header).
+   !> docs/theory.md eq. (73).
    pure subroutine water_add_point(wl, ws, nen, q, cx, cv, ca, nn, ds, wj, parts, &
                                    fh, fs, ke, want_k, we)
       type(water_loads_t), intent(in) :: wl    !< loads
@@ -285,9 +289,8 @@ contains
       x = y(1:3)
       v = y(4:6)
       acc = y(7:9)
-      ! (one call: with a second one, for waves, this routine and water_element were no
-      ! longer inlined into assemble_water, and a run without waves took 5 % more
-      ! instructions; wk is read only when env%wave, and only by the water's part)
+      ! (one call, so that this routine and water_element stay inlined into
+      ! assemble_water; wk is read only when env%wave, and only by the water's part)
       if (wl%env%wave .and. iand(parts, part_water) /= 0) then
          wk = 0.0_wp
          do a = 1, nen
@@ -326,6 +329,7 @@ contains
    !>   p = 3: b_1 = (-5 g_1 + 18 g_2 - 9 g_3 + 2 g_4)/6, b_2 = (2 g_1 - 9 g_2 + 18 g_3 - 5 g_4)/6;
    !> b_0 = g_1 and b_p = g_(p+1). The polynomial lies between min b and max b on [-1, 1]
    !> (Farin, "Curves and Surfaces for CAGD", 5th ed., 2002, section 5.1: convex hull).
+   !> docs/theory.md eq. (98).
    pure subroutine bernstein_of_nodal(p, g, b)
       integer, intent(in) :: p          !< order (1 to 3)
       real(wp), intent(in) :: g(:)      !< (p+1) nodal values
@@ -342,6 +346,7 @@ contains
 
    !> The intervals [lo, hi] of xi in [-1, 1] where the polynomial sum N_a(xi) g_a is
    !> negative: sign changes at 8p + 1 sample points, each root refined by bisection.
+   !> docs/theory.md eq. (98).
    pure subroutine contact_parts(p, gn, nparts, lo, hi)
       integer, intent(in) :: p              !< element order
       real(wp), intent(in) :: gn(:)         !< (p+1) nodal values [m]
@@ -408,7 +413,8 @@ contains
       end function value_at
    end subroutine contact_parts
 
-   !> Water force on a point attachment (*ATTACHMENT): buoyancy rho_w g V of the
+   !> Water force on a point attachment (*ATTACHMENT; docs/theory.md eq. (74)): buoyancy
+   !> rho_w g V of the
    !> submerged fraction of a sphere of that volume, drag 1/2 rho_w Cd A |u_r| u_r; and
    !> with want_k its derivative with respect to x^{n+1} (c_x, c_v as in water_element).
    !> Its weight is in the gravity loads and its added mass in the inertia. In a wave

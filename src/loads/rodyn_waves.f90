@@ -1,4 +1,5 @@
-!> Linear (Airy) wave kinematics (docs/waves.md): a sea of components i, each of
+!> Linear (Airy) wave kinematics (docs/waves.md; docs/theory.md section 11, eqs.
+!> (82)-(93)): a sea of components i, each of
 !> amplitude A_i = H_i/2, angular frequency omega_i, heading beta_i and phase phi_i, on
 !> water of constant depth d below the still water level z_s. With z' = z - z_s and
 !>   theta_i = k_i (x cos beta_i + y sin beta_i) - omega_i t + phi_i,
@@ -90,6 +91,7 @@ contains
    !> y0 = x/sqrt(tanh x) (Eckart 1952; within 5 %), to round-off (the step below
    !> 2 eps y). Deep water (x large): y = x, k = omega^2/g; shallow (x small):
    !> y = sqrt(x), k = omega/sqrt(g d).
+   !> docs/theory.md eq. (82).
    pure real(wp) function wave_number(omega, depth, g) result(k)
       real(wp), intent(in) :: omega  !< angular frequency [rad/s], > 0
       real(wp), intent(in) :: depth  !< water depth [m], > 0
@@ -109,6 +111,7 @@ contains
 
    !> The field of the deck's sea: per component k (wave_number), k cos beta,
    !> k sin beta, A omega, A omega^2 and 1/sinh(k d) (module header).
+   !> docs/theory.md eqs. (82), (85).
    pure subroutine waves_build(waves, depth, surface, g, field)
       type(waves_t), intent(in) :: waves        !< the deck's waves
       real(wp), intent(in) :: depth             !< water depth d [m]
@@ -147,6 +150,7 @@ contains
 
    !> Ramp factor r(t) = (1 - cos(pi t/T))/2 for 0 < t < T (0 before, 1 after; 1 when
    !> T = 0) and its rate r'(t) = pi/(2T) sin(pi t/T).
+   !> docs/theory.md eqs. (81), (87).
    pure subroutine wave_ramp(ramp, t, r, dr)
       real(wp), intent(in) :: ramp  !< T [s]
       real(wp), intent(in) :: t     !< time [s]
@@ -165,6 +169,7 @@ contains
 
    !> Elevation eta of the surface above the still water level at (x, y), time t, ramp
    !> included [m] (module header).
+   !> docs/theory.md eq. (83).
    pure real(wp) function wave_elevation(field, x, y, t) result(eta)
       type(wave_field_t), intent(in) :: field !< the sea
       real(wp), intent(in) :: x               !< [m]
@@ -184,6 +189,7 @@ contains
    !> Elevation eta above (x, y), water velocity u and acceleration a at point x and
    !> time t (module header: linear theory, the stretching above the mean surface, ramp
    !> included; zero above the surface).
+   !> docs/theory.md eqs. (83)-(87).
    pure subroutine wave_kinematics(field, x, t, eta, u, a)
       type(wave_field_t), intent(in) :: field !< the sea
       real(wp), intent(in) :: x(3)            !< point [m]
@@ -250,6 +256,7 @@ contains
    !> from one exponential E = e^{k (s + d)}: (E +- 1/E)/(2 sinh(k d)); for k d >= kd_exp
    !> (e^{k s} +- e^{-k (s + 2 d)})/(1 - e^{-2 k d}), which neither overflows nor loses
    !> digits in deep water.
+   !> docs/theory.md eq. (85).
    pure subroutine depth_terms(field, i, s, ch, sh)
       type(wave_field_t), intent(in) :: field !< the sea
       integer, intent(in) :: i                !< component
@@ -271,6 +278,7 @@ contains
    end subroutine depth_terms
 
    !> DNV-RP-C205's default JONSWAP peak enhancement gamma for Hs and T_p (header).
+   !> docs/theory.md eq. (91).
    pure real(wp) function jonswap_gamma(hs, tp) result(gamma)
       real(wp), intent(in) :: hs  !< significant wave height [m]
       real(wp), intent(in) :: tp  !< peak period [s]
@@ -286,6 +294,7 @@ contains
    end function jonswap_gamma
 
    !> Spectral density S(omega) of the sea (module header) [m2 s/rad].
+   !> docs/theory.md eqs. (89)-(90).
    pure real(wp) function wave_spectrum(waves, omega) result(s)
       type(waves_t), intent(in) :: waves  !< the sea (kind, Hs, Tp, gamma or table)
       real(wp), intent(in) :: omega       !< frequency [rad/s], > 0
@@ -319,6 +328,7 @@ contains
    !> waves%components x waves%directions, bin by bin, the directions within a bin
    !> innermost; one direction: the long-crested sea). A regular wave (sea_airy) is left
    !> as it is.
+   !> docs/theory.md eq. (88).
    pure subroutine sea_components(waves)
       type(waves_t), intent(inout) :: waves !< the sea; its components set
       integer(i8) :: s1, s2
@@ -371,6 +381,7 @@ contains
    !> trapezoidal rule of cos^(2s)(x/2) and its product with cos x on ng intervals of
    !> [0, x_max] (x_max = pi, or where the density is below e^-80 of its peak), linear
    !> within an interval. theta_j = -theta_(M+1-j) exactly.
+   !> docs/theory.md eq. (92).
    pure subroutine spreading_directions(s, m, theta)
       real(wp), intent(in) :: s          !< spreading exponent, > 0 [-]
       integer, intent(in) :: m           !< number of directions, >= 1
@@ -440,6 +451,7 @@ contains
    !> phase phi_k = omega_k t_0 - arg X_k (so that -omega t + phi is the series' angle at
    !> the record's point, waves%point, where waves_build refers the phases to), heading
    !> the sea's. The mean X_0/n is not a wave: it is kept in waves%mean and left out.
+   !> docs/theory.md eq. (93).
    pure subroutine record_components(t0, dt, eta, waves)
       real(wp), intent(in) :: t0             !< time of the first sample [s]
       real(wp), intent(in) :: dt             !< sampling interval [s], > 0
@@ -478,6 +490,7 @@ contains
    !> multiplicative congruential generators, s1 = 40014 s1 mod 2147483563,
    !> s2 = 40692 s2 mod 2147483399, z = (s1 - s2) mod 2147483562; products below 2^47,
    !> exact in 64-bit integers.
+   !> docs/theory.md section 11 (irregular seas).
    pure subroutine lecuyer_next(s1, s2, u)
       integer(i8), intent(inout) :: s1 !< state of the first generator
       integer(i8), intent(inout) :: s2 !< state of the second generator

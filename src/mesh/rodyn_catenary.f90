@@ -5,7 +5,8 @@
 !>   V(S) = V0 + w S,  T(S) = sqrt(H^2 + V(S)^2)
 !> X is horizontal (along the span), Z upwards (against gravity); H is the horizontal
 !> tension and V0 the vertical tension component at A (positive upwards along the line).
-!> Used to start a line held at both ends (note section 5, zero-tension singularity) and
+!> Used to start a line held at both ends (docs/theory.md eqs. (112)-(115): a start free
+!> of the zero-tension singularity) and
 !> as the reference solution of the catenary verification test.
 !>
 !> With a grounded length (catenary_grounded): the lower end A lies on a horizontal
@@ -34,6 +35,7 @@ module rodyn_catenary
 contains
 
    !> Span X(L) and rise Z(L) for given H, V0, and their Jacobian.
+   !> docs/theory.md eq. (112).
    pure subroutine catenary_ends(cat, f, jac)
       type(catenary_t), intent(in) :: cat !< catenary with trial h, v0
       real(wp), intent(out) :: f(2)       !< (X(L), Z(L)) [m]
@@ -55,6 +57,7 @@ contains
    end subroutine catenary_ends
 
    !> Solve for H and V0 so that end B sits at span xs > 0 and rise zs from end A.
+   !> docs/theory.md eqs. (112)-(114).
    subroutine catenary_solve(w, ea, length, xs, zs, cat, err)
       real(wp), intent(in) :: w            !< weight per unstretched length, > 0 [N/m]
       real(wp), intent(in) :: ea           !< axial stiffness [N]
@@ -124,6 +127,7 @@ contains
 
    !> Position (X, Z) and unit tangent (tX, tZ) at unstretched arc length s; tension.
    !> With a grounded length lb > 0 (v0 = 0): on the seabed for s <= lb, stretched by H.
+   !> docs/theory.md eqs. (112)-(113).
    pure subroutine catenary_point(cat, s, xz, tangent, tension)
       type(catenary_t), intent(in) :: cat  !< solved catenary
       real(wp), intent(in) :: s            !< unstretched arc length from A [m]
@@ -157,6 +161,7 @@ contains
    !> The catenary with a grounded length (module header): H and V_F such that end B
    !> sits at span xs > 0 and height zs > 0 above end A on the seabed. ok is false when
    !> the line does not touch (V_F > w L: the free catenary applies) or no solution.
+   !> docs/theory.md eq. (115).
    subroutine catenary_grounded(w, ea, length, xs, zs, cat, ok)
       real(wp), intent(in) :: w            !< submerged weight per unstretched length [N/m]
       real(wp), intent(in) :: ea           !< axial stiffness [N]

@@ -1,12 +1,13 @@
 !> Memory a run needs, estimated from the deck before anything is allocated, and the
-!> physical memory of the machine (docs/deck.md, *LINE; docs/benchmarks.md, Memory).
+!> physical memory of the machine (docs/deck.md, *LINE; docs/benchmarks.md, Memory). The
+!> banded tangent of docs/theory.md eq. (45) dominates.
 !>
 !> The largest arrays of a run are the banded tangent with its LU fill, n x (3 hb + 1)
 !> reals for n unknowns and a half bandwidth hb (rodyn_banded), and per-element and
-!> per-node arrays that together take about as much again (measured with
-!> bench/memory_scaling.py: 19.3 KiB a cubic element, 11.3 KiB a quadratic one, above the
-!> 17 MiB of a 10-element run). The estimate is 2 n (3 hb + 1) 8 B + 17 MiB: 19.7 KiB a
-!> cubic element, 9.8 KiB a quadratic one.
+!> per-node arrays that together take about as much again, plus a fixed part of the
+!> program (calibrated with bench/memory_scaling.py; docs/benchmarks.md, Memory). The
+!> estimate is 2 n (3 hb + 1) 8 B + 17 MiB: 19.7 KiB a cubic element, 9.8 KiB a
+!> quadratic one.
 module rodyn_memory
    use, intrinsic :: iso_fortran_env, only: int64
    use rodyn_kinds, only: wp

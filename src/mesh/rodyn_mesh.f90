@@ -1,6 +1,7 @@
 !> Finite element mesh of the lines: nodes, elements, arc lengths, section stiffness,
 !> the stress-free strains at the integration points and the initial configuration
-!> (formulation note section 2; section 5 for the catenary start).
+!> (docs/theory.md eqs. (8), (19)-(21); section 14, eqs. (112)-(115), for the catenary
+!> start).
 !>
 !> Nodes of all lines are numbered consecutively, line after line, each line from
 !> end A (S = 0) to end B (S = L); an element of order p has p+1 equally spaced nodes.
@@ -20,7 +21,7 @@ module rodyn_mesh
    use rodyn_memory, only: memory_estimate, memory_physical, memory_text
    implicit none
    private
-   public :: mesh_spurious_shape
+   public :: mesh_spurious_shape, fix_leading_dots, mesh_cable_like_rods
    public :: mesh_t, mesh_build, mesh_node
 
    !> The discretised model.
@@ -343,7 +344,7 @@ contains
       type(catenary_t) :: cat
       integer :: k, node
       logical :: grounded, b_low
-      character(len=200) :: msg
+      character(len=320) :: msg
       associate (ld => model%lines(l))
          chord = ld%end_b - ld%end_a
          dist = norm2(chord)
@@ -360,9 +361,20 @@ contains
          if (mesh%line_catenary(l) .and. dist < ld%length*(1.0_wp - 1.0e-12_wp)) then
             ! slack line held at both ends: needs weight and a horizontal span to hang
             if (w <= 0.0_wp .or. span < 1.0e-9_wp*ld%length) then
-               write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its held ends' // &
-                  ' but cannot hang as a catenary (weightless, or ends vertically above' // &
-                  ' each other): no static shape to start from'
+               if (w < 0.0_wp) then
+                  write (msg, '(3a,es10.3,a)') 'line ', trim(ld%name), ' is slack between'// &
+                     ' its held ends but buoyant (mean weight in water ', w, ' N/m < 0:'// &
+                     ' it floats up; check the water DENSITY, the section masses and'// &
+                     ' BUOYANCY DIAMETER): no hanging catenary to start from'
+               else if (w == 0.0_wp) then
+                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+                     ' held ends but weightless (no mass, no gravity, or a weight balanced'// &
+                     ' exactly by buoyancy): no hanging catenary to start from'
+               else
+                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+                     ' held ends, which are vertically above each other: no catenary'// &
+                     ' to start from'
+               end if
                call set_error(err, stat_input, line_at(model, l)//': error: *LINE: '// &
                               trim(msg))
                return
@@ -427,10 +439,9 @@ contains
       !> moves it
       !> (supports_build). With the touchdown inside an element the jump of curvature
       !> there makes the interpolated x' miss the nodal tangents by ~1e-2, which the
-      !> shear and axial stiffness turn into start forces of 1e6 N; the homotopy of the
-      !> statics then drives the line on the seabed into compression (measured on the
-      !> mooring leg: 45, 50, 60 quadratic elements did not converge, 40 and 160, whose
-      !> nodes fall near the touchdown, did).
+      !> shear and axial stiffness turn into large start forces; the homotopy of the
+      !> statics can then drive the line on the seabed into compression and fail to
+      !> converge on meshes whose nodes fall away from the touchdown.
       subroutine snap_touchdown()
          real(wp) :: lbn, sn, vf, h, lo, hi, f
          integer :: kk, it
@@ -482,9 +493,9 @@ contains
    !> A configuration refused when an element of order 3 of a rod line has taken the
    !> spurious shape of its selective quadrature (rod_hidden_shear): shear strain above
    !> hidden_max at its extension points and more than ten times the largest at its shear
-   !> points. Such a shape zig-zags at touch-down; found on the mooring surge deck as a
-   !> rod of EI = 10 N m2 with 26 cubic elements, whose statics converged to it and whose
-   !> dynamics then read a fairlead tension 34 % low (docs/element.md, "Known limits").
+   !> points. Such a shape zig-zags at touch-down, and a run that reaches it reads a far
+   !> too low fairlead tension (a chain of small EI as cubic rods: docs/element.md,
+   !> "Known limits"; tests/program/surge_rod_static.inp).
    !> Returns the reason (empty: none). Statics checks its solution, dynamics each frame.
    function mesh_spurious_shape(model, mesh, state) result(why)
       type(model_t), intent(in) :: model   !< model (line names)
@@ -511,11 +522,69 @@ contains
             e - mesh%line_first_elem(l) + 1, ' (S = ', mesh%elem_s0(e), ' to ', &
             mesh%elem_s0(e) + mesh%elem_le(e), ' m) has taken a spurious shape: shear'// &
             ' strain ', hidden, ' between its shear points, ', seen, ' at them'
-         why = 'line '//trim(model%lines(l)%name)//', '//trim(msg)//' (a mode of '// &
-               'cubic rod elements that only the bending stiffness holds: use '// &
-               'ELEMENT=CABLE for a line without bending stiffness, or another '// &
-               'element count; docs/element.md, "Known limits")'
+         why = 'line '//trim(model%lines(l)%name)//', '//fix_leading_dots(trim(msg))// &
+               ' (a mode of cubic rod elements that only the bending stiffness holds '// &
+               'against; it forms where the line is bent or sheared far more than its '// &
+               'bending stiffness resists: a line of negligible bending stiffness (use '// &
+               'ELEMENT=CABLE), too few elements, or loads that deform it violently '// &
+               '(damping, drag, motions): check them; docs/element.md, "Known limits")'
          return
       end do
    end function mesh_spurious_shape
+
+   !> A hint for a failed statics: the first line of rod elements whose bending stiffness
+   !> is negligible, EI < 1e-4 T_ref l_e^2 in one of its elements (a bending length
+   !> sqrt(EI/T_ref) under a hundredth of the element), T_ref = |w| L the line's weight
+   !> (in water when wet). Such a line is a cable (chain, wire, fibre rope): as rods its
+   !> stiffness matrix is near singular in bending. Returns '' when every line is fine.
+   function mesh_cable_like_rods(model, mesh) result(hint)
+      type(model_t), intent(in) :: model    !< model (lines, water, gravity)
+      type(mesh_t), intent(in) :: mesh      !< mesh (element stiffness and lengths)
+      character(len=:), allocatable :: hint !< '' or the hint
+      real(wp), parameter :: ratio_min = 1.0e-4_wp  ! EI / (T_ref l_e^2) of a rod line
+      real(wp) :: w, ea, tref, ratio, worst
+      integer :: l, e
+      character(len=120) :: buf
+      hint = ''
+      do l = 1, size(model%lines)
+         call line_mean_weight(model, mesh, l, w, ea)
+         tref = abs(w)*model%lines(l)%length
+         if (.not. tref > 0.0_wp) cycle
+         worst = huge(1.0_wp)
+         do e = mesh%line_first_elem(l), mesh%line_first_elem(l) + &
+                model%lines(l)%n_elements - 1
+            if (mesh%elem_cable(e)) cycle
+            ratio = min(mesh%elem_c(4, e), mesh%elem_c(5, e))/(tref*mesh%elem_le(e)**2)
+            worst = min(worst, ratio)
+         end do
+         if (worst >= ratio_min) cycle
+         write (buf, '(es8.1)') worst
+         hint = 'line '//trim(model%lines(l)%name)//' is made of rod elements whose '// &
+                'bending stiffness is negligible (EI / (weight x length x element '// &
+                'length^2) down to '//trim(adjustl(buf))//'): a chain, wire or rope wants '// &
+                'ELEMENT=CABLE on its *LINE (docs/element.md)'
+         return
+      end do
+   end function mesh_cable_like_rods
+
+   !> The text with a 0 before every '.' that follows a blank or '(' or '-' (f0.d writes
+   !> 0.25 as '.25').
+   pure function fix_leading_dots(text) result(out)
+      character(len=*), intent(in) :: text   !< text with numbers written by f0.d
+      character(len=:), allocatable :: out   !< the numbers with their leading zero
+      integer :: k
+      out = ''
+      do k = 1, len(text)
+         if (text(k:k) == '.' .and. k < len(text)) then
+            if (scan(text(k + 1:k + 1), '0123456789') == 1) then
+               if (k == 1) then
+                  out = out//'0'
+               else if (scan(text(k - 1:k - 1), ' (-=') == 1) then
+                  out = out//'0'
+               end if
+            end if
+         end if
+         out = out//text(k:k)
+      end do
+   end function fix_leading_dots
 end module rodyn_mesh

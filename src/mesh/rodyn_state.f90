@@ -1,4 +1,5 @@
-!> The configuration the solvers advance: nodal positions and directors.
+!> The configuration the solvers advance: nodal positions and directors, and their
+!> rates (docs/theory.md eqs. (32)-(33), (58); docs/architecture.md, the state).
 module rodyn_state
    use rodyn_kinds, only: wp
    implicit none
@@ -64,7 +65,7 @@ contains
          return
       end if
       ! the same shapes (every step): copied as plain sequences, without the assignments'
-      ! shape checks (peers' case-4 run: 1.825e9 -> 1.814e9 instructions)
+      ! shape checks
       call copy_values(size(src%x), src%x, dst%x)
       call copy_values(size(src%d), src%d, dst%d)
       call copy_values(size(src%v), src%v, dst%v)
@@ -74,8 +75,8 @@ contains
    end subroutine state_copy
 
    !> b = a over n values. Explicit shapes tell the compiler that a and b do not overlap:
-   !> allocatable components (of a state, of a problem) assigned whole were copied one
-   !> value at a time (case 1: some 16 instructions a value), these in vector moves.
+   !> allocatable components (of a state, of a problem) assigned whole are copied one
+   !> value at a time, these in vector moves.
    pure subroutine copy_values(n, a, b)
       integer, intent(in) :: n      !< values
       real(wp), intent(in) :: a(n)  !< source
@@ -90,7 +91,7 @@ contains
       real(wp), intent(inout) :: xe(:, :)    !< (3, >= nen) positions [m]
       real(wp), intent(inout) :: de(:, :, :) !< (3, 3, >= nen) directors
       integer :: a, node, i, j
-      ! (value by value: the section assignments took some 64 instructions a node, case 1)
+      ! (value by value: cheaper than section assignments for 3 and 9 values)
       do a = 1, size(nodes)
          node = nodes(a)
          do i = 1, 3

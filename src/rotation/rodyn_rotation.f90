@@ -1,6 +1,6 @@
 !> Rotation algebra on SO(3): skew matrices, the Cayley transform used for the
-!> director updates (formulation note section 3), its inverse and tangent map, and the
-!> exponential map used to build curved stress-free shapes.
+!> director updates, its inverse and tangent map, and the exponential map used to build
+!> curved stress-free shapes (docs/theory.md section 3, eqs. (13)-(18)).
 !>
 !> Conventions: a rotation vector t is the spatial (left) increment, R_new = cay(t) R.
 !> cay(t) = I + 4/(4 + t.t) (T + T^2/2), T = skew(t), which rotates by 2 atan(|t|/2)
@@ -24,6 +24,7 @@ contains
    end function cross
 
    !> Skew-symmetric matrix: skew(v) w = v x w.
+   !> docs/theory.md eq. (13).
    pure function skew(v) result(s)
       real(wp), intent(in) :: v(3) !< axial vector
       real(wp) :: s(3, 3)
@@ -33,13 +34,14 @@ contains
    end function skew
 
    !> Axial vector of the skew-symmetric part: axial(A) = vee((A - A^T)/2).
+   !> docs/theory.md eq. (13).
    pure function axial(a) result(v)
       real(wp), intent(in) :: a(3, 3) !< any 3x3 matrix
       real(wp) :: v(3)
       v = 0.5_wp*[a(3, 2) - a(2, 3), a(1, 3) - a(3, 1), a(2, 1) - a(1, 2)]
    end function axial
 
-   !> Cayley transform cay(t) = I + 4/(4 + t.t) (T + T^2/2)   (note, section 3).
+   !> Cayley transform cay(t) = I + 4/(4 + t.t) (T + T^2/2) (docs/theory.md eqs. (14)-(15)).
    pure function rotation_cayley(t) result(r)
       real(wp), intent(in) :: t(3) !< rotation vector, |t| = 2 tan(angle/2) [-]
       real(wp) :: r(3, 3)
@@ -78,7 +80,7 @@ contains
       end do
    end function relative_rotation
 
-   !> Inverse Cayley transform: t with cay(t) = R, t = 4 axial(R) / (1 + tr R).
+   !> Inverse Cayley transform: t with cay(t) = R, t = 4 axial(R) / (1 + tr R) (eq. (16)).
    !> Defined for rotation angles below pi.
    pure function rotation_cayley_inverse(r) result(t)
       real(wp), intent(in) :: r(3, 3) !< rotation matrix
@@ -86,7 +88,8 @@ contains
       t = 4.0_wp*axial(r)/(1.0_wp + r(1, 1) + r(2, 2) + r(3, 3))
    end function rotation_cayley_inverse
 
-   !> Tangent map of the Cayley transform: the spatial angular increment dw with
+   !> Tangent map of the Cayley transform (docs/theory.md eq. (17)): the spatial angular
+   !> increment dw with
    !> cay(t + dt) = cay(dw) cay(t) to first order is dw = H(t) dt,
    !> H(t) = 4/(4 + t.t) (I + skew(t)/2).
    pure function rotation_cayley_tangent(t) result(h)
@@ -100,7 +103,7 @@ contains
       h = 4.0_wp/(4.0_wp + dot_product(t, t))*h
    end function rotation_cayley_tangent
 
-   !> Exponential map (Rodrigues): rotation by |phi| about phi/|phi|.
+   !> Exponential map (Rodrigues, docs/theory.md eq. (18)): rotation by |phi| about phi/|phi|.
    pure function rotation_exp(phi) result(r)
       real(wp), intent(in) :: phi(3) !< rotation vector [rad]
       real(wp) :: r(3, 3)
@@ -122,6 +125,7 @@ contains
    end function rotation_exp
 
    !> Logarithm of a rotation: phi with exp(phi) = R, |phi| in [0, pi].
+   !> docs/theory.md eq. (18).
    pure function rotation_log(r) result(phi)
       real(wp), intent(in) :: r(3, 3) !< rotation matrix
       real(wp) :: phi(3)
@@ -161,8 +165,7 @@ contains
 
    !> |v| of a 3-vector as sqrt(v.v). The vectors of rodyn's kernels (x', velocities,
    !> positions) are far from overflow, against which Fortran's norm2 guards at several
-   !> times the cost (2.4 % of the mooring surge deck's instructions went to norm2 in the
-   !> water and cable kernels).
+   !> times the cost (norm3 serves the water and cable kernels, called at every point).
    pure real(wp) function norm3(v)
       real(wp), intent(in) :: v(3) !< vector
       norm3 = sqrt(v(1)*v(1) + v(2)*v(2) + v(3)*v(3))

@@ -1,4 +1,5 @@
-!> Anderson acceleration of the chord (reused-tangent) Newton iteration.
+!> Anderson acceleration of the chord (reused-tangent) Newton iteration (docs/theory.md
+!> eq. (53)).
 !>
 !> With a tangent K0 held from an earlier iterate, each Newton iteration takes the chord
 !> step f_k = -K0^{-1} r(u_k): a fixed-point iteration u <- u + f(u) that converges only
@@ -22,9 +23,8 @@
 !> diagonal) is dropped and the plain chord step taken. The history is cleared whenever
 !> the fixed-point map changes: a new tangent, or a new Newton solve (a new time step).
 !>
-!> Measured (docs/benchmarks.md, "Seventh session"): depth 3 on the paper's case 1
-!> (200 s) takes 10.6 % fewer instructions (14 583 iterations and 2052 tangents against
-!> 12 695 and 3044), with the tolerances and the accuracy of the run unchanged.
+!> It trades a few more iterations for fewer tangents, with the tolerances and the
+!> accuracy of a run unchanged (figures in docs/benchmarks.md).
 module rodyn_anderson
    use rodyn_kinds, only: wp
    implicit none
@@ -68,6 +68,7 @@ contains
    !> Replace the chord step f (in) by the accelerated correction s_k (out), and record
    !> the pair for the next iteration. The caller applies f in full (no line search).
    !> Only the new column's Gram row is computed; the others are kept.
+   !> docs/theory.md eq. (53).
    pure subroutine anderson_step(aa, f)
       type(anderson_t), intent(inout) :: aa !< history
       real(wp), intent(inout) :: f(:)       !< chord step in, correction out

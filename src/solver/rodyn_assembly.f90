@@ -4,7 +4,8 @@
 !> Unknowns: 6 per node, dof first(a)+j-1: j = 1..3 translation, 4..6 spatial rotation;
 !> a node with cable elements only has the 3 translations (supports_t's dof map).
 !> A hinged node has its rotation unknowns expressed in the basis (axis, b, c) by an
-!> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T.
+!> orthogonal T (columns), so that the b and c components can be held: K' = T^T K T
+!> (docs/theory.md eqs. (47)-(48)).
 module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
@@ -214,6 +215,7 @@ contains
 
    !> Load vectors: consistent self-weight m g int N_a dS (m with the contents) plus the
    !> weight of the attachments at their nodes, and the point loads with their amplitudes.
+   !> docs/theory.md eq. (28).
    subroutine loads_build(model, mesh, loads)
       type(model_t), intent(in) :: model  !< model
       type(mesh_t), intent(in) :: mesh    !< mesh
@@ -258,6 +260,7 @@ contains
    !> External force at time t and load factor lam: gravity scaled per line by
    !> gfac(line), point loads by lam a(t) (a their amplitude, 1 without). Statics is
    !> t = 0; a time step passes its force time and lam = gfac = 1.
+   !> docs/theory.md eqs. (28), (106), (109).
    pure subroutine external_force(mesh, loads, gfac, lam, t, fext)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(loads_t), intent(in) :: loads      !< loads
@@ -283,6 +286,7 @@ contains
    !> from the matrix; xf, vf, af the nodes' positions, velocities and accelerations at
    !> the force point, moving with the unknowns by cx, cv, ca. The nodal forces are kept
    !> in wl%fh (water) and wl%fs (seabed).
+   !> docs/theory.md eq. (73).
    subroutine assemble_water(wl, mesh, sup, xf, vf, af, cx, cv, ca, fint, bm, want_k)
       type(water_loads_t), intent(inout) :: wl !< loads (nodal forces updated)
       type(mesh_t), intent(in) :: mesh         !< mesh
@@ -353,7 +357,7 @@ contains
    end subroutine assemble_water
 
    !> Internal force fint (6, nn) in global axes and, if want_k, the tangent assembled
-   !> into bm with the rotated nodes' bases applied (note section 3, statics). The
+   !> into bm with the rotated nodes' bases applied (docs/theory.md eqs. (21)-(27)). The
    !> stress-free strains enter scaled by eps0_scale (the static load factor, so that a
    !> built-in curvature is applied gradually; 1 at the end of the analysis).
    subroutine assemble_static(mesh, sup, state, eps0_scale, fint, bm, want_k)
@@ -425,7 +429,8 @@ contains
    !> Step internal force fint (6, nn) of a time-integration scheme between the states
    !> s0 (t_n) and s1 (t_n+1) and, if want_k, its tangent with respect to the unknowns at
    !> t_n+1 (rodyn_rod_dynamic), assembled as in assemble_static.
-   !> Stiffness-proportional Rayleigh damping (beta > 0) adds, element by element,
+   !> Stiffness-proportional Rayleigh damping (beta > 0; docs/theory.md eq. (40)) adds,
+   !> element by element,
    !> f_d = beta/dt K_e(q^{n+1/2}) du_e, du = (x^{n+1} - x^n, theta) with theta the rotation
    !> of the step (inverse Cayley of d^{n+1} d^n^T), K_e the element tangent at the
    !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
@@ -524,7 +529,7 @@ contains
    !> The cable elements' part of assemble_dynamic (same arguments; fint, fdamp and bm
    !> added to, after assemble_dynamic): a separate pass, so that the rod's element keeps
    !> being inlined into assemble_dynamic's loop (with the cable inside it, the compiler
-   !> stopped doing so and a dry rod's step cost 1.5 % more instructions).
+   !> does not inline it).
    subroutine assemble_dynamic_cables(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, &
                                       bm, want_k)
       type(mesh_t), intent(in) :: mesh        !< mesh
@@ -622,6 +627,7 @@ contains
    end subroutine add_node_block
 
    !> k <- T^T k T on the rotation rows and columns of element node a.
+   !> docs/theory.md eq. (48).
    pure subroutine rotate_rows_cols(k, a, t)
       real(wp), intent(inout) :: k(:, :) !< element matrix
       integer, intent(in) :: a           !< element node
@@ -650,6 +656,7 @@ contains
    !> The columns K_fk of moved nodes are kept when the tangent is formed (want_k), so
    !> that a later residual-only evaluation, solved with a reused tangent, moves its gaps
    !> the same way.
+   !> docs/theory.md eq. (47).
    subroutine apply_supports(sup, r, gap, rhs, bm, want_k)
       type(supports_t), intent(in) :: sup   !< supports
       real(wp), intent(in) :: r(:, :)       !< (6, nn) residual fint - fext, global axes
@@ -661,7 +668,7 @@ contains
       logical :: uni
       uni = sup%uniform
       ! 6 unknowns a node unless the map says otherwise: then rhs is r as one sequence
-      ! (copy_values: the node by node copy took 1.1 % of the peers' case-4 run)
+      ! (copy_values: one vector move instead of a node by node copy)
       if (uni) call copy_values(size(r), r, rhs)
       do node = 1, size(r, 2)
          k = 6*(node - 1)
@@ -697,6 +704,7 @@ contains
    !> elements of a line that can roll freely, its middle node and stiffness; node 0 after
    !> the last. With roll_inertia (dynamics: (nn) the inertia of a node's roll, that of
    !> its d1 and d2), a run whose nodes have any is not free: its roll has inertia.
+   !> docs/theory.md eq. (111).
    subroutine roll_gauges(mesh, sup, loads, gauge_node, gauge_k, roll_inertia)
       type(mesh_t), intent(in) :: mesh              !< mesh
       type(supports_t), intent(in) :: sup           !< supports
@@ -749,6 +757,7 @@ contains
 
    !> Add each roll gauge's k_g d3 d3^T to the rotation block of its node (d3 of the
    !> configuration the matrix is formed at); the residual is not touched.
+   !> docs/theory.md eq. (111).
    subroutine add_roll_gauges(sup, gauge_node, gauge_k, d, bm)
       type(supports_t), intent(in) :: sup      !< supports (dof map, node bases)
       integer, intent(in) :: gauge_node(:)     !< node of each gauge, 0 after the last

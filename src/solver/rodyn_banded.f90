@@ -1,5 +1,6 @@
 !> General banded matrix in LAPACK band storage, element assembly, constraint rows, and
-!> the LU factorisation/solve. LAPACK's INFO is mapped into error_t here and nowhere else.
+!> the LU factorisation/solve of docs/theory.md eq. (45). LAPACK's INFO is mapped into
+!> error_t here and nowhere else.
 !> Storage is allocated once; nothing inside the Newton loop allocates.
 !>
 !> Two factorisations (bm%pivoting):
@@ -164,9 +165,8 @@ contains
       integer, parameter :: max_runs = 16   ! (fixed size: automatic arrays are heap ones)
       integer :: i, j, r, off, nr, lo(max_runs), hi(max_runs), col, row0
       ! runs of consecutive global dofs (a node's 6 or 3 unknowns) are contiguous in a
-      ! band column: each is added as one stretch of the column (case 1, 20 s: the whole
-      ! run 1.137e9 -> 1.117e9 instructions against one entry at a time; as a loop rather
-      ! than a section assignment, the peers' case-4 run 1.888e9 -> 1.878e9)
+      ! band column: each is added as one stretch of the column, in a loop (cheaper than
+      ! one entry at a time, and than a section assignment)
       nr = 0
       do i = 1, size(dofs)
          if (nr > 0) then
@@ -296,7 +296,7 @@ contains
       type(error_t), intent(inout) :: err       !< status
       integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
       integer :: info, node
-      character(len=160) :: msg
+      character(len=240) :: msg
       ! an overflowed state, not a mechanism: say so rather than blame the supports (the
       ! diagonal only: n values, against n kl ku operations of the factorisation)
       if (.not. all(ieee_is_finite(bm%ab(bm%kv, :)))) then
@@ -322,10 +322,13 @@ contains
             node = count(first <= abs(info))
             write (msg, '(a,i0,a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
                ': singular stiffness at node ', node, ', dof ', abs(info) - first(node) + 1, &
-               ' (a mechanism: check the supports)'
+               ' (a mechanism, or a stiffness swamped by a far larger one: check the'// &
+               ' supports, and loads or coefficients of absurd size)'
          else
             write (msg, '(a,i0,a,i0,a)') 'banded_factor: dgbtrf info = ', info, &
-               ': singular stiffness at dof ', abs(info), ' (a mechanism: check the supports)'
+               ': singular stiffness at dof ', abs(info), ' (a mechanism, or a stiffness'// &
+               ' swamped by a far larger one: check the supports, and loads or'// &
+               ' coefficients of absurd size)'
          end if
          call set_error(err, stat_numerical, trim(msg))
          return

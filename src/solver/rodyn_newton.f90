@@ -1,5 +1,5 @@
 !> Newton-Raphson driver with an energy line search, force and displacement criteria
-!> and an iteration log (formulation note sections 3 and 5). The problem is a type
+!> and an iteration log (docs/theory.md section 6, eqs. (45)-(53)). The problem is a type
 !> extending newton_problem_t; statics and each time integrator provide one.
 !>
 !> Line search (Crisfield, "Non-linear Finite Element Analysis of Solids and
@@ -19,9 +19,9 @@
 !> too (the configuration can no longer change in double precision), and logged so.
 !> So is a full correction within disp_tol that did not halve a residual already below
 !> 100 force_tol, or below 100 times the problem's estimate of its round-off floor
-!> (residual_floor; the floor grows as elements get shorter, and on fine meshes it lies
-!> above 100 force_tol: the paper's cable, 10 000 cubic elements, 20 steps, formed 5
-!> tangents only to confirm it, 1 with the estimate).
+!> (residual_floor, docs/theory.md eq. (51); the floor grows as elements get shorter, and
+!> on fine meshes it lies above 100 force_tol, where new tangents would be formed only to
+!> confirm it).
 !>
 !> Tangent reuse (modified Newton, opts%reuse_tangent): the factorised tangent of an
 !> earlier iteration, or of an earlier time step, is used again while it still contracts
@@ -30,11 +30,8 @@
 !> then cost a fraction of a tangent (docs/benchmarks.md, "skips"). With a reused tangent
 !> convergence is linear, so the quadratic-regime acceptance is not used for it. When
 !> the reused tangent made the residual grow, the new one is formed at the iterate
-!> before (the better of the two): on the paper's case 1 the tangent of the step before
-!> takes the first iteration from 6e4 to about 0.3 and then diverges, and a tangent
-!> formed at the diverged iterate contracts by only 0.1 per iteration, one formed at the
-!> first iterate by 0.01 (30 s of case 1: 2234 iterations and 421 tangents against 2555
-!> and 464, 9 % fewer instructions; no change where reused tangents do not diverge).
+!> before (the better of the two): a tangent formed at a diverged iterate contracts
+!> much more slowly than one formed at the iterate before it.
 !> After the first iteration of a solve begun with an earlier solve's tangent, a residual
 !> above sqrt(force_tol) renews the tangent at once.
 module rodyn_newton
@@ -139,6 +136,7 @@ contains
    !> stats (the caller cuts the step); err is set only for a failure that a smaller
    !> step cannot cure (never: singular tangents and NaN are also returned as
    !> non-convergence, with the reason in err for the caller to log or raise).
+   !> docs/theory.md eqs. (45)-(53).
    subroutine newton_solve(prob, opts, stats, err)
       class(newton_problem_t), intent(inout) :: prob !< problem, configuration updated
       type(newton_options_t), intent(in) :: opts     !< controls
@@ -249,9 +247,8 @@ contains
          ! the same floor reached earlier: a full correction within DISP TOL that did not
          ! even halve a residual already within 100 FORCE TOL. The residual that round-off
          ! leaves grows with the element count (strains from coordinate differences over
-         ! ever shorter elements): on the paper's cable, cubic elements, dt = 0.015 s,
-         ! 1.9e-8, 7e-8 and 2.2e-7 for 300, 1000 and 3000 elements, where the round-off
-         ! rule above took one or two iterations more (and new tangents) to end each step
+         ! ever shorter elements); on fine meshes the round-off rule above alone would take
+         ! one or two iterations more (and new tangents) to end each step
          if (alpha == 1.0_wp .and. cn <= opts%disp_tol .and. rn > 0.5_wp*rn_prev) then
             if (at_floor(rn)) then
                if (opts%log_unit >= 0) write (opts%log_unit, '(4x,a)') &
@@ -266,9 +263,8 @@ contains
          ! ... unless the residual has reached its round-off floor (within 100 FORCE TOL)
          ! while the tangent still works: a full correction a tenth of the one before. A
          ! residual that then stalls is round-off, which a new tangent does not cure; the
-         ! next correction ends the solve by the round-off rule above. (Scaling decks,
-         ! cubic elements, dt = 0.015 s: the floor is 7e-8 at 1000 elements and 2.2e-7 at
-         ! 3000, and 11 and 12 tangents in 20 steps were formed only to confirm it.)
+         ! next correction ends the solve by the round-off rule above (on fine meshes the
+         ! floor lies well above FORCE TOL, and new tangents would only confirm it).
          if (refresh .and. opts%reuse_tangent .and. alpha == 1.0_wp .and. &
              cn <= 0.1_wp*cn_prev) then
             if (at_floor(rn)) refresh = .false.
@@ -277,9 +273,8 @@ contains
          ! the first correction of a solve with an earlier solve's tangent takes the
          ! step's linear part (support motion, inertia) and leaves its nonlinear part;
          ! unless that is already small, the next tangent is formed here rather than
-         ! after an iteration that the old tangent does poorly (paper's case 1, 20 s:
-         ! 6.2 iterations and 1.47 tangents a step against 7.3 and 1.40, 3 % fewer
-         ! instructions)
+         ! after an iteration that the old tangent does poorly (fewer iterations a step
+         ! for slightly more tangents)
          if (it == 1 .and. .not. fresh .and. rn > sqrt(opts%force_tol)) refresh = .true.
          if (it == 1 .and. .not. fresh) prob%renew_first = refresh
          if (refresh .and. opts%reuse_tangent .and. .not. fresh .and. rn > rn_prev .and. &

@@ -1,6 +1,7 @@
 !> Results of a solved configuration, per line: node positions, stress resultants and
 !> curvatures at the reduced integration points (rod_element_resultants), and the
 !> support reactions at the ends (R = f_int - f_ext at a held node).
+!> docs/theory.md eqs. (30)-(31), (77)-(79).
 module rodyn_recovery
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t
@@ -16,7 +17,7 @@ module rodyn_recovery
    use rodyn_hydro, only: water_point_load, part_seabed
    implicit none
    private
-   public :: recover_static, recover_state
+   public :: recover_static, recover_state, touchdown_root
 
 contains
 
@@ -33,11 +34,13 @@ contains
 
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
-   !> In water (docs/water.md): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
+   !> In water (docs/water.md; docs/theory.md eqs. (77)-(79), where the sign convention
+   !> is discussed): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
    !> points, p_o = rho_w g (z_s - z) below the surface (0 above), p_i = p_ref + rho_i g
    !> (z_ref - z); the seabed's normal and friction force per length at the nodes (the
-   !> point law at the node, tangent d3); the touchdown, the largest arc length where the
-   !> line is in contact, interpolated linearly in the gap between the nodes.
+   !> point law at the node, tangent d3); the touchdown (touchdown_root), the largest arc
+   !> length where the line is in contact, with the nodes' effective penetration
+   !> pen = -gap - (c/k) v.n (N = D k max(0, pen), docs/water.md; pen = -gap in statics).
    subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines, water)
       type(model_t), intent(in) :: model                 !< model
       type(mesh_t), intent(in) :: mesh                   !< mesh
@@ -116,10 +119,10 @@ contains
          end do
       end do
    contains
-      !> p_o A_o - p_i A_i at reduced point g of element e (order p, nodes xe) [N]: z
+      !> p_i A_i - p_o A_o at reduced point g of element e (order p, nodes xe) [N], the
+      !> wall tension less the effective (docs/theory.md (77)-(79)): z
       !> with the rule's shape functions there (both resultant routines give the rule's
-      !> first p points; a frame of the mooring surge deck evaluated shape_lagrange and a
-      !> heap temporary for the node heights at each point before: 2.3 % of its run)
+      !> first p points; no shape_lagrange call and no heap temporary per point)
       real(wp) function pressure_term(e, g)
          integer, intent(in) :: e, g
          real(wp) :: z, gm, po, pi_
@@ -128,13 +131,13 @@ contains
          associate (sec => model%sections(mesh%elem_sec(e)))
             po = model%water%density*gm*max(model%water%surface - z, 0.0_wp)
             pi_ = sec%p_i + sec%rho_i*gm*(sec%z_pi - z)
-            pressure_term = po*0.25_wp*pi*max(sec%db, 0.0_wp)**2 - pi_*0.25_wp*pi*sec%id**2
+            pressure_term = pi_*0.25_wp*pi*sec%id**2 - po*0.25_wp*pi*max(sec%db, 0.0_wp)**2
          end associate
       end function pressure_term
       !> Seabed force per length at the nodes of line l and its touchdown.
       subroutine seabed_results(l)
          integer, intent(in) :: l
-         real(wp) :: fh(3), fs(3), k1(3, 3), k2(3, 3), k3(3, 3), k4(3, 3), fn, gap0, gap1, zero3(3)
+         real(wp) :: fh(3), fs(3), k1(3, 3), k2(3, 3), k3(3, 3), k4(3, 3), fn, zero3(3)
          integer :: k, node, e, isec
          zero3 = 0.0_wp
          e = mesh%line_first_elem(l)
@@ -152,19 +155,48 @@ contains
             lines(l)%seabed_normal(k) = fn
             lines(l)%seabed_friction(k) = norm2(fs - fn*water%env%n)
          end do
-         lines(l)%touchdown_s = -1.0_wp
-         do k = mesh%line_n_nodes(l), 1, -1
-            if (lines(l)%seabed_normal(k) <= 0.0_wp) cycle
-            node = mesh%line_first_node(l) + k - 1
-            lines(l)%touchdown_s = mesh%node_s(node)
-            if (k < mesh%line_n_nodes(l)) then
-               gap0 = dot_product(water%env%n, state%x(:, node)) - water%env%c0
-               gap1 = dot_product(water%env%n, state%x(:, node + 1)) - water%env%c0
-               if (gap1 > gap0) lines(l)%touchdown_s = mesh%node_s(node) &
-                  + (mesh%node_s(node + 1) - mesh%node_s(node))*(-gap0)/(gap1 - gap0)
-            end if
-            exit
-         end do
+         lines(l)%touchdown_s = touchdown_root(lines(l)%node_s, contact_pen(l))
       end subroutine seabed_results
+      !> The effective penetration pen = -gap - (c/k) v.n of the seabed at the nodes of
+      !> line l (c = 0 in statics): positive where the seabed pushes (N = D k pen > 0),
+      !> and taken as 0 where it does not (a section of no contact width, or round-off).
+      function contact_pen(l) result(pen)
+         integer, intent(in) :: l
+         real(wp) :: pen(mesh%line_n_nodes(l))
+         integer :: k, node
+         do k = 1, size(pen)
+            node = mesh%line_first_node(l) + k - 1
+            pen(k) = -(dot_product(water%env%n, state%x(:, node)) - water%env%c0)
+            if (water%env%dynamic .and. water%env%k > 0.0_wp) pen(k) = pen(k) &
+               - water%env%c/water%env%k*dot_product(water%env%n, state%v(:, node))
+            if (.not. lines(l)%seabed_normal(k) > 0.0_wp) pen(k) = min(pen(k), 0.0_wp)
+            if (lines(l)%seabed_normal(k) > 0.0_wp) pen(k) = max(pen(k), tiny(1.0_wp))
+         end do
+      end function contact_pen
    end subroutine recover_state
+
+   !> The touchdown of a line: the largest arc length in contact with the seabed, from
+   !> the nodes' arc lengths s and a contact measure pen (> 0: in contact; the effective
+   !> penetration). The last node in contact, k, and the node after it bracket the
+   !> touchdown; it is the root of pen interpolated linearly between them,
+   !>   s_td = s_k + (s_{k+1} - s_k) pen_k / (pen_k - pen_{k+1}),
+   !> always within [s_k, s_{k+1}] (pen_k > 0 >= pen_{k+1}). s_n when the last node is in
+   !> contact (grounded to its end); -1 when no node is.
+   pure real(wp) function touchdown_root(s, pen) result(s_td)
+      real(wp), intent(in) :: s(:)     !< arc lengths of the nodes, increasing [m]
+      real(wp), intent(in) :: pen(:)   !< contact measure at the nodes (> 0: contact) [m]
+      integer :: k, n
+      n = size(s)
+      s_td = -1.0_wp
+      do k = n, 1, -1
+         if (pen(k) > 0.0_wp) exit
+      end do
+      if (k < 1) return
+      if (k == n) then
+         s_td = s(n)
+         return
+      end if
+      s_td = s(k) + (s(k + 1) - s(k))*pen(k)/(pen(k) - pen(k + 1))
+      s_td = min(max(s_td, s(k)), s(k + 1))
+   end function touchdown_root
 end module rodyn_recovery

@@ -2,6 +2,7 @@
 !> banded workspace, the supports, the convergence scales, and the residual norm, linear
 !> solve, correction norm and energy slope (rodyn_newton). Each problem adds its own
 !> residual (evaluate) and configuration update (save_base, apply_correction).
+!> docs/theory.md eqs. (46), (49)-(52).
 module rodyn_rod_problem
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
@@ -85,10 +86,11 @@ contains
       prob%x_base = 0.0_wp
    end subroutine rod_problem_init
 
-   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs. F_ref: largest applied force, the
-   !> problem's own reference (reactions in statics, inertia and internal forces in a time
-   !> step) or moment over the line length; M_ref likewise, or F_ref times the shortest
-   !> element; neither below the round-off level of the section forces.
+   !> max(|r_F| / F_ref, |r_M| / M_ref) over free dofs (docs/theory.md eq. (49)). F_ref:
+   !> largest applied force, the problem's own reference (reactions in statics, inertia and
+   !> internal forces in a time step) or moment over the line length; M_ref likewise, or
+   !> F_ref times the shortest element; neither below the round-off level of the section
+   !> forces.
    function rod_residual_norm(this) result(v)
       class(rod_problem_t), intent(in) :: this !< problem
       real(wp) :: v
@@ -96,7 +98,7 @@ contains
       integer :: node, k
       rf = 0.0_wp
       rm = 0.0_wp
-      ! two loops, so that the rod's layout costs what it did before the dof map
+      ! two loops: the uniform layout (6 unknowns a node) takes the simpler one
       if (this%sup%uniform) then
          call uniform_residual_max(this%mesh%n_nodes, this%rhs, this%sup%held, rf, rm)
       else
@@ -126,11 +128,10 @@ contains
    !> le carries an error of about eps |x| / le, so a section force one of eps |x| C / le
    !> (C = GA1, GA2 or EA), a moment one of eps EI / le (unit directors):
    !>   floor = max(eps |x|_max max_e(C/le) / F_ref,  eps max_e(EI/le) / M_ref)
-   !> with |x|_max over Newton's base and the references of rod_residual_norm. On the
-   !> paper's cable (cubic elements, dt = 0.015 s, bench/dynamic_scaling.py's decks) the
-   !> residuals at which the steps stalled were 5 to 11 times it (300 elements: 1.9e-8
-   !> against 3.7e-9; 1000: 7e-8 against 1.24e-8; 10 000: 0.7e-6 to 1.84e-6 against
-   !> 1.7e-7): a node's residual sums the point forces of its elements.
+   !> with |x|_max over Newton's base and the references of rod_residual_norm
+   !> (docs/theory.md eq. (51)). The residuals at which steps stall are a few times this
+   !> estimate (a node's residual sums the point forces of its elements), hence the factor
+   !> 100 of newton_solve's rule.
    function rod_residual_floor(this) result(v)
       class(rod_problem_t), intent(in) :: this !< problem
       real(wp) :: v
@@ -186,7 +187,7 @@ contains
       v = dot_product(this%du, this%rhs)
    end function rod_slope
 
-   !> d_i = cay(alpha du_theta) d_i,base at every node (note section 3), the rotation
+   !> d_i = cay(alpha du_theta) d_i,base at every node (docs/theory.md eq. (46)), the rotation
    !> taken back to global axes at nodes with their own basis.
    subroutine rod_rotate_from_base(this, alpha, d)
       class(rod_problem_t), intent(in) :: this !< problem
@@ -218,8 +219,7 @@ contains
    end subroutine rod_rotate_from_base
 
    !> The largest free force and moment entries of a right-hand side with 6 unknowns a
-   !> node (rod_residual_norm). Explicit shapes: on the problem's components the same
-   !> expressions took 1.6 % of the peers' case-4 run.
+   !> node (rod_residual_norm). Explicit shapes, so that the loop vectorises.
    pure subroutine uniform_residual_max(nn, rhs, held, rf, rm)
       integer, intent(in) :: nn             !< nodes
       real(wp), intent(in) :: rhs(6, nn)    !< right-hand side
@@ -244,8 +244,8 @@ contains
       end do
    end subroutine uniform_correction_max
 
-   !> d = rot db for one node's directors (3 x 3 explicit shapes: as matmul on the
-   !> assumed-shape sections it was some 180 instructions a node, case 1)
+   !> d = rot db for one node's directors (3 x 3 explicit shapes: unrolled by the
+   !> compiler, unlike matmul on assumed-shape sections)
    pure subroutine turn_directors(rot, db, d)
       real(wp), intent(in) :: rot(3, 3) !< rotation
       real(wp), intent(in) :: db(3, 3)  !< directors at the base, db(:, i) = d_i

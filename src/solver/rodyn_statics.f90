@@ -1,4 +1,4 @@
-!> Static equilibrium (formulation note section 3, "Statics"): residual
+!> Static equilibrium (docs/theory.md section 14, eqs. (107)-(111)): residual
 !> r = f_int(q) - f_ext(lambda) = 0 solved by Newton in load increments, each halved on
 !> failure up to a bounded depth.
 !>
@@ -20,7 +20,7 @@
 !> all transversely isotropic (GA1 = GA2, EI1 = EI2), with no rotation held at any node
 !> and no point moment, can roll about its own centreline, uniformly, without any
 !> change of energy: that roll is a null vector of the static tangent, and its
-!> round-off blew the Newton corrections up to thousands of radians. The iteration
+!> round-off would blow the Newton corrections up to thousands of radians. The iteration
 !> matrix of such a run (not its residual) gets the stiffness k_g d3 d3^T against
 !> rotation about d3 at one node, its middle one, k_g = max(EI, GJ)/le of an element
 !> there. The residual is unchanged and is orthogonal to the null vector, so each
@@ -30,9 +30,9 @@
 !> Self-weight is applied in full from the start on a line that starts as a catenary
 !> (it nearly hangs in equilibrium already); on any other line it is ramped with lambda,
 !> and so is the line's buoyancy (sections and attachments): the weight in water is
-!> ramped, never the weight alone under full buoyancy, which on a free-hanging riser
-!> in a current floated the line up, flipped it, and converged to the unstable
-!> upside-down equilibrium.
+!> ramped, never the weight alone under full buoyancy, which can float a free-hanging
+!> riser in a current up, flip it, and converge to the unstable upside-down
+!> equilibrium.
 module rodyn_statics
    use rodyn_kinds, only: wp
    use rodyn_rotation, only: skew
@@ -40,7 +40,7 @@ module rodyn_statics
    use rodyn_model, only: model_t, motion_vessel
    use rodyn_motion, only: vessel_offset_point, rotation_z
    use rodyn_load_check, only: load_divergence_hint
-   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape
+   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
@@ -112,6 +112,7 @@ contains
    !> vessel at rest to the same vessel point with the vessel at its offset,
    !>   X = O + offset_1:3 + Rz(psi0 + offset_psi) p,  p = Rz(psi0)^T (x - O),
    !> and a clamped one (rotations held) is turned by Rz(lam offset_psi) with it.
+   !> docs/theory.md eqs. (103), (105).
    pure subroutine vessel_offsets(model, mesh, state, sup, turn_node, turn_psi, turn_d)
       type(model_t), intent(in) :: model         !< model
       type(mesh_t), intent(in) :: mesh           !< mesh
@@ -145,6 +146,7 @@ contains
    !> Set the load factor lam and the factor cur on the current's velocity: external
    !> forces and the prescribed positions of held nodes (reached by the next Newton step,
    !> see apply_supports).
+   !> docs/theory.md eq. (109) and the list above it.
    subroutine static_set_load_factor(prob, lam, cur)
       type(static_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: lam                   !< load factor [-]
@@ -170,6 +172,7 @@ contains
 
    !> Residual r = f_int - f_water - f_ext - (1 - lambda) r_0 (module header) and, if
    !> want_k, its tangent; the supports applied (apply_supports).
+   !> docs/theory.md eqs. (107)-(108).
    subroutine static_evaluate(this, want_k, err)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< form the tangent
@@ -203,6 +206,7 @@ contains
 
    !> r = f_int - f_ext - (1 - lambda) r0(u), the start's moments turned with their
    !> node, and (want_k) their tangent and the roll gauges (module header).
+   !> docs/theory.md eqs. (108), (111).
    subroutine homotopy_and_gauge(this, want_k)
       class(static_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                  !< add to the tangent
@@ -251,7 +255,7 @@ contains
       this%d_base = this%state%d
    end subroutine static_save_base
 
-   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (note section 3).
+   !> x = x_base + alpha du_x;  d_i = cay(alpha du_theta) d_i,base (docs/theory.md eq. (46)).
    subroutine static_apply_correction(this, alpha)
       class(static_problem_t), intent(inout) :: this !< problem
       real(wp), intent(in) :: alpha                  !< step length [-]
@@ -272,6 +276,7 @@ contains
    !> so no stiffness against swinging about its top: the first Newton step under a
    !> drag load across it turned it by thousands of radians, and the solve ended in the
    !> upside-down equilibrium. With its weight in full first the line is taut.
+   !> docs/theory.md eqs. (109)-(110).
    subroutine statics_solve(prob, model, summary, err, log_unit)
       type(static_problem_t), intent(inout) :: prob !< set-up problem
       type(model_t), intent(in) :: model            !< model (static options)
@@ -285,7 +290,7 @@ contains
       integer :: level, stage, n_stages
       logical :: retried, staged
       character(len=200) :: msg
-      character(len=:), allocatable :: why
+      character(len=:), allocatable :: why, hint
       opts%max_iterations = model%static%max_iterations
       opts%force_tol = model%static%force_tol
       opts%disp_tol = model%static%disp_tol
@@ -350,6 +355,8 @@ contains
             why = load_divergence_hint(model)
             if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
             if (len(why) > 0) why = ' ('//why//')'
+            hint = mesh_cable_like_rods(model, prob%mesh)
+            if (len(hint) > 0) why = why//'; '//hint
             call set_error(err, stat_numerical, trim(msg)//why)
             summary%status = trim(msg)//why
             summary%complete = .false.

@@ -9,7 +9,7 @@ Runs `EXE ARGS... DECK`, then checks that
   * stderr contains the text of every `** EXPECT: <text>` line of DECK (and every
     --expect TEXT given), as a plain substring, and
   * with --no-warning, stderr has no ': warning:' (a shipped deck that aliases its
-    motion or writes too few frames to catch its extremes warns: issue 12).
+    motion or writes too few frames to catch its extremes warns).
 A DECK that does not exist has no EXPECT lines (used to test a missing deck).
 Prints what it got on a mismatch. Exits 0 on a match, 1 otherwise.
 """

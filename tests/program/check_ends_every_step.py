@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The support forces are written every step (dynamic_ends_step.csv, and step_time,
 step_reactions, step_end_tension of each line in dynamic.h5), so that the extremes at the ends do not
-depend on the frame interval (issue 12). The paper's case 1 for 20 s (dt = 0.1 s, end A
+depend on the frame interval. The paper's case 1 for 20 s (dt = 0.1 s, end A
 heaved at 0.658 Hz) is run twice: frames every 0.5 s (3 frames a period of the motion)
 and a frame every step. Checked:
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""rodyn's output under faults (issue 12, docs/output.md "Failures and locking").
+"""rodyn's output under faults (docs/output.md "Failures and locking").
 
 usage: check_faults.py RODYN SOURCE_DIR WORK_DIR MODE [options]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One description of the output tables (issue 12, "Design").
+"""One description of the output tables (rodyn_output_schema, docs/output.md).
 
 usage: check_output_schema.py SCHEMA_DUMP SOURCE_DIR WORK_DIR RODYN
 

@@ -131,6 +131,9 @@ def main():
          "error: *PARAMETER: PERIOD: --set PERIOD=1/(L-10): bad expression '1/(L-10)': "
          "division by zero"),
         (["--set", "N=2.5"], "error: *LINE: ELEMENTS: '2.5' is not an integer"),
+        # an integer too large is quoted as typed, not as its rounded real value ('1e20')
+        (["--set", "N=99999999999999999999"],
+         "error: *LINE: ELEMENTS: '99999999999999999999' is out of range"),
         (["--set"], "rodyn: error: --set needs NAME=VALUE"),
     ]
     for k, (args, message) in enumerate(bad):

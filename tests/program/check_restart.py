@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checkpoint and restart (issue 12; docs/dynamics.md "Checkpoint and restart"): a run
+"""Checkpoint and restart (docs/dynamics.md "Checkpoint and restart"): a run
 killed with SIGKILL and continued with `rodyn DECK --restart DIR` leaves the same files
 as a run never interrupted: every CSV table byte for byte, every dataset and
 attribute of dynamic.h5 and results.h5 equal to the bit (h5py, numpy.array_equal), and

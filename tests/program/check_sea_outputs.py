@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The sea and vessel outputs (issue 13, "Outputs"; docs/output.md, "Waves and vessels"):
+"""The sea and vessel outputs (docs/output.md, "Waves and vessels"):
 wave elevation at the probes of *WAVE PROBE, vessel motion and the forces of the line
 ends on the vessel, at the frames (dynamic_waves.csv, dynamic_vessels.csv,
 dynamic_connections.csv) and every step (the _step tables).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checked writes in one place (issue 12, "Design").
+"""Checked writes in one place: every file write of src/ goes through one module.
 
 usage: check_writes_one_place.py SOURCE_DIR
 

@@ -27,6 +27,7 @@ from PIL import Image
 
 from rodyn_post import cli, errors, load_dynamic
 from rodyn_post.quantities import check_window, matching_static, window_mask
+from rodyn_post.environment import draw_sea, fit_elevation, scale_note
 
 PROG = "animate"  # prefix of its messages
 COMMAND = "rodyn-animate"  # its console command (postproc/pyproject.toml)
@@ -72,14 +73,22 @@ def animation_figure(results, frames, dpi=100):
                            markersize=2, linewidth=1.6, label=line.name)
         curves.append(curve)
     (xlim, zlim) = axis_limits(results, frames)
-    ax.set_xlim(*xlim)
-    ax.set_ylim(*zlim)
-    ax.set_aspect("equal", adjustable="box")
+    ax.update_datalim([(xlim[0], zlim[0]), (xlim[1], zlim[1])])   # every frame shown
+    env = results.environment
+    if env is not None:
+        y = float(np.mean([line.y[frames].mean() for line in results.lines]))
+        draw_sea(ax, env, xlim, y)
+    exaggeration = fit_elevation(ax)
+    if exaggeration == 1.0:
+        ax.set_aspect("equal", adjustable="box")
+        ax.set_xlim(*ax.dataLim.intervalx)
+        ax.set_ylim(*ax.dataLim.intervaly)
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
     cli.finish_axes(ax)
     clock = ax.text(0.02, 0.95, "", transform=ax.transAxes, va="top", fontsize=10)
-    fig.suptitle(cli.dynamic_title(results, "x-z elevation"), fontsize=9)
+    fig.suptitle(cli.dynamic_title(results, "x-z elevation" + scale_note(exaggeration)),
+                 fontsize=9)
 
     def update(frame):
         for curve, line in zip(curves, results.lines):

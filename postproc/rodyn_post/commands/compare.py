@@ -41,6 +41,7 @@ with their time (or S). Written into OUT_DIR (default: the results folder):
 rms is in SI units unless a unit is given ('--tol "0.5 kN"'); rel_* are fractions.
 """
 import sys
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -159,7 +160,8 @@ def comparison_figure(title, q, x_label, rodyn_xy, ref_xy, result, labels):
     ax_e.set_xlabel(x_label)
     for a in (ax, ax_e):
         cli.finish_axes(a)
-    fig.suptitle(title)
+    fig.suptitle("\n".join(textwrap.fill(part, 88, break_on_hyphens=False)
+                           for part in title.split("\n")), fontsize=10)
     return fig
 
 

@@ -46,7 +46,8 @@ from matplotlib.figure import Figure
 
 from rodyn_post import cli, load_dynamic  # cli: the Agg backend (never needs a display)
 from rodyn_post.cli import dynamic_title as run_title
-from rodyn_post.environment import current_inset, draw_sea, elevation_range
+from rodyn_post.environment import (current_inset, draw_sea, elevation_range,
+                                    fit_elevation, scale_note)
 from rodyn_post.errors import InputError as PlotInputError
 from rodyn_post.quantities import matching_static, window_mask
 
@@ -199,50 +200,127 @@ def snapshots_figure(results, frames, envelope=None):
         y = float(np.mean([line.y[f].mean() for line in results.lines for f in shown]))
         draw_sea(ax, env, elevation_range(xs), y)
         current_inset(ax, env)
-    ax.set_aspect("equal", adjustable="datalim")
+    exaggeration = fit_elevation(ax)
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
     ax.grid(True, linewidth=0.5, alpha=0.5)
     ax.legend(loc="best", fontsize=7, ncol=2 if len(frames) > 5 else 1)
     span = results.time[frames[-1]] - results.time[frames[0]] if frames else 0.0
     fig.suptitle(run_title(results, f"dynamic configurations, x-z elevation "
-                                    f"({len(frames)} frames over {span:.4g} s)"))
+                                    f"({len(frames)} frames over {span:.4g} s"
+                                    f"{scale_note(exaggeration)})"))
     return fig
 
 
+def zoom_start(results, t):
+    """Start [s] of the zoom panel of a long history, None for a short one. A history is
+    long when it holds more than 40 periods of the motion (or, without a harmonic motion,
+    more than 2000 points): drawn whole it would be a solid block. The zoom shows the last
+    5 periods (the last twentieth of the run without a period)."""
+    if len(t) < 2:
+        return None
+    span = t[-1] - t[0]
+    period = motion_period(results)
+    if period is not None and period > 0.0:
+        return t[-1] - 5.0 * period if span > 40.0 * period else None
+    return t[-1] - span / 20.0 if len(t) > 2000 else None
+
+
+def band_bins(results, t):
+    """Bins of the whole-run band: 300, or fewer so that each holds two periods of the
+    motion (a bin shorter than a period would show the phase of the oscillation in it,
+    not its range)."""
+    period = motion_period(results)
+    if period is None or not period > 0.0 or len(t) < 2:
+        return 300
+    return int(max(10, min(300, (t[-1] - t[0]) / (2.0 * period))))
+
+
+def draw_history(axes, t, y, t0, bins=300, style="-", **kw):
+    """A history on axes (whole run, zoom or None): whole when t0 is None; else the whole
+    run as the band between the minimum and maximum of each of `bins` bins in time (what
+    a plot of every point shows at this size, without the solid block) and the last part,
+    from t0, as a curve on the zoom axes."""
+    ax_all, ax_zoom = axes
+    if t0 is None:
+        ax_all.plot(t, y, style, **kw)
+        return
+    edges = np.linspace(t[0], t[-1], bins + 1)
+    k = np.clip(np.searchsorted(edges, t, side="right") - 1, 0, bins - 1)
+    lo = np.full(bins, np.nan)
+    hi = np.full(bins, np.nan)
+    np.fmin.at(lo, k, y)
+    np.fmax.at(hi, k, y)
+    mid = 0.5 * (edges[:-1] + edges[1:])
+    keep = ~np.isnan(lo)
+    band = ax_all.fill_between(mid[keep], lo[keep], hi[keep], alpha=0.6, linewidth=0.5,
+                               label=kw.get("label"), color=kw.get("color"))
+    color = kw.pop("color", None) or band.get_facecolor()[0]
+    ax_all.axvspan(t0, t[-1], color="0.85", zorder=0)
+    last = t >= t0
+    ax_zoom.plot(t[last], y[last], style, color=color, **kw)
+
+
+def history_axes(fig, rows, t0, bins=300):
+    """[(whole-run axes, zoom axes or None), ...] for `rows` rows of histories: one
+    column, or two (the whole run, the last part) when t0 is not None."""
+    if t0 is None:
+        return [(ax, None) for ax in np.atleast_1d(fig.subplots(rows, 1, sharex=True))]
+    grid = fig.subplots(rows, 2, sharex="col", width_ratios=(3, 2), squeeze=False)
+    grid[0, 1].set_title("last part (grey on the left)", fontsize=9)
+    grid[0, 0].set_title(f"whole run: range in each of {bins} bins of time", fontsize=9)
+    return [tuple(row) for row in grid]
+
+
+def finish_history_axes(rows, xlabel="time [s]"):
+    for ax_all, ax_zoom in rows:
+        for ax in (ax_all, ax_zoom):
+            if ax is not None:
+                ax.grid(True, linewidth=0.5, alpha=0.5)
+                if ax.get_legend_handles_labels()[0]:
+                    ax.legend(loc="best", fontsize=8)
+    for ax in rows[-1]:
+        if ax is not None:
+            ax.set_xlabel(xlabel)
+
+
 def tension_figure(results, window=None):
-    """Top and bottom support tension [kN] against time, one curve per line."""
-    fig = Figure(figsize=(8, 6), layout="constrained")
-    ax_top, ax_bot = fig.subplots(2, 1, sharex=True)
+    """Top and bottom support tension [kN] against time, one curve per line; a long run
+    as its range per bin beside a zoom on its last periods (zoom_start)."""
+    mask = window_mask(results.time, window)
+    t0 = zoom_start(results, results.time[mask])
+    bins = band_bins(results, results.time[mask])
+    fig = Figure(figsize=(8 if t0 is None else 11, 6), layout="constrained")
+    rows = history_axes(fig, 2, t0, bins)
     for line in results.lines:
         for role, (end, t, tension) in tension_curves(results, line, window).items():
-            ax = ax_top if role == "top" else ax_bot
-            ax.plot(t, tension, "-", linewidth=0.9, label=f"{line.name} end {'AB'[end]}")
-    ax_top.set_ylabel("top tension [kN]")
-    ax_bot.set_ylabel("bottom tension [kN]")
-    ax_bot.set_xlabel("time [s]")
-    for ax in (ax_top, ax_bot):
-        ax.grid(True, linewidth=0.5, alpha=0.5)
-        if ax.lines:
-            ax.legend(loc="best", fontsize=8)
+            axes = rows[0] if role == "top" else rows[1]
+            draw_history(axes, t, tension, t0, bins, "-", linewidth=0.9,
+                         label=f"{line.name} end {'AB'[end]}")
+    rows[0][0].set_ylabel("top tension [kN]")
+    rows[1][0].set_ylabel("bottom tension [kN]")
+    finish_history_axes(rows)
     fig.suptitle(run_title(results, "support tension |F| at the held ends"))
     return fig
 
 
 def energy_figure(results, window=None):
-    """Energy change and net work against time (top), their difference (bottom)."""
-    fig = Figure(figsize=(8, 6), layout="constrained")
-    ax_e, ax_d = fig.subplots(2, 1, sharex=True)
+    """Energy change and net work against time (top), their difference (bottom); a long
+    run as its range per bin beside a zoom on its last periods (zoom_start)."""
     t, change, work, error = energy_curves(results.log, window)
-    ax_e.plot(t, change, "-", linewidth=1.2, label="total energy - total(0)")
-    ax_e.plot(t, work, "--", linewidth=1.2, label=work_label(results.log))
-    ax_d.plot(t, error, "-", linewidth=0.9, color="C3", label="difference")
-    ax_e.set_ylabel("energy [J]")
-    ax_d.set_ylabel("difference [J]")
-    ax_d.set_xlabel("time [s]")
-    for ax in (ax_e, ax_d):
-        ax.grid(True, linewidth=0.5, alpha=0.5)
-        ax.legend(loc="best", fontsize=8)
+    t0 = zoom_start(results, t)
+    bins = band_bins(results, t)
+    fig = Figure(figsize=(8 if t0 is None else 11, 6), layout="constrained")
+    rows = history_axes(fig, 2, t0, bins)
+    draw_history(rows[0], t, change, t0, bins, "-", linewidth=1.2,
+                 label="total energy - total(0)")
+    draw_history(rows[0], t, work, t0, bins, "--", linewidth=1.2,
+                 label=work_label(results.log))
+    draw_history(rows[1], t, error, t0, bins, "-", linewidth=0.9, color="C3",
+                 label="difference")
+    rows[0][0].set_ylabel("energy [J]")
+    rows[1][0].set_ylabel("difference [J]")
+    finish_history_axes(rows)
     scheme = f"{results.scheme}, " if results.scheme else ""
     fig.suptitle(run_title(results, f"energy balance ({scheme}total = kinetic + strain + "
                                     "gravity; total(0) from step 1)"))

@@ -14,7 +14,8 @@ OUT_DIR (default: the results folder) and prints the paths written:
 
 WHERE (default: top mid bottom): A or B (an end), top or bottom (the higher or lower end
 at the first frame), mid (S = L/2), or an arc length S [m] from end A.
-Q (default: tension moment curvature z):
+Q (default: tension moment curvature z; tension and z for a line of cable elements,
+which has no bending):
   tension      effective tension N3 [kN]
   moment       bending moment magnitude sqrt(M1^2 + M2^2) [kN m]
   curvature    bending curvature sqrt(K1^2 + K2^2) [1/m]
@@ -35,7 +36,7 @@ import sys
 import numpy as np
 
 from rodyn_post import cli, load_dynamic
-from rodyn_post.quantities import (QUANTITIES, check_window, history,
+from rodyn_post.quantities import (BENDING, QUANTITIES, check_window, has_bending, history,
                                    parse_location, pick_line, quantity, window_mask)
 
 PROG = "plot_history"  # prefix of its messages
@@ -105,7 +106,10 @@ def main(argv=None):
         results = load_dynamic(args.results)
         check_window(results, args.window)
         line = pick_line(results, args.line)
-        time, columns = history_table(results, line, args.quantity, args.at, args.window)
+        keys = list(args.quantity)
+        if keys == list(DEFAULT_QUANTITIES) and not has_bending(line):
+            keys = [k for k in keys if k not in BENDING]   # cable elements: none to show
+        time, columns = history_table(results, line, keys, args.at, args.window)
         cli.warn_dynamic(PROG, results)
         out = cli.output_dir(args, results.folder)
         stem = f"history_{cli.safe_name(line.name)}"

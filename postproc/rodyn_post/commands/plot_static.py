@@ -32,7 +32,8 @@ from matplotlib.figure import Figure
 
 from rodyn_post import cli, load_static  # cli: the Agg backend (never needs a display)
 from rodyn_post.cli import static_title as run_title
-from rodyn_post.environment import current_inset, draw_sea, elevation_range
+from rodyn_post.environment import (current_inset, draw_sea, elevation_range,
+                                    fit_elevation, scale_note)
 
 PROG = "plot_static"  # prefix of its messages
 COMMAND = "rodyn-plot-static"  # its console command (postproc/pyproject.toml)
@@ -127,31 +128,36 @@ def shape_figure(results):
         xyz = [line.node_xyz for line in results.lines]
         draw_sea(ax, env, elevation_range([p[:, 0] for p in xyz]), plane_y(xyz))
         current_inset(ax, env)
-    ax.set_aspect("equal", adjustable="datalim")
+    exaggeration = fit_elevation(ax)
     ax.set_xlabel("x [m]")
     ax.set_ylabel("z [m]")
     ax.grid(True, linewidth=0.5, alpha=0.5)
     ax.legend(loc="best")
-    fig.suptitle(run_title(results, "static shape, x-z elevation"))
+    fig.suptitle(run_title(results, "static shape, x-z elevation" + scale_note(exaggeration)))
     return fig
 
 
 def tension_figure(results):
     """Figure with effective tension (top) and bending moment magnitude (bottom)
-    against unstretched arc length, one curve per line."""
-    fig = Figure(figsize=(7.5, 6.5), layout="constrained")
-    ax_t, ax_m = fig.subplots(2, 1, sharex=True)
+    against unstretched arc length, one curve per line; tension alone when no line has
+    a bending moment (lines of cable elements)."""
+    bending = any(np.any(line.moment_magnitude) for line in results.lines)
+    fig = Figure(figsize=(7.5, 6.5 if bending else 4.0), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(2 if bending else 1, 1, sharex=True))
     for line in results.lines:
         s, tension, moment = tension_curves(line)
-        ax_t.plot(s, tension, ".-", label=line.name)
-        ax_m.plot(s, moment, ".-", label=line.name)
-    ax_t.set_ylabel("effective tension [kN]")
-    ax_m.set_ylabel("bending moment |M| [kN m]")
-    ax_m.set_xlabel("arc length S (unstretched, from end A) [m]")
-    for ax in (ax_t, ax_m):
+        axes[0].plot(s, tension, ".-", label=line.name)
+        if bending:
+            axes[1].plot(s, moment, ".-", label=line.name)
+    axes[0].set_ylabel("effective tension [kN]")
+    if bending:
+        axes[1].set_ylabel("bending moment |M| [kN m]")
+    axes[-1].set_xlabel("arc length S (unstretched, from end A) [m]")
+    for ax in axes:
         ax.grid(True, linewidth=0.5, alpha=0.5)
         ax.legend(loc="best")
-    fig.suptitle(run_title(results, "static effective tension and bending moment"))
+    fig.suptitle(run_title(results, "static effective tension and bending moment" if bending
+                           else "static effective tension (cable elements: no bending)"))
     return fig
 
 
@@ -168,7 +174,7 @@ def wall_figure(results):
     ax.grid(True, linewidth=0.5, alpha=0.5)
     ax.legend(loc="best", fontsize=8)
     fig.suptitle(run_title(results, "wall and effective tension "
-                                    "(T_eff = T_wall - p_o A_o + p_i A_i)"))
+                                    "(T_eff = T_wall - p_i A_i + p_o A_o)"))
     return fig
 
 

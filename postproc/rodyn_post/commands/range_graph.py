@@ -5,8 +5,10 @@ the quantities of --quantity).
     rodyn-range-graph [RESULTS] [-o OUT_DIR] [--window T0 T1]
                       [--line NAME] [--quantity Q ...] [--dpi 150]
 
-RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
-OUT_DIR (default: the results folder) and prints the paths written:
+RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. The window is
+--window, else from the end of the run's longest ramp-in (of its motions, waves and
+current: dynamic.h5's /dynamic ramp_s; the start-up is not the response) to its end.
+Writes into OUT_DIR (default: the results folder) and prints the paths written:
 
   range_graph.png  three panels against the unstretched arc length S from end A:
                    effective tension [kN], bending moment |M| [kN m], bending
@@ -16,7 +18,8 @@ OUT_DIR (default: the results folder) and prints the paths written:
                    tension_max_N, moment_*_Nm, curvature_*_per_m; one row per
                    integration point of each line
 
---quantity picks the panels (default: tension moment curvature) among tension,
+--quantity picks the panels (default: tension moment curvature; tension alone when every
+line is of cable elements, which have no bending) among tension,
 wall_tension, moment, curvature, torque (at the integration points) and seabed_normal,
 x, y, z (at the nodes); one panel and three CSV columns each, in the order given.
 
@@ -30,7 +33,7 @@ OUTPUT INTERVAL sees more.
 import sys
 
 from rodyn_post import cli, load_dynamic
-from rodyn_post.quantities import (QUANTITIES, RANGE_QUANTITIES, STATS,
+from rodyn_post.quantities import (BENDING, QUANTITIES, RANGE_QUANTITIES, STATS, has_bending,
                                    check_window, matching_static, pick_line, point_values,
                                    range_stats, window_mask)
 
@@ -124,7 +127,11 @@ def main(argv=None):
         check_window(results, args.window)
         lines = [pick_line(results, args.line)] if args.line else list(results.lines)
         cli.warn_dynamic(PROG, results)
+        if args.window is None and 0.0 < results.ramp_s < results.time[-1]:
+            args.window = (results.ramp_s, float(results.time[-1]))   # after the ramp-in
         keys = list(dict.fromkeys(args.quantity))
+        if keys == list(RANGE_QUANTITIES) and not any(has_bending(ln) for ln in lines):
+            keys = [k for k in keys if k not in BENDING]   # cable elements: none to show
         table = range_table(results, lines, args.window, keys)
         out = cli.output_dir(args, results.folder)
         print(cli.save_figure(range_figure(results, table, args.window, keys), out / PNG,
