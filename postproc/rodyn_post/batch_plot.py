@@ -5,8 +5,8 @@ any case is read again).
     rodyn-batch plot OUT --envelope Q [--line NAME] [-o FILE.png] [--dpi 150]
 
 --y/--x: a summary column (e.g. CABLE.tension_max_N, or tension_max_N when one line
-has it) against a parameter, one line per value of --by; cases that are not complete
-are left out. --envelope Q (tension, wall_tension, moment, curvature, torque,
+has it) against a parameter, one line per value of --by; cases that are not complete,
+and cases without the parameter (another batch's into the folder), are left out. --envelope Q (tension, wall_tension, moment, curvature, torque,
 seabed_normal): the range graph over all complete cases: each case's min and max
 along the line (thin) and the envelope of them all (thick), with OUT/envelope_<Q>.csv
 giving, at each arc length, the envelope and the case that sets it.
@@ -96,6 +96,11 @@ def plot_column(summary: dict, ycol: str, xparam: str, by: str = None):
                                   f"(parameters: {summary['attrs'].get('parameters', '')})")
     ok = cases["status"] == "complete"
     x, numeric = _as_float(cases[xparam])
+    given = ~np.isnan(x) if numeric else np.asarray(x) != ""
+    if by is not None:   # a case without a parameter (another batch's) is left out
+        given &= np.array([str(v) not in ("", "nan") for v in cases[by]])
+    without = int((ok & ~given).sum())
+    ok &= given
     y = np.asarray(cases[ycol], float)
     groups = [None] if by is None else list(dict.fromkeys(cases[by][ok]))
     scale, unit = _unit(ycol)
@@ -110,9 +115,12 @@ def plot_column(summary: dict, ycol: str, xparam: str, by: str = None):
     ax.set_xlabel(xparam)
     ax.set_ylabel(f"{column_label(ycol)} [{unit}]")
     finish_axes(ax, legend=by is not None)
-    left = int((~ok).sum())
+    left = int((~ok).sum()) - without
+    notes = ([f"{left} cases not complete"] if left else []) + (
+        [f"{without} cases without {' or '.join(p for p in (xparam, by) if p)}"]
+        if without else [])
     fig.suptitle(f"{column_label(ycol)} against {xparam}"
-                 + (f" ({left} cases not complete left out)" if left else ""))
+                 + (f" ({', '.join(notes)} left out)" if notes else ""))
     return fig
 
 

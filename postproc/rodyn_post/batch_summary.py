@@ -2,8 +2,9 @@
 
 Columns, in this order (docs/batch.md):
 
-- `id`, then one column per parameter (as given; in summary.h5 a float dataset when
-  every value is a number, else strings);
+- `id`, then one column per parameter (as given, empty for a case without it, as a
+  case of another batch into the folder; in summary.h5 a float dataset, nan where
+  empty, when every other value is a number, else strings);
 - `status` (complete, failed, timeout, signal, error, cancelled, abandoned, locked,
   not run), `exit_code` (rodyn's exit status, -N for a signal N; empty / nan when it
   did not run), `message` (the last error line of rodyn's stderr, or why it did not
@@ -101,8 +102,9 @@ def _field(value, integer: bool = False) -> str:
 
 
 def _numeric(values) -> bool:
+    """Whether every value is a number or empty (a case without the parameter: nan)."""
     try:
-        [float(v) for v in values]
+        [float(v) for v in values if v != ""]
     except (TypeError, ValueError):
         return False
     return True

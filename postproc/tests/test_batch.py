@@ -618,3 +618,72 @@ def test_two_case_tables_at_once_and_a_list_of_the_last_batch_only(tmp_path):
     more.write_text("id,AMP\nm1,0.3\n")
     assert run_main([deck, "--cases", more, "-o", out, *common]) == 0
     assert sorted(r["id"] for r in csv_rows(out / "summary.csv")) == sorted(ids + ["m1"])
+
+
+def test_parameters_of_another_batch_stay_numbers(tmp_path):
+    """Two case tables with different parameters into one folder: each parameter column
+    of summary.h5 stays a float dataset, nan for the cases of the other table (empty in
+    summary.csv), and `rodyn-batch plot --x` draws the cases that have the parameter."""
+    deck = _param_deck(tmp_path)
+    out = tmp_path / "out"
+    common = ["-o", out, "-j", "2", "--rodyn", RODYN, "--no-progress"]
+    for name, text in (("first.csv", "id,AMP\na1,0.1\na2,0.2\n"),
+                       ("second.csv", "id,FREQ\nf1,0.8\nf2,0.5\n")):
+        (tmp_path / name).write_text(text)
+        assert run_main([deck, "--cases", tmp_path / name, *common]) == 0
+    summary = read_summary(out)
+    assert list(summary["cases"]["id"]) == ["a1", "a2", "f1", "f2"]
+    assert same_values(summary["cases"]["AMP"], [0.1, 0.2, math.nan, math.nan])
+    assert same_values(summary["cases"]["FREQ"], [math.nan, math.nan, 0.8, 0.5])
+    assert [r["FREQ"] for r in csv_rows(out / "summary.csv")] == ["", "", "0.8", "0.5"]
+    from rodyn_post.batch_plot import plot_column
+    fig = plot_column(summary, "CABLE.end_A_tension_max_N", "FREQ")
+    (line,) = fig.axes[0].lines
+    assert list(line.get_xdata()) == [0.5, 0.8]
+    np.testing.assert_array_equal(line.get_ydata(), summary["cases"][
+        "CABLE.end_A_tension_max_N"][[3, 2]] / 1e3)
+    assert "2 cases without FREQ left out" in fig._suptitle.get_text()
+    assert run_main(["plot", out, "--y", "CABLE.end_A_tension_max_N", "--x", "AMP",
+                     "-o", tmp_path / "amp.png"]) == 0
+
+
+def test_second_batch_while_the_first_runs(tmp_path):
+    """A batch into a folder where another batch is running: its summary lists the other
+    batch's cases as running; the batch that ends last writes every case complete.
+    The first batch's rodyn waits for a gate file, so no timing decides the order."""
+    decks = write_decks(tmp_path / "decks", n=2)
+    gate, started = tmp_path / "gate", tmp_path / "started"
+    wrapper = tmp_path / "gated_rodyn"
+    wrapper.write_text(f"#!/bin/sh\n[ \"$1\" = --help ] || {{ touch {started}; "
+                       f"while [ ! -e {gate} ]; do sleep 0.05; done; }}\n"
+                       f"exec {RODYN} \"$@\"\n")
+    wrapper.chmod(0o755)
+    out = tmp_path / "out"
+    first = subprocess.Popen([sys.executable, "-m", "rodyn_post.batch", *map(str, decks),
+                              "-o", str(out), "-j", "1", "--rodyn", str(wrapper),
+                              "--no-progress"], env=dict(os.environ, PYTHONPATH=str(POSTPROC)),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 120          # a guard against a hang only
+        while not started.exists() and first.poll() is None \
+                and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert started.exists(), first.communicate()
+        deck = _param_deck(tmp_path)
+        (tmp_path / "b.csv").write_text("id,AMP\nb1,0.2\nb2,0.3\n")
+        assert run_main([deck, "--cases", tmp_path / "b.csv", "-o", out, "--rodyn", RODYN,
+                         "--no-progress"]) == 0
+        rows = {r["id"]: r for r in csv_rows(out / "summary.csv")}
+        assert sorted(rows) == ["b1", "b2", "case00", "case01"]
+        assert [rows[i]["status"] for i in ("case00", "case01", "b1", "b2")] == \
+            ["running"] * 2 + ["complete"] * 2
+        assert "another batch" in rows["case00"]["message"]
+    finally:
+        gate.touch()
+        _, err = first.communicate(timeout=300)
+    assert first.returncode == 0, err
+    rows = csv_rows(out / "summary.csv")
+    assert sorted(r["id"] for r in rows) == ["b1", "b2", "case00", "case01"]
+    assert all(r["status"] == "complete" for r in rows)
+    state = json.loads((out / "batch_cases.json").read_text())
+    assert sorted(c["id"] for c in state["cases"]) == ["b1", "b2", "case00", "case01"]
