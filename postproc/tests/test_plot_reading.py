@@ -6,8 +6,9 @@ water (input/mooring_surge.inp, 6 s): what each figure holds, not its pixels.
 - the seabed's legend gives its depth, not the plane of its trace;
 - a line of cable elements gets no bending moment or curvature panel (it has none);
 - the animation shows the sea surface and the seabed;
-- a history of many periods (the paper's case 1 for 70 s: 46 periods) is drawn as its
-  range per bin of two periods beside a zoom on its last five periods, not as a block.
+- a history of many periods (the paper's case 1 for 70 s: 46 periods: support tension,
+  energy, momentum, the line's histories) is drawn as its range per bin of two periods
+  beside a zoom on its last five periods, not as a block.
 """
 import re
 import shutil
@@ -20,6 +21,7 @@ from designed import REPO
 from test_plot_static import rodyn_exe
 from rodyn_post import load_dynamic, load_static
 from rodyn_post.commands import animate, plot_dynamic, plot_history, plot_static, range_graph
+from rodyn_post.quantities import QUANTITIES
 
 
 def shortened_run(work, deck, include, pattern, replacement):
@@ -143,6 +145,26 @@ def test_long_history_band_and_zoom(tmp_path):
     short = load_dynamic(out)
     short_fig = plot_dynamic.tension_figure(short, window=(50.0, 70.0))   # 13 periods
     assert len(short_fig.axes) == 2 and short_fig.axes[0].lines
+    # the momentum and the line's histories alike
+    line = results.line("CABLE")
+    time, columns = plot_history.history_table(results, line, ["tension", "moment", "z"],
+                                               ["top", "mid"])
+    for fig, rows in ((plot_dynamic.momentum_figure(results), 2),
+                      (plot_history.history_figure(results, line, time, columns), 3)):
+        assert len(fig.axes) == 2 * rows
+        for whole, zoom in zip(fig.axes[0::2], fig.axes[1::2]):
+            assert whole.collections and not whole.lines
+            t0, t1 = zoom.lines[0].get_xdata()[[0, -1]]
+            assert t1 == results.time[-1] and 4.9 * period <= t1 - t0 <= 5.1 * period
+    whole, zoom = fig.axes[0], fig.axes[1]            # tension at the top, in kN
+    top = columns[0][2] * QUANTITIES["tension"].scale
+    lo, hi = whole.collections[0].get_paths()[0].get_extents().intervaly
+    assert lo == top.min() and hi == top.max()
+    last = time >= zoom.lines[0].get_xdata()[0]
+    np.testing.assert_array_equal(zoom.lines[0].get_ydata(), top[last])
+    short_fig = plot_history.history_figure(short, line, *plot_history.history_table(
+        short, line, ["tension"], ["top"], (50.0, 70.0)))
+    assert len(short_fig.axes) == 1 and short_fig.axes[0].lines
 
 
 def test_range_graph_starts_after_the_ramp(leg, tmp_path):

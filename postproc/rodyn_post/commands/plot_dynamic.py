@@ -27,6 +27,11 @@ node that moves most). --window T0 T1 limits the time histories and the envelope
 T0 <= t <= T1 and takes the default snapshots from the last period before T1.
 --no-envelope leaves the envelope out.
 
+Long runs: a history of more than 40 periods of the motion (or, without a harmonic
+motion, more than 2000 points) would be drawn as a solid block; the tension, energy and
+momentum histories of such a run show the whole run as the range (min to max) in bins of
+two periods, beside a zoom on the last 5 periods drawn in full (zoom_start, band_bins).
+
 Momentum: the step log has no row for t = 0, so the drift is measured from step 1. It is
 zero (to the solver tolerance, for EMC) only for a line without supports, gravity or
 loads; otherwise it shows the impulse of the supports and loads.
@@ -339,20 +344,26 @@ def work_label(log):
 
 
 def momentum_figure(results, window=None):
-    """Linear (top) and angular (bottom) momentum components minus their step-1 values."""
-    fig = Figure(figsize=(8, 6), layout="constrained")
-    ax_p, ax_l = fig.subplots(2, 1, sharex=True)
+    """Linear (top) and angular (bottom) momentum components minus their step-1 values;
+    a long run as its range per bin beside a zoom on its last periods (zoom_start)."""
     t, dp, dl = momentum_curves(results.log, window)
+    t0 = zoom_start(results, t)
+    bins = band_bins(results, t)
+    fig = Figure(figsize=(8 if t0 is None else 11, 6), layout="constrained")
+    rows = history_axes(fig, 2, t0, bins)
     for k, axis in enumerate("xyz"):
-        ax_p.plot(t, dp[:, k], "-", linewidth=1.0, label=f"p{axis} - p{axis}(step 1)")
-        ax_l.plot(t, dl[:, k], "-", linewidth=1.0, label=f"L{axis} - L{axis}(step 1)")
-    ax_p.set_ylabel("linear momentum drift [kg m/s]")
-    ax_l.set_ylabel("angular momentum drift [kg m2/s]")
-    ax_l.set_xlabel("time [s]")
-    for ax in (ax_p, ax_l):
-        ax.grid(True, linewidth=0.5, alpha=0.5)
-        if len(t):
-            ax.legend(loc="best", fontsize=8)
+        draw_history(rows[0], t, dp[:, k], t0, bins, "-", linewidth=1.0, color=f"C{k}",
+                     label=f"p{axis} - p{axis}(step 1)")
+        draw_history(rows[1], t, dl[:, k], t0, bins, "-", linewidth=1.0, color=f"C{k}",
+                     label=f"L{axis} - L{axis}(step 1)")
+    rows[0][0].set_ylabel("linear momentum drift [kg m/s]")
+    rows[1][0].set_ylabel("angular momentum drift [kg m2/s]")
+    if len(t):
+        finish_history_axes(rows)
+    else:
+        for ax_all, _ in rows:
+            ax_all.grid(True, linewidth=0.5, alpha=0.5)
+        rows[-1][0].set_xlabel("time [s]")
     start = f"t = {results.log.time[0]:.4g} s" if len(results.log) else "none"
     fig.suptitle(run_title(results, f"momentum minus its value at step 1 ({start}); "
                                     "angular momentum about the origin"))

@@ -7,7 +7,9 @@
 RESULTS is a results folder (default: paper_case1) or a dynamic.h5 file. Writes into
 OUT_DIR (default: the results folder) and prints the paths written:
 
-  history_<LINE>.png  one panel per quantity against time, one curve per place
+  history_<LINE>.png  one panel per quantity against time, one curve per place; a run
+                      of more than 40 periods of the motion as its range in bins of
+                      time beside a zoom on the last 5 periods (as rodyn-plot-dynamic)
   history_<LINE>.csv  the numbers, SI: time_s, then one column per quantity and place,
                       named <quantity>_<place>_<unit>, e.g. tension_A_N,
                       moment_S5_Nm, curvature_mid_per_m, z_top_m, end_tension_top_N
@@ -36,6 +38,7 @@ import sys
 import numpy as np
 
 from rodyn_post import cli, load_dynamic
+from rodyn_post.commands.plot_dynamic import band_bins, draw_history, history_axes, zoom_start
 from rodyn_post.quantities import (BENDING, QUANTITIES, check_window, has_bending, history,
                                    parse_location, pick_line, quantity, window_mask)
 
@@ -68,18 +71,26 @@ def column_name(key, where):
 
 
 def history_figure(results, line, time, columns):
-    """One panel per quantity (plotted units), one curve per place."""
+    """One panel per quantity (plotted units), one curve per place; a long run (more than
+    40 periods of the motion) as its range per bin of time beside a zoom on its last 5
+    periods (plot_dynamic.zoom_start), not as a solid block."""
     keys = list(dict.fromkeys(key for key, _, _ in columns))
-    fig = cli.new_figure(8, 1.0 + 2.3 * len(keys))
-    axes = np.atleast_1d(fig.subplots(len(keys), 1, sharex=True, squeeze=False)[:, 0])
-    for ax, key in zip(axes, keys):
+    t0 = zoom_start(results, time)
+    bins = band_bins(results, time)
+    fig = cli.new_figure(8 if t0 is None else 11, 1.0 + 2.3 * len(keys))
+    rows = history_axes(fig, len(keys), t0, bins)
+    for (ax, zoom), key in zip(rows, keys):
         q = QUANTITIES[key]
-        for col_key, where, values in columns:
-            if col_key == key:
-                ax.plot(time, values * q.scale, "-", linewidth=1.0, label=where.label)
+        for k, (col_key, where, values) in enumerate(c for c in columns if c[0] == key):
+            draw_history((ax, zoom), time, values * q.scale, t0, bins, "-", linewidth=1.0,
+                         color=f"C{k}", label=where.label)
         ax.set_ylabel(f"{q.label} [{q.unit}]")
-        cli.finish_axes(ax)
-    axes[-1].set_xlabel("time [s]")
+        for axes in (ax, zoom):
+            if axes is not None:
+                cli.finish_axes(axes)
+    for axes in rows[-1]:
+        if axes is not None:
+            axes.set_xlabel("time [s]")
     fig.suptitle(cli.dynamic_title(
         results, f"time histories of line {line.name} (between integration points / "
                  "nodes: linear in S)"))
