@@ -14,6 +14,7 @@ giving, at each arc length, the envelope and the case that sets it.
 from __future__ import annotations
 
 import argparse
+import re
 from pathlib import Path
 
 import numpy as np
@@ -64,17 +65,38 @@ def _unit(column: str):
     return 1.0, "-"
 
 
+QUANTITY_WORDS = {"seabed_normal": "seabed normal force"}   # others: the name in words
+
+
 def column_label(column: str) -> str:
-    """A summary column as an axis reads it: its line, then the quantity in words,
-    without the unit suffix of its name ('LEG.end_B_tension_max_N' -> 'LEG: end B
-    tension max'); the unit follows in brackets where it is used."""
+    """A summary column as an axis reads it, without the unit suffix of its name (the
+    unit follows in brackets where it is used): the line (and end), then the extreme and
+    the quantity in words, and for the time or arc length of an extreme what it is:
+    'LEG.end_B_tension_max_N' -> 'LEG end B: max tension', 'CABLE.tension_max_t_s' ->
+    'CABLE: time of max tension', 'CABLE.moment_max_S_m' -> 'CABLE: S of max moment',
+    'LEG.touchdown_min_S_m' -> 'LEG: min touchdown S'; other columns in words."""
     line, _, name = column.rpartition(".")
     for suffix in sorted(SCALES, key=len, reverse=True):
         if name.endswith("_" + suffix):
             name = name[:-len(suffix) - 1]
             break
-    words = name.replace("_", " ")
-    return f"{line}: {words}" if line else words
+    match = re.fullmatch(r"(?:end_([AB])_)?([a-z_]+?)_(max|min)(?:_([tS]))?", name)
+    if not line or match is None:
+        words = name.replace("_", " ")
+        return f"{line}: {words}" if line else words
+    end, quantity, stat, at = match.groups()
+    words = f"{stat} {QUANTITY_WORDS.get(quantity, quantity.replace('_', ' '))}"
+    if quantity == "touchdown":      # touchdown_<stat>_S: the touchdown point itself
+        words, at = f"{words} S", {"t": "t", "S": None}.get(at)
+    if at is not None:
+        words = f"{'time' if at == 't' else 'S'} of {words}"
+    return f"{line}{f' end {end}' if end else ''}: {words}"
+
+
+def axis_label(column: str) -> str:
+    """column_label with the plotted unit in brackets (none for a count)."""
+    unit = _unit(column)[1]
+    return column_label(column) + ("" if unit == "-" else f" [{unit}]")
 
 
 def _as_float(values):
@@ -103,7 +125,7 @@ def plot_column(summary: dict, ycol: str, xparam: str, by: str = None):
     ok &= given
     y = np.asarray(cases[ycol], float)
     groups = [None] if by is None else list(dict.fromkeys(cases[by][ok]))
-    scale, unit = _unit(ycol)
+    scale = _unit(ycol)[0]
     fig = new_figure(7, 4.5)
     ax = fig.subplots()
     for g in groups:
@@ -113,7 +135,7 @@ def plot_column(summary: dict, ycol: str, xparam: str, by: str = None):
         ax.plot(xs[order], ys[order] * scale, "o-", markersize=4,
                 label=None if g is None else f"{by} = {g}")
     ax.set_xlabel(xparam)
-    ax.set_ylabel(f"{column_label(ycol)} [{unit}]")
+    ax.set_ylabel(axis_label(ycol))
     finish_axes(ax, legend=by is not None)
     left = int((~ok).sum()) - without
     notes = ([f"{left} cases not complete"] if left else []) + (

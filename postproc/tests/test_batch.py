@@ -186,7 +186,16 @@ def test_plot_against_parameter(tmp_path):
     from rodyn_post.batch_plot import plot_column
     from rodyn_post.batch_summary import read_summary
     fig = plot_column(read_summary(tmp_path), "L.tension_max_N", "HS", "DIR")
-    assert fig.axes[0].get_ylabel() == "L: tension max [kN]"
+    assert fig.axes[0].get_ylabel() == "L: max tension [kN]"
+    from rodyn_post.batch_plot import axis_label
+    assert [axis_label(c) for c in (
+        "LEG.end_B_tension_max_N", "LEG.end_A_tension_min_t_s", "CABLE.moment_max_S_m",
+        "LEG.touchdown_max_S_m", "LEG.touchdown_min_t_s", "CABLE.bend_radius_min_m",
+        "LEG.seabed_normal_max_N_per_m", "max_step_iterations")] == [
+        "LEG end B: max tension [kN]", "LEG end A: time of min tension [s]",
+        "CABLE: S of max moment [m]", "LEG: max touchdown S [m]",
+        "LEG: time of min touchdown S [s]", "CABLE: min bend radius [m]",
+        "LEG: max seabed normal force [kN/m]", "max step iterations"]
 
 
 def test_parameter_grid_equals_lone_runs(tmp_path):
