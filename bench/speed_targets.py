@@ -1,14 +1,13 @@
 #!/usr/bin/env python3
-"""The speed targets of issue 14: today's figure, the one measured now, the ratio, met or not.
+"""The speed targets: the baseline figure, the one measured now, the ratio, met or not.
 
 usage: python3 bench/speed_targets.py [--rodyn PATH] [--quick] [--skip ROW [ROW ...]]
                                       [--run-peers] [--csv PATH]
        (about 5 minutes, --quick 1 minute, without --run-peers; writes
         bench/results/speed_targets.csv and prints a markdown table)
 
-One row per target of issue 14 ("Targets" and its cable element), the baseline
-("today") hard-coded as the issue gives it (2026-11-24; the cable element's from
-docs/water.md, 2026-11-25). Rows (names for --skip):
+One row per speed target (and its cable element), the baseline ("today") hard-coded
+as measured on 2026-11-24 (the cable element's from docs/water.md, 2026-11-25). Rows (names for --skip):
 
   case1         the paper's case 1 deck as shipped (input/paper_case1.inp with
                 input/paper_cable_section.inc, copied into a temporary folder): whole-process
@@ -85,7 +84,7 @@ from profile_case import callgrind  # noqa: E402
 ROOT = benchlib.ROOT
 ROWS = ["case1", "newton", "instructions", "scaling", "scaling_instructions", "memory", "cable",
         "peers"]
-ISSUE = "issue 14, 2026-11-24"
+ISSUE = "baseline, 2026-11-24"
 WATER = "docs/water.md, 2026-11-25"
 CASE1_INC = ["input/paper_cable_section.inc"]
 SCALING_SIZES = [100, 300, 1000, 3000, 10000]
