@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Speed of rodyn-batch (issue 11): overhead per case, 2 workers against 1, summary of
+"""Speed of rodyn-batch: overhead per case, 2 workers against 1, summary of
 1000 cases. Prints the figures published in docs/batch.md.
 
     RODYN_EXE=build/rodyn PYTHONPATH=postproc python3 bench/batch_bench.py [--quick]

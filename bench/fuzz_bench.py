@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The deck fuzzer's full mode (issue 12): 10 000 mutated decks through rodyn.
+"""The deck fuzzer's full mode: 10 000 mutated decks through rodyn.
 
 Runs tools/fuzz_decks.py (the same cases as its quick mode in CTest, 300 of them, and
 9 700 more) and writes its summary with the machine it ran on:

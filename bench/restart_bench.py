@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checkpoint and restart under real kills (issue 12): the paper's case 1 (60 s, a frame
+"""Checkpoint and restart under real kills: the paper's case 1 (60 s, a frame
 every step, CHECKPOINT=5 s) is run once uninterrupted, then --trials times killed with
 SIGKILL at a random wall time (seeded) and continued with `rodyn DECK --restart DIR`
 (each continued run killed again at random with probability 1/2) until it completes;

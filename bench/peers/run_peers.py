@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Peers benchmark: the paper's cable driven at its top end, run with rodyn, MoorDyn,
 CableDyn (and OpenSees where it runs), errors against one converged rodyn reference,
-and wall times (issue 5, "peers").
+and wall times.
 
   python3 bench/peers/run_peers.py [--rodyn PATH] [--quick] [--cases case1 case4]
                                    [--tools rodyn moordyn cabledyn opensees]

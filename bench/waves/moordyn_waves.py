@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""rodyn and MoorDyn v2 on the mooring leg in a regular wave (issue 13, "Cross-check").
+"""rodyn and MoorDyn v2 on the mooring leg in a regular wave (the waves' cross-check).
 
 The leg of input/mooring_waves.inp (bench/water/leg.py: 450 m, 60 kg/m, d 0.1 m, EA 6e8 N,
 anchor (-400, 0, -100), fairlead (0, 0, -10), depth 100 m) in the deck's regular wave
@@ -20,7 +20,7 @@ from still-water statics in both codes. Statistics over the last 6 of 12 periods
 (68.88 <= t < 137.76 s): maximum and mean of the fairlead tension (magnitude of the
 force at the fairlead), the first harmonic (least squares, for information) and the
 maximum of the periodic part (least-squares fit of harmonics 0-8 of the wave frequency).
-Target (issue 13): maximum and mean within 2 % of MoorDyn's finest run (N = 320).
+Target: maximum and mean within 2 % of MoorDyn's finest run (N = 320).
 Measured (docs/waves.md, "Cross-check with MoorDyn"): mean +0.009 %, maximum -0.92 %,
 periodic maximum -0.12 %. rodyn is converged (120 elements, dt 0.05 s); MoorDyn's mean
 and periodic maximum are, its raw maximum is not yet (85241, 85016, 85593, 84476 N at
