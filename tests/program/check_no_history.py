@@ -119,7 +119,8 @@ def self_test():
             "issue 12 added the writer", "(issue 14)", "Today's figure", "since 2026-11-27",
             "(before 2026-11-23 08:20 UTC only ...)", "a round of work on the kernels"]
     keep = ["start_new_session=True", '@pytest.fixture(scope="session")',
-            "the short case runs once per session", "that stops the session.", "a session-less HDF5 file id", "MoorDyn issue 12",
+            "the short case runs once per session", "that stops the session.",
+            "a session-less HDF5 file id", "MoorDyn issue 12",
             "| 2026-11-27 | 4.8 s |", "- date: 2026-11-27 09:41 UTC",
             "the rounding of the output", "no issue with the mesh", "a round-off floor",
             "measured 2026-11-25 (`python3 bench/x.py`)"]
