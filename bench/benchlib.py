@@ -4,6 +4,7 @@ import math
 import os
 import platform
 import subprocess
+import sys
 
 def read_status(path):
     """status.txt as a dict of text values."""
@@ -31,7 +32,8 @@ def fit_exponent(rows, key, min_n=100):
 
 
 def machine_facts(rodyn, load_average=False):
-    """Machine and versions a measurement was taken on."""
+    """Command, build, date, machine and versions a measurement was taken on: every
+    table a script writes names them."""
     cpu = "unknown"
     try:
         with open("/proc/cpuinfo") as f:
@@ -48,7 +50,12 @@ def machine_facts(rodyn, load_average=False):
             return (r.stdout or r.stderr).strip().splitlines()[0]
         except (OSError, IndexError):
             return "unknown"
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    commit = cmd(["git", "-C", root, "describe", "--always", "--dirty", "--abbrev=10"])
     facts = {
+        "command": "python3 " + " ".join(
+            [os.path.relpath(os.path.abspath(sys.argv[0]), root)] + sys.argv[1:]),
+        "commit (of the checkout the script ran from)": commit,
         "date": datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z"),
         "cpu": cpu,
         "cores": str(os.cpu_count()),

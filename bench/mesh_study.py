@@ -22,7 +22,7 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import read_status
+from benchlib import machine_facts, read_status
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ORDERS = [1, 2, 3]
@@ -157,7 +157,9 @@ def main():
                     d40 = max_diff(r["nodes"], res[p, ref_mid]["nodes"])
             diffs[p, n] = (d80, d40, s80)
 
-    lines = [MARKER, "", f"Computed with `{version}`.", ""]
+    facts = machine_facts(rodyn)
+    lines = [MARKER, "", f"Computed with `{version}`:", ""]
+    lines += [f"- {k}: {v}" for k, v in facts.items()] + [""]
     lines += ["## Solver runs", "",
               "| p | elements | settings | Newton iterations | attempts |",
               "|---:|---:|---|---:|---|"]

@@ -1,23 +1,24 @@
 #!/usr/bin/env python3
-"""The speed targets: the baseline figure, the one measured now, the ratio, met or not.
+"""The speed targets: the baseline figure, the one measured, the gain, met or not.
 
 usage: python3 bench/speed_targets.py [--rodyn PATH] [--quick] [--skip ROW [ROW ...]]
                                       [--run-peers] [--csv PATH]
        (about 5 minutes, --quick 1 minute, without --run-peers; writes
         bench/results/speed_targets.csv and prints a markdown table)
 
-One row per speed target (and its cable element), the baseline ("today") hard-coded
-as measured on 2026-11-24 (the cable element's from docs/water.md, 2026-11-25). Rows (names for --skip):
+One row per speed target (the program's and its cable element's), the baseline
+hard-coded as the targets were set (2026-11-24; the cable element's from
+docs/water.md, 2026-11-25). Rows (names for --skip):
 
   case1         the paper's case 1 deck as shipped (input/paper_case1.inp with
                 input/paper_cable_section.inc, copied into a temporary folder): whole-process
-                wall time, best of 2 runs. Target <= 1.5 s (today 8.5 s).
+                wall time, best of 2 runs. Target <= 1.5 s (baseline 8.5 s).
   newton        Newton iterations per step of that run (step_iterations / steps of its
                 status.txt; tangents per step too, step_tangents / steps). Target <= 3
-                (today 7.6; 12 971 tangents over 9000 steps = 1.44).
+                (baseline 7.6; 12 971 tangents over 9000 steps = 1.44).
   instructions  instructions per step of case 1 shortened to TIME = 20 s: callgrind's total
                 with collection in timeloop_run only (bench/profile_case.py's `callgrind`)
-                over the steps of status.txt. Target <= 3e6 (today 1.35e7). Needs valgrind
+                over the steps of status.txt. Target <= 3e6 (baseline 1.35e7). Needs valgrind
                 (skipped with a note without it). Where the link-time optimisation has
                 inlined timeloop_run (its toggle then collects nothing), the instructions
                 inclusive in run_dynamic, the routine that calls it (the time loop plus the
@@ -26,7 +27,7 @@ as measured on 2026-11-24 (the cable element's from docs/water.md, 2026-11-25). 
   scaling       exponent b of (time per step) ~ n^b, cubic and quadratic elements, 100,
                 300, 1000, 3000 and 10 000 elements (--quick: 100, 1000, 3000): the decks,
                 timing (median of repeats, static-only deck subtracted) and least-squares
-                fit of bench/dynamic_scaling.py. Target <= 1.05 (today 1.16 and 1.22).
+                fit of bench/dynamic_scaling.py. Target <= 1.05 (baseline 1.16 and 1.22).
   scaling_instructions
                 the same exponent from instructions instead of wall times: callgrind's
                 count inclusive in run_dynamic (bench/profile_case.py's `callgrind`: the
@@ -38,26 +39,27 @@ as measured on 2026-11-24 (the cable element's from docs/water.md, 2026-11-25). 
                 waits on memory: wall time per instruction grows with n). Needs valgrind.
   memory        memory per cubic element: (peak RSS - peak RSS at 10 elements) / n at
                 10 000 elements (--quick: 3000), the decks and GNU time measurement of
-                bench/memory_scaling.py. Target <= 19 KiB (today 19 KiB). Quadratic
+                bench/memory_scaling.py. Target <= 19 KiB (baseline 19 KiB). Quadratic
                 elements reported alongside.
   cable         the mooring surge case (input/mooring_surge.inp, bench/water/): 24 cubic
                 cable elements and 30 cubic rod elements at dt = 0.1 s (the cheapest
                 settings within 1 % of MoorDyn's 320-segment run on maximum, mean and first
                 harmonic of the fairlead tension, docs/water.md), whole-process wall time,
                 best of 2 runs; errors as bench/water/compare_peers.py takes them. Target:
-                rod / cable >= 3 (today 2.1: 1.41 s / 0.67 s); MoorDyn's converged
+                rod / cable >= 3 (baseline 2.1: 1.41 s / 0.67 s); MoorDyn's converged
                 dynamics (320 segments, 42.2 s, a stored figure of docs/water.md, not
-                re-run) / cable >= 30 (today 63).
+                re-run) / cable >= 30 (baseline 63).
   peers         at 1 % top-tension error, CableDyn's cheapest run over rodyn's cheapest
                 (bench/peers/run_peers.py's best_at on bench/results/peers_case1.csv and
                 peers_case4.csv: the smallest median wall time of a complete run with
-                tension_max_rel <= 0.01). Target >= 5 (today 0.7 and 2.7). Reads the
+                tension_max_rel <= 0.01). Target >= 5 (baseline 0.7 and 2.7). Reads the
                 stored CSV files unless --run-peers is given, which first runs
                 `bench/peers/run_peers.py --cases case1 case4 --tools rodyn cabledyn
                 --fresh` (30 minutes or more; it installs the peers into its own venv).
 
 Ratio: for a figure where smaller is better (times, iterations, instructions, exponents,
-memory) the gain today / now; where larger is better (speed-ups) now / today. A gain
+memory) the gain baseline / measured; where larger is better (speed-ups) measured /
+baseline. A gain
 above 1 is progress either way. --quick runs the timings of case1 and cable once
 instead of best of 2, and the smaller sizes for scaling and memory (the scaling rows keep
 dynamic_scaling.py's repeats: one run of a 20-step deck is too noisy to fit). Wall
@@ -84,7 +86,7 @@ from profile_case import callgrind  # noqa: E402
 ROOT = benchlib.ROOT
 ROWS = ["case1", "newton", "instructions", "scaling", "scaling_instructions", "memory", "cable",
         "peers"]
-ISSUE = "baseline, 2026-11-24"
+ISSUE = "targets of 2026-11-24"
 WATER = "docs/water.md, 2026-11-25"
 CASE1_INC = ["input/paper_cable_section.inc"]
 SCALING_SIZES = [100, 300, 1000, 3000, 10000]
@@ -111,9 +113,9 @@ def row(target, goal, baseline, source, now, smaller_better, met_rule, fmt, note
          "now": now, "note": note, "ratio": None, "ratio_kind": "", "met": None, "fmt": fmt}
     if now is not None and baseline is not None and now > 0:
         if smaller_better:
-            r["ratio"], r["ratio_kind"] = baseline / now, "today/now"
+            r["ratio"], r["ratio_kind"] = baseline / now, "baseline/measured"
         else:
-            r["ratio"], r["ratio_kind"] = now / baseline, "now/today"
+            r["ratio"], r["ratio_kind"] = now / baseline, "measured/baseline"
     if now is not None and met_rule is not None:
         r["met"] = bool(met_rule(now))
     return r
@@ -402,7 +404,7 @@ def peers_rows(rodyn, run_peers):
                                f"no complete {who} run within 1 % in {when}"))
             continue
         if facts.get("date", "")[:10] < ISSUE[-10:]:
-            when += ", older than the issue's figures: re-run with --run-peers"
+            when += ", older than the baseline: re-run with --run-peers"
         ratio = peer["wall_median_s"] / mine["wall_median_s"]
         total = peer["wall_total_median_s"] / mine["wall_total_median_s"]
         note = (f"{when}; CableDyn {peer['wall_median_s']:.3g} s ({peer['settings']}), "
@@ -482,11 +484,14 @@ def main():
         ratio = "–" if r["ratio"] is None else f"{r['ratio']:.2f} ({r['ratio_kind']})"
         table.append([r["target"], r["goal"], cell(r["baseline"], r["fmt"]),
                       r["baseline_source"], cell(r["now"], r["fmt"]), ratio, met])
-    print("\n".join(benchlib.md_table(["target", "goal", "today", "today's source", "now",
-                                       "gain", "met"], table, "llrlrrl")))
+    for k, v in benchlib.machine_facts(rodyn).items():
+        print(f"- {k}: {v}")
     print()
-    print("gain: today/now where smaller is better, now/today where larger is better "
-          "(above 1: progress).")
+    print("\n".join(benchlib.md_table(["target", "goal", "baseline", "baseline's source",
+                                       "measured", "gain", "met"], table, "llrlrrl")))
+    print()
+    print("gain: baseline/measured where smaller is better, measured/baseline where larger "
+          "is better (above 1: progress).")
     for r in rows:
         if r["note"]:
             print(f"- {r['target']}: {r['note']}")

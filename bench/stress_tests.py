@@ -4,8 +4,7 @@
 usage: python3 bench/stress_tests.py [--rodyn PATH] [--quick] [--tests TEST ...]
                                      [--csv PATH] [--png-dir DIR] [--md PATH] [--keep DIR]
 
-Tests (full run about 8 minutes on the 04:45 snapshot build, 2.5 on the 06:20 build;
---quick about a minute):
+Tests (full run about 2 minutes, --quick about a minute):
 
   long_run     the paper's cable (20 quadratic elements) heaved 0.4 m at 0.625 Hz
                (period 1.6 s = 16 steps; case 1 is 0.658 Hz), EMC, dt 0.1 s, 100 000

@@ -32,12 +32,8 @@ Errors, over the window of the last periods, at the frames of the run:
                   support force at the frame time (the step-averaged force, which belongs
                   to the step's middle, interpolated between the steps either side of
                   the frame), so T and T_ref are compared at the same time, unshifted.
-                  (Builds before this change stamped the step average at the step's end,
-                  half a step late; an earlier version of this script also reported a
-                  "centred" error that undid that shift. It is wrong for the current
-                  build and has been dropped.) ALPHA's step force belongs to its force
-                  point t_n + (1 - alpha_f) dt, not the middle: interpolated as a mid-step
-                  value it is written 0.056 dt early, and its error stays first order.
+                  ALPHA's step force belongs to its force point t_n + (1 - alpha_f) dt,
+                  not the middle, and rodyn interpolates it from there.
   position error  RMS of |x - x_ref| (m) of the mid-line node (S = L/2), and that divided
                   by the RMS distance of the reference's node from its mean position
                   in the window.
@@ -61,7 +57,7 @@ reference resolves.
 schemes on the base mesh and EMC on 10 quadratic elements, reference 20 quadratic elements at
 dt = 0.003125 s (check run: the same mesh at 0.00625 s); prints the tables
 and the checks, writes no file unless --csv, --png-dir or --md is given. The full run
-(about 11 minutes on the 04:45 snapshot build, 4 on the 06:20 build) writes
+(about 4 minutes) writes
 bench/results/work_precision.csv, docs/img/work_precision_<case>.png and the results part of
 docs/benchmarks_work_precision.md (below its marker line).
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""rodyn and MoorDyn v2 on the mooring leg in a regular wave.
+"""rodyn and MoorDyn v2 on the mooring leg in a regular wave (the waves' cross-check).
 
 The leg of input/mooring_waves.inp (bench/water/leg.py: 450 m, 60 kg/m, d 0.1 m, EA 6e8 N,
 anchor (-400, 0, -100), fairlead (0, 0, -10), depth 100 m) in the deck's regular wave
