@@ -335,6 +335,7 @@ module rodyn_model
       logical :: reuse_tangent = .true.   !< TANGENT=REUSE: modified Newton (rodyn_newton)
       real(wp) :: rayleigh_alpha = 0.0_wp !< mass-proportional damping [1/s]
       real(wp) :: rayleigh_beta = 0.0_wp  !< stiffness-proportional damping [s]
+      character(len=:), allocatable :: damping_at !< 'FILE:LINE' of *DAMPING (unset: none)
    end type dynamic_options_t
 
    !> A deck parameter as used (*PARAMETER, after any --set), echoed into the output.

@@ -260,8 +260,8 @@ contains
                why = mesh_spurious_shape(model, prob%mesh, prob%s1)
                if (len(why) > 0) then
                   write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s,'
-                  why = trim(msg)//' '//why//'; the frames before it are written (the shape '// &
-                        'may have formed after the last of them)'
+                  why = trim(msg)//' '//why//damping_note(model)//'; the frames before it '// &
+                        'are written (the shape may have formed after the last of them)'
                   call set_error(err, stat_numerical, why)
                   summary%status = why
                   return
@@ -479,4 +479,18 @@ contains
       end if
       text = trim(buf)
    end function nonfinite_where
+
+   !> '; the run's *DAMPING (FILE:LINE): ALPHA = a 1/s, BETA = b s' when the deck has
+   !> one (damping ratio ALPHA/(2 omega) + BETA omega/2, docs/deck.md), else ''.
+   function damping_note(model) result(text)
+      type(model_t), intent(in) :: model          !< model
+      character(len=:), allocatable :: text       !< the note
+      character(len=16) :: a, b
+      text = ''
+      if (.not. allocated(model%dynamic%damping_at)) return
+      write (a, '(es9.2)') model%dynamic%rayleigh_alpha
+      write (b, '(es9.2)') model%dynamic%rayleigh_beta
+      text = "; the run's *DAMPING ("//model%dynamic%damping_at//'): ALPHA = '// &
+             trim(adjustl(a))//' 1/s, BETA = '//trim(adjustl(b))//' s'
+   end function damping_note
 end module rodyn_timeloop

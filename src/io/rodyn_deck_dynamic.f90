@@ -188,6 +188,7 @@ contains
                             'period below '//int_str(nint(pi*max_beta))//' s beyond critical '// &
                             '(damping ratio BETA omega/2 > 1); a ratio zeta at omega is '// &
                             'BETA = 2 zeta/omega', err)
+         model%dynamic%damping_at = location(deck, ic)
       end associate
    end subroutine read_damping_card
 

@@ -183,9 +183,14 @@ contains
       if (err%code /= 0) return
       p%is_number = .true.
       p%text = param_number_text(p%value)
-      ! an integer literal is substituted as written: a message about it (an integer out
-      ! of range) then quotes what the user typed, not its rounded real value
-      if (verify(text, digits10) == 0) p%text = text
+      ! an integer literal, signed or not, is substituted as written (but for a '+'): a
+      ! message about it (an integer out of range) then quotes what the user typed, not
+      ! its rounded real value ('1e20')
+      k = 1
+      if (text(1:1) == '+' .or. text(1:1) == '-') k = 2
+      if (k <= n) then
+         if (verify(text(k:), digits10) == 0) p%text = text(merge(2, 1, q == '+'):)
+      end if
    end subroutine param_value
 
    !> Evaluate an arithmetic expression of numbers and numeric parameters (grammar in

@@ -24,6 +24,10 @@ module rodyn_mesh
    public :: mesh_spurious_shape, fix_leading_dots, mesh_cable_like_rods
    public :: mesh_t, mesh_build, mesh_node
 
+   !> EI / (T_ref l_e^2) below which a rod line's bending stiffness is negligible: a
+   !> bending length sqrt(EI/T_ref) under a hundredth of the element (line_bending_ratio)
+   real(wp), parameter :: ratio_min = 1.0e-4_wp
+
    !> The discretised model.
    type :: mesh_t
       integer :: n_lines = 0
@@ -524,48 +528,85 @@ contains
             ' strain ', hidden, ' between its shear points, ', seen, ' at them'
          why = 'line '//trim(model%lines(l)%name)//', '//fix_leading_dots(trim(msg))// &
                ' (a mode of cubic rod elements that only the bending stiffness holds '// &
-               'against; it forms where the line is bent or sheared far more than its '// &
-               'bending stiffness resists: a line of negligible bending stiffness (use '// &
-               'ELEMENT=CABLE), too few elements, or loads that deform it violently '// &
-               '(damping, drag, motions): check them; docs/element.md, "Known limits")'
+               'against, docs/element.md, "Known limits"; '//spurious_cause(model, mesh, l)//')'
          return
       end do
    end function mesh_spurious_shape
 
+   !> Why a spurious shape formed on rod line l: its bending stiffness negligible
+   !> (line_bending_ratio below ratio_min: a cable as rods), else loads that deform it
+   !> faster or more sharply than its elements resolve.
+   function spurious_cause(model, mesh, l) result(cause)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      integer, intent(in) :: l               !< line index
+      character(len=:), allocatable :: cause !< the cause, as advice
+      real(wp) :: ratio
+      ratio = line_bending_ratio(model, mesh, l)
+      if (ratio < ratio_min) then
+         cause = 'its bending stiffness is negligible, '//ratio_text(ratio)// &
+                 ': a chain, wire or rope wants ELEMENT=CABLE on its *LINE'
+      else if (ratio < huge(1.0_wp)) then
+         cause = 'its bending stiffness is not negligible, '//ratio_text(ratio)// &
+                 ': loads bent or sheared it far more sharply than its elements resolve;'// &
+                 ' check the motions, *DAMPING and drag for violent or absurd values, or'// &
+                 ' use another element count'
+      else
+         cause = 'loads bent or sheared it far more sharply than its elements resolve;'// &
+                 ' check the motions, *DAMPING and drag for violent or absurd values, or'// &
+                 ' use another element count'
+      end if
+   end function spurious_cause
+
    !> A hint for a failed statics: the first line of rod elements whose bending stiffness
-   !> is negligible, EI < 1e-4 T_ref l_e^2 in one of its elements (a bending length
-   !> sqrt(EI/T_ref) under a hundredth of the element), T_ref = |w| L the line's weight
-   !> (in water when wet). Such a line is a cable (chain, wire, fibre rope): as rods its
-   !> stiffness matrix is near singular in bending. Returns '' when every line is fine.
+   !> is negligible (line_bending_ratio below ratio_min). Such a line is a cable (chain,
+   !> wire, fibre rope): as rods its stiffness matrix is near singular in bending.
+   !> Returns '' when every line is fine.
    function mesh_cable_like_rods(model, mesh) result(hint)
       type(model_t), intent(in) :: model    !< model (lines, water, gravity)
       type(mesh_t), intent(in) :: mesh      !< mesh (element stiffness and lengths)
       character(len=:), allocatable :: hint !< '' or the hint
-      real(wp), parameter :: ratio_min = 1.0e-4_wp  ! EI / (T_ref l_e^2) of a rod line
-      real(wp) :: w, ea, tref, ratio, worst
-      integer :: l, e
-      character(len=120) :: buf
+      real(wp) :: ratio
+      integer :: l
       hint = ''
       do l = 1, size(model%lines)
-         call line_mean_weight(model, mesh, l, w, ea)
-         tref = abs(w)*model%lines(l)%length
-         if (.not. tref > 0.0_wp) cycle
-         worst = huge(1.0_wp)
-         do e = mesh%line_first_elem(l), mesh%line_first_elem(l) + &
-                model%lines(l)%n_elements - 1
-            if (mesh%elem_cable(e)) cycle
-            ratio = min(mesh%elem_c(4, e), mesh%elem_c(5, e))/(tref*mesh%elem_le(e)**2)
-            worst = min(worst, ratio)
-         end do
-         if (worst >= ratio_min) cycle
-         write (buf, '(es8.1)') worst
+         ratio = line_bending_ratio(model, mesh, l)
+         if (ratio >= ratio_min) cycle
          hint = 'line '//trim(model%lines(l)%name)//' is made of rod elements whose '// &
-                'bending stiffness is negligible (EI / (weight x length x element '// &
-                'length^2) down to '//trim(adjustl(buf))//'): a chain, wire or rope wants '// &
-                'ELEMENT=CABLE on its *LINE (docs/element.md)'
+                'bending stiffness is negligible ('//ratio_text(ratio)//'): a chain, '// &
+                'wire or rope wants ELEMENT=CABLE on its *LINE (docs/element.md)'
          return
       end do
    end function mesh_cable_like_rods
+
+   !> The smallest EI / (T_ref l_e^2) over the rod elements of line l (a bending length
+   !> sqrt(EI/T_ref) against the element length, squared), T_ref = |w| L the line's
+   !> weight (in water when wet); huge() for a weightless line or one of cable elements.
+   function line_bending_ratio(model, mesh, l) result(worst)
+      type(model_t), intent(in) :: model  !< model (lines, water, gravity)
+      type(mesh_t), intent(in) :: mesh    !< mesh (element stiffness and lengths)
+      integer, intent(in) :: l            !< line index
+      real(wp) :: worst                   !< the ratio [-]
+      real(wp) :: w, ea, tref
+      integer :: e
+      worst = huge(1.0_wp)
+      call line_mean_weight(model, mesh, l, w, ea)
+      tref = abs(w)*model%lines(l)%length
+      if (.not. tref > 0.0_wp) return
+      do e = mesh%line_first_elem(l), mesh%line_first_elem(l) + model%lines(l)%n_elements - 1
+         if (mesh%elem_cable(e)) cycle
+         worst = min(worst, min(mesh%elem_c(4, e), mesh%elem_c(5, e))/(tref*mesh%elem_le(e)**2))
+      end do
+   end function line_bending_ratio
+
+   !> 'EI / (weight x length x element length^2) down to R' for a bending ratio R.
+   function ratio_text(ratio) result(s)
+      real(wp), intent(in) :: ratio       !< line_bending_ratio
+      character(len=:), allocatable :: s  !< the text
+      character(len=16) :: buf
+      write (buf, '(es8.1)') ratio
+      s = 'EI / (weight x length x element length^2) down to '//trim(adjustl(buf))
+   end function ratio_text
 
    !> The text with a 0 before every '.' that follows a blank or '(' or '-' (f0.d writes
    !> 0.25 as '.25').

@@ -134,6 +134,11 @@ def main():
         # an integer too large is quoted as typed, not as its rounded real value ('1e20')
         (["--set", "N=99999999999999999999"],
          "error: *LINE: ELEMENTS: '99999999999999999999' is out of range"),
+        # and so is a signed one ('-1e20' and "not an integer" before); a '+' is dropped
+        (["--set", "N=-99999999999999999999"],
+         "error: *LINE: ELEMENTS: '-99999999999999999999' is out of range"),
+        (["--set", "N=+99999999999999999999"],
+         "error: *LINE: ELEMENTS: '99999999999999999999' is out of range"),
         (["--set"], "rodyn: error: --set needs NAME=VALUE"),
     ]
     for k, (args, message) in enumerate(bad):
