@@ -56,6 +56,7 @@ source, source/Line.cpp and source/Waves/SpectrumKin.cpp, docs/waterkinematics.r
   python3 bench/waves/moordyn_waves.py --write       # both sides (MoorDyn cached in .work/;
                                                      # 11 min of CPU, 30 min wall when shared)
   python3 bench/waves/moordyn_waves.py --quick       # rodyn against the stored MoorDyn
+  python3 bench/waves/moordyn_waves.py --rodyn-only  # rodyn's rows again, MoorDyn's kept
   python3 bench/waves/moordyn_waves.py --storm 180 2 # the JONSWAP storm's cost, scaled
 Results: bench/results/waves_moordyn.csv (every run), waves_moordyn_fairlead.csv (the
 finest MoorDyn run, every 0.1 s). Exit 1 if a 2 % target is missed.
@@ -337,6 +338,29 @@ def write_results(rows, series):
                     f"{f3[k][1]:.8g},{f3[k][2]:.8g}\n")
 
 
+def rerun_rodyn_rows(rodyn, tmp):
+    """rodyn's rows of the summary again, with the stored MoorDyn rows; exit status."""
+    with open(SUMMARY_CSV) as f:
+        head = f.readline()
+        stored = list(csv.reader(f))
+    columns, md_rows = stored[0], [r for r in stored[1:] if r and r[0] == "moordyn"]
+    rows = []
+    for ne, dt in RODYN_RUNS:
+        t, ten, wall = rodyn_tension(rodyn, tmp, ne, dt)
+        rows.append(("rodyn", ne, dt) + stats(t, ten) + wall + (0.0,))
+        print(FMT % rows[-1], flush=True)
+    with open(SUMMARY_CSV, "w", newline="") as f:
+        f.write(head)
+        w = csv.writer(f)
+        w.writerow(columns)
+        for r in rows:
+            w.writerow([r[0], r[1], f"{r[2]:.6g}"] + [f"{v:.2f}" for v in r[3:10]]
+                       + [f"{v:.1f}" for v in r[10:13]])
+        w.writerows(md_rows)
+    conv = [r for r in rows if (r[1], r[2]) == RODYN_CONVERGED][0]
+    return 0 if compare(conv[3:7], stored_reference()) else 1
+
+
 def stored_reference():
     with open(SUMMARY_CSV) as f:
         rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
@@ -449,6 +473,9 @@ def main():
                     help="seabed damping [Pa s/m] on both sides (a diagnostic; default the "
                          "deck's 3e5); results are not written")
     ap.add_argument("--fresh", action="store_true", help="ignore MoorDyn runs kept in .work/")
+    ap.add_argument("--rodyn-only", action="store_true",
+                    help="rerun rodyn's rows of bench/results/waves_moordyn.csv, keeping "
+                         "its stored MoorDyn rows and series")
     args = ap.parse_args()
     CBOT = args.seabed_damping
     if CBOT != 3.0e5:
@@ -457,6 +484,8 @@ def main():
         if args.storm:
             storm(args.rodyn, tmp, args.storm[0], args.storm[1], args.segments)
             return
+        if args.rodyn_only:
+            sys.exit(rerun_rodyn_rows(args.rodyn, tmp))
         if args.quick:
             t, ten, wall = rodyn_tension(args.rodyn, tmp, *RODYN_QUICK)
             st = stats(t, ten)

@@ -127,7 +127,7 @@ contains
       call sea_scene_build(model, mesh, prob%x_start, scene)
       sea_now = sea_values_t()
       call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
-                         prob%water)
+                         prob%water, 0.0_wp)
       if (present(resume)) then
          call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark, &
                                   sea=scene)
@@ -208,7 +208,7 @@ contains
             if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
                                                        .true.)
             call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
-                               prob%sup%held, frame_lines, prob%water)
+                               prob%sup%held, frame_lines, prob%water, ck%loop%t)
          end if
       end subroutine restore
    end subroutine run_dynamic
@@ -259,11 +259,11 @@ contains
          ! (no results formed for a writer without files)
          if (dynamic_output_keeps_frames(writer)) &
             call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
-                               prob%sup%held, frame_lines, prob%water)
+                               prob%sup%held, frame_lines, prob%water, t)
          frame_waiting = .true.
       else
          call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
-                            frame_lines, prob%water)
+                            frame_lines, prob%water, t)
          if (scene%active) then
             call sea_values(scene, ctx_model, prob%water%field, t, r_start, sea_now)
             call dynamic_output_sea(writer, 0, t, sea_now, .true., err)

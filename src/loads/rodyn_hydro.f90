@@ -10,11 +10,11 @@
 !>   drag         f_d = 1/2 rho_w C_dn D_d lambda |u_n| u_n + 1/2 rho_w C_da pi D_d lambda
 !>                |u_t| u_t,   u_t = (u_r.t) t, u_n = u_r - u_t  (drag on the stretched
 !>                length; the axial coefficient acts on the surface, pi D_d, as in MoorDyn)
-!>   inertia      f_a = rho_w A_b [(1 + C_an) P + C_aa t t] a_w - rho_w A_b [C_an P
-!>                + C_aa t t] a,   P = I - t t: the Froude-Krylov force of the water's
-!>                acceleration a_w (normal: the pressure on the lateral surface) and the
-!>                added mass on the relative acceleration a_w - a (a steady current has
-!>                a_w = 0)
+!>   inertia      f_a = rho_w A_b [(1 + C_an) P + (1 + C_aa) t t] a_w - rho_w A_b [C_an P
+!>                + C_aa t t] a,   P = I - t t: the Froude-Krylov force rho_w A_b a_w =
+!>                -A_b grad p_d of the wave's pressure (all three components, as the
+!>                buoyancy is the whole hydrostatic gradient) and the added mass on the
+!>                relative acceleration a_w - a (a steady current has a_w = 0)
 !>   seabed       f_s = N n,  N = max(0, (k pen - c v.n) D_b),  pen = -gap
 !>   friction     f_f = -mu_ax N v_ax / max(|v_ax|, v_mob) - mu_lat N v_lat /
 !>                max(|v_lat|, v_mob), v_ax, v_lat the axial and lateral parts of the
@@ -25,6 +25,10 @@
 !> (rodyn_water), and held fixed within the step (no derivative in x).
 !> A_b = pi D_b^2/4. Buoyancy and added mass act per unstretched length (the volume of
 !> the line is taken as conserved when it stretches).
+!> These loads are the whole gradient of the sea pressure p = rho_w g (z_s - z) + p_d
+!> (sea_pressure, zero above the instantaneous surface z_s + eta): the line's tension
+!> is then the effective tension T_e, and the wall tension is T_w = T_e - p A_b + p_i A_i
+!> with this p (docs/theory.md eqs. (77)-(79), (116)-(117)).
 module rodyn_hydro
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: water_t
@@ -33,7 +37,12 @@ module rodyn_hydro
    implicit none
    private
    public :: water_section_t, water_env_t, water_point_load, submerged_fraction
-   public :: part_water, part_seabed, seabed_normal_force
+   public :: part_water, part_seabed, seabed_normal_force, sea_pressure
+   public :: n_wk
+
+   !> Values per point of a wave's state (wkin): velocity (1:3) [m/s], acceleration
+   !> (4:6) [m/s2], elevation eta (7) [m]
+   integer, parameter :: n_wk = 7
 
    integer, parameter :: part_water = 1   !< water_point_load: buoyancy, drag, inertia
    integer, parameter :: part_seabed = 2  !< water_point_load: seabed contact and friction
@@ -70,6 +79,24 @@ module rodyn_hydro
    end type water_env_t
 
 contains
+
+   !> The sea pressure at height z [Pa]: hydrostatic below the still water level z_s
+   !> plus the wave's dynamic pressure p_d = rho_w pd (rodyn_waves, wave_kinematics),
+   !> zero above the instantaneous surface z_s + eta. The one pressure of the sea: its
+   !> gradient is the buoyancy and the Froude-Krylov load of water_point_load, and it is
+   !> the outer pressure of the wall tension (rodyn_recovery).
+   !> docs/theory.md eqs. (116)-(117).
+   pure real(wp) function sea_pressure(rho, gmag, zs, z, eta, pd) result(p)
+      real(wp), intent(in) :: rho   !< water density [kg/m3]
+      real(wp), intent(in) :: gmag  !< |g| [m/s2]
+      real(wp), intent(in) :: zs    !< still water level [m]
+      real(wp), intent(in) :: z     !< height of the point [m]
+      real(wp), intent(in) :: eta   !< surface elevation above z_s there [m]
+      real(wp), intent(in) :: pd    !< dynamic pressure over density [m2/s2]
+      p = 0.0_wp
+      if (z > zs + eta) return
+      p = max(rho*(gmag*(zs - z) + pd), 0.0_wp)
+   end function sea_pressure
 
    !> Submerged fraction phi(h) of a circle of radius r whose centre is h below the
    !> surface, and dphi/dh (module header; docs/theory.md eq. (69)).
@@ -112,8 +139,8 @@ contains
       real(wp), intent(out) :: ka(3, 3)         !< d(fh + fs)/da [kg/m]
       logical, intent(in) :: want_k             !< form the derivatives
       integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
-      real(wp), intent(in), optional :: wk(7)   !< wave velocity [m/s], acceleration
-                                                !< [m/s2] and elevation eta [m]
+      real(wp), intent(in), optional :: wk(n_wk) !< wave velocity [m/s], acceleration
+                                                 !< [m/s2] and elevation eta [m]
       logical :: wave
       real(wp) :: h
       real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
@@ -193,12 +220,12 @@ contains
                end if
             end if
             if (wave) then
-               ! rho A [(1 + C_an) P + C_aa t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
+               ! rho A [(1 + C_an) P + (1 + C_aa) t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
                ta = dot_product(t, wk(4:6))
-               fd = fd + (ws%mw + ws%man)*wk(4:6) + (ws%maa - ws%mw - ws%man)*ta*t
+               fd = fd + (ws%mw + ws%man)*wk(4:6) + (ws%maa - ws%man)*ta*t
                if (want_k) then
                   m = outer(t, wk(4:6)) + ta*eye
-                  kxpd = kxpd + (ws%maa - ws%mw - ws%man)*mm3(m, pm)/lam
+                  kxpd = kxpd + (ws%maa - ws%man)*mm3(m, pm)/lam
                end if
             end if
             fh = fh + phi*fd

@@ -28,7 +28,7 @@ module rodyn_water
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_order, max_nen
    use rodyn_environment, only: seabed_normal, seabed_z, fluid_kinematics, current_factor
    use rodyn_hydro, only: water_section_t, water_env_t, water_point_load, submerged_fraction, &
-                          part_water, part_seabed
+                          part_water, part_seabed, n_wk
    use rodyn_waves, only: wave_field_t, waves_build, wave_kinematics
    implicit none
    private
@@ -129,7 +129,7 @@ contains
       end if
       call waves_build(model%waves, model%water%depth, model%water%surface, gmag, wl%field)
       if (wl%field%n > 0) then
-         allocate (wl%wkin(7, mesh%n_nodes))
+         allocate (wl%wkin(n_wk, mesh%n_nodes))
          wl%wkin = 0.0_wp
       end if
       allocate (wl%fh(3, mesh%n_nodes), wl%fs(3, mesh%n_nodes))
@@ -275,7 +275,7 @@ contains
       logical, intent(in) :: want_k            !< form the tangent
       real(wp), intent(in), optional, contiguous :: we(:, :) !< (7, nen) nodal wave kinematics (read
                                                  !< when wl%wave_on)
-      real(wp) :: wk(7), y(9)
+      real(wp) :: wk(n_wk), y(9)
       real(wp) :: x(3), xp(3), v(3), acc(3), gh(3), gs(3), kx(3, 3), kxp(3, 3), kv(3, 3)
       real(wp) :: ka(3, 3), kn(3, 3), kd(3, 3), kb(3, 3), c
       integer :: i, j, a
@@ -432,7 +432,7 @@ contains
       real(wp), intent(out) :: f(3)         !< force [N]
       real(wp), intent(out) :: k(3, 3)      !< df/dx^{n+1} [N/m]
       logical, intent(in) :: want_k         !< form k
-      real(wp), intent(in), optional :: we(7) !< the node's wave kinematics (wkin)
+      real(wp), intent(in), optional :: we(n_wk) !< the node's wave kinematics (wkin)
       real(wp), intent(in), optional :: ca    !< added-mass coefficient, with we [-]
       real(wp), intent(in), optional :: bf    !< factor on the buoyancy (bfac) [-]
       real(wp) :: rho, gmag, r, phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), urm, g(3, 3)

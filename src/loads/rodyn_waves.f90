@@ -10,6 +10,8 @@
 !>   u_h = sum A_i omega_i C_i(s) cos theta_i,    w = sum A_i omega_i S_i(s) sin theta_i
 !>   a_h = sum A_i omega_i^2 C_i(s) sin theta_i,  a_z = -sum A_i omega_i^2 S_i(s) cos theta_i
 !>   C_i(s) = cosh(k_i (s + d))/sinh(k_i d),      S_i(s) = sinh(k_i (s + d))/sinh(k_i d)
+!>   p_d = rho_w sum A_i (omega_i^2/k_i) C_i(s) cos theta_i
+!>       = rho_w g sum A_i cosh(k_i (s + d))/cosh(k_i d) cos theta_i   (dynamic pressure)
 !> with k_i from the dispersion relation omega^2 = g k tanh(k d) (wave_number) and s the
 !> level the profile is evaluated at. Below the mean surface s = z'; above it, up to eta,
 !> the stretching named in the deck (DNV-RP-C205 section 3.2.3):
@@ -17,8 +19,12 @@
 !>   VERTICAL       s = min(z', 0): the values at the mean surface carried up
 !>   EXTRAPOLATION  C(z') = C(0) + z' k S(0), S(z') = S(0) + z' k C(0) for z' > 0
 !>   NONE           s = z': the linear profile carried up as it is
+!> Below the mean surface -grad p_d = rho_w a exactly (linear theory): the
+!> Froude-Krylov load rho_w A a_w is the gradient of this pressure, which the tension
+!> relation uses (rodyn_hydro, sea_pressure). With WHEELER the total pressure
+!> rho_w g (z_s - z) + p_d vanishes at the surface z' = eta.
 !> Above eta the water has no velocity. A ramp r(t) = (1 - cos(pi t/T))/2 multiplies the
-!> elevation and the velocity; the acceleration is r a + r' u. The acceleration is the
+!> elevation, the velocity and p_d; the acceleration is r a + r' u. The acceleration is the
 !> local one of linear theory at the stretched level (the stretch's own rate is not
 !> differentiated, as is usual). The per-component factors (k cos beta, k sin beta,
 !> A omega, A omega^2, the depth terms) are formed once by waves_build.
@@ -187,21 +193,25 @@ contains
    end function wave_elevation
 
    !> Elevation eta above (x, y), water velocity u and acceleration a at point x and
-   !> time t (module header: linear theory, the stretching above the mean surface, ramp
-   !> included; zero above the surface).
-   !> docs/theory.md eqs. (83)-(87).
-   pure subroutine wave_kinematics(field, x, t, eta, u, a)
+   !> time t, and the wave's dynamic pressure over the water's density (module header:
+   !> linear theory, the stretching above the mean surface, ramp included; zero above
+   !> the surface).
+   !> docs/theory.md eqs. (83)-(87), (116).
+   pure subroutine wave_kinematics(field, x, t, eta, u, a, pd)
       type(wave_field_t), intent(in) :: field !< the sea
       real(wp), intent(in) :: x(3)            !< point [m]
       real(wp), intent(in) :: t               !< time [s]
       real(wp), intent(out) :: eta            !< surface elevation above z_s [m]
       real(wp), intent(out) :: u(3)           !< water velocity [m/s]
       real(wp), intent(out) :: a(3)           !< water acceleration [m/s2]
-      real(wp) :: r, dr, zp, s, ch, sh, c, uh, ah, w, az, d, ext, th
+      real(wp), intent(out), optional :: pd   !< dynamic pressure / rho_w [m2/s2]
+      real(wp) :: r, dr, zp, s, ch, sh, c, uh, ah, w, az, d, ext, th, q
       real(wp) :: cs(field%n), sn(field%n)
       integer :: i
       u = 0.0_wp
       a = 0.0_wp
+      q = 0.0_wp
+      if (present(pd)) pd = 0.0_wp
       ! the phases once: their cosines make eta, and serve the kinematics below
       eta = 0.0_wp
       do i = 1, field%n
@@ -238,6 +248,8 @@ contains
             sh = sh + ext*field%k(i)*c
          end if
          uh = field%aw(i)*ch*cs(i)
+         ! p_d/rho = g eta_i cosh(k (s + d))/cosh(k d) = (A omega^2/k) C cos theta
+         q = q + field%aw2(i)/field%k(i)*ch*cs(i)
          w = field%aw(i)*sh*sn(i)
          ah = field%aw2(i)*ch*sn(i)
          az = -field%aw2(i)*sh*cs(i)
@@ -250,6 +262,7 @@ contains
       end do
       a = r*a + dr*u
       u = r*u
+      if (present(pd)) pd = r*q
    end subroutine wave_kinematics
 
    !> C = cosh(k (s + d))/sinh(k d) and S = sinh(k (s + d))/sinh(k d) of component i,

@@ -14,7 +14,8 @@ module rodyn_recovery
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t
    use rodyn_water, only: water_loads_t
-   use rodyn_hydro, only: water_point_load, part_seabed
+   use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
+   use rodyn_waves, only: wave_kinematics
    implicit none
    private
    public :: recover_static, recover_state, touchdown_root
@@ -35,13 +36,15 @@ contains
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
    !> In water (docs/water.md; docs/theory.md eqs. (77)-(79), where the sign convention
-   !> is discussed): the wall tension T_w = T_eff + p_o A_o - p_i A_i at the
-   !> points, p_o = rho_w g (z_s - z) below the surface (0 above), p_i = p_ref + rho_i g
-   !> (z_ref - z); the seabed's normal and friction force per length at the nodes (the
+   !> is discussed): the wall tension T_w = T_eff - p_o A_o + p_i A_i at the
+   !> points, p_o the sea pressure there (rodyn_hydro's sea_pressure: hydrostatic, and
+   !> in waves with the wave's dynamic pressure at time t, eqs. (116)-(117); 0 above the
+   !> surface), p_i = p_ref + rho_i g (z_ref - z); the seabed's normal and friction
+   !> force per length at the nodes (the
    !> point law at the node, tangent d3); the touchdown (touchdown_root), the largest arc
    !> length where the line is in contact, with the nodes' effective penetration
    !> pen = -gap - (c/k) v.n (N = D k max(0, pen), docs/water.md; pen = -gap in statics).
-   subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines, water)
+   subroutine recover_state(model, mesh, state, eps0_scale, r, held, lines, water, t)
       type(model_t), intent(in) :: model                 !< model
       type(mesh_t), intent(in) :: mesh                   !< mesh
       type(state_t), intent(in) :: state                 !< configuration
@@ -50,6 +53,7 @@ contains
       logical, intent(in) :: held(:, :)                  !< (6, nn) held dofs
       type(line_result_t), allocatable, intent(inout) :: lines(:) !< results (reused)
       type(water_loads_t), intent(in), optional :: water !< loads of a scene in water
+      real(wp), intent(in), optional :: t                !< time of the state, in waves [s]
       real(wp) :: xig(max_order), res(6, max_order), tens(max_order), curv(3, max_order)
       real(wp) :: xe(3, max_nen), de(3, 3, max_nen), e0(6, max_points), tg(3, max_order)
       integer :: l, p, ne, el, e, g, ig, n0, nn, k, node
@@ -120,17 +124,27 @@ contains
       end do
    contains
       !> p_i A_i - p_o A_o at reduced point g of element e (order p, nodes xe) [N], the
-      !> wall tension less the effective (docs/theory.md (77)-(79)): z
+      !> wall tension less the effective (docs/theory.md (77)-(79), (117)): the point
       !> with the rule's shape functions there (both resultant routines give the rule's
-      !> first p points; no shape_lagrange call and no heap temporary per point)
+      !> first p points; no shape_lagrange call and no heap temporary per point); in
+      !> waves the sea pressure at time t has the wave's dynamic pressure there
       real(wp) function pressure_term(e, g)
          integer, intent(in) :: e, g
-         real(wp) :: z, gm, po, pi_
-         z = dot_product(mesh%rules(p)%n(1:p + 1, g), xe(3, 1:p + 1))
+         real(wp) :: xg(3), gm, po, pi_, eta, pd, uw(3), aw(3)
+         integer :: a
+         xg = 0.0_wp
+         do a = 1, p + 1
+            xg = xg + mesh%rules(p)%n(a, g)*xe(:, a)
+         end do
          gm = norm2(model%gravity)
+         eta = 0.0_wp
+         pd = 0.0_wp
+         if (present(t)) then
+            if (water%field%n > 0) call wave_kinematics(water%field, xg, t, eta, uw, aw, pd)
+         end if
          associate (sec => model%sections(mesh%elem_sec(e)))
-            po = model%water%density*gm*max(model%water%surface - z, 0.0_wp)
-            pi_ = sec%p_i + sec%rho_i*gm*(sec%z_pi - z)
+            po = sea_pressure(model%water%density, gm, model%water%surface, xg(3), eta, pd)
+            pi_ = sec%p_i + sec%rho_i*gm*(sec%z_pi - xg(3))
             pressure_term = pi_*0.25_wp*pi*sec%id**2 - po*0.25_wp*pi*max(sec%db, 0.0_wp)**2
          end associate
       end function pressure_term
