@@ -21,8 +21,8 @@ from still-water statics in both codes. Statistics over the last 6 of 12 periods
 force at the fairlead), the first harmonic (least squares, for information) and the
 maximum of the periodic part (least-squares fit of harmonics 0-8 of the wave frequency).
 Target: maximum and mean within 2 % of MoorDyn's finest run (N = 320).
-Measured (docs/waves.md, "Cross-check with MoorDyn"): mean +0.009 %, maximum -0.92 %,
-periodic maximum -0.12 %. rodyn is converged (120 elements, dt 0.05 s); MoorDyn's mean
+Measured (docs/waves.md, "Cross-check with MoorDyn"): mean +0.008 %, maximum -0.81 %,
+periodic maximum -0.006 %. rodyn is converged (120 elements, dt 0.05 s); MoorDyn's mean
 and periodic maximum are, its raw maximum is not yet (85241, 85016, 85593, 84476 N at
 N = 40, 80, 160, 320: a high-frequency part in its fairlead force, 3 kN rms up to
 N = 160 and 1.4 kN at 320, that rodyn's does not have). All three set the exit status.
