@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Mesh and step refinement of a hanging line with a free lower end (a slack end in water).
+
+bench/decks/hanging_free_end.inp: cubic cable elements, top at (0, 0, -5), 50 m, D 0.3 m,
+100 kg/m, EA 1e9 N, Cd 1, Ca 1, water 1025 kg/m3, 500 m deep; the top surged 2 m in x at
+a period of 10 s, ramped in over 12 s; 40 s. The ladder: 20, 40, 80, 160, 320 elements
+with dt 0.05, 0.025, 0.0125, 0.00625, 0.003125 s (dt halved with the element length).
+
+For each rung: the top force's magnitude at every step (dynamic_ends_step.csv, end A),
+sampled at the common instants every 0.05 s over 20-40 s (cubic interpolation between
+the steps, bench/benchlib.py's interp_cubic); its minimum and maximum; what the fit of
+harmonics 0-8 of the surge frequency leaves (rms and peak: the noise); the largest
+difference from the next coarser rung; steps, Newton iterations, step halvings, CPU.
+Converged under refinement means: every difference smaller than the one before, and no
+step halvings. Exit status 1 if that fails.
+
+    python3 bench/hanging_refinement.py                       # EMC, the default scheme
+    python3 bench/hanging_refinement.py --scheme ALPHA --tag alpha
+    python3 bench/hanging_refinement.py --set "SECTION_DAMPING=..."  # extra --set values
+    python3 bench/hanging_refinement.py --rungs 3              # 20, 40, 80 only
+
+Writes bench/results/hanging_refinement[_TAG].csv with the machine facts.
+"""
+import argparse
+import csv
+import math
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import benchlib  # noqa: E402
+
+DECK = os.path.join(HERE, "decks", "hanging_free_end.inp")
+LADDER = [(20, 0.05), (40, 0.025), (80, 0.0125), (160, 0.00625), (320, 0.003125)]
+WINDOW = (20.0, 40.0)
+PERIOD = 10.0
+
+
+def top_force(out):
+    """Times and magnitudes of the support force at end A, every step."""
+    t, f = [], []
+    with open(os.path.join(out, "dynamic_ends_step.csv")) as fh:
+        for row in csv.DictReader(line for line in fh if not line.startswith("#")):
+            if row["end"] != "A":
+                continue
+            t.append(float(row["time_s"]))
+            f.append(math.sqrt(sum(float(row[k]) ** 2 for k in ("Fx_N", "Fy_N", "Fz_N"))))
+    return np.array(t), np.array(f)
+
+
+def harmonic_residual(t, y, n=8):
+    """What a least-squares fit of harmonics 0-n of the surge frequency leaves."""
+    w = 2 * math.pi / PERIOD
+    cols = [np.ones_like(t)]
+    for k in range(1, n + 1):
+        cols += [np.cos(k * w * t), np.sin(k * w * t)]
+    a = np.column_stack(cols)
+    coef, *_ = np.linalg.lstsq(a, y, rcond=None)
+    return y - a @ coef
+
+
+def run(rodyn, work, ne, dt, scheme, extra):
+    out = os.path.join(work, f"ne{ne}")
+    args = [rodyn, DECK, "-o", out, "--quiet", "--set", f"NE={ne}", "--set", f"DT={dt}",
+            "--set", f"SCHEME={scheme}"]
+    for s in extra:
+        args += ["--set", s]
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    proc = subprocess.run(args, capture_output=True, text=True)
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    st = benchlib.read_status(os.path.join(out, "status.txt"))
+    row = {"elements": ne, "dt_s": dt, "returncode": proc.returncode, "cpu_s": cpu,
+           "steps": int(st.get("steps", 0) or 0),
+           "iterations": int(st.get("step_iterations", 0) or 0),
+           "halvings": int(st.get("step_cutbacks", 0) or 0)}
+    if proc.returncode != 0:
+        row["error"] = proc.stderr.strip().splitlines()[-1] if proc.stderr else "failed"
+        return row, None
+    t, f = top_force(out)
+    tq = np.arange(WINDOW[0], WINDOW[1] + 1e-9, 0.05)
+    fq = benchlib.interp_cubic(t, f, tq)
+    res = harmonic_residual(tq, fq)
+    row.update({"min_N": fq.min(), "max_N": fq.max(), "noise_rms_N": np.sqrt(np.mean(res**2)),
+                "noise_peak_N": np.abs(res).max()})
+    return row, fq
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--rodyn", default=os.path.join(ROOT, "build", "rodyn"))
+    ap.add_argument("--scheme", default="EMC")
+    ap.add_argument("--set", action="append", default=[], dest="extra",
+                    help="further NAME=VALUE for the deck's *PARAMETER (repeatable)")
+    ap.add_argument("--rungs", type=int, default=len(LADDER))
+    ap.add_argument("--tag", default="")
+    args = ap.parse_args()
+    rodyn = benchlib.check_rodyn(args.rodyn)
+    facts = benchlib.rodyn_binary_facts(rodyn)
+    rows, prev = [], None
+    with tempfile.TemporaryDirectory() as work:
+        for ne, dt in LADDER[:args.rungs]:
+            row, fq = run(rodyn, work, ne, dt, args.scheme, args.extra)
+            if fq is not None and prev is not None:
+                row["diff_from_coarser_N"] = np.abs(fq - prev).max()
+            prev = fq
+            rows.append(row)
+            print("  ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}"
+                            for k, v in row.items()), flush=True)
+    diffs = [r["diff_from_coarser_N"] for r in rows if "diff_from_coarser_N" in r]
+    ok = all(r["returncode"] == 0 and r["halvings"] == 0 for r in rows) and \
+        len(diffs) == len(rows) - 1 and all(b < a for a, b in zip(diffs, diffs[1:]))
+    name = "hanging_refinement" + (f"_{args.tag}" if args.tag else "") + ".csv"
+    cols = ["elements", "dt_s", "returncode", "min_N", "max_N", "noise_rms_N",
+            "noise_peak_N", "diff_from_coarser_N", "steps", "iterations", "halvings",
+            "cpu_s"]
+    benchlib.write_csv(os.path.join(ROOT, "bench", "results", name), facts, cols, rows,
+                       comments=[f"scheme {args.scheme}; --set {' '.join(args.extra)}",
+                                 f"top force magnitude over {WINDOW[0]}-{WINDOW[1]} s, "
+                                 "sampled every 0.05 s"])
+    print("converged under refinement" if ok else
+          "NOT converged: differences do not shrink at every refinement, or steps halved")
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
