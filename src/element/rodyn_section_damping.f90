@@ -1,5 +1,5 @@
 !> Structural (material) damping of a section over a time step (docs/theory.md section
-!> 10, eqs. (116)-(121)): a viscous stress proportional to the rate of the axial strain
+!> 15, eqs. (116)-(121)): a viscous stress proportional to the rate of the axial strain
 !> and, for rods, of the bending curvatures,
 !>   N_d = C_a d(Gamma3)/dt,   M_d1 = C_b1 dK1/dt,   M_d2 = C_b2 dK2/dt,
 !> acting through the strain Jacobian B at the force point of the scheme, with its

@@ -22,7 +22,7 @@ contains
    !>   g = v^n + (1 - af) dt ((1 - gm) a^n - gm (v^n/(b dt) + (1/2 - b)/b a^n)),
    !>   cv = (1 - af) gm/(b dt),
    !> for the positions (g(:, 1, a)) and the three directors (g(:, 1 + i, a)).
-   !> docs/theory.md eq. (121).
+   !> docs/theory.md eq. (117).
    pure subroutine section_damping_rates(s0, af, gm, b, dt, g, cv)
       type(state_t), intent(in) :: s0          !< state at t_n (with accelerations)
       real(wp), intent(in) :: af               !< generalized-alpha alpha_f [-]
