@@ -243,7 +243,10 @@ COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
                      ('external_work_J',
                       'J',
                       'work of prescribed motions and loads since t = 0'),
-                     ('damping_work_J', 'J', 'energy taken out by damping since t = 0'),
+                     ('damping_work_J',
+                      'J',
+                      "energy taken out by damping since t = 0: *DAMPING and the sections' "
+                      'structural damping'),
                      ('hydro_work_J', 'J', 'work of the water since t = 0'),
                      ('seabed_work_J', 'J', 'work of the seabed since t = 0'),
                      ('total_J', 'J', 'kinetic + strain + gravity'),
@@ -357,7 +360,9 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                                   'origin; columns x, y, z (global axes)'),
                 '/dynamic/log/cutbacks': ('-', 'halvings needed by the step'),
                 '/dynamic/log/damping_work': ('J',
-                                              'energy taken out by damping since t = 0'),
+                                              'energy taken out by damping since t = 0: '
+                                              "*DAMPING and the sections' structural "
+                                              'damping'),
                 '/dynamic/log/dt': ('s', 'step length used'),
                 '/dynamic/log/external_work': ('J',
                                                'work done on the line since t = 0 by '

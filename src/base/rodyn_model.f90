@@ -78,6 +78,10 @@ module rodyn_model
       real(wp) :: rhoi2 = -1.0_wp   !< rotary inertia per length about d2 [kg m]; < 0: default
       real(wp) :: kappa0(3) = 0.0_wp !< stress-free curvature (K1, K2, K3) [1/m]
       integer :: element = element_rod !< element_rod or element_cable (EI = GJ = 0)
+      ! structural (material) damping, dynamics only (docs/theory.md eqs. (116)-(121))
+      real(wp) :: axial_damping = 0.0_wp       !< C_a: axial force per axial strain rate [N s]
+      real(wp) :: axial_damping_ratio = 0.0_wp !< zeta of a segment's axial mode [-]
+      real(wp) :: bending_damping = 0.0_wp     !< C_b: moment per curvature rate [N m2 s]
       ! hydrodynamics and contents (used only when the deck has *WATER); docs/water.md
       real(wp) :: db = -1.0_wp      !< buoyancy (displacement) diameter [m]; < 0: OD
       real(wp) :: dd = -1.0_wp      !< drag diameter [m]; < 0: the buoyancy diameter

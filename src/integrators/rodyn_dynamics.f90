@@ -6,7 +6,8 @@
 !>   r_theta = sum_i d_i^{n+1/2} x [M_ia (ddot_i^{n+1} - ddot_i^n)/dt
 !>             + alpha M_ia (d_i^{n+1} - d_i^n)/dt] + f_theta - m_ext(t_{n+1/2})
 !> vanishes (eqs. (37)-(39); f: the step internal force of the scheme, rodyn_rod_dynamic;
-!> alpha: Rayleigh mass-proportional damping). Held nodes follow their prescribed position
+!> alpha: Rayleigh mass-proportional damping; f also holds the sections' structural
+!> damping, rodyn_assembly_damping, eqs. (116)-(121)). Held nodes follow their prescribed position
 !> at t_{n+1}; a clamped end on a vessel also its prescribed directors d_i^{n+1} =
 !> Q(t_{n+1}) d_i(0), Q the vessel's turn since rest (rodyn_motion's motion_rotation), set
 !> in the predictor and kept by its held rotation unknowns. The rotation rows are projected
@@ -42,6 +43,7 @@ module rodyn_dynamics
                              assemble_dynamic, apply_supports, add_node_block, &
                              external_force, assemble_water, assemble_dynamic_cables, &
                              roll_gauges, add_roll_gauges
+   use rodyn_assembly_damping, only: section_damping_rates, assemble_section_damping
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
@@ -96,7 +98,12 @@ module rodyn_dynamics
       !> (3, 0:2, nn) the inertia's part per unit mass that does not depend on the unknowns
       !> (inertia_rest), of the position (0) and of the directors d_1, d_2, for the step
       real(wp), allocatable :: rest(:, :, :)
-      real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional damping
+      real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional and
+                                               !< structural damping forces [N, N m]
+      !> structural damping (mesh%damped): the nodal rates at the force point are
+      !> sd_cv (q^{n+1} - q^n) + srate (rodyn_assembly_damping's section_damping_rates)
+      real(wp), allocatable :: srate(:, :, :)  !< (3, 4, nn) [m/s, 1/s]
+      real(wp) :: sd_cv = 0.0_wp               !< [1/s]
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
       real(wp), allocatable :: dx_base(:, :)   !< (3, nn) dx at the base of the line search
       logical :: ref_pending = .true.          !< the step's reference force is still to set
@@ -172,6 +179,10 @@ contains
       end if
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%fdamp(6, nn), prob%dx(3, nn), &
                 prob%dx_base(3, nn), prob%rest(3, 0:2, nn))
+      if (mesh%damped) then
+         allocate (prob%srate(3, 4, nn))
+         prob%srate = 0.0_wp
+      end if
       prob%x_start = state%x
       prob%x_held = state%x
       allocate (prob%motion_node(0))
@@ -266,6 +277,15 @@ contains
             prob%rest(:, i, node) = inertia_rest(prob, prob%s0%dd(:, i, node), node, i)
          end do
       end do
+      ! structural damping: the rates of the scheme at its force point
+      if (prob%mesh%damped) then
+         if (prob%scheme == scheme_alpha) then
+            call section_damping_rates(prob%s0, prob%af, prob%gamma_n, prob%beta_n, dt, &
+                                       prob%srate, prob%sd_cv)
+         else
+            prob%sd_cv = 1.0_wp/dt
+         end if
+      end if
       ! external forces at the force point: weight, point loads times their amplitudes
       tm = t0 + prob%wf*dt
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
@@ -433,6 +453,10 @@ contains
          call assemble_dynamic_cables(this%mesh, this%sup, this%s0, this%s1, this%scheme, &
                                       this%wf, this%beta_d, this%dt, this%fint, this%fdamp, &
                                       this%bm, want_k)
+      if (this%mesh%damped) &
+         call assemble_section_damping(this%mesh, this%sup, this%s0, this%s1, this%srate, &
+                                       this%sd_cv, this%wf, this%scheme, this%fint, &
+                                       this%fdamp, this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
       fx = 0.0_wp
       mx = 0.0_wp

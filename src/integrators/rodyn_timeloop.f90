@@ -6,7 +6,9 @@
 !> Energy bookkeeping: total = kinetic + strain + gravity potential (-sum f_g . x).
 !> External work sums what the supports (prescribed motions) and the point loads did to
 !> the line, R . dx with R the residual at held nodes (the force the support applies) and
-!> F(t_{n+1/2}) . dx; damping work sums what Rayleigh damping took out; hydro and seabed
+!> F(t_{n+1/2}) . dx; damping work sums what Rayleigh damping and the sections'
+!> structural damping took out (the work of their forces over the step, eq. (119) for
+!> the latter); hydro and seabed
 !> work sum f_water . dx and f_seabed . dx (buoyancy, drag, added mass; contact, damping,
 !> friction) with the forces of the converged step. Under EMC,
 !> total(t) - total(0) = external + hydro + seabed work - damping work to the Newton
@@ -125,7 +127,7 @@ contains
             if (prob%sup%held(4, node)) w_ext = w_ext + dot_product(prob%r(4:6, node), th)
          end if
          if (prob%sup%held(1, node)) w_ext = w_ext + dot_product(prob%r(1:3, node), dx)
-         if (prob%beta_d > 0.0_wp) then
+         if (prob%beta_d > 0.0_wp .or. prob%mesh%damped) then
             th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
                                                    prob%s0%d(:, :, node)))
             w_damp = w_damp + dot_product(prob%fdamp(1:3, node), dx) &

@@ -37,6 +37,7 @@ module rodyn_deck
                                  read_initial_velocity_card, validate_dynamics, &
                                  dynamic_warnings
    use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
+   use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
                                resolve_segments, validate_water
@@ -272,6 +273,7 @@ contains
 
    !> *SECTION: cross-section properties; data line EA, EI1, EI2, GJ, MASS and an
    !> optional line K1, K2, K3 (stress-free curvature). GA/RHOI set both components.
+   !> The structural damping (AXIAL DAMPING, ...) is read by rodyn_deck_section_damping.
    !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16, the buoyancy and drag diameters) are
    !> resolved in validate_model; the hydrodynamic and contents parameters are read by
    !> rodyn_deck_water's read_section_hydro.
@@ -293,7 +295,8 @@ contains
                                 'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2', &
                                 'BUOYANCY DIAMETER', 'DRAG DIAMETER', 'CDN', 'CDA', 'CAN', &
                                 'CAA', 'ID', 'CONTENTS DENSITY', 'CONTENTS PRESSURE', &
-                                'PRESSURE Z', 'ELEMENT'], err)
+                                'PRESSURE Z', 'ELEMENT', 'AXIAL DAMPING', &
+                                'AXIAL DAMPING RATIO', 'BENDING DAMPING'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -335,6 +338,8 @@ contains
          sec%ei2 = v(3)
          sec%gj = v(4)
          sec%mass = v(5)
+         call read_section_damping(card, sec, err)
+         if (has_error(err)) return
          if (card%n_data >= 2) then
             call card_data_reals(card, 2, 3, k, err, what2)
             if (has_error(err)) return

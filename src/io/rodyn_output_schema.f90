@@ -203,7 +203,8 @@ module rodyn_output_schema
       'dynamic_log.csv | strain_J | J | stored (strain) energy', &
       'dynamic_log.csv | gravity_J | J | potential of the weight', &
       'dynamic_log.csv | external_work_J | J | work of prescribed motions and loads since t = 0', &
-      'dynamic_log.csv | damping_work_J | J | energy taken out by damping since t = 0', &
+      'dynamic_log.csv | damping_work_J | J | energy taken out by damping since t = 0: '// &
+         '*DAMPING and the sections'' structural damping', &
       'dynamic_log.csv | hydro_work_J | J | work of the water since t = 0', &
       'dynamic_log.csv | seabed_work_J | J | work of the seabed since t = 0', &
       'dynamic_log.csv | total_J | J | kinetic + strain + gravity', &
@@ -410,7 +411,7 @@ module rodyn_output_schema
          'momentum about the origin; columns x, y, z (global axes)', &
       'dynamic.h5 | /dynamic/log/cutbacks | - | halvings needed by the step', &
       'dynamic.h5 | /dynamic/log/damping_work | J | energy taken out by damping '// &
-         'since t = 0', &
+         'since t = 0: *DAMPING and the sections'' structural damping', &
       'dynamic.h5 | /dynamic/log/dt | s | step length used', &
       'dynamic.h5 | /dynamic/log/external_work | J | work done on the line '// &
          'since t = 0 by prescribed motions and loads', &

@@ -8,7 +8,7 @@
 module rodyn_mesh
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, set_error, stat_input, has_error
-   use rodyn_section, only: section_stiffness
+   use rodyn_section, only: section_stiffness, section_damping
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
                           bc_position, end_a, end_b, element_cable, scheme_alpha
    use rodyn_state, only: state_t, state_allocate
@@ -50,6 +50,9 @@ module rodyn_mesh
       real(wp), allocatable :: elem_c(:, :)       !< (6, ne) diag(GA1,GA2,EA,EI1,EI2,GJ)
       real(wp), allocatable :: elem_mass(:)       !< (ne) mass per length, structure and
                                                   !< contents rho_i pi ID^2/4 [kg/m]
+      !> (3, ne) structural damping (C_a, C_b1, C_b2) [N s, N m2 s, N m2 s] (section_damping)
+      real(wp), allocatable :: elem_damp(:, :)
+      logical :: damped = .false.                 !< some element has structural damping
       integer, allocatable :: elem_nodes(:, :)    !< (max_nen, ne) global node numbers
       real(wp), allocatable :: elem_le(:)         !< (ne) unstretched length [m]
       real(wp), allocatable :: elem_s0(:)         !< (ne) arc length of its first node [m]
@@ -143,7 +146,7 @@ contains
       allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
                 mesh%elem_s0(ne), mesh%eps0(6, max_points, ne), mesh%node_line(nn), &
                 mesh%node_s(nn), mesh%elem_sec(ne), mesh%elem_c(6, ne), mesh%elem_mass(ne), &
-                mesh%elem_cable(ne))
+                mesh%elem_cable(ne), mesh%elem_damp(3, ne))
       mesh%elem_nodes = 0
       mesh%eps0 = 0.0_wp
       ! the accelerations only for the generalized-alpha scheme (rodyn_state)
@@ -159,6 +162,7 @@ contains
          if (has_error(err)) return
       end do
       mesh%n_cable = count(mesh%elem_cable)
+      mesh%damped = any(mesh%elem_damp > 0.0_wp)
       allocate (mesh%att_node(0))
       if (allocated(model%attachments)) mesh%att_node = [(mesh_nearest_node(mesh, &
          model%attachments(k)%line, model%attachments(k)%s), k=1, size(model%attachments))]
@@ -204,6 +208,9 @@ contains
                   mesh%elem_c(:, e) = section_stiffness(sec)
                   mesh%elem_mass(e) = sec%mass + sec%rho_i*0.25_wp*pi*sec%id**2
                   mesh%elem_le(e) = seg_len/real(nel, wp)
+                  mesh%elem_damp(:, e) = section_damping(sec, mesh%elem_mass(e), &
+                                                         mesh%elem_le(e)/real(p, wp))
+                  if (mesh%elem_cable(e)) mesh%elem_damp(2:3, e) = 0.0_wp
                   mesh%elem_s0(e) = s0 + mesh%elem_le(e)*real(k - 1, wp)
                   do a = 1, p + 1
                      node = mesh%line_first_node(l) + (el - 1)*p + a - 1

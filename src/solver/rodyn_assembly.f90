@@ -28,6 +28,7 @@ module rodyn_assembly
    public :: assemble_static, assemble_dynamic, assemble_dynamic_cables, apply_supports
    public :: external_force
    public :: add_node_block, assemble_water, dof_map, dof_reach, roll_gauges, &
+             scatter_element, scatter_cable, &
              add_roll_gauges
 
    !> Node constraints, fixed for the run.
