@@ -28,7 +28,7 @@
 !> These loads are the whole gradient of the sea pressure p = rho_w g (z_s - z) + p_d
 !> (sea_pressure, zero above the instantaneous surface z_s + eta): the line's tension
 !> is then the effective tension T_e, and the wall tension is T_w = T_e - p A_b + p_i A_i
-!> with this p (docs/theory.md eqs. (77)-(79), (116)-(117)).
+!> with this p (docs/theory.md eqs. (77)-(79), (122)-(123)).
 module rodyn_hydro
    use rodyn_kinds, only: wp, pi
    use rodyn_model, only: water_t
@@ -85,7 +85,7 @@ contains
    !> zero above the instantaneous surface z_s + eta. The one pressure of the sea: its
    !> gradient is the buoyancy and the Froude-Krylov load of water_point_load, and it is
    !> the outer pressure of the wall tension (rodyn_recovery).
-   !> docs/theory.md eqs. (116)-(117).
+   !> docs/theory.md eqs. (122)-(123).
    pure real(wp) function sea_pressure(rho, gmag, zs, z, eta, pd) result(p)
       real(wp), intent(in) :: rho   !< water density [kg/m3]
       real(wp), intent(in) :: gmag  !< |g| [m/s2]

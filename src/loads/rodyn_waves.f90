@@ -196,7 +196,7 @@ contains
    !> time t, and the wave's dynamic pressure over the water's density (module header:
    !> linear theory, the stretching above the mean surface, ramp included; zero above
    !> the surface).
-   !> docs/theory.md eqs. (83)-(87), (116).
+   !> docs/theory.md eqs. (83)-(87), (122).
    pure subroutine wave_kinematics(field, x, t, eta, u, a, pd)
       type(wave_field_t), intent(in) :: field !< the sea
       real(wp), intent(in) :: x(3)            !< point [m]

@@ -38,7 +38,7 @@ contains
    !> In water (docs/water.md; docs/theory.md eqs. (77)-(79), where the sign convention
    !> is discussed): the wall tension T_w = T_eff - p_o A_o + p_i A_i at the
    !> points, p_o the sea pressure there (rodyn_hydro's sea_pressure: hydrostatic, and
-   !> in waves with the wave's dynamic pressure at time t, eqs. (116)-(117); 0 above the
+   !> in waves with the wave's dynamic pressure at time t, eqs. (122)-(123); 0 above the
    !> surface), p_i = p_ref + rho_i g (z_ref - z); the seabed's normal and friction
    !> force per length at the nodes (the
    !> point law at the node, tangent d3); the touchdown (touchdown_root), the largest arc
@@ -124,7 +124,7 @@ contains
       end do
    contains
       !> p_i A_i - p_o A_o at reduced point g of element e (order p, nodes xe) [N], the
-      !> wall tension less the effective (docs/theory.md (77)-(79), (117)): the point
+      !> wall tension less the effective (docs/theory.md (77)-(79), (123)): the point
       !> with the rule's shape functions there (both resultant routines give the rule's
       !> first p points; no shape_lagrange call and no heap temporary per point); in
       !> waves the sea pressure at time t has the wave's dynamic pressure there

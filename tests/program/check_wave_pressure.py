@@ -10,11 +10,11 @@ is so taut (about 1e6 N) that it stays straight (the wave's lateral load bends i
 about 1 mm), and axially it is quasi-static (EA 1e10 N); the scheme is ALPHA (the deck
 says why). Along it the axial balance per unit unstretched length S is
 dT_eff/dS = w_s - rho A a_wz, with the submerged weight w_s = (m - rho A) g and the
-vertical Froude-Krylov load rho A a_wz = -A dp_d/dz (docs/theory.md (71), (116)), so
+vertical Froude-Krylov load rho A a_wz = -A dp_d/dz (docs/theory.md (71), (122)), so
 
   T_eff(S, t) - T_eff(S_b, t) = w_s (S - S_b) + A int_{S_b}^{S} dp_d/dz dS
                               ~ w_s (S - S_b) + A [p_d(z, t) - p_d(z_b, t)]
-  T_wall = T_eff - p A,  p = rho g (z_s - z) + p_d                         ((117))
+  T_wall = T_eff - p A,  p = rho g (z_s - z) + p_d                         ((123))
 
 with p_d = rho g r(t) (H/2) cosh(k (z + d))/cosh(k d) cos(omega t) at x = 0 (k from the
 dispersion relation by brentq): the dynamic pressure cancels from the wall tension's
