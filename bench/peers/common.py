@@ -62,7 +62,7 @@ def n_out(t_end=T_END):
 def save_result(path, t, top_tension, mid_xyz, info, **extra):
     """One run: times [s], top (end A) support force magnitude [N], mid-node position
     (n, 3) [m], info (a dict: tool, settings, wall times, notes), and extra series of
-    the same length (e.g. top_midstep)."""
+    the same length."""
     np.savez(path, t=np.asarray(t, float), top=np.asarray(top_tension, float),
              mid=np.asarray(mid_xyz, float), info=json.dumps(info),
              **{k: np.asarray(v, float) for k, v in extra.items()})

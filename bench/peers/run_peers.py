@@ -188,11 +188,6 @@ def evaluate(tool, case, cfg, results, ref, window):
     row.update({"tension_max_rel": e["tension_max_rel"], "tension_rms_N": e["tension_rms_N"],
                 "mid_max_m": e["mid_max_m"], "tension_max_rel_whole": e_all["tension_max_rel"],
                 "mid_max_m_whole": e_all["mid_max_m"]})
-    if "top_midstep" in first:
-        mid_run = dict(first, top=first["top_midstep"])
-        e2 = common.errors(mid_run, ref, window)
-        row["tension_max_rel_midstep"] = e2["tension_max_rel"]
-        row["tension_rms_N_midstep"] = e2["tension_rms_N"]
     return row
 
 
@@ -216,31 +211,27 @@ def tables(case, window, rows, ref_rows, tools):
     f = common.CASES[case]
     out.append(f"### {case}: f = {f} Hz, {common_duration(case)} s, errors over "
                f"{window[0]:g}–{window[1]:g} s\n")
-    out.append("Reference check (rodyn, a frame every step, tension read at mid-step like "
-               "the reference's): difference of the check runs from the reference.\n")
+    out.append("Reference check (rodyn, a frame every step, tension as written, like the "
+               "reference's): difference of the check runs from the reference.\n")
     out.append("| run | top tension, max rel. | top tension, rms [N] | mid node, max [m] "
                "| wall [s] |")
     out.append("|---|---:|---:|---:|---:|")
     for r in ref_rows:
-        out.append(f"| {r['settings']} | {fmt(r.get('tension_max_rel_midstep'), '.2e')} "
-                   f"| {fmt(r.get('tension_rms_N_midstep'), '.3g')} | {fmt(r['mid_max_m'], '.2e')} "
+        out.append(f"| {r['settings']} | {fmt(r.get('tension_max_rel'), '.2e')} "
+                   f"| {fmt(r.get('tension_rms_N'), '.3g')} | {fmt(r['mid_max_m'], '.2e')} "
                    f"| {fmt(r['wall_median_s'])} |")
     out.append("")
     out.append("All runs: wall = median of the repeats (min–max) of the time-stepping "
                "wall time (rodyn: the whole process, static solve and output included); "
                "errors against the reference at the output times (every "
-               f"{common.OUT_DT:g} s) in the window; rodyn's tension as it writes it "
-               "(a run with frames every step adds, in brackets, the error of its tension "
-               "read at mid-step).\n")
+               f"{common.OUT_DT:g} s) in the window; rodyn's tension as it writes it (the "
+               "support force at the frame's time).\n")
     out.append("| tool | settings | steps | wall [s] | top tension, max rel. | "
                "top tension, rms [N] | mid node, max [m] | status |")
     out.append("|---|---|---:|---:|---:|---:|---:|---|")
     for r in rows:
         tmax = fmt(r["tension_max_rel"], ".2e")
         trms = fmt(r["tension_rms_N"], ".3g")
-        if "tension_max_rel_midstep" in r:
-            tmax += f" ({fmt(r['tension_max_rel_midstep'], '.2e')})"
-            trms += f" ({fmt(r['tension_rms_N_midstep'], '.3g')})"
         out.append(f"| {r['tool']} | {r['settings']} | {r['steps']} "
                    f"| {fmt(r['wall_median_s'])} ({fmt(r['wall_min_s'])}–{fmt(r['wall_max_s'])}) "
                    f"| {tmax} | {trms} | {fmt(r['mid_max_m'], '.2e')} | {r['status']} |")
@@ -293,8 +284,7 @@ def write_csv(path, facts, rows):
             "status", "steps", "repeats", "wall_median_s", "wall_min_s", "wall_max_s",
             "wall_static_s", "wall_total_median_s", "wall_inprocess_median_s", "tension_max_rel",
             "tension_rms_N", "mid_max_m",
-            "tension_max_rel_whole", "mid_max_m_whole", "tension_max_rel_midstep",
-            "tension_rms_N_midstep"]
+            "tension_max_rel_whole", "mid_max_m_whole"]
     with open(path, "w") as fh:
         for k, v in facts.items():
             fh.write(f"# {k}: {v}\n")
@@ -350,13 +340,6 @@ def plots(case, window, ref, series, rows, img_dir):
             if pts:
                 x, y = zip(*sorted(pts))
                 ax.loglog(x, y, markers[tool], label=tool, ms=6, alpha=0.85)
-        if tool == "rodyn":
-            pts = [(r["wall_median_s"], r.get("tension_max_rel_midstep", np.nan)) for r in rr]
-            pts = [p for p in pts if np.isfinite(p[1]) and p[1] > 0]
-            if pts:
-                x, y = zip(*sorted(pts))
-                axes[0].loglog(x, y, "o", mfc="none", label="rodyn, tension at mid-step",
-                               ms=6)
     axes[0].set_ylabel("top tension error, max relative")
     axes[1].set_ylabel("mid-line node error, max [m]")
     for a in axes:
@@ -436,7 +419,7 @@ def main():
         ref_res = run_one("rodyn", case, reference, t_end, rodyn, 0, args.fresh, logf)
         if ref_res is None:
             sys.exit("the reference run failed")
-        ref = {"t": ref_res["t"], "top": ref_res["top_midstep"], "mid": ref_res["mid"]}
+        ref = {"t": ref_res["t"], "top": ref_res["top"], "mid": ref_res["mid"]}
         ref_rows = []
         for cfg in checks:
             res = run_one("rodyn", case, cfg, t_end, rodyn, 0, args.fresh, logf)
@@ -495,8 +478,8 @@ def main():
     head = ["## Measured results", "", "Machine and versions:", ""]
     head += [f"- {k}: {v}" for k, v in facts.items()]
     head += ["", f"Reference: rodyn, {reference['elements']} cubic elements, DT = "
-             f"{reference['dt']:g} s, EMC, a frame every step, top tension read at mid-step "
-             "(t − DT/2) and interpolated to the output times; checked against "
+             f"{reference['dt']:g} s, EMC, a frame every step, top tension as written (the "
+             "support force at the frame's time); checked against "
              + " and ".join(label("rodyn", c) for c in checks) + ".", ""]
     body = "\n".join(head + md) + "\n"
     if os.path.exists(DOC):

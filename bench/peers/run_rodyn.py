@@ -4,13 +4,9 @@ folder, runs `rodyn --quiet`, and saves top tension and mid-node history (.npz).
 
 The deck writes HDF5 only, a frame every common.OUT_DT (the output times of every
 tool), or with --every-step a frame every step (OUTPUT INTERVAL=0; used for the
-reference). Saved: the frames at the output times as rodyn writes them (`top`) and,
-with --every-step, the top tension read as the mid-step value it is (`top_midstep`):
-with the energy-momentum scheme the support force of a step is the step's average
-(internal forces at the mid-point configuration, inertia from the velocity change over
-the step), written with the frame at the step's end; `top_midstep` places each step's
-value at t - dt/2 and interpolates linearly to the output times (the t = 0 frame is the
-static reaction).
+reference). Saved: the frames at the output times as rodyn writes them (`top`): the
+support force at the frame's time, interpolated by rodyn between the step-averaged
+forces of the steps either side (docs/output.md, dynamic_ends.csv).
 
   python3 bench/peers/run_rodyn.py --case case4 --elements 30 --dt 0.0125 --out r.npz
 """
@@ -91,10 +87,6 @@ def run(rodyn, workdir, case, elements, dt, out, order=3, t_end=common.T_END, sc
     mid = np.column_stack([line.x[idx, k], line.y[idx, k], line.z[idx, k]])
     top_all = line.end_tension[:, 0]
     extra = {}
-    if every_step:
-        t_mid = np.concatenate([[0.0], 0.5 * (res.time[:-1] + res.time[1:])])
-        extra["top_midstep"] = np.interp(grid, t_mid, top_all)
-        extra["top_midstep"][0] = top_all[0]
     info = {"tool": "rodyn", "case": case, "elements": elements, "order": order, "dt": dt,
             "scheme": res.scheme, "complete": bool(res.complete), "status": res.status,
             "steps": int(res.steps), "newton_iterations": int(res.step_iterations),
@@ -119,7 +111,7 @@ def main():
     ap.add_argument("--time", type=float, default=common.T_END)
     ap.add_argument("--scheme", default=None)
     ap.add_argument("--every-step", action="store_true",
-                    help="a frame every step, and the tension read at mid-step")
+                    help="a frame every step (the reference's runs)")
     ap.add_argument("--workdir", default=os.path.join(common.HERE, ".work"))
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
