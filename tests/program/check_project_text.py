@@ -25,6 +25,9 @@ CHECKED_DOCS = ["docs/theory.md", "docs/architecture.md"]
 HISTORY_ONLY = ["docs", "bench"]
 PENDING = []
 SUFFIXES = {".f90", ".fypp", ".py", ".sh", ".md", ".txt", ".pf", ".toml", ".inp", ".inc"}
+# git-ignored folders a local run leaves in the tree (the peers' virtualenv, work
+# folders, caches): not the project's text
+UNTRACKED = {".venv", ".work", "__pycache__", ".pytest_cache", "node_modules"}
 
 
 def findings(path, rel, dates=True):
@@ -56,7 +59,8 @@ def main():
     files = [root / "README.md"] + [root / d for d in CHECKED_DOCS]
     for top in CHECKED:
         files += [p for p in sorted((root / top).rglob("*"))
-                  if p.is_file() and p.suffix in SUFFIXES and "egg-info" not in str(p)]
+                  if p.is_file() and p.suffix in SUFFIXES and "egg-info" not in str(p)
+                  and not UNTRACKED & set(p.relative_to(root).parts)]
     # this check and check_no_history.py quote what they look for in their self-tests
     me = {pathlib.Path(__file__).resolve(), pathlib.Path(__file__).resolve().with_name(
         "check_no_history.py")}
@@ -68,7 +72,7 @@ def main():
         for p in sorted((root / top).rglob("*")):
             rel = p.relative_to(root)
             if (p.is_file() and p.suffix in SUFFIXES and p not in seen
-                    and str(rel) not in PENDING):
+                    and str(rel) not in PENDING and not UNTRACKED & set(rel.parts)):
                 files.append(p)
                 problems += findings(p, rel, dates=False)
     for p in problems:
