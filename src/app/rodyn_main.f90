@@ -10,7 +10,7 @@ program rodyn
    use rodyn_error, only: error_t, has_error, set_error, stat_ok, stat_io, stat_input, &
                           stat_numerical
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
-   use rodyn_model, only: model_t, scheme_names
+   use rodyn_model, only: model_t, scheme_names, scheme_emc
    use rodyn_deck, only: deck_read
    use rodyn_mesh, only: mesh_t, mesh_build, fix_leading_dots
    use rodyn_state, only: state_t
@@ -193,12 +193,37 @@ program rodyn
          '(a,i0,a,i0,a,i0,a,i0,a)') 'dynamic solution: ', summary%steps, ' steps, ', &
          summary%step_iterations, ' Newton iterations, ', summary%step_tangents, &
          ' tangents, ', summary%step_cutbacks, ' halvings'
+      if (.not. opts%quiet .and. .not. has_error(err) .and. summary%step_cutbacks > 0) &
+         call halving_note(model)
    end if
    if (.not. opts%quiet) write (output_unit, '(a)') 'results in '//opts%outdir//'/'
    if (has_error(err)) call finish(err%code)
    call finish(stat_ok)
 
 contains
+
+   !> After an EMC run that halved its step: the sections without axial damping, and the
+   !> two remedies measured on a line with a free end (docs/dynamics.md, "Refinement with
+   !> a slack end"). EMC keeps the energy of the axial modes a step does not resolve;
+   !> slack-taut switching feeds them, and Newton then needs smaller steps.
+   subroutine halving_note(model)
+      type(model_t), intent(in) :: model !< model
+      character(len=:), allocatable :: names
+      integer :: i
+      if (model%dynamic%scheme /= scheme_emc) return
+      names = ''
+      do i = 1, size(model%sections)
+         if (model%sections(i)%axial_damping > 0.0_wp .or. &
+             model%sections(i)%axial_damping_ratio > 0.0_wp) cycle
+         if (len(names) > 0) names = names//', '
+         names = names//trim(model%sections(i)%name)
+      end do
+      if (len(names) == 0) return
+      write (output_unit, '(a)') 'note: EMC keeps the energy of the axial modes a step '// &
+         'does not resolve, which slack-taut switching feeds; AXIAL DAMPING RATIO=1 on '// &
+         '*SECTION '//names//' (MoorDyn''s BA = -1), or SCHEME=ALPHA, RHO INF=0, damps '// &
+         'them (docs/dynamics.md, "Refinement with a slack end")'
+   end subroutine halving_note
 
    !> Name of a scheme for the log.
    function scheme_name(k) result(name)
