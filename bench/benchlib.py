@@ -307,3 +307,48 @@ def write_csv(path, facts, columns, rows, comments=()):
                     s = str(v)
                     vals.append('"' + s.replace('"', "'") + '"' if "," in s else s)
             f.write(",".join(vals) + "\n")
+
+
+# --- shared by the MoorDyn cross-checks (bench/water, bench/waves) ----------------------
+
+def read_end_forces(out, end, line=None):
+    """Times [s] and forces of the support on the line (n, 3) [N] at end 'A' or 'B', every
+    step, from a run folder's dynamic_ends_step.csv (of the only line, or of `line`)."""
+    import csv
+    import numpy as np
+    t, f = [], []
+    with open(os.path.join(out, "dynamic_ends_step.csv")) as fh:
+        for row in csv.DictReader(r for r in fh if not r.startswith("#")):
+            if row["end"] == end and (line is None or row["line"] == line):
+                t.append(float(row["time_s"]))
+                f.append([float(row[c]) for c in ("Fx_N", "Fy_N", "Fz_N")])
+    return np.array(t), np.array(f)
+
+
+def moordyn_line_deck(title, ltype, points, length, segments, options):
+    """A MoorDyn v2 input file of one line between two points. ltype: dict with name, d,
+    m, ea, ba, ei, cd, ca, cdax, caax; points: two (attachment, x, y, z, mass) of end A
+    and end B; options: (value, name) pairs of the OPTIONS section."""
+    lt = ("{name}  {d!r}  {m!r}  {ea:.6e}  {ba!r}  {ei!r}  {cd!r}  {ca!r}  {cdax!r}  "
+          "{caax!r}").format(**ltype)
+    pts = "\n".join(f"{i}  {a}  {x!r}  {y!r}  {z!r}  {m!r}  0  0  0"
+                    for i, (a, x, y, z, m) in enumerate(points, 1))
+    opts = "\n".join(f"{v}  {k}" for v, k in options)
+    return f"""--------------------- MoorDyn Input File ------------------------------------
+{title}
+---------------------- LINE TYPES ----------------------------------------------------
+TypeName   Diam    Mass/m     EA     BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+{lt}
+---------------------- POINTS ---------------------------------------
+ID   Attachment  X       Y     Z      Mass   Volume  CdA    Ca
+(#)   (word/ID) (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+{pts}
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (ID)     (ID)      (m)       (-)      (-)
+1     {ltype['name']}  1  2  {length!r}  {segments}  -
+---------------------- OPTIONS -----------------------------------------
+{opts}
+------------------------- need this line -------------------------------------
+"""

@@ -23,7 +23,6 @@ step halvings. Exit status 1 if that fails.
 Writes bench/results/hanging_refinement[_TAG].csv with the machine facts.
 """
 import argparse
-import csv
 import math
 import os
 import resource
@@ -46,14 +45,8 @@ PERIOD = 10.0
 
 def top_force(out):
     """Times and magnitudes of the support force at end A, every step."""
-    t, f = [], []
-    with open(os.path.join(out, "dynamic_ends_step.csv")) as fh:
-        for row in csv.DictReader(line for line in fh if not line.startswith("#")):
-            if row["end"] != "A":
-                continue
-            t.append(float(row["time_s"]))
-            f.append(math.sqrt(sum(float(row[k]) ** 2 for k in ("Fx_N", "Fy_N", "Fz_N"))))
-    return np.array(t), np.array(f)
+    t, f = benchlib.read_end_forces(out, "A")
+    return t, np.linalg.norm(f, axis=1)
 
 
 def harmonic_fit(t, y, n=8):

@@ -37,7 +37,6 @@ Results: bench/results/hanging_moordyn.csv. Target: rodyn's Fx first harmonic an
 within 2 % of MoorDyn's finest run (exit 1 if not); Fz's second harmonic is reported.
 """
 import argparse
-import csv
 import math
 import os
 import subprocess
@@ -62,35 +61,18 @@ WINDOW = (20.0, 40.0)
 COUPLING = 0.005
 TOLERANCE = 0.02
 
-MD_DECK = """--------------------- MoorDyn Input File ------------------------------------
-rodyn bench/water/moordyn_hanging.py: hanging line, free lower end, {n} segments
----------------------- LINE TYPES ----------------------------------------------------------------------
-TypeName   Diam    Mass/m     EA     BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-line       {d!r}   {m!r}   {ea:.6e}   -1.0   0.0   {cd!r}   {ca!r}   0.0   0.0
----------------------- POINTS ---------------------------------------
-ID   Attachment  X       Y     Z      Mass   Volume  CdA    Ca
-(#)   (word/ID) (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
-1     Coupled    0.0  0.0  -5.0   0      0       0      0
-2     Free       0.0  0.0  -55.0  0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (ID)     (ID)      (m)       (-)      (-)
-1     line        1        2        {length!r}      {n}       -
----------------------- OPTIONS -----------------------------------------
-0             writeLog
-{dt!r}        dtM
-RK2           tScheme
-{g!r}         g
-{rho!r}       rho
-{depth!r}     WtrDpth
-0             ICgenDynamic
-1.0e-9        threshIC
-300.0         TmaxIC
-1             disableOutput
-1             disableOutTime
-------------------------- need this line -------------------------------------
-"""
+def md_deck(n, dt, end_mass=0.0):
+    """MoorDyn's input: the line from a Coupled point at the top to a Free point."""
+    return benchlib.moordyn_line_deck(
+        f"rodyn bench/water/moordyn_hanging.py: hanging line, free lower end, {n} segments",
+        dict(name="line", d=DIAM, m=MASS, ea=EA, ba=-1.0, ei=0.0, cd=CD, ca=CA, cdax=0.0,
+             caax=0.0),
+        [("Coupled",) + TOP + (0.0,), ("Free", TOP[0], TOP[1], TOP[2] - LENGTH, end_mass)],
+        LENGTH, n,
+        [(0, "writeLog"), (repr(dt), "dtM"), ("RK2", "tScheme"), (repr(G), "g"),
+         (repr(RHO), "rho"), (repr(DEPTH), "WtrDpth"), (0, "ICgenDynamic"),
+         ("1.0e-9", "threshIC"), ("300.0", "TmaxIC"), (1, "disableOutput"),
+         (1, "disableOutTime")])
 
 
 def top_x(t):
@@ -117,8 +99,7 @@ def run_moordyn(n, work):
     dt = COUPLING / math.ceil(COUPLING / dt)
     path = os.path.join(work, f"hanging_{n}.dat")
     with open(path, "w") as f:
-        f.write(MD_DECK.format(n=n, d=DIAM, m=MASS, ea=EA, cd=CD, ca=CA, length=LENGTH,
-                               dt=dt, g=G, rho=RHO, depth=DEPTH))
+        f.write(md_deck(n, dt))
     t0 = time.process_time()
     s = md.Create(path)
     md.Init(s, list(TOP), [0.0, 0.0, 0.0])
@@ -152,14 +133,9 @@ def run_rodyn(rodyn, elements, dt, work):
                     "--set", f"DT={dt}", "--set", f"T_END={T_END}"], check=True)
     r1 = os.times()
     cpu = (r1.children_user - r0.children_user) + (r1.children_system - r0.children_system)
-    t, f = [], []
-    with open(os.path.join(out, "dynamic_ends_step.csv")) as fh:
-        for row in csv.DictReader(line for line in fh if not line.startswith("#")):
-            if row["end"] == "A":
-                t.append(float(row["time_s"]))
-                f.append([float(row[k]) for k in ("Fx_N", "Fy_N", "Fz_N")])
+    t, f = benchlib.read_end_forces(out, "A")
     tq = np.arange(0.05, T_END + 1e-9, 0.05)
-    return tq, benchlib.interp_cubic(np.array(t), np.array(f), tq), cpu
+    return tq, benchlib.interp_cubic(t, f, tq), cpu
 
 
 def summary(code, n, dt, t, f, cpu):

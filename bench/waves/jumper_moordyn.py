@@ -103,6 +103,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+import benchlib  # noqa: E402
+
 DECK = os.path.join(ROOT, "bench", "decks", "jumper_waves.inp")
 RESULTS = os.path.join(ROOT, "bench", "results")
 SUMMARY_CSV = os.path.join(RESULTS, "jumper_moordyn.csv")
@@ -136,38 +139,6 @@ MOORDYN_N = [34, 68, 136]
 BA = -1.0
 IC_THRESH = 1.0e-9
 IC_TMAX = 300.0
-
-MD_DECK = """--------------------- MoorDyn Input File ------------------------------------
-{title}
----------------------- LINE TYPES ------------------------------
-TypeName   Diam    Mass/m     EA     BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-jumper     {d!r}   {m!r}   {ea:.6e}   {ba!r}   {ei!r}   {cd!r}   {ca!r}   {cdax!r}   {caax!r}
----------------------- POINTS ---------------------------------------
-ID   Attachment  X       Y     Z      Mass   Volume  CdA    Ca
-(#)   (word/ID) (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
-1     Fixed      {xa!r}  {ya!r}  {za!r}   0      0       0      0
-2     Fixed      {xb!r}  {yb!r}  {zb!r}   0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (ID)     (ID)      (m)       (-)      (-)
-1     jumper       1        2        {length!r}      {n}       -
----------------------- OPTIONS -----------------------------------------
-0             writeLog
-{dt!r}        dtM
-RK2           tScheme
-{g!r}         g
-{rho!r}       rho
-{depth!r}     WtrDpth
-1             WaveKin
-0             ICgenDynamic
-{ic_thresh!r} threshIC
-{ic_tmax!r}   TmaxIC
-1             disableOutput
-1             disableOutTime
-------------------------- need this line -------------------------------------
-"""
-
 
 def child_cpu():
     r = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -234,12 +205,7 @@ def run_rodyn(rodyn, tmp, heading, elements, dt, tension=True):
     cost = (time.perf_counter() - t0, child_cpu() - c0)
     if p.returncode != 0:
         sys.exit(f"jumper_moordyn: rodyn exit {p.returncode}: {p.stderr.strip()}")
-    t, f = [], []
-    with open(os.path.join(out, "dynamic_ends_step.csv")) as fh:
-        for r in csv.DictReader(fh):
-            if r["end"] == "B":
-                t.append(float(r["time_s"]))
-                f.append([float(r[c]) for c in ("Fx_N", "Fy_N", "Fz_N")])
+    t, f = benchlib.read_end_forces(out, "B")
     ten = None
     if tension:
         te, tv = [], []
@@ -252,7 +218,7 @@ def run_rodyn(rodyn, tmp, heading, elements, dt, tension=True):
     with open(os.path.join(out, "static_reactions.csv")) as fh:
         static = [r for r in csv.DictReader(fh) if r.get("end") == "B"]
     fs = [float(static[0][c]) for c in ("Fx_N", "Fy_N", "Fz_N")] if static else None
-    return np.array(t), np.array(f), ten, cost, fs
+    return t, f, ten, cost, fs
 
 
 # ---------------------------------------------------------------------------- MoorDyn
@@ -264,13 +230,16 @@ def md_dt(n):
 
 
 def md_deck(n, dt):
-    return MD_DECK.format(
-        title=f"rodyn bench/waves: flexible jumper in a regular wave, {n} segments, "
-              "external wave kinematics (jumper_moordyn.py)",
-        d=DIAM, m=MASS, ea=EA, ba=BA, ei=EI, cd=CD, ca=CA, cdax=CDAX, caax=CAAX,
-        xa=END_A[0], ya=END_A[1], za=END_A[2], xb=END_B[0], yb=END_B[1], zb=END_B[2],
-        length=LENGTH, n=n, dt=dt, g=G, rho=RHO, depth=DEPTH, ic_thresh=IC_THRESH,
-        ic_tmax=IC_TMAX)
+    return benchlib.moordyn_line_deck(
+        f"rodyn bench/waves: flexible jumper in a regular wave, {n} segments, "
+        "external wave kinematics (jumper_moordyn.py)",
+        dict(name="jumper", d=DIAM, m=MASS, ea=EA, ba=BA, ei=EI, cd=CD, ca=CA, cdax=CDAX,
+             caax=CAAX),
+        [("Fixed",) + tuple(END_A) + (0.0,), ("Fixed",) + tuple(END_B) + (0.0,)], LENGTH, n,
+        [(0, "writeLog"), (repr(dt), "dtM"), ("RK2", "tScheme"), (repr(G), "g"),
+         (repr(RHO), "rho"), (repr(DEPTH), "WtrDpth"), (1, "WaveKin"), (0, "ICgenDynamic"),
+         (repr(IC_THRESH), "threshIC"), (repr(IC_TMAX), "TmaxIC"), (1, "disableOutput"),
+         (1, "disableOutTime")])
 
 
 def run_moordyn(n, heading, fresh=False):
