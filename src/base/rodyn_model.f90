@@ -13,6 +13,7 @@ module rodyn_model
    public :: waves_t, stretch_wheeler, stretch_vertical, stretch_extrapolation, stretch_none
    public :: stretch_names, sea_airy, sea_jonswap, sea_pm, sea_table, sea_record, sea_names
    public :: element_rod, element_cable, element_names
+   public :: edmc_rho_min
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table, motion_vessel
    public :: vessel_t, vessel_rao_t, vessel_from_rao, vessel_from_table
@@ -40,6 +41,8 @@ module rodyn_model
 
    ! Time integration schemes (*DYNAMIC, SCHEME=...)
    integer, parameter :: scheme_emc = 1          !< energy-momentum conserving (the paper's)
+   !> the lowest RHO INF of the dissipative EMC (rodyn_numerical_dissipation, eq. (129))
+   real(wp), parameter :: edmc_rho_min = 0.52_wp
    integer, parameter :: scheme_midpoint = 2     !< midpoint rule, stress at the midpoint
    integer, parameter :: scheme_trapezoidal = 3  !< trapezoidal rule, averaged end forces
    integer, parameter :: scheme_alpha = 4        !< dissipative, spectral radius rho_inf

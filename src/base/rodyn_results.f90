@@ -55,6 +55,10 @@ module rodyn_results
                                                 !< water: buoyancy, drag, added mass [J]
       real(wp) :: seabed_work = 0.0_wp          !< work done on the line since t = 0 by the
                                                 !< seabed: contact, damping, friction [J]
+      !> the dissipative EMC (RHO INF < 1): work of its numerical stress since t = 0 and
+      !> its numerical energy N at the end of the step (docs/theory.md eq. (128)) [J]
+      real(wp) :: numerical_work = 0.0_wp
+      real(wp) :: numerical_energy = 0.0_wp
       real(wp) :: total = 0.0_wp                !< kinetic + strain + gravity [J]
       real(wp) :: momentum(3) = 0.0_wp          !< total linear momentum [kg m/s]
       real(wp) :: angular_momentum(3) = 0.0_wp  !< about the origin [kg m2/s]

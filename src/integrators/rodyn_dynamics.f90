@@ -44,6 +44,8 @@ module rodyn_dynamics
                              external_force, assemble_water, assemble_dynamic_cables, &
                              roll_gauges, add_roll_gauges
    use rodyn_assembly_damping, only: section_damping_rates, assemble_section_damping
+   use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_assemble, &
+                                          numdiss_accept
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
@@ -104,6 +106,8 @@ module rodyn_dynamics
       !> sd_cv (q^{n+1} - q^n) + srate (rodyn_assembly_damping's section_damping_rates)
       real(wp), allocatable :: srate(:, :, :)  !< (3, 4, nn) [m/s, 1/s]
       real(wp) :: sd_cv = 0.0_wp               !< [1/s]
+      !> the dissipative EMC (RHO INF < 1 with EMC; rodyn_numerical_dissipation)
+      type(numdiss_t) :: nd
       real(wp), allocatable :: dx(:, :)        !< (3, nn) x^{n+1} - x^n, carried as such
       real(wp), allocatable :: dx_base(:, :)   !< (3, nn) dx at the base of the line search
       logical :: ref_pending = .true.          !< the step's reference force is still to set
@@ -177,6 +181,8 @@ contains
          prob%beta_n = 0.25_wp*(1.0_wp - prob%am + prob%af)**2
          prob%wf = 1.0_wp - prob%af
       end if
+      if (prob%scheme == scheme_emc) call numdiss_setup(prob%nd, mesh, state, &
+                                                        model%dynamic%rho_inf, model%dynamic%dt)
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%fdamp(6, nn), prob%dx(3, nn), &
                 prob%dx_base(3, nn), prob%rest(3, 0:2, nn))
       if (mesh%damped) then
@@ -333,6 +339,7 @@ contains
       prob%m_conv = prob%m_last
       prob%have_conv = .true.
       prob%fields_next = prob%fields_s1     ! s1 becomes the next step's t_n
+      if (prob%nd%on) call numdiss_accept(prob%nd)
    end subroutine dynamics_accept_step
 
    !> Stored energy of the whole mesh in the iterate s1 [J] and its round-off scale [J]
@@ -457,6 +464,8 @@ contains
          call assemble_section_damping(this%mesh, this%sup, this%s0, this%s1, this%srate, &
                                        this%sd_cv, this%wf, this%scheme, this%fint, &
                                        this%fdamp, this%bm, want_k)
+      if (this%nd%on) call numdiss_assemble(this%nd, this%mesh, this%sup, this%s0, this%s1, &
+                                            this%dt, this%fint, this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
       fx = 0.0_wp
       mx = 0.0_wp

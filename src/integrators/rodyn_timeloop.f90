@@ -26,6 +26,7 @@ module rodyn_timeloop
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_state, only: state_copy
    use rodyn_mesh, only: mesh_spurious_shape
+   use rodyn_numerical_dissipation, only: numdiss_step
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -168,7 +169,7 @@ contains
       type(error_t) :: nerr
       type(step_log_t) :: log, trial
       real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
-      real(wp) :: w_hydro, w_seabed, next_checkpoint
+      real(wp) :: w_hydro, w_seabed, next_checkpoint, w_num
       integer :: level, good, step_cuts
       logical :: retried, accepted, nonfinite
       character(len=240) :: msg
@@ -213,6 +214,8 @@ contains
          log%damping_work = 0.0_wp
          log%hydro_work = 0.0_wp
          log%seabed_work = 0.0_wp
+         log%numerical_work = 0.0_wp
+         log%numerical_energy = prob%nd%energy
          call on_frame(t, prob, err)
          if (has_error(err)) return
          level = 0
@@ -249,6 +252,8 @@ contains
             trial%damping_work = log%damping_work + w_damp
             trial%hydro_work = log%hydro_work + w_hydro
             trial%seabed_work = log%seabed_work + w_seabed
+            trial%numerical_work = log%numerical_work + w_num
+            if (prob%nd%on) trial%numerical_energy = prob%nd%energy_new
             log = trial
             t = t1
             summary%time_reached = t
@@ -354,15 +359,20 @@ contains
          if (.not. accepted) return
          call dynamics_end_step(prob)
          call step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
+         w_num = 0.0_wp
+         if (prob%nd%on) then
+            call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt)
+            w_num = prob%nd%work_new
+         end if
          trial = log
          call converged_energies(prob, trial)
          if (prob%scheme /= scheme_emc) return
-         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, w_damp, e_tol, &
-                                          0.0_wp)
+         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, &
+                                          w_damp + w_num, e_tol, 0.0_wp)
          ! (the residual's work, needed only by steps near the bound, computed for them)
          if (.not. accepted) accepted = energy_identity_holds(log, trial, w_ext + w_hydro + &
-                                                              w_seabed, w_damp, e_tol, &
-                                                              residual_work(prob))
+                                                              w_seabed, w_damp + w_num, &
+                                                              e_tol, residual_work(prob))
          if (.not. accepted) call set_error(nerr, stat_numerical, 'the converged '// &
             'step breaks the energy identity of EMC (a spurious root)')
          if (.not. accepted .and. log_unit >= 0) write (log_unit, '(a)') &

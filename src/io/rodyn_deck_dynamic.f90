@@ -9,7 +9,7 @@ module rodyn_deck_dynamic
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, amplitude_t, motion_t, initial_velocity_t, scheme_alpha, &
-                          scheme_names, motion_harmonic, motion_table, motion_vessel, &
+                          scheme_emc, edmc_rho_min, scheme_names, motion_harmonic, motion_table, motion_vessel, &
                           bc_free, end_a
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_file_error, card_get_real, &
@@ -50,8 +50,9 @@ contains
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
    !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme
    !> (docs/theory.md sections 5 and 7), Newton controls and the checkpoint interval.
-   !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8
-   !> (1 otherwise: no numerical damping).
+   !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8,
+   !> and EMC, where it defaults to 1 (no numerical dissipation) and may be as low as
+   !> edmc_rho_min (rodyn_numerical_dissipation).
    subroutine read_dynamic_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *DYNAMIC card
@@ -125,9 +126,10 @@ contains
          if (has_error(err)) return
          if (dy%scheme == scheme_alpha) dy%rho_inf = rho_inf_alpha
          if (card_find_param(card, 'RHO INF') > 0) then
-            if (dy%scheme /= scheme_alpha) then
+            if (dy%scheme /= scheme_alpha .and. dy%scheme /= scheme_emc) then
                call param_fail(card, 'RHO INF', 'RHO INF is only allowed with SCHEME=ALPHA'// &
-                               ' (the scheme is '//trim(scheme_names(dy%scheme))//')', err)
+                               ' or EMC (the scheme is '//trim(scheme_names(dy%scheme))// &
+                               ')', err)
                return
             end if
             call card_get_real(card, 'RHO INF', dy%rho_inf, err)
@@ -135,6 +137,13 @@ contains
             if (.not. (dy%rho_inf >= 0.0_wp .and. dy%rho_inf <= 1.0_wp)) then
                call param_fail(card, 'RHO INF', 'RHO INF must be between 0 and 1, got '// &
                                real_str(dy%rho_inf), err)
+               return
+            end if
+            if (dy%scheme == scheme_emc .and. dy%rho_inf < edmc_rho_min) then
+               call param_fail(card, 'RHO INF', 'RHO INF with SCHEME=EMC (the dissipative '// &
+                               'energy-momentum scheme) must be between '// &
+                               real_str(edmc_rho_min)//' and 1, got '// &
+                               real_str(dy%rho_inf)//'; SCHEME=ALPHA reaches 0', err)
                return
             end if
          end if

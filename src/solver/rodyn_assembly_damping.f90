@@ -93,7 +93,8 @@ contains
             else
                call state_gather(s0, nodes, x0, d0)
                call state_gather(s1, nodes, x1, d1)
-               call rod_section_damping(p, mesh%elem_le(e), mesh%elem_damp(:, e), &
+               call rod_section_damping(p, mesh%elem_le(e), &
+                                        [0.0_wp, 0.0_wp, mesh%elem_damp(:, e), 0.0_wp], &
                                         x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
                                         d1(:, :, 1:nen), ge(:, :, 1:nen), cv, wq, &
                                         fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
