@@ -75,8 +75,9 @@ H5_LOG_DATASETS = {
     "external_work": ("ns",), "damping_work": ("ns",), "total": ("ns",),
     "momentum": ("ns", 3), "angular_momentum": ("ns", 3),
     "hydro_work": ("ns",), "seabed_work": ("ns",),
+    "numerical_work": ("ns",), "numerical_energy": ("ns",),
 }
-_OPTIONAL_LOG = ("hydro_work", "seabed_work")
+_OPTIONAL_LOG = ("hydro_work", "seabed_work", "numerical_work", "numerical_energy")
 _LOG_INTEGERS = ("step", "iterations", "cutbacks")
 # Attributes read of the root, of /dynamic (at the end of a run): all in
 # rodyn_post.schema.ATTRIBUTES.
@@ -154,6 +155,10 @@ class StepLog:
     angular_momentum: np.ndarray  # (ns, 3)  kg m2/s
     hydro_work: np.ndarray = None   # (ns,)  J   by the water since t = 0 (0 if not logged)
     seabed_work: np.ndarray = None  # (ns,)  J   by the seabed since t = 0 (0 if not logged)
+    # the dissipative EMC (theory.md eq. (128)): its numerical stress's work since t = 0
+    # and its numerical energy N (0 if not logged)
+    numerical_work: np.ndarray = None     # (ns,)  J
+    numerical_energy: np.ndarray = None   # (ns,)  J
 
     def __post_init__(self):
         for key in _OPTIONAL_LOG:   # not given: 0 (a run without water)
@@ -165,8 +170,10 @@ class StepLog:
 
     @property
     def net_work(self) -> np.ndarray:
-        """Work done on the lines since t = 0: external + hydro + seabed - damping [J]."""
-        return self.external_work + self.hydro_work + self.seabed_work - self.damping_work
+        """Work done on the lines since t = 0: external + hydro + seabed - damping -
+        numerical [J]."""
+        return (self.external_work + self.hydro_work + self.seabed_work - self.damping_work
+                - self.numerical_work)
 
     @property
     def initial_total(self) -> float:
@@ -823,6 +830,8 @@ def _log_arrays(rows, header, path) -> dict:
         "gravity": cols["gravity_J"], "external_work": cols["external_work_J"],
         "damping_work": cols["damping_work_J"], "total": cols["total_J"],
         "hydro_work": cols.get("hydro_work_J"), "seabed_work": cols.get("seabed_work_J"),
+        "numerical_work": cols.get("numerical_work_J"),
+        "numerical_energy": cols.get("numerical_energy_J"),
         "momentum": np.column_stack([cols["px"], cols["py"], cols["pz"]]).reshape(-1, 3),
         "angular_momentum": np.column_stack([cols["Lx"], cols["Ly"], cols["Lz"]]).reshape(-1, 3),
     }

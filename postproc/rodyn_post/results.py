@@ -41,7 +41,8 @@ LINES_HEADER = header(LINES_CSV)
 # columns an older rodyn did not write (read as: wall = effective, seabed forces and
 # hydro and seabed work 0); static and dynamic tables
 OPTIONAL_COLUMNS = ("wall_tension_N", "seabed_normal_N_per_m", "seabed_friction_N_per_m",
-                    "hydro_work_J", "seabed_work_J")
+                    "hydro_work_J", "seabed_work_J", "numerical_work_J",
+                    "numerical_energy_J")
 REACTIONS_HEADER = header(REACTIONS_CSV)
 
 # Datasets of a line group in results.h5 and their shapes ('nn' nodes, 'ng' points).

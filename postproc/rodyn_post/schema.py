@@ -249,6 +249,14 @@ COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
                       'structural damping'),
                      ('hydro_work_J', 'J', 'work of the water since t = 0'),
                      ('seabed_work_J', 'J', 'work of the seabed since t = 0'),
+                     ('numerical_work_J',
+                      'J',
+                      "work of the dissipative EMC's numerical stress since t = 0 (0 "
+                      'without RHO INF < 1)'),
+                     ('numerical_energy_J',
+                      'J',
+                      'numerical energy N of the dissipative EMC at the end of the step; '
+                      'total + N never grows in free flight'),
                      ('total_J', 'J', 'kinetic + strain + gravity'),
                      ('px', 'kg m/s', 'x of the total linear momentum'),
                      ('py', 'kg m/s', 'y of the total linear momentum'),
@@ -364,6 +372,12 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                               "*DAMPING and the sections' structural "
                                               'damping'),
                 '/dynamic/log/dt': ('s', 'step length used'),
+                '/dynamic/log/numerical_energy': ('J',
+                                                  'numerical energy N of the dissipative '
+                                                  'EMC at the end of the step'),
+                '/dynamic/log/numerical_work': ('J',
+                                                "work of the dissipative EMC's numerical "
+                                                'stress since t = 0'),
                 '/dynamic/log/external_work': ('J',
                                                'work done on the line since t = 0 by '
                                                'prescribed motions and loads'),

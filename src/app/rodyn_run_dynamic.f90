@@ -204,6 +204,11 @@ contains
          pending = ck%pending
          have_back = ck%have_back
          frame_waiting = ck%frame_waiting
+         if (prob%nd%on) then
+            prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
+            prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
+            prob%nd%energy = ck%nd_energy
+         end if
          if (frame_waiting) then
             if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
                                                        .true.)
@@ -232,6 +237,13 @@ contains
       ck%f_last = prob%f_last
       ck%m_last = prob%m_last
       ck%have_conv = prob%have_conv
+      if (prob%nd%on) then
+         ck%nd_rho = reshape(prob%nd%rho, [size(prob%nd%rho, 1)*size(prob%nd%rho, 2), &
+                                           size(prob%nd%rho, 3)])
+         ck%nd_r = reshape(prob%nd%r, [size(prob%nd%r, 1)*size(prob%nd%r, 2), &
+                                       size(prob%nd%r, 3)])
+         ck%nd_energy = prob%nd%energy
+      end if
       ck%r_pend = r_pend
       ck%r_back = r_back
       ck%h_pend = h_pend

@@ -21,7 +21,7 @@ module rodyn_checkpoint
    use, intrinsic :: iso_fortran_env, only: int64
    use rodyn_kinds, only: wp, i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io, stat_input
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, scheme_emc
    use rodyn_state, only: state_t
    use rodyn_results, only: run_summary_t, step_log_t
    use rodyn_timeloop, only: timeloop_state_t
@@ -35,7 +35,7 @@ module rodyn_checkpoint
    public :: checkpoint_program_id
 
    character(len=*), parameter :: checkpoint_file = 'checkpoint.h5' !< name in the folder
-   integer, parameter :: n_reals = 33  !< scalars in /reals (see pack_reals)
+   integer, parameter :: n_reals = 36  !< scalars in /reals (see pack_reals)
    integer, parameter :: n_ints = 24   !< scalars in /integers (see pack_ints)
 
    !> Everything a dynamic run carries from one step to the next.
@@ -59,6 +59,10 @@ module rodyn_checkpoint
       logical :: have_back = .false.            !< r_back is set
       logical :: frame_waiting = .false.        !< a frame waits with it
       type(dynamic_output_mark_t) :: mark       !< where the output files stand
+      !> the dissipative EMC's histories (6 max_points, ne) and N at t_n
+      !> (rodyn_numerical_dissipation; unallocated without it)
+      real(wp), allocatable :: nd_rho(:, :), nd_r(:, :)
+      real(wp) :: nd_energy = 0.0_wp
    end type checkpoint_t
 
 contains
@@ -84,6 +88,10 @@ contains
       call hdf5_write_dataset(h5, '/r', ck%r, e)
       call hdf5_write_dataset(h5, '/r_pend', ck%r_pend, e)
       call hdf5_write_dataset(h5, '/r_back', ck%r_back, e)
+      if (allocated(ck%nd_rho)) then
+         call hdf5_write_dataset(h5, '/nd_rho', ck%nd_rho, e)
+         call hdf5_write_dataset(h5, '/nd_r', ck%nd_r, e)
+      end if
       call write_state('/start_', ck%start)
       call write_state('/now_', ck%now)
       call hdf5_close_file(h5, e)
@@ -160,6 +168,10 @@ contains
       call hdf5_read_dataset(h5, '/r', ck%r, e)
       call hdf5_read_dataset(h5, '/r_pend', ck%r_pend, e)
       call hdf5_read_dataset(h5, '/r_back', ck%r_back, e)
+      if (model%dynamic%scheme == scheme_emc .and. model%dynamic%rho_inf < 1.0_wp) then
+         call hdf5_read_dataset(h5, '/nd_rho', ck%nd_rho, e)
+         call hdf5_read_dataset(h5, '/nd_r', ck%nd_r, e)
+      end if
       ck%start = like
       ck%now = like
       call read_state('/start_', ck%start)
@@ -234,7 +246,8 @@ contains
               l%momentum, l%angular_momentum, &
               ck%dt, ck%t0, ck%f_conv, ck%m_conv, ck%f_last, ck%m_last, &
               ck%h_pend, ck%h_back, ck%t_pend, ck%mark%last_time, &
-              s%load_factor, s%wall_time, s%time_reached]
+              s%load_factor, s%wall_time, s%time_reached, &
+              l%numerical_work, l%numerical_energy, ck%nd_energy]
       end associate
    end function pack_reals
 
@@ -272,6 +285,9 @@ contains
          s%load_factor = x(31)
          s%wall_time = x(32)
          s%time_reached = x(33)
+         l%numerical_work = x(34)
+         l%numerical_energy = x(35)
+         ck%nd_energy = x(36)
       end associate
    end subroutine unpack_reals
 

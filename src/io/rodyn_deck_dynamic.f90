@@ -9,8 +9,8 @@ module rodyn_deck_dynamic
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, amplitude_t, motion_t, initial_velocity_t, scheme_alpha, &
-                          scheme_emc, edmc_rho_min, scheme_names, motion_harmonic, motion_table, motion_vessel, &
-                          bc_free, end_a
+                          scheme_emc, edmc_rho_min, scheme_names, motion_harmonic, &
+                          motion_table, motion_vessel, bc_free, end_a
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_file_error, card_get_real, &
                                card_get_name, card_get_choice, card_get_int, &

@@ -119,11 +119,12 @@ module rodyn_output_dynamic
    integer, parameter :: lg_step = 1, lg_time = 2, lg_dt = 3, lg_iterations = 4, &
       lg_cutbacks = 5, lg_kinetic = 6, lg_strain = 7, lg_gravity = 8, &
       lg_external_work = 9, lg_damping_work = 10, lg_total = 11, lg_momentum = 12, &
-      lg_angular_momentum = 13, lg_hydro_work = 14, lg_seabed_work = 15, n_log_series = 15
+      lg_angular_momentum = 13, lg_hydro_work = 14, lg_seabed_work = 15, &
+      lg_numerical_work = 16, lg_numerical_energy = 17, n_log_series = 17
    character(len=*), parameter :: log_series_name(n_log_series) = [character(len=16) :: &
       'step', 'time', 'dt', 'iterations', 'cutbacks', 'kinetic', 'strain', 'gravity', &
       'external_work', 'damping_work', 'total', 'momentum', 'angular_momentum', &
-      'hydro_work', 'seabed_work']
+      'hydro_work', 'seabed_work', 'numerical_work', 'numerical_energy']
 
 
    !> A string of its own length (rows of an array of texts differ in length).
@@ -459,8 +460,8 @@ contains
          call put_int(row, n, log%iterations)
          call put_int(row, n, log%cutbacks)
          call put_reals(row, n, [log%kinetic, log%strain, log%gravity, log%external_work, &
-            log%damping_work, log%hydro_work, log%seabed_work, log%total, log%momentum, &
-            log%angular_momentum])
+            log%damping_work, log%hydro_work, log%seabed_work, log%numerical_work, &
+            log%numerical_energy, log%total, log%momentum, log%angular_momentum])
          call outfile_put(w%f_log, row(:n))
       end if
       if (w%hdf5) then
@@ -971,9 +972,9 @@ contains
       type(error_t), intent(inout) :: err    !< status
       character(len=*), parameter :: g = '/dynamic/log/'
       ! the 1-D datasets in the order created (the order h5py lists them)
-      integer, parameter :: order(13) = [lg_step, lg_time, lg_dt, lg_iterations, &
+      integer, parameter :: order(15) = [lg_step, lg_time, lg_dt, lg_iterations, &
          lg_cutbacks, lg_kinetic, lg_strain, lg_gravity, lg_external_work, lg_damping_work, &
-         lg_hydro_work, lg_seabed_work, lg_total]
+         lg_hydro_work, lg_seabed_work, lg_numerical_work, lg_numerical_energy, lg_total]
       integer :: k
       call hdf5_create_group(h5, '/dynamic/log', err)
       do k = 1, size(order)
@@ -1231,6 +1232,8 @@ contains
          call hdf5_append_steps(s(lg_damping_work), p%damping_work, err)
          call hdf5_append_steps(s(lg_hydro_work), p%hydro_work, err)
          call hdf5_append_steps(s(lg_seabed_work), p%seabed_work, err)
+         call hdf5_append_steps(s(lg_numerical_work), p%numerical_work, err)
+         call hdf5_append_steps(s(lg_numerical_energy), p%numerical_energy, err)
          call hdf5_append_steps(s(lg_total), p%total, err)
          allocate (vec(3, n))
          do k = 1, n

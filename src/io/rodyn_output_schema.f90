@@ -207,6 +207,10 @@ module rodyn_output_schema
          '*DAMPING and the sections'' structural damping', &
       'dynamic_log.csv | hydro_work_J | J | work of the water since t = 0', &
       'dynamic_log.csv | seabed_work_J | J | work of the seabed since t = 0', &
+      'dynamic_log.csv | numerical_work_J | J | work of the dissipative EMC''s '// &
+         'numerical stress since t = 0 (0 without RHO INF < 1)', &
+      'dynamic_log.csv | numerical_energy_J | J | numerical energy N of the '// &
+         'dissipative EMC at the end of the step; total + N never grows in free flight', &
       'dynamic_log.csv | total_J | J | kinetic + strain + gravity', &
       'dynamic_log.csv | px | kg m/s | x of the total linear momentum', &
       'dynamic_log.csv | py | kg m/s | y of the total linear momentum', &
@@ -413,6 +417,10 @@ module rodyn_output_schema
       'dynamic.h5 | /dynamic/log/damping_work | J | energy taken out by damping '// &
          'since t = 0: *DAMPING and the sections'' structural damping', &
       'dynamic.h5 | /dynamic/log/dt | s | step length used', &
+      'dynamic.h5 | /dynamic/log/numerical_energy | J | numerical energy N of '// &
+         'the dissipative EMC at the end of the step', &
+      'dynamic.h5 | /dynamic/log/numerical_work | J | work of the dissipative '// &
+         'EMC''s numerical stress since t = 0', &
       'dynamic.h5 | /dynamic/log/external_work | J | work done on the line '// &
          'since t = 0 by prescribed motions and loads', &
       'dynamic.h5 | /dynamic/log/gravity | J | potential of the weight', &

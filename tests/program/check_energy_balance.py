@@ -25,7 +25,8 @@ def main():
         return (float(r["external_work_J"]) + float(r.get("hydro_work_J", 0.0))
                 + float(r.get("seabed_work_J", 0.0)))
 
-    bal = [float(r["total_J"]) - work_in(r) + float(r["damping_work_J"]) for r in rows]
+    bal = [float(r["total_J"]) - work_in(r) + float(r["damping_work_J"])
+           + float(r.get("numerical_work_J", 0.0)) for r in rows]
     work = max(max(abs(float(r[k])) for k in ("external_work_J", "hydro_work_J",
                                               "seabed_work_J") if k in r) for r in rows)
     if work == 0.0:
