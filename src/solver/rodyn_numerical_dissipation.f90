@@ -1,5 +1,5 @@
 !> The dissipative energy-momentum scheme: EMC with RHO INF < 1 (docs/theory.md
-!> section 17, eqs. (124)-(130)).
+!> section 16, eqs. (124)-(130)).
 !>
 !> A numerical stress is added at each integration point of each element, for every strain
 !> e (the rod's Gamma1, Gamma2, Gamma3, K1, K2, K3 where the quadrature integrates them; the
