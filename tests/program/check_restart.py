@@ -14,7 +14,9 @@ checkpoint and the next). Decks, from the shipped ones, shortened:
   after step 7, before the first checkpoint: --restart refused (exit 1);
 - case 1 with SCHEME=ALPHA (accelerations in the state), killed after step 37;
 - the mooring leg surged in water (cable elements, drag, added mass, seabed contact;
-  24 elements, dt = 0.05 s, 2 s, frames every 0.1 s, CHECKPOINT=0.5), killed after 27.
+  24 elements, dt = 0.05 s, 2 s, frames every 0.1 s, CHECKPOINT=0.5), killed after 27;
+- the same with the dissipative EMC (SCHEME=EMC, RHO INF=0.6: its strain-rate histories
+  in the checkpoint), killed after 27, and case 1 with it (RHO INF=0.7), killed after 37.
 
 Refused with exit 1 and a message naming the cause: a checkpoint continued with another
 deck (an amplitude edited), with another --set value, and one written by another build
@@ -133,8 +135,15 @@ def main():
                  [(r"ELEMENTS=120", "ELEMENTS=24"),
                   (r"TIME=120\.0, OUTPUT INTERVAL=0\.1",
                    "TIME=2.0, OUTPUT INTERVAL=0.1, CHECKPOINT=0.5")])
+    surge_ed = deck(input_dir, work, "surge_edmc", "mooring_surge.inp",
+                    [(r"ELEMENTS=120", "ELEMENTS=24"),
+                     (r"TIME=120\.0, OUTPUT INTERVAL=0\.1",
+                      "TIME=2.0, OUTPUT INTERVAL=0.1, CHECKPOINT=0.5, SCHEME=EMC, "
+                      "RHO INF=0.6")])
+    case1_ed = deck(input_dir, work, "case1_edmc", "paper_case1.inp",
+                    [(case1[0][0], case1[0][1] + ", RHO INF=0.7")])
     refs = {}
-    for path in (emc, alpha, surge):
+    for path in (emc, alpha, surge, surge_ed, case1_ed):
         ref = os.path.join(work, os.path.basename(path)[:-4] + "_ref")
         shutil.rmtree(ref, ignore_errors=True)
         run(rodyn, [path, "-o", ref])
@@ -144,6 +153,8 @@ def main():
     killed_and_continued(rodyn, emc, refs[emc], work, "emc_kill19_43", [19, 43])
     killed_and_continued(rodyn, alpha, refs[alpha], work, "alpha_kill37", [37])
     killed_and_continued(rodyn, surge, refs[surge], work, "surge_kill27", [27])
+    killed_and_continued(rodyn, surge_ed, refs[surge_ed], work, "surge_edmc_kill27", [27])
+    killed_and_continued(rodyn, case1_ed, refs[case1_ed], work, "case1_edmc_kill37", [37])
 
     # killed before the first checkpoint: nothing to continue
     early = os.path.join(work, "emc_kill7")
