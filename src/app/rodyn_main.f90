@@ -10,7 +10,7 @@ program rodyn
    use rodyn_error, only: error_t, has_error, set_error, stat_ok, stat_io, stat_input, &
                           stat_numerical
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
-   use rodyn_model, only: model_t, scheme_names, scheme_emc
+   use rodyn_model, only: model_t, scheme_names, scheme_emc, scheme_alpha
    use rodyn_deck, only: deck_read
    use rodyn_mesh, only: mesh_t, mesh_build, fix_leading_dots
    use rodyn_state, only: state_t
@@ -171,7 +171,8 @@ program rodyn
 
    if (model%dynamic%requested) then
       if (.not. opts%quiet) write (output_unit, '(a,i0,a,es10.3,a,es10.3,a)') &
-         'dynamic analysis: '//trim(scheme_name(model%dynamic%scheme))//', ', &
+         'dynamic analysis: '//trim(scheme_name(model%dynamic%scheme))// &
+         trim(rho_text(model))//', ', &
          nint(model%dynamic%duration/model%dynamic%dt), ' steps of ', model%dynamic%dt, &
          ' s to ', model%dynamic%duration, ' s'
       summary%complete = .false.
@@ -202,15 +203,16 @@ program rodyn
 
 contains
 
-   !> After an EMC run that halved its step: the sections without axial damping, and the
-   !> two remedies measured on a line with a free end (docs/dynamics.md, "Refinement with
-   !> a slack end"). EMC keeps the energy of the axial modes a step does not resolve;
-   !> slack-taut switching feeds them, and Newton then needs smaller steps.
+   !> After a conservative EMC run (RHO INF = 1) that halved its step: the sections
+   !> without axial damping, and two remedies measured on a line with a free end
+   !> (docs/dynamics.md, "Refinement with a slack end"). EMC keeps the energy of the axial
+   !> modes a step does not resolve; slack-taut switching feeds them, and Newton then
+   !> needs smaller steps.
    subroutine halving_note(model)
       type(model_t), intent(in) :: model !< model
       character(len=:), allocatable :: names
       integer :: i
-      if (model%dynamic%scheme /= scheme_emc) return
+      if (model%dynamic%scheme /= scheme_emc .or. model%dynamic%rho_inf < 1.0_wp) return
       names = ''
       do i = 1, size(model%sections)
          if (model%sections(i)%axial_damping > 0.0_wp .or. &
@@ -221,9 +223,21 @@ contains
       if (len(names) == 0) return
       write (output_unit, '(a)') 'note: EMC keeps the energy of the axial modes a step '// &
          'does not resolve, which slack-taut switching feeds; AXIAL DAMPING RATIO=1 on '// &
-         '*SECTION '//names//' (MoorDyn''s BA = -1), or SCHEME=ALPHA, RHO INF=0, damps '// &
-         'them (docs/dynamics.md, "Refinement with a slack end")'
+         '*SECTION '//names//' (MoorDyn''s BA = -1), or RHO INF=0.8 on *DYNAMIC (the '// &
+         'dissipative EMC), damps them (docs/dynamics.md, "Refinement with a slack end")'
    end subroutine halving_note
+
+   !> ' (RHO INF r)' for ALPHA and the dissipative EMC, else ''.
+   function rho_text(model) result(text)
+      type(model_t), intent(in) :: model !< model
+      character(len=:), allocatable :: text
+      character(len=16) :: buf
+      text = ''
+      if (model%dynamic%rho_inf >= 1.0_wp .and. model%dynamic%scheme == scheme_emc) return
+      if (model%dynamic%scheme /= scheme_emc .and. model%dynamic%scheme /= scheme_alpha) return
+      write (buf, '(f6.3)') model%dynamic%rho_inf
+      text = ' (RHO INF '//trim(adjustl(buf))//')'
+   end function rho_text
 
    !> Name of a scheme for the log.
    function scheme_name(k) result(name)

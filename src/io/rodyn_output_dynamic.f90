@@ -795,6 +795,7 @@ contains
       associate (h5 => w%h5)
          call write_h5_root(h5, model, .false., running, err)
          call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
+         call hdf5_write_attribute(h5, '/', 'rho_inf', model%dynamic%rho_inf, err)
          call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
          call write_described(h5, dynamic_h5, '/deck', err, text=text_of(model%deck_text))
          call hdf5_create_group(h5, '/dynamic', err)

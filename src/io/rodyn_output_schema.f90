@@ -309,6 +309,8 @@ module rodyn_output_schema
       'dynamic.h5 | /:complete | - | 1 if the analysis reached its end, else 0', &
       'dynamic.h5 | /:status | - | one line: complete, or what failed (running while it runs)', &
       'dynamic.h5 | /:scheme | - | time integration scheme (EMC, ...)', &
+      'dynamic.h5 | /:rho_inf | - | RHO INF of *DYNAMIC: ALPHA''s spectral radius at '// &
+         'infinite frequency, or the dissipative EMC''s (1: EMC conserving)', &
       'dynamic.h5 | /:dt | s | *DYNAMIC DT', &
       'dynamic.h5 | /dynamic:duration_s | s | *DYNAMIC TIME', &
       'dynamic.h5 | /dynamic:output_interval_s | s | *DYNAMIC OUTPUT INTERVAL', &
