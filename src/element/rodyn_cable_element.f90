@@ -80,7 +80,8 @@ contains
    !> Step internal force fe (3, p+1) of one element for a scheme (module header) and
    !> its tangent with respect to x_n+1.
    !> docs/theory.md eqs. (63)-(66).
-   pure subroutine cable_element_dynamic(p, le, ea, x0, x1, scheme, wf, fe, ke, want_k, rule)
+   pure subroutine cable_element_dynamic(p, le, ea, x0, x1, scheme, wf, fe, ke, want_k, rule, &
+                                         kd, off)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
       real(wp), intent(in) :: ea              !< axial stiffness [N]
@@ -92,8 +93,12 @@ contains
       real(wp), intent(out) :: ke(:, :)       !< (3(p+1), 3(p+1)) tangent, if want_k
       logical, intent(in) :: want_k           !< form the tangent
       type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): its first p points are used
+      !> EMC with RHO INF < 1 (docs/theory.md eqs. (126)-(127)): the numerical tension
+      !> N_d = kd (lambda_n+1 - lambda_n) - off at each point along the discrete gradient
+      !> (x'_n + x'_n+1)/(lambda_n + lambda_n+1), kd = EA (c1 + 2 c2) [N]
+      real(wp), intent(in), optional :: kd, off(:)
       real(wp) :: dn(max_nen), wj, xp0(3), xp1(3), xpm(3), l0, l1, lm, phi, dphi, wq
-      real(wp) :: nh, dnh, dfg(3, 3), phi0, dphi0
+      real(wp) :: nh, dnh, dfg(3, 3), phi0, dphi0, ndn, ls
       integer :: g, nen, i
       nen = p + 1
       fe = 0.0_wp
@@ -115,6 +120,13 @@ contains
          case (scheme_emc)
             xpm = 0.5_wp*(xp0 + xp1)
             call discrete_gradient(ea, l0, l1, nh, dnh)
+            if (present(kd)) then
+               ! N_d t_hat = (2 N_d/(lambda_n + lambda_n+1)) x'_m
+               ls = l0 + l1
+               ndn = kd*(l1 - l0) - off(g)
+               nh = nh + 2.0_wp*ndn/ls
+               dnh = dnh + 2.0_wp*kd/ls - 2.0_wp*ndn/ls**2
+            end if
             call add_force(nen, dn(1:nen), wj*nh*xpm, fe)
             if (.not. want_k) cycle
             ! d(N_hat x'_m)/dx'_n+1 = N_hat/2 I + x'_m (dN_hat/dlambda_n+1) t_n+1^T

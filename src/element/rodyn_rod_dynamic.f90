@@ -48,7 +48,7 @@ contains
    !> Step internal force fe (6, p+1) and tangent ke of one element for a scheme.
    !> docs/theory.md eqs. (35), (44), (54)-(57).
    pure subroutine rod_element_dynamic(p, le, c, eps0, x0, d0, x1, d1, scheme, wf, fe, ke, &
-                                       want_k, rule, gp0, epsn, xb, db)
+                                       want_k, rule, gp0, epsn, xb, db, kd, off)
       integer, intent(in) :: p                    !< element order
       real(wp), intent(in) :: le                  !< unstretched element length [m]
       real(wp), intent(in) :: c(6)                !< diag(GA1,GA2,EA,EI1,EI2,GJ)
@@ -70,7 +70,10 @@ contains
       !> EMC: Newton's base, the iterate that the last correction started from (header:
       !> the tangent's stresses are then those of the strains linearized from it)
       real(wp), intent(in), optional :: xb(3, p + 1), db(3, 3, p + 1)
-      real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6), e0(6)
+      !> EMC with RHO INF < 1 (docs/theory.md eq. (126)): the numerical stress
+      !> kd (eps^{n+1} - eps^n) - off at each point, kd = K0 (c1 + 2 c2) [N, N m2]
+      real(wp), intent(in), optional :: kd(6), off(6, max_points)
+      real(wp) :: n(max_nen), dn(max_nen), wj, cg(6), s(6), s1(6), e0(6), e1(6), cgt(6)
       ! the linearized increment from the base (dxl, ddl) and its end (x1, dl); the
       ! q-forces of the linearized stresses (fql), for the projection's tangent
       real(wp) :: dxl(3, max_nen), ddl(3, 3, max_nen), dl(3, 3, max_nen), fql(3, 4, max_nen)
@@ -154,16 +157,24 @@ contains
             case default ! scheme_emc
                km%xp = 0.5_wp*(k0%xp + k1%xp)
                km%d(:, 1:2) = 0.5_wp*(k0%d(:, 1:2) + k1%d(:, 1:2))
-               sh = cg(1:2)*(0.5_wp*(e0(1:2) + rod_strains_shear(k1)) - eps0(1:2, g))
+               e1(1:2) = rod_strains_shear(k1)
+               sh = cg(1:2)*(0.5_wp*(e0(1:2) + e1(1:2)) - eps0(1:2, g))
+               cgt = cg
+               if (present(kd)) then
+                  sh = sh + rule%mask(1:2, g)*(kd(1:2)*(e1(1:2) - e0(1:2)) - off(1:2, g))
+                  cgt = cg + 2.0_wp*kd*rule%mask(:, g)
+               end if
                call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, sh, wj, fq(:, :, 1:nen))
                if (.not. want_k) cycle
-               call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cg, &
+               call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cgt, &
                                  0.5_wp*wj, blt, cr, nf, blc, crc, nc)
                s(1:2) = sh
                if (lin) then
                   sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
                                           dxl(:, 1:nen), ddl(:, :, 1:nen))
                   s(1:2) = cg(1:2)*(0.5_wp*(e0(1:2) + sl(1:2)) - eps0(1:2, g))
+                  if (present(kd)) s(1:2) = s(1:2) + rule%mask(1:2, g)* &
+                                            (kd(1:2)*(sl(1:2) - e0(1:2)) - off(1:2, g))
                   call rod_gp_qforce_shear(nen, n(1:nen), dn(1:nen), km, s(1:2), wj, &
                                            fql(:, :, 1:nen))
                end if
@@ -204,15 +215,22 @@ contains
             km%xp = 0.5_wp*(k0%xp + k1%xp)
             km%d = 0.5_wp*(k0%d + k1%d)
             km%dp = 0.5_wp*(k0%dp + k1%dp)
-            s = cg*(0.5_wp*(e0 + rod_strains(k1)) - eps0(:, g))
+            e1 = rod_strains(k1)
+            s = cg*(0.5_wp*(e0 + e1) - eps0(:, g))
+            cgt = cg
+            if (present(kd)) then
+               s = s + rule%mask(:, g)*(kd*(e1 - e0) - off(:, g))
+               cgt = cg + 2.0_wp*kd*rule%mask(:, g)
+            end if
             call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fq(:, :, 1:nen))
             if (.not. want_k) cycle
-            call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cg, &
+            call add_material(nen, n(1:nen), dn(1:nen), km, dm(:, :, 1:nen), k1, d1, cgt, &
                               0.5_wp*wj, blt, cr, nf, blc, crc, nc)
             if (lin) then
                sl = linearized_strains(nen, n(1:nen), dn(1:nen), x1, dl(:, :, 1:nen), &
                                        dxl(:, 1:nen), ddl(:, :, 1:nen))
                s = cg*(0.5_wp*(e0 + sl) - eps0(:, g))
+               if (present(kd)) s = s + rule%mask(:, g)*(kd*(sl - e0) - off(:, g))
                call rod_gp_qforce(nen, n(1:nen), dn(1:nen), km, s, wj, fql(:, :, 1:nen))
             end if
             call add_geometric(nen, n(1:nen), dn(1:nen), s, 0.5_wp*wj, pg, mg)

@@ -38,7 +38,7 @@ contains
    !> (dd_i^{n+1} = dtheta x d_i^{n+1}).
    !> docs/theory.md eqs. (116)-(117), (119), (121).
    pure subroutine rod_section_damping(p, le, cd, x0, d0, x1, d1, g, cv, wq, fe, ke, &
-                                       want_k, rule, off)
+                                       want_k, rule)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
       !> coefficients of the six strain rates (Gamma1, Gamma2, Gamma3, K1, K2, K3):
@@ -56,9 +56,6 @@ contains
       real(wp), intent(out) :: ke(:, :)       !< (6(p+1), 6(p+1)) tangent, if want_k
       logical, intent(in) :: want_k           !< form the tangent
       type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): points, shape functions
-      !> a stress at each point that does not depend on the unknowns, subtracted from
-      !> cd times the rates (the dissipative EMC's history part, eq. (126)) [N, N m]
-      real(wp), intent(in), optional :: off(:, :)
       real(wp) :: xf(3, max_nen), df(3, 3, max_nen), ux(3, max_nen), ud(3, 3, max_nen)
       real(wp) :: fq(3, 4, max_nen), n(max_nen), dn(max_nen), wj, cg(6), s(6)
       real(wp) :: bl(6*max_nen), br(6*max_nen), bu(6*max_nen)
@@ -83,7 +80,6 @@ contains
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), xf(:, 1:nen), df(:, :, 1:nen), kf)
          call rod_gp_kinematics(nen, n(1:nen), dn(1:nen), ux(:, 1:nen), ud(:, :, 1:nen), ku)
          s = cg*rod_strain_rates(kf, ku)
-         if (present(off)) s = s - off(:, ig)*rule%mask(:, ig)
          call rod_gp_qforce(nen, n(1:nen), dn(1:nen), kf, s, wj, fq(:, :, 1:nen))
          if (.not. want_k) cycle
          ! B(q_f)^T s changing with q_f (weight wq): the stress stiffness of s
@@ -136,7 +132,7 @@ contains
    !> lambda_n+1)), ALPHA at its force point (N_d = C_a t_f . u', direction t_f).
    !> docs/theory.md eqs. (120)-(121).
    pure subroutine cable_section_damping(p, le, ca, x0, x1, g, cv, wq, scheme, fe, ke, &
-                                         want_k, rule, off)
+                                         want_k, rule)
       integer, intent(in) :: p                !< element order
       real(wp), intent(in) :: le              !< unstretched element length [m]
       real(wp), intent(in) :: ca              !< C_a [N s]
@@ -150,9 +146,6 @@ contains
       real(wp), intent(out) :: ke(:, :)       !< (3(p+1), 3(p+1)) tangent, if want_k
       logical, intent(in) :: want_k           !< form the tangent
       type(rod_rule_t), intent(in) :: rule    !< rod_rule(p): its first p points are used
-      !> midpoint family: a tension at each point that does not depend on the unknowns,
-      !> subtracted from C_a times the stretch rate (eq. (126)) [N]
-      real(wp), intent(in), optional :: off(:)
       real(wp) :: dn(max_nen), wj, xp0(3), xp1(3), up(3), l0, l1, ls, dl, nd, th(3)
       real(wp) :: dfg(3, 3), t1(3), proj(3, 3)
       integer :: ig, nen, a, i
@@ -195,7 +188,6 @@ contains
             th = (xp0 + xp1)/ls                       ! discrete gradient of lambda
             dl = dot_product(th, xp1 - xp0)           ! lambda_n+1 - lambda_n
             nd = ca*cv*dl
-            if (present(off)) nd = nd - off(ig)
             fe(:, 1:nen) = fe(:, 1:nen) + spread(wj*nd*th, 2, nen)*spread(dn(1:nen), 1, 3)
             if (.not. want_k) cycle
             ! d(N_d th)/dx'_n+1 = C_a cv th t1^T + N_d (I - th t1^T)/ls

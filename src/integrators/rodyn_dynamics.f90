@@ -44,7 +44,7 @@ module rodyn_dynamics
                              external_force, assemble_water, assemble_dynamic_cables, &
                              roll_gauges, add_roll_gauges
    use rodyn_assembly_damping, only: section_damping_rates, assemble_section_damping
-   use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_assemble, &
+   use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_offsets, &
                                           numdiss_accept
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
@@ -283,6 +283,8 @@ contains
             prob%rest(:, i, node) = inertia_rest(prob, prob%s0%dd(:, i, node), node, i)
          end do
       end do
+      ! the dissipative EMC: the history stress of the step
+      if (prob%nd%on) call numdiss_offsets(prob%nd, prob%mesh, dt)
       ! structural damping: the rates of the scheme at its force point
       if (prob%mesh%damped) then
          if (prob%scheme == scheme_alpha) then
@@ -447,25 +449,25 @@ contains
       if (this%fields0 .and. this%base_set .and. this%scheme == scheme_emc) then
          call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                                this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
-                               this%gp0, this%epsn, this%x_base, this%d_base)
+                               this%gp0, this%epsn, this%x_base, this%d_base, this%nd%fac, &
+                               this%nd%off)
       else if (this%fields0) then
          call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
                                this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
-                               this%gp0, this%epsn)
+                               this%gp0, this%epsn, nd_fac=this%nd%fac, nd_off=this%nd%off)
       else
          call assemble_dynamic(this%mesh, this%sup, this%s0, this%s1, this%scheme, this%wf, &
-                               this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k)
+                               this%beta_d, this%dt, this%fint, this%fdamp, this%bm, want_k, &
+                               nd_fac=this%nd%fac, nd_off=this%nd%off)
       end if
       if (this%mesh%n_cable > 0) &
          call assemble_dynamic_cables(this%mesh, this%sup, this%s0, this%s1, this%scheme, &
                                       this%wf, this%beta_d, this%dt, this%fint, this%fdamp, &
-                                      this%bm, want_k)
+                                      this%bm, want_k, this%nd%fac, this%nd%off)
       if (this%mesh%damped) &
          call assemble_section_damping(this%mesh, this%sup, this%s0, this%s1, this%srate, &
                                        this%sd_cv, this%wf, this%scheme, this%fint, &
                                        this%fdamp, this%bm, want_k)
-      if (this%nd%on) call numdiss_assemble(this%nd, this%mesh, this%sup, this%s0, this%s1, &
-                                            this%dt, this%fint, this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
       fx = 0.0_wp
       mx = 0.0_wp

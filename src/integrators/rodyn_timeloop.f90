@@ -360,12 +360,19 @@ contains
          call dynamics_end_step(prob)
          call step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
          w_num = 0.0_wp
-         if (prob%nd%on) then
-            call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt)
-            w_num = prob%nd%work_new
-         end if
+         ! (the dissipative EMC takes the rods' strain increments from the energy pass)
+         if (prob%nd%on .and. prob%fields0) prob%nd%eps_prev = prob%epsn
          trial = log
          call converged_energies(prob, trial)
+         if (prob%nd%on) then
+            if (prob%fields0) then
+               call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt, &
+                                 prob%nd%eps_prev, prob%epsn)
+            else
+               call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt)
+            end if
+            w_num = prob%nd%work_new
+         end if
          if (prob%scheme /= scheme_emc) return
          accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, &
                                           w_damp + w_num, e_tol, 0.0_wp)

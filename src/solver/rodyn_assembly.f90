@@ -437,7 +437,7 @@ contains
    !> midpoint; its tangent is taken as beta/dt K_e (the change of K_e is neglected).
    !> The damping forces are also returned in fdamp (for the energy log).
    subroutine assemble_dynamic(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, bm, &
-                               want_k, gp0, epsn, x_base, d_base)
+                               want_k, gp0, epsn, x_base, d_base, nd_fac, nd_off)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup    !< supports (for the node bases)
       type(state_t), intent(in) :: s0         !< state at t_n
@@ -457,6 +457,10 @@ contains
       !> (3, nn), (3, 3, nn): Newton's base, for the stresses of an EMC tangent
       !> (rodyn_rod_dynamic's header); with gp0 and epsn only
       real(wp), intent(in), optional :: x_base(:, :), d_base(:, :, :)
+      !> EMC with RHO INF < 1 (rodyn_numerical_dissipation): c1 + 2 c2, and the history
+      !> stress of each point (6, max_points, ne) [N, N m] (docs/theory.md eq. (126))
+      real(wp), intent(in), optional :: nd_fac, nd_off(:, :, :)
+      real(wp), allocatable :: kde(:), offe(:, :)   ! unallocated: absent in the element
       real(wp) :: xb(3, max_nen), db(3, 3, max_nen)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
@@ -464,6 +468,7 @@ contains
       integer :: e, l, p, nen, a, j, nd
       fint = 0.0_wp
       fdamp = 0.0_wp
+      if (present(nd_fac) .and. present(nd_off)) allocate (kde(6), offe(6, max_points))
       if (want_k) then
          bm%ab = 0.0_wp
          bm%factored = .false.
@@ -476,6 +481,10 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
+            if (allocated(kde)) then
+               kde = nd_fac*mesh%elem_c(:, e)
+               offe = nd_off(:, :, e)
+            end if
             if (want_k .and. present(x_base) .and. present(d_base) .and. present(gp0) &
                 .and. present(epsn)) then
                do a = 1, nen
@@ -487,19 +496,20 @@ contains
                                         x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
                                         fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
                                         mesh%rules(p), gp0(:, e), epsn(:, :, e), &
-                                        xb(:, 1:nen), db(:, :, 1:nen))
+                                        xb(:, 1:nen), db(:, :, 1:nen), kde, offe)
             else if (present(gp0) .and. present(epsn)) then
                call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                         mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
                                         x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
                                         fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
-                                        mesh%rules(p), gp0(:, e), epsn(:, :, e))
+                                        mesh%rules(p), gp0(:, e), epsn(:, :, e), kd=kde, &
+                                        off=offe)
             else
                call rod_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(:, e), &
                                         mesh%eps0(:, :, e), x0(:, 1:nen), d0(:, :, 1:nen), &
                                         x1(:, 1:nen), d1(:, :, 1:nen), scheme, wf, &
                                         fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
-                                        mesh%rules(p))
+                                        mesh%rules(p), kd=kde, off=offe)
             end if
             nd = 6*nen
             if (beta > 0.0_wp) then
@@ -532,7 +542,7 @@ contains
    !> being inlined into assemble_dynamic's loop (with the cable inside it, the compiler
    !> does not inline it).
    subroutine assemble_dynamic_cables(mesh, sup, s0, s1, scheme, wf, beta, dt, fint, fdamp, &
-                                      bm, want_k)
+                                      bm, want_k, nd_fac, nd_off)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(supports_t), intent(in) :: sup     !< supports
       type(state_t), intent(in) :: s0, s1     !< states at t_n and t_n+1
@@ -542,10 +552,13 @@ contains
       real(wp), intent(inout) :: fdamp(:, :)  !< (6, nn) damping forces [N]
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
+      real(wp), intent(in), optional :: nd_fac, nd_off(:, :, :) !< as assemble_dynamic
+      real(wp), allocatable :: kde, offe(:)   ! unallocated: absent in the element
       real(wp) :: x0(3, max_nen), x1(3, max_nen)
       real(wp) :: fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
       real(wp) :: ks(3*max_nen, 3*max_nen), du(3*max_nen), fd(3*max_nen)
       integer :: e, p, nen, a, j, nc
+      if (present(nd_fac) .and. present(nd_off)) allocate (kde, offe(max_points))
       do e = 1, mesh%n_elements
          if (.not. mesh%elem_cable(e)) cycle
          p = mesh%line_order(mesh%elem_line(e))
@@ -556,9 +569,13 @@ contains
                x0(:, a) = s0%x(:, nodes(a))
                x1(:, a) = s1%x(:, nodes(a))
             end do
+            if (allocated(kde)) then
+               kde = nd_fac*mesh%elem_c(3, e)
+               offe = nd_off(3, :, e)
+            end if
             call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), x0(:, 1:nen), &
                                        x1(:, 1:nen), scheme, wf, fc(:, 1:nen), &
-                                       kc(1:nc, 1:nc), want_k, mesh%rules(p))
+                                       kc(1:nc, 1:nc), want_k, mesh%rules(p), kde, offe)
             ! Rayleigh damping f_d = beta/dt K_e(x^{n+1/2}) (x^{n+1} - x^n)
             if (beta > 0.0_wp) then
                call cable_element_static(p, mesh%elem_le(e), mesh%elem_c(3, e), &

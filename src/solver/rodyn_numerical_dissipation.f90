@@ -8,10 +8,10 @@
 !> with K0 the section's stiffness of that strain (GA, EA, EI, GJ), h the step, de the
 !> strain's increment over the step, rho the previous step's mean rate de/h and r the
 !> trapezoidal rate, r^{n+1} = 2 de/h - r^n (eq. (125)), started from the rates of the
-!> initial velocities. It acts through the strain Jacobian at the midpoint configuration
-!> like the sections' structural damping (rodyn_section_damping with a history stress),
-!> so the step conserves linear and angular momentum as EMC does. Its work over a step
-!> at a constant h,
+!> initial velocities. The element kernels (rod_element_dynamic, cable_element_dynamic)
+!> add it to the EMC stress, acting through the strain Jacobian at the midpoint
+!> configuration, so the step conserves linear and angular momentum as EMC does;
+!> numdiss_offsets gives them the history part. Its work over a step at a constant h,
 !>   sigma_d de = N^{n+1} - N^n + (c1 K0/2) (de - h rho)^2,                  (eq. (128))
 !>   N = (K0 h^2/2) (c1 rho^2 + c2 r^2),
 !> makes E + N non-increasing in free flight (E the kinetic and stored energy): the
@@ -24,18 +24,14 @@ module rodyn_numerical_dissipation
    use rodyn_kinds, only: wp
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t, state_gather
-   use rodyn_banded, only: banded_t
    use rodyn_shape, only: max_nen
-   use rodyn_model, only: scheme_emc
    use rodyn_rotation, only: norm3
-   use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, max_points
-   use rodyn_section_damping, only: rod_section_damping, cable_section_damping, &
-                                    rod_strain_rates
-   use rodyn_assembly, only: supports_t, scatter_element, scatter_cable
+   use rodyn_rod_element, only: rod_gp_t, rod_rule_t, rod_gp_kinematics, max_points
+   use rodyn_section_damping, only: rod_strain_rates
    implicit none
    private
    public :: numdiss_t, edmc_coefficients, edmc_rho_inf
-   public :: numdiss_setup, numdiss_assemble, numdiss_step, numdiss_accept
+   public :: numdiss_setup, numdiss_offsets, numdiss_step, numdiss_accept
 
    !> c1 of the lowest spectral radius at infinite frequency of the family c2 = 2 c1^2,
    !> 0.519 (edmc_rho_min rounds it up; eq. (129))
@@ -48,6 +44,13 @@ module rodyn_numerical_dissipation
       real(wp), allocatable :: rho(:, :, :)   !< (6, max_points, ne) last step's de/h
       real(wp), allocatable :: r(:, :, :)     !< (6, max_points, ne) trapezoidal rates
       real(wp), allocatable :: step_rate(:, :, :) !< (6, max_points, ne) this step's de/h
+      !> c1 + 2 c2 and the step's history stress (6, max_points, ne) [N, N m]
+      !> (numdiss_offsets), allocated only when on: passed to the assembly, where
+      !> unallocated means absent
+      real(wp), allocatable :: fac
+      real(wp), allocatable :: off(:, :, :)
+      !> (6, max_points, ne) scratch: the rods' strains at t_n, kept over the energy pass
+      real(wp), allocatable :: eps_prev(:, :, :)
       real(wp) :: energy = 0.0_wp             !< N at t_n [J]
       real(wp) :: energy_new = 0.0_wp         !< N at t_n+1 of the step solved [J]
       real(wp) :: work_new = 0.0_wp           !< work of sigma_d over the step solved [J]
@@ -118,72 +121,53 @@ contains
       if (.not. nd%on) return
       call edmc_coefficients(rho_inf, nd%c1, nd%c2)
       allocate (nd%rho(6, max_points, mesh%n_elements), nd%r(6, max_points, mesh%n_elements), &
-                nd%step_rate(6, max_points, mesh%n_elements))
+                nd%step_rate(6, max_points, mesh%n_elements), &
+                nd%off(6, max_points, mesh%n_elements), &
+                nd%eps_prev(6, max_points, mesh%n_elements))
+      nd%fac = nd%c1 + 2.0_wp*nd%c2
       call point_rates(mesh, s0, s0, 1.0_wp, .true., nd%r)
       nd%rho = nd%r
       nd%energy = history_energy(nd, mesh, dt, nd%rho, nd%r)
    end subroutine numdiss_setup
 
-   !> Add the numerical stress's force (eq. (127)) to fint and its tangent to bm.
-   subroutine numdiss_assemble(nd, mesh, sup, s0, s1, dt, fint, bm, want_k)
-      type(numdiss_t), intent(in) :: nd       !< scheme data
-      type(mesh_t), intent(in) :: mesh        !< mesh
-      type(supports_t), intent(in) :: sup     !< supports (dof map, node bases)
-      type(state_t), intent(in) :: s0         !< state at t_n
-      type(state_t), intent(in) :: s1         !< state at t_n+1 (current iterate)
-      real(wp), intent(in) :: dt              !< step [s]
-      real(wp), intent(inout) :: fint(:, :)   !< (6, nn) internal forces [N, N m]
-      type(banded_t), intent(inout) :: bm     !< tangent
-      logical, intent(in) :: want_k           !< form the tangent
-      real(wp) :: x0(3, max_nen), x1(3, max_nen), d0(3, 3, max_nen), d1(3, 3, max_nen)
-      real(wp) :: g(3, 4, max_nen), fe(6, max_nen), ke(6*max_nen, 6*max_nen)
-      real(wp) :: fc(3, max_nen), kc(3*max_nen, 3*max_nen), off(6, max_points), k0(6)
-      integer :: e, p, nen, a
-      g = 0.0_wp
+   !> The history stress of every point for the step t_n -> t_n + dt,
+   !> off = K0 dt (c1 rho^n + 2 c2 r^n) (eq. (126)): the element kernels
+   !> (rod_element_dynamic, cable_element_dynamic) add kd (eps^{n+1} - eps^n) - off with
+   !> kd = K0 fac, fac = c1 + 2 c2, to the EMC stress, and its modulus to the tangent.
+   subroutine numdiss_offsets(nd, mesh, dt)
+      type(numdiss_t), intent(inout) :: nd   !< scheme data (off set)
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      real(wp), intent(in) :: dt             !< step [s]
+      integer :: e, g
       do e = 1, mesh%n_elements
-         p = mesh%line_order(mesh%elem_line(e))
-         nen = p + 1
-         k0 = mesh%elem_c(:, e)
-         off = dt*spread(k0, 2, max_points)*(nd%c1*nd%rho(:, :, e) + 2.0_wp*nd%c2*nd%r(:, :, e))
-         associate (nodes => mesh%elem_nodes(1:nen, e))
-            if (mesh%elem_cable(e)) then
-               do a = 1, nen
-                  x0(:, a) = s0%x(:, nodes(a))
-                  x1(:, a) = s1%x(:, nodes(a))
-               end do
-               call cable_section_damping(p, mesh%elem_le(e), k0(3)*(nd%c1 + 2.0_wp*nd%c2)*dt, &
-                                          x0(:, 1:nen), x1(:, 1:nen), g(:, 1, 1:nen), &
-                                          1.0_wp/dt, 0.5_wp, scheme_emc, fc(:, 1:nen), &
-                                          kc(1:3*nen, 1:3*nen), want_k, mesh%rules(p), &
-                                          off(3, :))
-               call scatter_cable(sup, nodes, fc(:, 1:nen), kc(1:3*nen, 1:3*nen), fint, bm, &
-                                  want_k)
-            else
-               call state_gather(s0, nodes, x0, d0)
-               call state_gather(s1, nodes, x1, d1)
-               call rod_section_damping(p, mesh%elem_le(e), k0*(nd%c1 + 2.0_wp*nd%c2)*dt, &
-                                        x0(:, 1:nen), d0(:, :, 1:nen), x1(:, 1:nen), &
-                                        d1(:, :, 1:nen), g(:, :, 1:nen), 1.0_wp/dt, 0.5_wp, &
-                                        fe(:, 1:nen), ke(1:6*nen, 1:6*nen), want_k, &
-                                        mesh%rules(p), off)
-               call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:6*nen, 1:6*nen), fint, &
-                                    bm, want_k)
-            end if
-         end associate
+         do g = 1, max_points
+            nd%off(:, g, e) = dt*mesh%elem_c(:, e)*(nd%c1*nd%rho(:, g, e) &
+                                                    + 2.0_wp*nd%c2*nd%r(:, g, e))
+         end do
       end do
-   end subroutine numdiss_assemble
+   end subroutine numdiss_offsets
 
    !> For a converged step: its mean strain rates, the work of sigma_d over it and N^{n+1}
    !> (eqs. (126), (128)); the histories are advanced by numdiss_accept.
-   subroutine numdiss_step(nd, mesh, s0, s1, dt)
+   subroutine numdiss_step(nd, mesh, s0, s1, dt, eps0, eps1)
       type(numdiss_t), intent(inout) :: nd   !< scheme data
       type(mesh_t), intent(in) :: mesh       !< mesh
       type(state_t), intent(in) :: s0        !< state at t_n
       type(state_t), intent(in) :: s1        !< converged state at t_n+1
       real(wp), intent(in) :: dt             !< step [s]
+      !> (6, max_points, ne) the rods' strains at t_n and t_n+1 at their points, when
+      !> formed already (the energy pass): their difference is the rods' increment
+      real(wp), intent(in), optional :: eps0(:, :, :), eps1(:, :, :)
       real(wp) :: w, k0(6), sd(6), m(6), wj
       integer :: e, p, ig, np
-      call point_rates(mesh, s0, s1, dt, .false., nd%step_rate)
+      call point_rates(mesh, s0, s1, dt, .false., nd%step_rate, &
+                       present(eps0) .and. present(eps1))
+      if (present(eps0) .and. present(eps1)) then
+         do e = 1, mesh%n_elements
+            if (.not. mesh%elem_cable(e)) nd%step_rate(:, :, e) = (eps1(:, :, e) - &
+                                                                   eps0(:, :, e))/dt
+         end do
+      end if
       w = 0.0_wp
       do e = 1, mesh%n_elements
          p = mesh%line_order(mesh%elem_line(e))
@@ -260,23 +244,32 @@ contains
    !> (B(q) v); else the mean rates (eps(sb) - eps(sa))/dt of a step, B(q^{n+1/2})
    !> (q^{n+1} - q^n)/dt for the rod (exact: its strains are quadratic) and (lambda^{n+1}
    !> - lambda^n)/dt for the cable.
-   subroutine point_rates(mesh, sa, sb, dt, start, rate)
+   subroutine point_rates(mesh, sa, sb, dt, start, rate, cables_only)
       type(mesh_t), intent(in) :: mesh          !< mesh
       type(state_t), intent(in) :: sa           !< state at t_n (or the start)
       type(state_t), intent(in) :: sb           !< state at t_n+1 (unused with start)
       real(wp), intent(in) :: dt                !< step [s] (unused with start)
       logical, intent(in) :: start              !< rates of the velocities of sa
-      real(wp), intent(out) :: rate(:, :, :)    !< (6, max_points, ne)
+      real(wp), intent(inout) :: rate(:, :, :)  !< (6, max_points, ne)
+      logical, intent(in), optional :: cables_only !< leave the rods' rates as they are
       real(wp) :: x0(3, max_nen), x1(3, max_nen), d0(3, 3, max_nen), d1(3, 3, max_nen)
       real(wp) :: xf(3, max_nen), df(3, 3, max_nen), ux(3, max_nen), ud(3, 3, max_nen)
-      real(wp) :: dn(max_nen), xp0(3), xp1(3), up(3)
+      real(wp) :: dn(max_nen), xp0(3), xp1(3)
       type(rod_gp_t) :: kf, ku
       integer :: e, p, nen, a, ig
-      rate = 0.0_wp
       do e = 1, mesh%n_elements
          p = mesh%line_order(mesh%elem_line(e))
          nen = p + 1
          associate (nodes => mesh%elem_nodes(1:nen, e), rule => mesh%rules(p))
+            if (mesh%elem_cable(e)) then
+               rate(:, :, e) = 0.0_wp
+               call cable_rates(nen, nodes, rule, mesh%elem_le(e))
+               cycle
+            end if
+            if (present(cables_only)) then
+               if (cables_only) cycle
+            end if
+            rate(:, :, e) = 0.0_wp
             call state_gather(sa, nodes, x0, d0)
             if (start) then
                xf(:, 1:nen) = x0(:, 1:nen)
@@ -290,29 +283,42 @@ contains
                ux(:, 1:nen) = (x1(:, 1:nen) - x0(:, 1:nen))/dt
                ud(:, :, 1:nen) = (d1(:, :, 1:nen) - d0(:, :, 1:nen))/dt
             end if
-            if (mesh%elem_cable(e)) then
-               do ig = 1, p
-                  dn(1:nen) = rule%dn(1:nen, ig)*2.0_wp/mesh%elem_le(e)
-                  xp0 = matmul(x0(:, 1:nen), dn(1:nen))
-                  if (start) then
-                     up = matmul(ux(:, 1:nen), dn(1:nen))
-                     if (norm3(xp0) > 0.0_wp) rate(3, ig, e) = dot_product(xp0, up)/norm3(xp0)
-                  else
-                     xp1 = matmul(x1(:, 1:nen), dn(1:nen))
-                     rate(3, ig, e) = (norm3(xp1) - norm3(xp0))/dt
-                  end if
-               end do
-            else
-               do ig = 1, rule%np
-                  dn(1:nen) = rule%dn(1:nen, ig)*2.0_wp/mesh%elem_le(e)
-                  call rod_gp_kinematics(nen, rule%n(1:nen, ig), dn(1:nen), xf(:, 1:nen), &
-                                         df(:, :, 1:nen), kf)
-                  call rod_gp_kinematics(nen, rule%n(1:nen, ig), dn(1:nen), ux(:, 1:nen), &
-                                         ud(:, :, 1:nen), ku)
-                  rate(:, ig, e) = rod_strain_rates(kf, ku)
-               end do
-            end if
+            do ig = 1, rule%np
+               dn(1:nen) = rule%dn(1:nen, ig)*2.0_wp/mesh%elem_le(e)
+               call rod_gp_kinematics(nen, rule%n(1:nen, ig), dn(1:nen), xf(:, 1:nen), &
+                                      df(:, :, 1:nen), kf)
+               call rod_gp_kinematics(nen, rule%n(1:nen, ig), dn(1:nen), ux(:, 1:nen), &
+                                      ud(:, :, 1:nen), ku)
+               rate(:, ig, e) = rod_strain_rates(kf, ku)
+            end do
          end associate
       end do
+   contains
+      !> The stretch rates of cable element e (slot 3) at its first p points.
+      subroutine cable_rates(nen, nodes, rule, le)
+         integer, intent(in) :: nen            !< nodes of the element
+         integer, intent(in) :: nodes(nen)     !< its global nodes
+         type(rod_rule_t), intent(in) :: rule  !< its rule
+         real(wp), intent(in) :: le            !< its length [m]
+         integer :: a
+         do ig = 1, nen - 1
+            dn(1:nen) = rule%dn(1:nen, ig)*2.0_wp/le
+            xp0 = 0.0_wp
+            xp1 = 0.0_wp
+            do a = 1, nen
+               xp0 = xp0 + dn(a)*sa%x(:, nodes(a))
+               if (start) then
+                  xp1 = xp1 + dn(a)*sa%v(:, nodes(a))
+               else
+                  xp1 = xp1 + dn(a)*sb%x(:, nodes(a))
+               end if
+            end do
+            if (start) then
+               if (norm3(xp0) > 0.0_wp) rate(3, ig, e) = dot_product(xp0, xp1)/norm3(xp0)
+            else
+               rate(3, ig, e) = (norm3(xp1) - norm3(xp0))/dt
+            end if
+         end do
+      end subroutine cable_rates
    end subroutine point_rates
 end module rodyn_numerical_dissipation
