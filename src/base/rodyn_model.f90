@@ -13,7 +13,7 @@ module rodyn_model
    public :: waves_t, stretch_wheeler, stretch_vertical, stretch_extrapolation, stretch_none
    public :: stretch_names, sea_airy, sea_jonswap, sea_pm, sea_table, sea_record, sea_names
    public :: element_rod, element_cable, element_names
-   public :: edmc_rho_min
+   public :: edmc_rho_min, rho_inf_emc_water
    public :: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, scheme_names
    public :: motion_harmonic, motion_table, motion_vessel
    public :: vessel_t, vessel_rao_t, vessel_from_rao, vessel_from_table
@@ -43,6 +43,9 @@ module rodyn_model
    integer, parameter :: scheme_emc = 1          !< energy-momentum conserving (the paper's)
    !> the lowest RHO INF of the dissipative EMC (rodyn_numerical_dissipation, eq. (129))
    real(wp), parameter :: edmc_rho_min = 0.52_wp
+   !> RHO INF of EMC in a deck with *WATER unless given (docs/dynamics.md, "Choosing the
+   !> scheme"); 1 in a dry deck
+   real(wp), parameter :: rho_inf_emc_water = 0.8_wp
    integer, parameter :: scheme_midpoint = 2     !< midpoint rule, stress at the midpoint
    integer, parameter :: scheme_trapezoidal = 3  !< trapezoidal rule, averaged end forces
    integer, parameter :: scheme_alpha = 4        !< dissipative, spectral radius rho_inf
@@ -329,7 +332,9 @@ module rodyn_model
    type :: dynamic_options_t
       logical :: requested = .false.      !< a *DYNAMIC card was given
       integer :: scheme = scheme_emc      !< scheme_* constant
-      real(wp) :: rho_inf = 1.0_wp        !< spectral radius at infinite frequency (ALPHA) [-]
+      !> spectral radius at infinite frequency (ALPHA; EMC below 1: the dissipative EMC) [-]
+      real(wp) :: rho_inf = 1.0_wp
+      logical :: rho_inf_given = .false.  !< RHO INF was on the card (else the default)
       real(wp) :: dt = 0.0_wp             !< time step [s]
       real(wp) :: duration = 0.0_wp       !< simulated time [s]
       real(wp) :: output_interval = 0.0_wp !< time between outputs [s]; 0: every step

@@ -35,7 +35,7 @@ module rodyn_deck
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics, &
-                                 dynamic_warnings
+                                 dynamic_warnings, dynamic_scheme_default
    use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
    use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
@@ -732,6 +732,7 @@ contains
       if (has_error(err)) return
       call validate_water(deck, pend, model, err)
       if (has_error(err)) return
+      call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)
       if (has_error(err)) return
       call validate_vessels(deck, pend, model, err)
