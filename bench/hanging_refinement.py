@@ -17,9 +17,11 @@ each smaller than the one before, and no step halvings. Exit status 1 if that fa
 (The largest difference is written too; it is set by the sharpest snap of the slack
 end, the force's content above the 8th harmonic, which a finer mesh resolves sharper.)
 
-    python3 bench/hanging_refinement.py                       # EMC, the default scheme
+    python3 bench/hanging_refinement.py          # the default in water: EMC, RHO INF 0.8
+    python3 bench/hanging_refinement.py --scheme "EMC, RHO INF=1" --rungs 4 --tag emc
     python3 bench/hanging_refinement.py --scheme "ALPHA, RHO INF=0" --tag alpha0
-    python3 bench/hanging_refinement.py --section "AXIAL DAMPING RATIO=1" --tag zeta1
+    python3 bench/hanging_refinement.py --scheme "EMC, RHO INF=1" \
+        --section "AXIAL DAMPING RATIO=1" --tag zeta1
     python3 bench/hanging_refinement.py --rungs 3              # 20, 40, 80 only
 
 Writes bench/results/hanging_refinement[_TAG].csv with the machine facts.
@@ -99,7 +101,7 @@ def run(rodyn, work, ne, dt, scheme, extra, section=""):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rodyn", default=os.path.join(ROOT, "build", "rodyn"))
-    ap.add_argument("--scheme", default="EMC",
+    ap.add_argument("--scheme", default="EMC",  # in water: RHO INF 0.8 unless given
                     help="the *DYNAMIC card's SCHEME= value and what follows it, e.g. "
                          "'ALPHA, RHO INF=0'")
     ap.add_argument("--set", action="append", default=[], dest="extra",
