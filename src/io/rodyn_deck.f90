@@ -35,12 +35,12 @@ module rodyn_deck
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics, &
-                                 dynamic_warnings, dynamic_scheme_default
+                                 dynamic_warnings
    use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
    use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
-                               resolve_segments, validate_water
+                               resolve_segments, validate_water, dynamic_scheme_default
    use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings, &
                                read_wave_probe_card
    implicit none

@@ -9,7 +9,7 @@ module rodyn_deck_dynamic
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, amplitude_t, motion_t, initial_velocity_t, scheme_alpha, &
-                          scheme_emc, edmc_rho_min, rho_inf_emc_water, scheme_names, &
+                          scheme_emc, edmc_rho_min, scheme_names, &
                           motion_harmonic, motion_table, motion_vessel, bc_free, end_a
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_file_error, card_get_real, &
@@ -26,7 +26,7 @@ module rodyn_deck_dynamic
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
    public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings, record_table
-   public :: check_time_table, dynamic_scheme_default
+   public :: check_time_table
 
    integer, parameter :: max_steps = 100000000    !< most time steps TIME/DT of a run
    ! Time resolution of the prescribed motions and loads (docs/dynamics.md, "Time step
@@ -46,18 +46,6 @@ module rodyn_deck_dynamic
 contains
 
    ! ================================================================ card readers
-
-   !> The RHO INF of EMC when the card gives none: rho_inf_emc_water (the dissipative
-   !> EMC) in a deck with *WATER, where lines with a free or slack end excite axial modes
-   !> that a step does not resolve; 1 (EMC conserving) in a dry deck (docs/dynamics.md,
-   !> "Choosing the scheme").
-   subroutine dynamic_scheme_default(model)
-      type(model_t), intent(inout) :: model !< model (*DYNAMIC and *WATER read)
-      associate (dy => model%dynamic)
-         if (dy%scheme == scheme_emc .and. .not. dy%rho_inf_given .and. &
-             model%water%present) dy%rho_inf = rho_inf_emc_water
-      end associate
-   end subroutine dynamic_scheme_default
 
    !> *DYNAMIC, DT=, TIME= [, SCHEME=, RHO INF=, OUTPUT INTERVAL=, START=, MAX ITERATIONS=,
    !> CUTBACKS=, FORCE TOL=, DISP TOL=, TANGENT=, CHECKPOINT=]: time step, duration, scheme

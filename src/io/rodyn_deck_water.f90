@@ -9,7 +9,8 @@
 module rodyn_deck_water
    use rodyn_kinds, only: wp, i8, pi
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a, bc_position
+   use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a, bc_position, &
+                          scheme_emc, rho_inf_emc_water
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_get_real, card_get_int, &
                                card_get_name, card_check_data, card_data_table, &
@@ -29,6 +30,7 @@ module rodyn_deck_water
       'diameter: CDN 2.4, CDA 1.15)'
    public :: read_water_card, read_current_card, read_seabed_card, read_segment_card
    public :: read_attachment_card, read_section_hydro, resolve_segments, validate_water
+   public :: dynamic_scheme_default
 
    real(wp), parameter :: deg = pi/180.0_wp          !< one degree [rad]
    real(wp), parameter :: max_slope_deg = 90.0_wp    !< SLOPE must stay below [deg]
@@ -611,4 +613,15 @@ contains
       end associate
    end function seabed_z
 
+   !> The RHO INF of EMC when the card gives none: rho_inf_emc_water (the dissipative
+   !> EMC) in a deck with *WATER, where lines with a free or slack end excite axial modes
+   !> that a step does not resolve; 1 (EMC conserving) in a dry deck (docs/dynamics.md,
+   !> "Choosing the scheme").
+   subroutine dynamic_scheme_default(model)
+      type(model_t), intent(inout) :: model !< model (*DYNAMIC and *WATER read)
+      associate (dy => model%dynamic)
+         if (dy%scheme == scheme_emc .and. .not. dy%rho_inf_given .and. &
+             model%water%present) dy%rho_inf = rho_inf_emc_water
+      end associate
+   end subroutine dynamic_scheme_default
 end module rodyn_deck_water
