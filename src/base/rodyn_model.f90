@@ -4,6 +4,8 @@
 !> docs/architecture.md). The symbols of its components are those of docs/theory.md.
 module rodyn_model
    use rodyn_kinds, only: wp, g_standard
+   use rodyn_schemes, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha, &
+                            scheme_names, edmc_rho_min, rho_inf_emc_water
    implicit none
    private
    public :: section_t, line_def_t, constraint_t, point_load_t, static_options_t
@@ -39,18 +41,6 @@ module rodyn_model
    integer, parameter :: element_cable = 2       !< axial stiffness only, no compression
    character(len=8), parameter :: element_names(2) = [character(len=8) :: 'ROD', 'CABLE']
 
-   ! Time integration schemes (*DYNAMIC, SCHEME=...)
-   integer, parameter :: scheme_emc = 1          !< energy-momentum conserving (the paper's)
-   !> the lowest RHO INF of the dissipative EMC (rodyn_numerical_dissipation, eq. (129))
-   real(wp), parameter :: edmc_rho_min = 0.52_wp
-   !> RHO INF of EMC in a deck with *WATER unless given (docs/dynamics.md, "Choosing the
-   !> scheme"); 1 in a dry deck
-   real(wp), parameter :: rho_inf_emc_water = 0.8_wp
-   integer, parameter :: scheme_midpoint = 2     !< midpoint rule, stress at the midpoint
-   integer, parameter :: scheme_trapezoidal = 3  !< trapezoidal rule, averaged end forces
-   integer, parameter :: scheme_alpha = 4        !< dissipative, spectral radius rho_inf
-   character(len=12), parameter :: scheme_names(4) = &
-      [character(len=12) :: 'EMC', 'MIDPOINT', 'TRAPEZOIDAL', 'ALPHA']
 
    ! Kinds of prescribed motion (*MOTION, TYPE=...)
    integer, parameter :: motion_harmonic = 1     !< sum of sines per direction

@@ -24,7 +24,7 @@
 !> with their tangents with respect to x_n+1.
 module rodyn_cable_element
    use rodyn_kinds, only: wp
-   use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
+   use rodyn_schemes, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_rule_t
    use rodyn_rotation, only: norm3

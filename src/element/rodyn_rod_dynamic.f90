@@ -31,7 +31,7 @@
 !> (docs/theory.md eq. (44)).
 module rodyn_rod_dynamic
    use rodyn_kinds, only: wp
-   use rodyn_model, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
+   use rodyn_schemes, only: scheme_emc, scheme_midpoint, scheme_trapezoidal, scheme_alpha
    use rodyn_shape, only: max_nen
    use rodyn_rotation, only: skew, cross, rotation_cayley_inverse, relative_rotation
    use rodyn_rod_element, only: rod_gp_t, rod_gp_kinematics, rod_strains, rod_gp_qforce, &

@@ -21,7 +21,7 @@
 !> unit length (eq. (120)). The damping acts slack or taut, as MoorDyn's.
 module rodyn_section_damping
    use rodyn_kinds, only: wp
-   use rodyn_model, only: scheme_alpha
+   use rodyn_schemes, only: scheme_alpha
    use rodyn_shape, only: max_nen
    use rodyn_rod_element, only: rod_gp_t, rod_rule_t, rod_gp_kinematics, rod_gp_qforce, &
                                 rod_gp_jacobian_row, rod_gp_geometric, rod_project_qforce, &

@@ -9,6 +9,7 @@
 module rodyn_deck_water
    use rodyn_kinds, only: wp, i8, pi
    use rodyn_error, only: error_t, has_error
+   use rodyn_seabed, only: seabed_z
    use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a, bc_position, &
                           scheme_emc, rho_inf_emc_water
    use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
@@ -601,17 +602,6 @@ contains
          return
       end do
    end subroutine check_ends_above_seabed
-
-   !> Height of the seabed plane at (x, y): surface - depth + tan(slope) (x cos(dir) +
-   !> y sin(dir)) (docs/deck.md, *SEABED).
-   pure real(wp) function seabed_z(model, x, y) result(z)
-      type(model_t), intent(in) :: model  !< model with water and seabed
-      real(wp), intent(in) :: x           !< horizontal position x [m]
-      real(wp), intent(in) :: y           !< horizontal position y [m]
-      associate (w => model%water, sb => model%seabed)
-         z = w%surface - w%depth + tan(sb%slope)*(x*cos(sb%slope_dir) + y*sin(sb%slope_dir))
-      end associate
-   end function seabed_z
 
    !> The RHO INF of EMC when the card gives none: rho_inf_emc_water (the dissipative
    !> EMC) in a deck with *WATER, where lines with a free or slack end excite axial modes

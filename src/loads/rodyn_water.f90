@@ -26,7 +26,8 @@ module rodyn_water
    use rodyn_model, only: model_t
    use rodyn_mesh, only: mesh_t
    use rodyn_shape, only: shape_lagrange, gauss_rule, max_order, max_nen
-   use rodyn_environment, only: seabed_normal, seabed_z, fluid_kinematics, current_factor
+   use rodyn_environment, only: fluid_kinematics, current_factor
+   use rodyn_seabed, only: seabed_normal, seabed_z
    use rodyn_hydro, only: water_section_t, water_env_t, water_point_load, submerged_fraction, &
                           part_water, part_seabed, n_wk
    use rodyn_waves, only: wave_field_t, waves_build, wave_kinematics

@@ -14,7 +14,7 @@ module rodyn_mesh
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
-   use rodyn_environment, only: seabed_z
+   use rodyn_seabed, only: seabed_z
    use rodyn_rod_element, only: rod_element_strains, max_points, rod_rule_t, rod_rule, &
                                 rod_hidden_shear
    use rodyn_shape, only: max_nen, max_order
