@@ -1,7 +1,8 @@
 !> The dynamic analysis as the program runs it: set-up from the start state, the time
 !> loop, and the outputs written while it runs (frames, step log, progress line).
-!> The callbacks of the time loop reach the writer through this module's run context,
-!> which lives for one call of run_dynamic (module variables; docs/architecture.md).
+!> The run's context (its writer, the start state, the pending support forces, the
+!> progress clock) is a timeloop observer, dynamic_run_t, that lives for one call of
+!> run_dynamic; the time loop hands it back at each frame, step and checkpoint.
 module rodyn_run_dynamic
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: iso_c_binding, only: c_int
@@ -12,7 +13,7 @@ module rodyn_run_dynamic
    use rodyn_state, only: state_t, state_copy
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
-   use rodyn_timeloop, only: timeloop_run, timeloop_state_t
+   use rodyn_timeloop, only: timeloop_run, timeloop_state_t, timeloop_observer_t
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
                                checkpoint_program_id
    use rodyn_outfile, only: remove_file, path_join
@@ -42,29 +43,38 @@ module rodyn_run_dynamic
       end function c_raise
    end interface
 
-   ! run context of one call of run_dynamic (read by the callbacks)
-   type(dynamic_writer_t) :: writer
-   type(line_result_t), allocatable :: frame_lines(:)
-   type(model_t), pointer :: ctx_model => null()
-   type(run_summary_t), pointer :: ctx_summary => null()
-   character(len=:), allocatable :: ctx_dir       !< output folder (checkpoints)
-   character(len=:), allocatable :: program_id    !< checkpoint_program_id(), once a run
-   type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
-   integer :: kill_after = -1                     !< test hook: SIGKILL after this step
-   real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
-   ! Support forces at the end of every step (see write_pending): the step forces R
-   ! (the support force averaged over a step, the step's residual at the held dofs) of
-   ! the last step converged (r_pend, length h_pend, ending at t_pend, step number
-   ! k_pend) and of the step before it (r_back, h_back). The last step waits, pending,
-   ! for the step after it; so does a frame at its end (frame_waiting).
-   real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_frame(:, :)
-   real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, t_pend = 0.0_wp
-   integer :: k_pend = 0
-   logical :: pending = .false., have_back = .false., frame_waiting = .false.
-   logical :: show_progress = .false.
-   type(sea_scene_t) :: scene      !< probes, vessels and connections written (if any)
-   type(sea_values_t) :: sea_now   !< their values at the last time written
-   integer(kind=8) :: clock0, clock_last, clock_rate
+   !> The context of one call of run_dynamic, as the time loop's observer.
+   type, extends(timeloop_observer_t) :: dynamic_run_t
+      type(dynamic_writer_t) :: writer
+      type(line_result_t), allocatable :: frame_lines(:)
+      type(model_t), pointer :: model => null()
+      type(run_summary_t), pointer :: summary => null()
+      character(len=:), allocatable :: dir           !< output folder (checkpoints)
+      character(len=:), allocatable :: program_id    !< checkpoint_program_id(), once a run
+      type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
+      integer :: kill_after = -1                     !< test hook: SIGKILL after this step
+      real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
+      ! Support forces at the end of every step (see write_pending): the step forces R
+      ! (the support force averaged over a step, the step's residual at the held dofs)
+      ! of the last step converged (r_pend, length h_pend, ending at t_pend, step
+      ! number k_pend) and of the step before it (r_back, h_back). The last step waits,
+      ! pending, for the step after it; so does a frame at its end (frame_waiting).
+      real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_frame(:, :)
+      real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, t_pend = 0.0_wp
+      integer :: k_pend = 0
+      logical :: pending = .false., have_back = .false., frame_waiting = .false.
+      logical :: show_progress = .false.
+      type(sea_scene_t) :: scene      !< probes, vessels and connections written (if any)
+      type(sea_values_t) :: sea_now   !< their values at the last time written
+      integer(kind=8) :: clock0 = 0, clock_last = 0, clock_rate = 1
+   contains
+      procedure :: on_frame
+      procedure :: on_step
+      procedure :: after_step
+      procedure :: on_checkpoint
+      procedure :: write_pending
+      procedure :: end_forces
+   end type dynamic_run_t
 
 contains
 
@@ -104,70 +114,72 @@ contains
       type(error_t) :: werr
       character(len=32) :: hook
       integer :: stat
-      ctx_model => model
-      ctx_summary => summary
-      ctx_dir = dir
-      program_id = ''
-      if (model%dynamic%checkpoint > 0.0_wp) program_id = checkpoint_program_id()
-      kill_after = -1
+      type(dynamic_run_t), target :: run
+      run%model => model
+      run%summary => summary
+      run%dir = dir
+      run%program_id = ''
+      if (model%dynamic%checkpoint > 0.0_wp) run%program_id = checkpoint_program_id()
+      run%kill_after = -1
       call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
-      if (stat == 0) read (hook, *, iostat=stat) kill_after
-      r_start = r0
-      pending = .false.
-      have_back = .false.
-      frame_waiting = .false.
-      k_pend = 0
-      if (allocated(r_pend)) deallocate (r_pend, r_back, r_frame)
-      allocate (r_pend(6, mesh%n_nodes), r_back(6, mesh%n_nodes), r_frame(6, mesh%n_nodes))
-      show_progress = progress
+      if (stat == 0) read (hook, *, iostat=stat) run%kill_after
+      run%r_start = r0
+      run%pending = .false.
+      run%have_back = .false.
+      run%frame_waiting = .false.
+      run%k_pend = 0
+      if (allocated(run%r_pend)) deallocate (run%r_pend, run%r_back, run%r_frame)
+      allocate (run%r_pend(6, mesh%n_nodes), run%r_back(6, mesh%n_nodes), &
+                run%r_frame(6, mesh%n_nodes))
+      run%show_progress = progress
       if (.not. model%dynamic%start_static .and. .not. present(resume)) &
          call apply_initial_velocities(model, mesh, state)
-      start_state = state
+      run%start_state = state
       call dynamics_setup(prob, model, mesh, state)
-      call sea_scene_build(model, mesh, prob%x_start, scene)
-      sea_now = sea_values_t()
-      call recover_state(model, mesh, state, 1.0_wp, r_start, prob%sup%held, frame_lines, &
-                         prob%water, 0.0_wp)
+      call sea_scene_build(model, mesh, prob%x_start, run%scene)
+      run%sea_now = sea_values_t()
+      call recover_state(model, mesh, state, 1.0_wp, run%r_start, prob%sup%held, &
+                         run%frame_lines, prob%water, 0.0_wp)
       if (present(resume)) then
-         call dynamic_output_open(writer, dir, model, frame_lines, err, resume=resume%mark, &
-                                  sea=scene)
+         call dynamic_output_open(run%writer, dir, model, run%frame_lines, err, &
+                                  resume=resume%mark, sea=run%scene)
          if (.not. has_error(err)) call restore(resume)
       else
          ! a checkpoint of an earlier run in this folder no longer fits its files
          call remove_file(path_join(dir, checkpoint_file))
-         call dynamic_output_open(writer, dir, model, frame_lines, err, sea=scene)
+         call dynamic_output_open(run%writer, dir, model, run%frame_lines, err, sea=run%scene)
       end if
       if (has_error(err)) then
          ! status.txt says so (it must not keep the static run's complete = true)
          summary%dynamic = .true.
          summary%complete = .false.
          summary%status = err%message
-         call dynamic_output_close(writer, summary, werr)
+         call dynamic_output_close(run%writer, summary, werr)
          return
       end if
-      call system_clock(clock0, clock_rate)
-      clock_last = clock0
+      call system_clock(run%clock0, run%clock_rate)
+      run%clock_last = run%clock0
       summary%dynamic = .true.
+      run%after_step_used = .true.
+      run%checkpoints_used = .true.
       if (present(resume)) then
-         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
-                           after_step, on_checkpoint, resume%loop)
+         call timeloop_run(prob, model, summary, err, log_unit, run, resume%loop)
       else
-         call timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
-                           after_step, on_checkpoint)
+         call timeloop_run(prob, model, summary, err, log_unit, run)
       end if
       block
          integer(kind=8) :: clock_end
          call system_clock(clock_end)
          ! wall time of the whole run: the static solve before plus the dynamics
-         summary%wall_time = summary%wall_time + real(clock_end - clock0, wp) &
-                             /real(clock_rate, wp)
+         summary%wall_time = summary%wall_time + real(clock_end - run%clock0, wp) &
+                             /real(run%clock_rate, wp)
       end block
-      if (show_progress) write (error_unit, '(a)') ''
+      if (run%show_progress) write (error_unit, '(a)') ''
       ! the last step (and a frame at its end) still waiting for the step after it (the
       ! run stopped, or the step past the end failed): extrapolated
-      if (pending) then
+      if (run%pending) then
          call clear_error(werr)
-         call write_pending(prob, .false., werr)
+         call run%write_pending(prob, .false., werr)
          if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, &
                                                                         werr%message)
       end if
@@ -178,7 +190,7 @@ contains
          summary%complete = .false.
          if (.not. allocated(summary%status)) summary%status = err%message
       end if
-      call dynamic_output_close(writer, summary, werr)
+      call dynamic_output_close(run%writer, summary, werr)
       if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, werr%message)
    contains
       !> The problem and the pending support forces as the checkpoint holds them (the
@@ -195,39 +207,40 @@ contains
          prob%f_last = ck%f_last
          prob%m_last = ck%m_last
          prob%have_conv = ck%have_conv
-         r_pend = ck%r_pend
-         r_back = ck%r_back
-         h_pend = ck%h_pend
-         h_back = ck%h_back
-         t_pend = ck%t_pend
-         k_pend = ck%k_pend
-         pending = ck%pending
-         have_back = ck%have_back
-         frame_waiting = ck%frame_waiting
+         run%r_pend = ck%r_pend
+         run%r_back = ck%r_back
+         run%h_pend = ck%h_pend
+         run%h_back = ck%h_back
+         run%t_pend = ck%t_pend
+         run%k_pend = ck%k_pend
+         run%pending = ck%pending
+         run%have_back = ck%have_back
+         run%frame_waiting = ck%frame_waiting
          if (prob%nd%on) then
             prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
             prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
             prob%nd%energy = ck%nd_energy
          end if
-         if (frame_waiting) then
+         if (run%frame_waiting) then
             if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
                                                        .true.)
-            call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
-                               prob%sup%held, frame_lines, prob%water, ck%loop%t)
+            call recover_state(run%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                               prob%sup%held, run%frame_lines, prob%water, ck%loop%t)
          end if
       end subroutine restore
    end subroutine run_dynamic
 
    !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
    !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).
-   subroutine on_checkpoint(ls, prob, err)
+   subroutine on_checkpoint(this, ls, prob, err)
+      class(dynamic_run_t), intent(inout) :: this      !< the run
       type(timeloop_state_t), intent(in) :: ls         !< the time loop's state
       type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
       type(error_t), intent(inout) :: err              !< status
       type(checkpoint_t) :: ck
       ck%loop = ls
-      ck%summary = ctx_summary
-      ck%start = start_state
+      ck%summary = this%summary
+      ck%start = this%start_state
       ck%now = prob%s1
       ck%r = prob%r
       ck%dt = prob%dt
@@ -244,44 +257,48 @@ contains
                                        size(prob%nd%r, 3)])
          ck%nd_energy = prob%nd%energy
       end if
-      ck%r_pend = r_pend
-      ck%r_back = r_back
-      ck%h_pend = h_pend
-      ck%h_back = h_back
-      ck%t_pend = t_pend
-      ck%k_pend = k_pend
-      ck%pending = pending
-      ck%have_back = have_back
-      ck%frame_waiting = frame_waiting
-      call dynamic_output_mark(writer, ck%mark, err)
-      call checkpoint_write(ctx_dir, ctx_model, program_id, ck, err)
+      ck%r_pend = this%r_pend
+      ck%r_back = this%r_back
+      ck%h_pend = this%h_pend
+      ck%h_back = this%h_back
+      ck%t_pend = this%t_pend
+      ck%k_pend = this%k_pend
+      ck%pending = this%pending
+      ck%have_back = this%have_back
+      ck%frame_waiting = this%frame_waiting
+      call dynamic_output_mark(this%writer, ck%mark, err)
+      call checkpoint_write(this%dir, this%model, this%program_id, ck, err)
    end subroutine on_checkpoint
 
    !> A frame: positions and section forces of the state at t; its support forces wait
    !> with the step that ends at t for the next step (write_pending), but at t = 0 (the
    !> start state's, also the first row of the support forces of every step). The last
    !> frame's next step is the time loop's step past the end.
-   subroutine on_frame(t, prob, err)
+   subroutine on_frame(this, t, prob, err)
+      class(dynamic_run_t), intent(inout) :: this      !< the run
       real(wp), intent(in) :: t                        !< time [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< converged state
       type(error_t), intent(inout) :: err              !< status
-      if (pending) call write_pending(prob, .true., err)   ! the step before, if waiting
+      ! the step before, if waiting
+      if (this%pending) call this%write_pending(prob, .true., err)
       if (has_error(err)) return
       if (t > 0.0_wp) then
          ! (no results formed for a writer without files)
-         if (dynamic_output_keeps_frames(writer)) &
-            call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
-                               prob%sup%held, frame_lines, prob%water, t)
-         frame_waiting = .true.
+         if (dynamic_output_keeps_frames(this%writer)) &
+            call recover_state(this%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                               prob%sup%held, this%frame_lines, prob%water, t)
+         this%frame_waiting = .true.
       else
-         call recover_state(ctx_model, prob%mesh, prob%s1, 1.0_wp, r_start, prob%sup%held, &
-                            frame_lines, prob%water, t)
-         if (scene%active) then
-            call sea_values(scene, ctx_model, prob%water%field, t, r_start, sea_now)
-            call dynamic_output_sea(writer, 0, t, sea_now, .true., err)
+         call recover_state(this%model, prob%mesh, prob%s1, 1.0_wp, this%r_start, &
+                            prob%sup%held, this%frame_lines, prob%water, t)
+         if (this%scene%active) then
+            call sea_values(this%scene, this%model, prob%water%field, t, this%r_start, &
+                            this%sea_now)
+            call dynamic_output_sea(this%writer, 0, t, this%sea_now, .true., err)
          end if
-         call dynamic_output_ends_step(writer, 0, t, end_forces(prob, r_start), err)
-         call dynamic_output_frame(writer, t, frame_lines, err)
+         call dynamic_output_ends_step(this%writer, 0, t, this%end_forces(prob, this%r_start), &
+                                       err)
+         call dynamic_output_frame(this%writer, t, this%frame_lines, err)
       end if
    end subroutine on_frame
 
@@ -297,65 +314,72 @@ contains
    !> otherwise (a run that stopped, or whose step past the end failed) extrapolated from
    !> the step before,
    !>   R(t_k) = R_k + (R_k - R_{k-1}) (1 - w) h_k / (w h_k + (1 - w) h_{k-1}).
-   subroutine write_pending(prob, next, err)
+   subroutine write_pending(this, prob, next, err)
+      class(dynamic_run_t), intent(inout) :: this !< the run
       type(dynamic_problem_t), intent(in) :: prob !< problem (after the next step if next)
       logical, intent(in) :: next                 !< prob%r is the force of the next step
       type(error_t), intent(inout) :: err         !< status
-      real(wp) :: w, reaction(6, 2, size(frame_lines))
+      real(wp) :: w, reaction(6, 2, size(this%frame_lines))
       integer :: l, k
       w = prob%wf
       if (next) then
-         r_frame = r_pend + (prob%r - r_pend)*(1.0_wp - w)*h_pend &
-                   /((1.0_wp - w)*h_pend + w*prob%dt)
-      else if (have_back) then
-         r_frame = r_pend + (r_pend - r_back)*(1.0_wp - w)*h_pend &
-                   /(w*h_pend + (1.0_wp - w)*h_back)
+         this%r_frame = this%r_pend + (prob%r - this%r_pend)*(1.0_wp - w)*this%h_pend &
+                        /((1.0_wp - w)*this%h_pend + w*prob%dt)
+      else if (this%have_back) then
+         this%r_frame = this%r_pend + (this%r_pend - this%r_back)*(1.0_wp - w)*this%h_pend &
+                        /(w*this%h_pend + (1.0_wp - w)*this%h_back)
       else
-         r_frame = r_pend
+         this%r_frame = this%r_pend
       end if
-      pending = .false.
-      reaction = end_forces(prob, r_frame)
-      if (scene%active) then
-         call sea_values(scene, ctx_model, prob%water%field, t_pend, r_frame, sea_now)
-         call dynamic_output_sea(writer, k_pend, t_pend, sea_now, frame_waiting, err)
+      this%pending = .false.
+      reaction = this%end_forces(prob, this%r_frame)
+      if (this%scene%active) then
+         call sea_values(this%scene, this%model, prob%water%field, this%t_pend, this%r_frame, &
+                         this%sea_now)
+         call dynamic_output_sea(this%writer, this%k_pend, this%t_pend, this%sea_now, &
+                                 this%frame_waiting, err)
       end if
-      call dynamic_output_ends_step(writer, k_pend, t_pend, reaction, err)
-      if (.not. frame_waiting) return
-      do l = 1, size(frame_lines)
+      call dynamic_output_ends_step(this%writer, this%k_pend, this%t_pend, reaction, err)
+      if (.not. this%frame_waiting) return
+      do l = 1, size(this%frame_lines)
          do k = 1, 2
-            if (frame_lines(l)%end_held(k)) frame_lines(l)%reaction(:, k) = reaction(:, k, l)
+            if (this%frame_lines(l)%end_held(k)) &
+               this%frame_lines(l)%reaction(:, k) = reaction(:, k, l)
          end do
       end do
-      frame_waiting = .false.
-      call dynamic_output_frame(writer, t_pend, frame_lines, err)
+      this%frame_waiting = .false.
+      call dynamic_output_frame(this%writer, this%t_pend, this%frame_lines, err)
    end subroutine write_pending
 
    !> The support forces of the held line ends (zero at free ends) from the forces r
    !> at the nodes: (6, 2, lines), force and moment at end A, end B of each line.
-   function end_forces(prob, r) result(reaction)
+   function end_forces(this, prob, r) result(reaction)
+      class(dynamic_run_t), intent(in) :: this         !< the run
       type(dynamic_problem_t), intent(in) :: prob      !< problem (mesh)
       real(wp), intent(in) :: r(:, :)                  !< (6, nodes) [N, N m]
-      real(wp) :: reaction(6, 2, size(frame_lines))
+      real(wp) :: reaction(6, 2, size(this%frame_lines))
       integer :: l, k, node
       reaction = 0.0_wp
-      do l = 1, size(frame_lines)
+      do l = 1, size(this%frame_lines)
          do k = 1, 2
-            if (.not. frame_lines(l)%end_held(k)) cycle
+            if (.not. this%frame_lines(l)%end_held(k)) cycle
             node = mesh_node(prob%mesh, l, merge(end_a, end_b, k == 1))
             reaction(:, k, l) = r(:, node)
          end do
       end do
    end function end_forces
 
-   subroutine on_step(log, err)
+   subroutine on_step(this, log, err)
+      class(dynamic_run_t), intent(inout) :: this !< the run
       type(step_log_t), intent(in) :: log   !< step
       type(error_t), intent(inout) :: err   !< status
-      call dynamic_output_step(writer, log, err)
+      call dynamic_output_step(this%writer, log, err)
    end subroutine on_step
 
    !> After every converged step: the pending frame's support forces, and the progress
    !> line on stderr, at most twice a second: percent, time, speed, time left.
-   subroutine after_step(t, prob, err)
+   subroutine after_step(this, t, prob, err)
+      class(dynamic_run_t), intent(inout) :: this      !< the run
       real(wp), intent(in) :: t                        !< time reached [s]
       type(dynamic_problem_t), intent(inout) :: prob   !< problem after the step
       type(error_t), intent(inout) :: err              !< status
@@ -364,32 +388,33 @@ contains
       real(wp) :: wall, frac, rate, left
       ! after every step: the step before (and a frame at its end) waiting for this step
       ! is written, and this step waits for the next (not the step past the end)
-      if (pending .and. t > t_pend .and. .not. has_error(err)) &
-         call write_pending(prob, .true., err)
-      if (writer%steps == kill_after .and. t <= ctx_model%dynamic%duration) then
+      if (this%pending .and. t > this%t_pend .and. .not. has_error(err)) &
+         call this%write_pending(prob, .true., err)
+      if (this%writer%steps == this%kill_after .and. t <= this%model%dynamic%duration) then
          stat_kill = c_raise(9_c_int)       ! the test hook: SIGKILL, as a killed job
       end if
-      if (t <= ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) then
-         if (k_pend > 0 .or. pending) then
-            r_back = r_pend
-            h_back = h_pend
-            have_back = .true.
+      if (t <= this%model%dynamic%duration + 1.0e-9_wp*this%model%dynamic%dt) then
+         if (this%k_pend > 0 .or. this%pending) then
+            this%r_back = this%r_pend
+            this%h_back = this%h_pend
+            this%have_back = .true.
          end if
-         r_pend = prob%r
-         h_pend = prob%dt
-         t_pend = t
-         k_pend = writer%steps
-         pending = .true.
+         this%r_pend = prob%r
+         this%h_pend = prob%dt
+         this%t_pend = t
+         this%k_pend = this%writer%steps
+         this%pending = .true.
       end if
-      if (.not. show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
-      if (t > ctx_model%dynamic%duration + 1.0e-9_wp*ctx_model%dynamic%dt) return ! past the end
+      if (.not. this%show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
+      ! past the end
+      if (t > this%model%dynamic%duration + 1.0e-9_wp*this%model%dynamic%dt) return
       call system_clock(now)
-      if (real(now - clock_last, wp) < 0.5_wp*real(clock_rate, wp) .and. &
-          t < ctx_model%dynamic%duration) return
-      clock_last = now
-      wall = real(now - clock0, wp)/real(clock_rate, wp)
-      frac = t/ctx_model%dynamic%duration
-      rate = real(writer%steps, wp)/max(wall, 1.0e-9_wp)
+      if (real(now - this%clock_last, wp) < 0.5_wp*real(this%clock_rate, wp) .and. &
+          t < this%model%dynamic%duration) return
+      this%clock_last = now
+      wall = real(now - this%clock0, wp)/real(this%clock_rate, wp)
+      frac = t/this%model%dynamic%duration
+      rate = real(this%writer%steps, wp)/max(wall, 1.0e-9_wp)
       left = wall*(1.0_wp - frac)/max(frac, 1.0e-9_wp)
       write (error_unit, '(a,f6.1,a,es11.4,a,f9.1,a,f8.1,a)', advance='no') &
          achar(13)//'  ', 100.0_wp*frac, ' %   t = ', t, ' s   ', rate, ' steps/s   ', &

@@ -31,7 +31,7 @@ module rodyn_timeloop
    implicit none
    private
    public :: timeloop_run, frame_callback, step_callback, step_energies
-   public :: timeloop_state_t, checkpoint_callback
+   public :: timeloop_state_t, checkpoint_callback, timeloop_observer_t
 
    !> What the time loop carries from one step to the next besides the problem (a
    !> checkpoint holds it; timeloop_run continues from it).
@@ -44,7 +44,63 @@ module rodyn_timeloop
       type(step_log_t) :: log              !< the last step's energies and works
    end type timeloop_state_t
 
+   !> What a run does at its frames, steps and checkpoints, with the context it needs
+   !> as components of an extension (a run's writers and pending outputs live there, not
+   !> in module variables). after_step and on_checkpoint are called only when
+   !> after_step_used and checkpoints_used are set (with after_step, the time loop also
+   !> takes the step past the end, look_ahead).
+   type, abstract :: timeloop_observer_t
+      logical :: after_step_used = .false.  !< call after_step after every step
+      logical :: checkpoints_used = .false. !< call on_checkpoint at checkpoints
+   contains
+      procedure(observe_frame), deferred :: on_frame
+      procedure(observe_step), deferred :: on_step
+      procedure(observe_frame), deferred :: after_step
+      procedure(observe_checkpoint), deferred :: on_checkpoint
+   end type timeloop_observer_t
+
+   !> A timeloop_observer_t from plain procedures (timeloop_run_procedures).
+   type, extends(timeloop_observer_t) :: procedure_observer_t
+      procedure(frame_callback), nopass, pointer :: frame => null()
+      procedure(step_callback), nopass, pointer :: step => null()
+      procedure(frame_callback), nopass, pointer :: after => null()
+      procedure(checkpoint_callback), nopass, pointer :: checkpoint => null()
+   contains
+      procedure :: on_frame => procedure_frame
+      procedure :: on_step => procedure_step
+      procedure :: after_step => procedure_after
+      procedure :: on_checkpoint => procedure_checkpoint
+   end type procedure_observer_t
+
+   !> timeloop_run with an observer, or with the callbacks as procedures.
+   interface timeloop_run
+      module procedure timeloop_run_observer, timeloop_run_procedures
+   end interface timeloop_run
+
    abstract interface
+      !> At t = 0 and at every output time with the converged state in prob.
+      subroutine observe_frame(this, t, prob, err)
+         import :: timeloop_observer_t, wp, dynamic_problem_t, error_t
+         class(timeloop_observer_t), intent(inout) :: this
+         real(wp), intent(in) :: t
+         type(dynamic_problem_t), intent(inout) :: prob
+         type(error_t), intent(inout) :: err
+      end subroutine observe_frame
+      !> After every converged step.
+      subroutine observe_step(this, log, err)
+         import :: timeloop_observer_t, step_log_t, error_t
+         class(timeloop_observer_t), intent(inout) :: this
+         type(step_log_t), intent(in) :: log
+         type(error_t), intent(inout) :: err
+      end subroutine observe_step
+      !> At a checkpoint, after a converged step, with what the loop carries.
+      subroutine observe_checkpoint(this, ls, prob, err)
+         import :: timeloop_observer_t, timeloop_state_t, dynamic_problem_t, error_t
+         class(timeloop_observer_t), intent(inout) :: this
+         type(timeloop_state_t), intent(in) :: ls
+         type(dynamic_problem_t), intent(inout) :: prob
+         type(error_t), intent(inout) :: err
+      end subroutine observe_checkpoint
       !> Called at t = 0 and at every output time with the converged state in prob.
       subroutine frame_callback(t, prob, err)
          import :: wp, dynamic_problem_t, error_t
@@ -144,15 +200,9 @@ contains
       end do
    end subroutine step_work
 
-   !> Run the dynamic analysis from the state in prob (time 0, or the checkpoint's with
-   !> resume) to model%dynamic%duration. With CHECKPOINT=c of *DYNAMIC, on_checkpoint is
-   !> called after the first step that reaches each multiple of c (before the end), and
-   !> the step after it forms a new tangent: a run continued from the checkpoint holds
-   !> no factorised tangent, so both runs take the same iterates (tangent reuse makes
-   !> the iterate depend on the tangent held).
-   !> docs/theory.md sections 5-7.
-   subroutine timeloop_run(prob, model, summary, err, log_unit, on_frame, on_step, &
-                           after_step, on_checkpoint, resume)
+   !> timeloop_run with the callbacks as procedures (no context; a test's callbacks).
+   subroutine timeloop_run_procedures(prob, model, summary, err, log_unit, on_frame, &
+                                      on_step, after_step, on_checkpoint, resume)
       type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
       type(model_t), intent(in) :: model              !< model (dynamic options)
       type(run_summary_t), intent(inout) :: summary   !< progress
@@ -162,6 +212,35 @@ contains
       procedure(step_callback) :: on_step             !< output of a step log
       procedure(frame_callback), optional :: after_step !< called after every step
       procedure(checkpoint_callback), optional :: on_checkpoint !< called at checkpoints
+      type(timeloop_state_t), intent(in), optional :: resume !< continue from a checkpoint
+      type(procedure_observer_t) :: obs
+      obs%frame => on_frame
+      obs%step => on_step
+      if (present(after_step)) then
+         obs%after => after_step
+         obs%after_step_used = .true.
+      end if
+      if (present(on_checkpoint)) then
+         obs%checkpoint => on_checkpoint
+         obs%checkpoints_used = .true.
+      end if
+      call timeloop_run_observer(prob, model, summary, err, log_unit, obs, resume)
+   end subroutine timeloop_run_procedures
+
+   !> Run the dynamic analysis from the state in prob (time 0, or the checkpoint's with
+   !> resume) to model%dynamic%duration. With CHECKPOINT=c of *DYNAMIC, on_checkpoint is
+   !> called after the first step that reaches each multiple of c (before the end), and
+   !> the step after it forms a new tangent: a run continued from the checkpoint holds
+   !> no factorised tangent, so both runs take the same iterates (tangent reuse makes
+   !> the iterate depend on the tangent held).
+   !> docs/theory.md sections 5-7.
+   subroutine timeloop_run_observer(prob, model, summary, err, log_unit, obs, resume)
+      type(dynamic_problem_t), intent(inout) :: prob  !< set-up problem, start state
+      type(model_t), intent(in) :: model              !< model (dynamic options)
+      type(run_summary_t), intent(inout) :: summary   !< progress
+      type(error_t), intent(inout) :: err             !< status
+      integer, intent(in) :: log_unit                 !< Newton log unit (< 0: silent)
+      class(timeloop_observer_t), intent(inout) :: obs !< frames, steps, checkpoints
       type(timeloop_state_t), intent(in), optional :: resume !< continue from a checkpoint
       type(timeloop_state_t) :: ls
       type(newton_options_t) :: opts
@@ -216,7 +295,7 @@ contains
          log%seabed_work = 0.0_wp
          log%numerical_work = 0.0_wp
          log%numerical_energy = prob%nd%energy
-         call on_frame(t, prob, err)
+         call obs%on_frame(t, prob, err)
          if (has_error(err)) return
          level = 0
          good = 0
@@ -259,7 +338,7 @@ contains
             summary%time_reached = t
             step_cuts = 0
             retried = .false.
-            call on_step(log, err)
+            call obs%on_step(log, err)
             if (has_error(err)) return
             if (t >= next_frame - tol_t .or. t >= t_end - tol_t) then
                ! a cubic rod in the spurious shape of its quadrature (rodyn_mesh) stops
@@ -273,12 +352,12 @@ contains
                   summary%status = why
                   return
                end if
-               call on_frame(t, prob, err)
+               call obs%on_frame(t, prob, err)
                if (has_error(err)) return
                next_frame = next_frame + interval
                if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
             end if
-            if (present(after_step)) call after_step(t, prob, err)
+            if (obs%after_step_used) call obs%after_step(t, prob, err)
             if (level > 0) then
                good = good + 1
                if (good >= 2) then
@@ -287,12 +366,12 @@ contains
                end if
             end if
             if (t >= next_checkpoint - tol_t .and. t < t_end - tol_t .and. &
-                present(on_checkpoint) .and. .not. has_error(err)) then
+                obs%checkpoints_used .and. .not. has_error(err)) then
                do while (next_checkpoint <= t + tol_t)
                   next_checkpoint = next_checkpoint + model%dynamic%checkpoint
                end do
                ls = timeloop_state_t(t, next_frame, next_checkpoint, level, good, log)
-               call on_checkpoint(ls, prob, err)
+               call obs%on_checkpoint(ls, prob, err)
                if (has_error(err)) return
                prob%factors_ok = .false.   ! as in a run continued from here
                prob%renew_first = .false.
@@ -342,7 +421,7 @@ contains
       end do
       summary%complete = .true.
       summary%status = 'complete'
-      if (present(after_step)) call look_ahead()
+      if (obs%after_step_used) call look_ahead()
    contains
       !> Solve the step from t0 to t0 + h (retry: the second attempt, with the line search
       !> and a new tangent): stats, nerr, and accepted = converged and, for EMC, keeping
@@ -399,10 +478,10 @@ contains
          if (log_unit >= 0) write (log_unit, '(a)') &
             '  step past the end (support forces of the last frame)'
          call solve_step(t, h_last, .false.)
-         if (accepted) call after_step(t + h_last, prob, err)
+         if (accepted) call obs%after_step(t + h_last, prob, err)
          call state_copy(prob%s0, prob%s1)
       end subroutine look_ahead
-   end subroutine timeloop_run
+   end subroutine timeloop_run_observer
 
    !> Bound of the work the residual left by Newton (within its tolerance) does over the
    !> step: 2 sum over nodes of |r_x| |x^n+1 - x^n| + |r_theta| phi, free unknowns
@@ -512,4 +591,34 @@ contains
       text = "; the run's *DAMPING ("//model%dynamic%damping_at//'): ALPHA = '// &
              trim(adjustl(a))//' 1/s, BETA = '//trim(adjustl(b))//' s'
    end function damping_note
+   subroutine procedure_frame(this, t, prob, err)
+      class(procedure_observer_t), intent(inout) :: this !< observer
+      real(wp), intent(in) :: t                          !< time [s]
+      type(dynamic_problem_t), intent(inout) :: prob     !< problem
+      type(error_t), intent(inout) :: err                !< status
+      call this%frame(t, prob, err)
+   end subroutine procedure_frame
+
+   subroutine procedure_step(this, log, err)
+      class(procedure_observer_t), intent(inout) :: this !< observer
+      type(step_log_t), intent(in) :: log                !< step
+      type(error_t), intent(inout) :: err                !< status
+      call this%step(log, err)
+   end subroutine procedure_step
+
+   subroutine procedure_after(this, t, prob, err)
+      class(procedure_observer_t), intent(inout) :: this !< observer
+      real(wp), intent(in) :: t                          !< time [s]
+      type(dynamic_problem_t), intent(inout) :: prob     !< problem
+      type(error_t), intent(inout) :: err                !< status
+      if (associated(this%after)) call this%after(t, prob, err)
+   end subroutine procedure_after
+
+   subroutine procedure_checkpoint(this, ls, prob, err)
+      class(procedure_observer_t), intent(inout) :: this !< observer
+      type(timeloop_state_t), intent(in) :: ls           !< loop state
+      type(dynamic_problem_t), intent(inout) :: prob     !< problem
+      type(error_t), intent(inout) :: err                !< status
+      if (associated(this%checkpoint)) call this%checkpoint(ls, prob, err)
+   end subroutine procedure_checkpoint
 end module rodyn_timeloop
