@@ -1,6 +1,7 @@
 !> General banded matrix in LAPACK band storage, element assembly, constraint rows, and
-!> the LU factorisation/solve of docs/theory.md eq. (45). LAPACK's INFO is mapped into
-!> error_t here and nowhere else.
+!> the LU factorisation/solve of docs/theory.md eq. (45); and the dense LU of small
+!> systems (dense_factor, dense_solve). LAPACK's INFO is mapped into error_t here and
+!> nowhere else.
 !> Storage is allocated once; nothing inside the Newton loop allocates.
 !>
 !> Two factorisations (bm%pivoting):
@@ -33,6 +34,7 @@ module rodyn_banded
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
    public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
    public :: banded_kept_axpy, banded_free, banded_set_pivoting, banded_set_reach
+   public :: dense_factor, dense_solve
 
    !> A square banded matrix with kl sub- and ku super-diagonals: A(i, j) is ab(kv + i - j,
    !> j). Stored for dgbtrf with pivoting (ldab = 2 kl + ku + 1, kv = kl + ku + 1: the
@@ -63,6 +65,22 @@ module rodyn_banded
          integer, intent(out) :: ipiv(*)
          integer, intent(out) :: info
       end subroutine dgbtrf
+      subroutine dgetrf(m, n, a, lda, ipiv, info)
+         import :: wp
+         integer, intent(in) :: m, n, lda
+         real(wp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: ipiv(*)
+         integer, intent(out) :: info
+      end subroutine dgetrf
+      subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+         import :: wp
+         character(len=1), intent(in) :: trans
+         integer, intent(in) :: n, nrhs, lda, ldb
+         real(wp), intent(in) :: a(lda, *)
+         integer, intent(in) :: ipiv(*)
+         real(wp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dgetrs
       subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
          import :: wp
          character(len=1), intent(in) :: trans
@@ -421,4 +439,32 @@ contains
       call dgbtrs('N', bm%n, bm%kl, bm%ku, 1, bm%ab, bm%ldab, bm%ipiv, b, bm%n, info)
       if (info /= 0) call set_error(err, stat_numerical, 'banded_solve: dgbtrs failed')
    end subroutine banded_solve
+
+   !> LU-factorise a dense square matrix in place with partial pivoting (dgetrf): the
+   !> small junction systems of rodyn_arrowhead. A zero pivot is a numerical error.
+   subroutine dense_factor(a, ipiv, err)
+      real(wp), intent(inout) :: a(:, :)  !< (n, n) matrix, replaced by its LU factors
+      integer, intent(out) :: ipiv(:)     !< (n) pivots
+      type(error_t), intent(inout) :: err !< status
+      integer :: info
+      character(len=80) :: msg
+      if (size(a, 1) == 0) return
+      call dgetrf(size(a, 1), size(a, 2), a, size(a, 1), ipiv, info)
+      if (info /= 0) then
+         write (msg, '(a,i0)') 'dense_factor: singular matrix, zero pivot at unknown ', info
+         call set_error(err, stat_numerical, trim(msg))
+      end if
+   end subroutine dense_factor
+
+   !> Solve A X = B in place with the factors of dense_factor (dgetrs).
+   subroutine dense_solve(a, ipiv, b, err)
+      real(wp), intent(in) :: a(:, :)     !< (n, n) LU factors
+      integer, intent(in) :: ipiv(:)      !< (n) pivots
+      real(wp), intent(inout) :: b(:, :)  !< (n, nrhs) right-hand sides, then solutions
+      type(error_t), intent(inout) :: err !< status
+      integer :: info
+      if (size(a, 1) == 0) return
+      call dgetrs('N', size(a, 1), size(b, 2), a, size(a, 1), ipiv, b, size(b, 1), info)
+      if (info /= 0) call set_error(err, stat_numerical, 'dense_solve: dgetrs failed')
+   end subroutine dense_solve
 end module rodyn_banded
