@@ -45,7 +45,7 @@ source/Line.cpp):
   Buoyancy as a vertical distributed force (rho g A). So the tension of both is the
   effective tension (MoorDyn's line tension; rodyn's effective_tension_N).
   rodyn: 40 cubic rod elements (EI 120.8e3 N m2 about both axes, GJ 1e5 N m2/rad, the
-  shear stiffness EA), dt 0.025 s, EMC (the default); static analysis first. MoorDyn
+  shear stiffness EA), dt 0.025 s, EMC with RHO INF 0.8 (the default in water); static analysis first. MoorDyn
   2.7.2: a line with EI from a Fixed point to a Fixed point (pinned ends), lumped mass,
   RK2, BA = -1 (-1 times the critical damping of one segment's axial mode, vanishing
   with N; as bench/water and bench/waves/moordyn_waves.py), dtM = 0.25 l/c
@@ -69,12 +69,12 @@ over 20 <= t < 50 s (3 periods after a 20 s start), of the magnitude of the top 
 Target: rodyn's mean, 1st and 2nd harmonic within 5 % of MoorDyn's finest run (N = 136)
 at each heading.
 
-Measured (2026-11-28, Release build; docs/waves.md, "Cross-check with MoorDyn: a jumper
+Measured (2026-11-29, Release build; docs/waves.md, "Cross-check with MoorDyn: a jumper
 in regular waves"; bench/results/jumper_moordyn.csv): rodyn (40 elements, dt 0.025 s)
 against MoorDyn N = 136, top force mean, 1st and 2nd harmonic [N]:
-   0 deg  47137.4 / 47140.3 (-0.006 %)  5226.3 / 5227.4 (-0.02 %)  1210.5 / 1206.4 (+0.34 %)
-  45 deg  47124.0 / 47127.2 (-0.007 %)  5466.3 / 5467.5 (-0.02 %)  1881.9 / 1875.9 (+0.32 %)
-  90 deg  47129.3 / 47132.8 (-0.007 %)  5572.5 / 5573.4 (-0.02 %)  1528.1 / 1522.7 (+0.35 %)
+   0 deg  47137.5 / 47140.3 (-0.006 %)  5226.4 / 5227.4 (-0.02 %)  1210.4 / 1206.4 (+0.34 %)
+  45 deg  47124.2 / 47127.2 (-0.006 %)  5466.6 / 5467.5 (-0.02 %)  1881.7 / 1875.9 (+0.31 %)
+  90 deg  47129.6 / 47132.8 (-0.007 %)  5573.1 / 5573.4 (-0.005 %)  1527.8 / 1522.7 (+0.33 %)
 rodyn is converged (20 to 80 elements, dt 0.05 to 0.0125 s: within 0.075 %); MoorDyn's 2nd
 harmonic still rises with N (1469.8, 1511.1, 1522.7 N at N = 34, 68, 136, 90 deg) towards
 rodyn's. Static top force: rodyn 47113.0 N, MoorDyn 47115.9 N (N = 136). --quick runs

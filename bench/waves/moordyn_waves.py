@@ -21,8 +21,8 @@ from still-water statics in both codes. Statistics over the last 6 of 12 periods
 force at the fairlead), the first harmonic (least squares, for information) and the
 maximum of the periodic part (least-squares fit of harmonics 0-8 of the wave frequency).
 Target: maximum and mean within 2 % of MoorDyn's finest run (N = 320).
-Measured (docs/waves.md, "Cross-check with MoorDyn"): mean +0.008 %, maximum -0.81 %,
-periodic maximum -0.006 %. rodyn is converged (120 elements, dt 0.05 s); MoorDyn's mean
+Measured (docs/waves.md, "Cross-check with MoorDyn", 2026-11-29): mean +0.008 %, maximum
+-0.86 %, periodic maximum -0.007 %. rodyn is converged (120 elements, dt 0.05 s); MoorDyn's mean
 and periodic maximum are, its raw maximum is not yet (85241, 85016, 85593, 84476 N at
 N = 40, 80, 160, 320: a high-frequency part in its fairlead force, 3 kN rms up to
 N = 160 and 1.4 kN at 320, that rodyn's does not have). All three set the exit status.
@@ -46,7 +46,7 @@ source, source/Line.cpp and source/Waves/SpectrumKin.cpp, docs/waterkinematics.r
   MoorDyn's kbot, cbot), no friction. They differ in one point: rodyn's damper is met
   c/k |v| above the plane so that the force grows from zero (docs/water.md); MoorDyn's
   acts per node once below the seabed, its force jumping to cbot v_z d l at contact.
-  rodyn: cubic cable elements, EMC (the default scheme). MoorDyn: lumped mass, RK2,
+  rodyn: cubic cable elements, EMC with RHO INF 0.8 (the default scheme in water). MoorDyn: lumped mass, RK2,
   BA = -1 (critical damping of one segment's axial mode: vanishes with N), dtM = 0.25 l/c
   rounded down to a divisor of 0.05 s, static start by its stationary solver
   (ICgenDynamic 0, threshIC 1e-9, TmaxIC 300 s).
