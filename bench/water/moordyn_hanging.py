@@ -16,8 +16,8 @@ MoorDyn v2.7.2, source/Line.cpp):
   AXIAL DAMPING RATIO=1 gives C_a = (l_e/p) sqrt(EA m) per element of order p, so that
   rodyn's E cubic elements and MoorDyn's N = 3 E segments have the same node spacing and
   the same damping.
-  rodyn: cubic cable elements, EMC (the default), dt 0.0125 s, static start; the force of
-  the support on the top, every step (dynamic_ends_step.csv).
+  rodyn: cubic cable elements, the default for water (EMC, RHO INF 0.8), dt 0.0125 s,
+  static start; the force of the support on the top, every step (dynamic_ends_step.csv).
   MoorDyn: lumped masses, RK2, dtM = 0.25 l/c (c = sqrt(EA/m)) rounded down to a divisor
   of the coupling interval 0.005 s; the top a Coupled point moved to its exact position at
   the end of each interval with the secant velocity over it (one moordyn.Step per
