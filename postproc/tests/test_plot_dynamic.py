@@ -178,7 +178,8 @@ def write_csv(folder, lines, log, times=TIMES):
              log["cutbacks"][s]] + [real(log[k][s]) for k in (
                  "kinetic", "strain", "gravity", "external_work", "damping_work")]
             + [real(log.get(k, np.zeros(len(log["step"])))[s])
-               for k in ("hydro_work", "seabed_work")] + [real(log["total"][s])]
+               for k in ("hydro_work", "seabed_work", "numerical_work",
+                         "numerical_energy")] + [real(log["total"][s])]
             + [real(v) for v in log["momentum"][s]]
             + [real(v) for v in log["angular_momentum"][s]])
     for file, rows in tables.items():
