@@ -1,0 +1,101 @@
+!> Cost of rodyn_arrowhead against the number of lines (bench/arrowhead_scaling.py): m
+!> lines of n unknowns each in a band of half-bandwidth hb (a line of cubic rod elements:
+!> 6 unknowns a node, hb = 23), their first and last 6 unknowns coupled to a point's 3
+!> junction unknowns (one point per three lines) and to a shared body's 6, the entries
+!> from a formula and the bands diagonally dominant. Prints, for `reps` repetitions of
+!> factor + solve: the order, the junctions, the median wall time [s] of factor and of
+!> solve, and the relative residual of the last solve.
+!>
+!> usage: bench_arrowhead M N HB REPS
+program arrowhead_scaling
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_arrowhead, only: arrowhead_t, arrowhead_init, arrowhead_block_init, &
+                              arrowhead_factor, arrowhead_solve, arrowhead_matvec, &
+                              arrowhead_size
+   implicit none
+   type(arrowhead_t) :: ah, fresh
+   type(error_t) :: err
+   integer :: m, n, hb, reps, np, nj, i, r, c, k, rep, nt
+   integer(kind=8) :: t0, t1, t2, rate
+   real(wp), allocatable :: b(:), x(:), xt(:), res(:), tf(:), ts(:)
+   character(len=32) :: arg
+   call get_command_argument(1, arg)
+   read (arg, *) m
+   call get_command_argument(2, arg)
+   read (arg, *) n
+   call get_command_argument(3, arg)
+   read (arg, *) hb
+   call get_command_argument(4, arg)
+   read (arg, *) reps
+   np = max(1, m/3)
+   nj = 3*np + 6
+   call arrowhead_init(fresh, m, nj)
+   do i = 1, m
+      call arrowhead_block_init(fresh, i, n, hb, [3*mod(i - 1, np) + [1, 2, 3], &
+                                3*np + [1, 2, 3, 4, 5, 6]], .false.)
+      associate (bl => fresh%blocks(i))
+         do c = 1, n
+            do r = max(1, c - hb), min(n, c + hb)
+               bl%a%ab(bl%a%kv + r - c, c) = val(r, c, i)
+            end do
+            bl%a%ab(bl%a%kv, c) = 4.0_wp*real(hb, wp)
+         end do
+         do k = 1, size(bl%junctions)
+            do r = 1, n
+               if (r > 6 .and. r <= n - 6) cycle
+               bl%e(r, k) = val(r, k, i + 7)
+               bl%f(k, r) = val(k, r, i + 11)
+            end do
+         end do
+      end associate
+   end do
+   do c = 1, nj
+      fresh%c(c, c) = 8.0_wp*real(m, wp)
+   end do
+   nt = arrowhead_size(fresh)
+   allocate (b(nt), x(nt), xt(nt), res(nt), tf(reps), ts(reps))
+   do r = 1, nt
+      xt(r) = val(r, 5, 3)
+   end do
+   call arrowhead_matvec(fresh, xt, b)
+   call system_clock(count_rate=rate)
+   do rep = 1, reps
+      ah = fresh
+      call system_clock(t0)
+      call arrowhead_factor(ah, err)
+      call system_clock(t1)
+      x = b
+      call arrowhead_solve(ah, x, err)
+      call system_clock(t2)
+      tf(rep) = real(t1 - t0, wp)/real(rate, wp)
+      ts(rep) = real(t2 - t1, wp)/real(rate, wp)
+   end do
+   if (has_error(err)) error stop 'bench_arrowhead: factor or solve failed'
+   call arrowhead_matvec(fresh, x, res)
+   print '(i0,1x,i0,1x,i0,1x,es12.5,1x,es12.5,1x,es10.3)', m, nt, nj, median(tf), &
+      median(ts), maxval(abs(res - b))/maxval(abs(b))
+contains
+   pure real(wp) function val(i, j, k)
+      integer, intent(in) :: i, j, k
+      val = sin(1.7_wp*real(i, wp) + 3.1_wp*real(j, wp) + 0.37_wp*real(k, wp)) &
+            *cos(0.41_wp*real(i*j + k, wp))
+   end function val
+   real(wp) function median(v)
+      real(wp), intent(in) :: v(:)
+      real(wp) :: w(size(v)), t
+      integer :: a, b2
+      w = v
+      do a = 2, size(w)
+         t = w(a)
+         b2 = a - 1
+         do while (b2 >= 1)
+            if (w(b2) <= t) exit
+            w(b2 + 1) = w(b2)
+            b2 = b2 - 1
+         end do
+         w(b2 + 1) = t
+      end do
+      median = w((size(w) + 1)/2)
+   end function median
+end program arrowhead_scaling
