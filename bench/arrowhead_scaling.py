@@ -4,7 +4,7 @@ lines: 3, 6, 12, 24 and 48 lines of 1806 unknowns each (100 cubic rod elements: 
 nodes of 6 unknowns, half-bandwidth 23), each line's ends coupled to a point's 3 unknowns
 (a point per three lines) and a shared body's 6, the entries from a formula (the
 driver bench/src/arrowhead_scaling.f90, built as build/bench_arrowhead). For each size:
-the order, the junction unknowns, the median wall time of 5 factorisations and of 5
+the order, the junction unknowns, the shortest wall time of 5 factorisations and of 5
 solves, per unknown, and the relative residual of the solution.
 
 Target (exit 1 if missed): the cost linear in the total size, the exponent b of the
