@@ -460,7 +460,10 @@ contains
       !> EMC with RHO INF < 1 (rodyn_numerical_dissipation): c1 + 2 c2, and the history
       !> stress of each point (6, max_points, ne) [N, N m] (docs/theory.md eq. (126))
       real(wp), intent(in), optional :: nd_fac, nd_off(:, :, :)
-      real(wp), allocatable :: kde(:), offe(:, :)   ! unallocated: absent in the element
+      ! the element's numerical stress (pointers: disassociated, they are absent there;
+      ! no allocation inside the Newton loop)
+      real(wp), target :: kd6(6), off6(6, max_points)
+      real(wp), pointer :: kde(:), offe(:, :)   ! (no initialiser: it would imply save)
       real(wp) :: xb(3, max_nen), db(3, 3, max_nen)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
       real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
@@ -468,7 +471,11 @@ contains
       integer :: e, l, p, nen, a, j, nd
       fint = 0.0_wp
       fdamp = 0.0_wp
-      if (present(nd_fac) .and. present(nd_off)) allocate (kde(6), offe(6, max_points))
+      nullify (kde, offe)
+      if (present(nd_fac) .and. present(nd_off)) then
+         kde => kd6
+         offe => off6
+      end if
       if (want_k) then
          bm%ab = 0.0_wp
          bm%factored = .false.
@@ -481,9 +488,9 @@ contains
          associate (nodes => mesh%elem_nodes(1:nen, e))
             call state_gather(s0, nodes, x0, d0)
             call state_gather(s1, nodes, x1, d1)
-            if (allocated(kde)) then
-               kde = nd_fac*mesh%elem_c(:, e)
-               offe = nd_off(:, :, e)
+            if (associated(kde)) then
+               kd6 = nd_fac*mesh%elem_c(:, e)
+               off6 = nd_off(:, :, e)
             end if
             if (want_k .and. present(x_base) .and. present(d_base) .and. present(gp0) &
                 .and. present(epsn)) then
@@ -553,12 +560,17 @@ contains
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
       real(wp), intent(in), optional :: nd_fac, nd_off(:, :, :) !< as assemble_dynamic
-      real(wp), allocatable :: kde, offe(:)   ! unallocated: absent in the element
+      real(wp), target :: kd1, off1(max_points)  ! as assemble_dynamic's kd6, off6
+      real(wp), pointer :: kde, offe(:)   ! (no initialiser: it would imply save)
       real(wp) :: x0(3, max_nen), x1(3, max_nen)
       real(wp) :: fc(3, max_nen), kc(3*max_nen, 3*max_nen), fs(3, max_nen)
       real(wp) :: ks(3*max_nen, 3*max_nen), du(3*max_nen), fd(3*max_nen)
       integer :: e, p, nen, a, j, nc
-      if (present(nd_fac) .and. present(nd_off)) allocate (kde, offe(max_points))
+      nullify (kde, offe)
+      if (present(nd_fac) .and. present(nd_off)) then
+         kde => kd1
+         offe => off1
+      end if
       do e = 1, mesh%n_elements
          if (.not. mesh%elem_cable(e)) cycle
          p = mesh%line_order(mesh%elem_line(e))
@@ -569,9 +581,9 @@ contains
                x0(:, a) = s0%x(:, nodes(a))
                x1(:, a) = s1%x(:, nodes(a))
             end do
-            if (allocated(kde)) then
-               kde = nd_fac*mesh%elem_c(3, e)
-               offe = nd_off(3, :, e)
+            if (associated(kde)) then
+               kd1 = nd_fac*mesh%elem_c(3, e)
+               off1 = nd_off(3, :, e)
             end if
             call cable_element_dynamic(p, mesh%elem_le(e), mesh%elem_c(3, e), x0(:, 1:nen), &
                                        x1(:, 1:nen), scheme, wf, fc(:, 1:nen), &

@@ -158,7 +158,7 @@ contains
       !> (6, max_points, ne) the rods' strains at t_n and t_n+1 at their points, when
       !> formed already (the energy pass): their difference is the rods' increment
       real(wp), intent(in), optional :: eps0(:, :, :), eps1(:, :, :)
-      real(wp) :: w, k0(6), sd(6), m(6), wj
+      real(wp) :: w, en, k0(6), sd(6), m(6), wj, de(6), r1(6)
       integer :: e, p, ig, np
       call point_rates(mesh, s0, s1, dt, .false., nd%step_rate, &
                        present(eps0) .and. present(eps1))
@@ -168,7 +168,9 @@ contains
                                                                    eps0(:, :, e))/dt
          end do
       end if
+      ! the work of sigma_d over the step and N^{n+1}, with r^{n+1} = 2 de/h - r^n
       w = 0.0_wp
+      en = 0.0_wp
       do e = 1, mesh%n_elements
          p = mesh%line_order(mesh%elem_line(e))
          k0 = mesh%elem_c(:, e)
@@ -176,15 +178,17 @@ contains
          do ig = 1, np
             call point_mask(mesh, e, ig, m)
             wj = mesh%rules(p)%w(ig)*0.5_wp*mesh%elem_le(e)
-            associate (de => dt*nd%step_rate(:, ig, e))
-               sd = k0*m*(nd%c1*(de - dt*nd%rho(:, ig, e)) + 2.0_wp*nd%c2*(de - dt*nd%r(:, ig, e)))
-               w = w + wj*dot_product(sd, de)
-            end associate
+            de = dt*nd%step_rate(:, ig, e)
+            sd = k0*m*(nd%c1*(de - dt*nd%rho(:, ig, e)) &
+                       + 2.0_wp*nd%c2*(de - dt*nd%r(:, ig, e)))
+            w = w + wj*dot_product(sd, de)
+            r1 = 2.0_wp*nd%step_rate(:, ig, e) - nd%r(:, ig, e)
+            en = en + wj*0.5_wp*dt**2*sum(k0*m*(nd%c1*nd%step_rate(:, ig, e)**2 &
+                                                + nd%c2*r1**2))
          end do
       end do
       nd%work_new = w
-      nd%energy_new = history_energy(nd, mesh, dt, nd%step_rate, &
-                                     2.0_wp*nd%step_rate - nd%r)
+      nd%energy_new = en
    end subroutine numdiss_step
 
    !> Advance the histories past the step numdiss_step measured (eq. (125)).
