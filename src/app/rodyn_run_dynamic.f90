@@ -15,7 +15,7 @@ module rodyn_run_dynamic
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
    use rodyn_timeloop, only: timeloop_run, timeloop_state_t, timeloop_observer_t
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
-                               checkpoint_program_id
+                               checkpoint_program_id, pending_forces_t
    use rodyn_outfile, only: remove_file, path_join
    use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
@@ -54,15 +54,10 @@ module rodyn_run_dynamic
       type(state_t) :: start_state                   !< state at t = 0 (checkpoints)
       integer :: kill_after = -1                     !< test hook: SIGKILL after this step
       real(wp), allocatable :: r_start(:, :)        !< support forces of the start state
-      ! Support forces at the end of every step (see write_pending): the step forces R
-      ! (the support force averaged over a step, the step's residual at the held dofs)
-      ! of the last step converged (r_pend, length h_pend, ending at t_pend, step
-      ! number k_pend) and of the step before it (r_back, h_back). The last step waits,
-      ! pending, for the step after it; so does a frame at its end (frame_waiting).
-      real(wp), allocatable :: r_pend(:, :), r_back(:, :), r_frame(:, :)
-      real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp, t_pend = 0.0_wp
-      integer :: k_pend = 0
-      logical :: pending = .false., have_back = .false., frame_waiting = .false.
+      ! Support forces at the end of every step (see write_pending): the last step
+      ! waits, pending, for the step after it; so does a frame at its end
+      type(pending_forces_t) :: pend
+      real(wp), allocatable :: r_frame(:, :)      !< (6, nn) the forces written
       logical :: show_progress = .false.
       type(sea_scene_t) :: scene      !< probes, vessels and connections written (if any)
       type(sea_values_t) :: sea_now   !< their values at the last time written
@@ -124,12 +119,12 @@ contains
       call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
       if (stat == 0) read (hook, *, iostat=stat) run%kill_after
       run%r_start = r0
-      run%pending = .false.
-      run%have_back = .false.
-      run%frame_waiting = .false.
-      run%k_pend = 0
-      if (allocated(run%r_pend)) deallocate (run%r_pend, run%r_back, run%r_frame)
-      allocate (run%r_pend(6, mesh%n_nodes), run%r_back(6, mesh%n_nodes), &
+      run%pend%pending = .false.
+      run%pend%have_back = .false.
+      run%pend%frame_waiting = .false.
+      run%pend%k_pend = 0
+      if (allocated(run%pend%r_pend)) deallocate (run%pend%r_pend, run%pend%r_back, run%r_frame)
+      allocate (run%pend%r_pend(6, mesh%n_nodes), run%pend%r_back(6, mesh%n_nodes), &
                 run%r_frame(6, mesh%n_nodes))
       run%show_progress = progress
       if (.not. model%dynamic%start_static .and. .not. present(resume)) &
@@ -177,7 +172,7 @@ contains
       if (run%show_progress) write (error_unit, '(a)') ''
       ! the last step (and a frame at its end) still waiting for the step after it (the
       ! run stopped, or the step past the end failed): extrapolated
-      if (run%pending) then
+      if (run%pend%pending) then
          call clear_error(werr)
          call run%write_pending(prob, .false., werr)
          if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, &
@@ -207,21 +202,13 @@ contains
          prob%f_last = ck%f_last
          prob%m_last = ck%m_last
          prob%have_conv = ck%have_conv
-         run%r_pend = ck%r_pend
-         run%r_back = ck%r_back
-         run%h_pend = ck%h_pend
-         run%h_back = ck%h_back
-         run%t_pend = ck%t_pend
-         run%k_pend = ck%k_pend
-         run%pending = ck%pending
-         run%have_back = ck%have_back
-         run%frame_waiting = ck%frame_waiting
+         run%pend = ck%pend
          if (prob%nd%on) then
             prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
             prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
             prob%nd%energy = ck%nd_energy
          end if
-         if (run%frame_waiting) then
+         if (run%pend%frame_waiting) then
             if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
                                                        .true.)
             call recover_state(run%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
@@ -257,15 +244,7 @@ contains
                                        size(prob%nd%r, 3)])
          ck%nd_energy = prob%nd%energy
       end if
-      ck%r_pend = this%r_pend
-      ck%r_back = this%r_back
-      ck%h_pend = this%h_pend
-      ck%h_back = this%h_back
-      ck%t_pend = this%t_pend
-      ck%k_pend = this%k_pend
-      ck%pending = this%pending
-      ck%have_back = this%have_back
-      ck%frame_waiting = this%frame_waiting
+      ck%pend = this%pend
       call dynamic_output_mark(this%writer, ck%mark, err)
       call checkpoint_write(this%dir, this%model, this%program_id, ck, err)
    end subroutine on_checkpoint
@@ -280,14 +259,14 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob   !< converged state
       type(error_t), intent(inout) :: err              !< status
       ! the step before, if waiting
-      if (this%pending) call this%write_pending(prob, .true., err)
+      if (this%pend%pending) call this%write_pending(prob, .true., err)
       if (has_error(err)) return
       if (t > 0.0_wp) then
          ! (no results formed for a writer without files)
          if (dynamic_output_keeps_frames(this%writer)) &
             call recover_state(this%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
                                prob%sup%held, this%frame_lines, prob%water, t)
-         this%frame_waiting = .true.
+         this%pend%frame_waiting = .true.
       else
          call recover_state(this%model, prob%mesh, prob%s1, 1.0_wp, this%r_start, &
                             prob%sup%held, this%frame_lines, prob%water, t)
@@ -322,33 +301,35 @@ contains
       real(wp) :: w, reaction(6, 2, size(this%frame_lines))
       integer :: l, k
       w = prob%wf
-      if (next) then
-         this%r_frame = this%r_pend + (prob%r - this%r_pend)*(1.0_wp - w)*this%h_pend &
-                        /((1.0_wp - w)*this%h_pend + w*prob%dt)
-      else if (this%have_back) then
-         this%r_frame = this%r_pend + (this%r_pend - this%r_back)*(1.0_wp - w)*this%h_pend &
-                        /(w*this%h_pend + (1.0_wp - w)*this%h_back)
-      else
-         this%r_frame = this%r_pend
-      end if
-      this%pending = .false.
+      associate (q => this%pend)
+         if (next) then
+            this%r_frame = q%r_pend + (prob%r - q%r_pend)*(1.0_wp - w)*q%h_pend &
+                           /((1.0_wp - w)*q%h_pend + w*prob%dt)
+         else if (q%have_back) then
+            this%r_frame = q%r_pend + (q%r_pend - q%r_back)*(1.0_wp - w)*q%h_pend &
+                           /(w*q%h_pend + (1.0_wp - w)*q%h_back)
+         else
+            this%r_frame = q%r_pend
+         end if
+      end associate
+      this%pend%pending = .false.
       reaction = this%end_forces(prob, this%r_frame)
       if (this%scene%active) then
-         call sea_values(this%scene, this%model, prob%water%field, this%t_pend, this%r_frame, &
+         call sea_values(this%scene, this%model, prob%water%field, this%pend%t_pend, this%r_frame, &
                          this%sea_now)
-         call dynamic_output_sea(this%writer, this%k_pend, this%t_pend, this%sea_now, &
-                                 this%frame_waiting, err)
+         call dynamic_output_sea(this%writer, this%pend%k_pend, this%pend%t_pend, this%sea_now, &
+                                 this%pend%frame_waiting, err)
       end if
-      call dynamic_output_ends_step(this%writer, this%k_pend, this%t_pend, reaction, err)
-      if (.not. this%frame_waiting) return
+      call dynamic_output_ends_step(this%writer, this%pend%k_pend, this%pend%t_pend, reaction, err)
+      if (.not. this%pend%frame_waiting) return
       do l = 1, size(this%frame_lines)
          do k = 1, 2
             if (this%frame_lines(l)%end_held(k)) &
                this%frame_lines(l)%reaction(:, k) = reaction(:, k, l)
          end do
       end do
-      this%frame_waiting = .false.
-      call dynamic_output_frame(this%writer, this%t_pend, this%frame_lines, err)
+      this%pend%frame_waiting = .false.
+      call dynamic_output_frame(this%writer, this%pend%t_pend, this%frame_lines, err)
    end subroutine write_pending
 
    !> The support forces of the held line ends (zero at free ends) from the forces r
@@ -388,22 +369,22 @@ contains
       real(wp) :: wall, frac, rate, left
       ! after every step: the step before (and a frame at its end) waiting for this step
       ! is written, and this step waits for the next (not the step past the end)
-      if (this%pending .and. t > this%t_pend .and. .not. has_error(err)) &
+      if (this%pend%pending .and. t > this%pend%t_pend .and. .not. has_error(err)) &
          call this%write_pending(prob, .true., err)
       if (this%writer%steps == this%kill_after .and. t <= this%model%dynamic%duration) then
          stat_kill = c_raise(9_c_int)       ! the test hook: SIGKILL, as a killed job
       end if
       if (t <= this%model%dynamic%duration + 1.0e-9_wp*this%model%dynamic%dt) then
-         if (this%k_pend > 0 .or. this%pending) then
-            this%r_back = this%r_pend
-            this%h_back = this%h_pend
-            this%have_back = .true.
+         if (this%pend%k_pend > 0 .or. this%pend%pending) then
+            this%pend%r_back = this%pend%r_pend
+            this%pend%h_back = this%pend%h_pend
+            this%pend%have_back = .true.
          end if
-         this%r_pend = prob%r
-         this%h_pend = prob%dt
-         this%t_pend = t
-         this%k_pend = this%writer%steps
-         this%pending = .true.
+         this%pend%r_pend = prob%r
+         this%pend%h_pend = prob%dt
+         this%pend%t_pend = t
+         this%pend%k_pend = this%writer%steps
+         this%pend%pending = .true.
       end if
       if (.not. this%show_progress .or. has_error(err) .or. .not. associated(prob%mesh)) return
       ! past the end

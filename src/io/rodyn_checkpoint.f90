@@ -32,11 +32,28 @@ module rodyn_checkpoint
    implicit none
    private
    public :: checkpoint_t, checkpoint_write, checkpoint_read, checkpoint_file
+   public :: pending_forces_t
    public :: checkpoint_program_id
 
    character(len=*), parameter :: checkpoint_file = 'checkpoint.h5' !< name in the folder
    integer, parameter :: n_reals = 36  !< scalars in /reals (see pack_reals)
    integer, parameter :: n_ints = 24   !< scalars in /integers (see pack_ints)
+
+   !> The support forces of a dynamic run that wait for the step after them (the step
+   !> force R, the support force averaged over a step: of the last step converged, r_pend,
+   !> length h_pend, ending at t_pend, step number k_pend, and of the step before it,
+   !> r_back, h_back; rodyn_run_dynamic's write_pending), as the run and a checkpoint
+   !> hold them.
+   type :: pending_forces_t
+      real(wp), allocatable :: r_pend(:, :)     !< (6, nn) force of the pending step
+      real(wp), allocatable :: r_back(:, :)     !< (6, nn) force of the step before it
+      real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp !< their lengths [s]
+      real(wp) :: t_pend = 0.0_wp               !< end of the pending step [s]
+      integer :: k_pend = 0                     !< its number
+      logical :: pending = .false.              !< a step waits for its support forces
+      logical :: have_back = .false.            !< r_back is set
+      logical :: frame_waiting = .false.        !< a frame waits with it
+   end type pending_forces_t
 
    !> Everything a dynamic run carries from one step to the next.
    type :: checkpoint_t
@@ -50,14 +67,7 @@ module rodyn_checkpoint
       real(wp) :: f_conv = 0.0_wp, m_conv = 0.0_wp !< Newton reference force, moment
       real(wp) :: f_last = 0.0_wp, m_last = 0.0_wp !< the same of the last iterate
       logical :: have_conv = .false.            !< a step has converged
-      real(wp), allocatable :: r_pend(:, :)     !< (6, nn) force of the pending step
-      real(wp), allocatable :: r_back(:, :)     !< (6, nn) force of the step before it
-      real(wp) :: h_pend = 0.0_wp, h_back = 0.0_wp !< their lengths [s]
-      real(wp) :: t_pend = 0.0_wp               !< end of the pending step [s]
-      integer :: k_pend = 0                     !< its number
-      logical :: pending = .false.              !< a step waits for its support forces
-      logical :: have_back = .false.            !< r_back is set
-      logical :: frame_waiting = .false.        !< a frame waits with it
+      type(pending_forces_t) :: pend            !< the support forces still to write
       type(dynamic_output_mark_t) :: mark       !< where the output files stand
       !> the dissipative EMC's histories (6 max_points, ne) and N at t_n
       !> (rodyn_numerical_dissipation; unallocated without it)
@@ -86,8 +96,8 @@ contains
       call hdf5_write_dataset(h5, '/integers', pack_ints(ck), e)
       call hdf5_write_dataset(h5, '/csv_bytes', real(ck%mark%csv_bytes, wp), e)
       call hdf5_write_dataset(h5, '/r', ck%r, e)
-      call hdf5_write_dataset(h5, '/r_pend', ck%r_pend, e)
-      call hdf5_write_dataset(h5, '/r_back', ck%r_back, e)
+      call hdf5_write_dataset(h5, '/r_pend', ck%pend%r_pend, e)
+      call hdf5_write_dataset(h5, '/r_back', ck%pend%r_back, e)
       if (allocated(ck%nd_rho)) then
          call hdf5_write_dataset(h5, '/nd_rho', ck%nd_rho, e)
          call hdf5_write_dataset(h5, '/nd_r', ck%nd_r, e)
@@ -166,8 +176,8 @@ contains
       call hdf5_read_dataset(h5, '/integers', ints, e)
       call hdf5_read_dataset(h5, '/csv_bytes', bytes, e)
       call hdf5_read_dataset(h5, '/r', ck%r, e)
-      call hdf5_read_dataset(h5, '/r_pend', ck%r_pend, e)
-      call hdf5_read_dataset(h5, '/r_back', ck%r_back, e)
+      call hdf5_read_dataset(h5, '/r_pend', ck%pend%r_pend, e)
+      call hdf5_read_dataset(h5, '/r_back', ck%pend%r_back, e)
       if (model%dynamic%scheme == scheme_emc .and. model%dynamic%rho_inf < 1.0_wp) then
          call hdf5_read_dataset(h5, '/nd_rho', ck%nd_rho, e)
          call hdf5_read_dataset(h5, '/nd_r', ck%nd_r, e)
@@ -245,7 +255,7 @@ contains
               l%external_work, l%damping_work, l%hydro_work, l%seabed_work, l%total, &
               l%momentum, l%angular_momentum, &
               ck%dt, ck%t0, ck%f_conv, ck%m_conv, ck%f_last, ck%m_last, &
-              ck%h_pend, ck%h_back, ck%t_pend, ck%mark%last_time, &
+              ck%pend%h_pend, ck%pend%h_back, ck%pend%t_pend, ck%mark%last_time, &
               s%load_factor, s%wall_time, s%time_reached, &
               l%numerical_work, l%numerical_energy, ck%nd_energy]
       end associate
@@ -278,9 +288,9 @@ contains
          ck%m_conv = x(24)
          ck%f_last = x(25)
          ck%m_last = x(26)
-         ck%h_pend = x(27)
-         ck%h_back = x(28)
-         ck%t_pend = x(29)
+         ck%pend%h_pend = x(27)
+         ck%pend%h_back = x(28)
+         ck%pend%t_pend = x(29)
          ck%mark%last_time = x(30)
          s%load_factor = x(31)
          s%wall_time = x(32)
@@ -301,8 +311,9 @@ contains
       integer :: k(n_ints)
       associate (l => ck%loop%log, m => ck%mark, s => ck%summary)
          k = [ck%loop%level, ck%loop%good, l%step, l%iterations, l%tangents, l%cutbacks, &
-              merge(1, 0, ck%have_conv), ck%k_pend, merge(1, 0, ck%pending), &
-              merge(1, 0, ck%have_back), merge(1, 0, ck%frame_waiting), m%frames, m%steps, &
+              merge(1, 0, ck%have_conv), ck%pend%k_pend, merge(1, 0, ck%pend%pending), &
+              merge(1, 0, ck%pend%have_back), merge(1, 0, ck%pend%frame_waiting), &
+              m%frames, m%steps, &
               m%end_rows, m%step_iterations, m%step_tangents, m%step_cutbacks, &
               s%increments, s%iterations, s%cutbacks, s%steps, s%step_iterations, &
               s%step_tangents, s%step_cutbacks]
@@ -321,10 +332,10 @@ contains
          l%tangents = k(5)
          l%cutbacks = k(6)
          ck%have_conv = k(7) == 1
-         ck%k_pend = k(8)
-         ck%pending = k(9) == 1
-         ck%have_back = k(10) == 1
-         ck%frame_waiting = k(11) == 1
+         ck%pend%k_pend = k(8)
+         ck%pend%pending = k(9) == 1
+         ck%pend%have_back = k(10) == 1
+         ck%pend%frame_waiting = k(11) == 1
          m%frames = k(12)
          m%steps = k(13)
          m%end_rows = k(14)
