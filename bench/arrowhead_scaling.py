@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Cost of the arrowhead solver (src/solver/rodyn_arrowhead.f90) against the number of
 lines: 3, 6, 12, 24 and 48 lines of 1806 unknowns each (100 cubic rod elements: 301
-nodes of 6 unknowns, half-bandwidth 23), each line's ends coupled to a point's 3 unknowns
+nodes of 6 unknowns, half-bandwidth 23), all lines' unknowns concatenated in one band
+(the lines not coupled to one another), each line's ends coupled to a point's 3 unknowns
 (a point per three lines) and a shared body's 6, the entries from a formula (the
 driver bench/src/arrowhead_scaling.f90, built as build/bench_arrowhead). For each size:
 the order, the junction unknowns, the shortest wall time of 5 factorisations and of 5

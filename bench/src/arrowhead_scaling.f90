@@ -1,24 +1,26 @@
 !> Cost of rodyn_arrowhead against the number of lines (bench/arrowhead_scaling.py): m
-!> lines of n unknowns each in a band of half-bandwidth hb (a line of cubic rod elements:
-!> 6 unknowns a node, hb = 23), their first and last 6 unknowns coupled to a point's 3
-!> junction unknowns (one point per three lines) and to a shared body's 6, the entries
-!> from a formula and the bands diagonally dominant. Prints, for `reps` repetitions of
-!> factor + solve: the order, the junctions, the shortest wall time [s] of factor and
-!> of solve, and the relative residual of the last solve.
+!> lines of n unknowns each, concatenated in one band of half-bandwidth hb (a line of
+!> cubic rod elements: 6 unknowns a node, hb = 23; no line coupled to another), their
+!> first and last 6 unknowns coupled to a point's 3 junction unknowns (one point per
+!> three lines) and to a shared body's 6, the entries from a formula and the band
+!> diagonally dominant (factorised without pivoting). Prints, for `reps` repetitions
+!> of factor + solve: the order, the junctions, the shortest wall time [s] of factor
+!> and of solve, and the relative residual of the last solve.
 !>
 !> usage: bench_arrowhead M N HB REPS
 program arrowhead_scaling
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
+   use rodyn_banded, only: banded_t, banded_init, banded_set_pivoting
    use rodyn_arrowhead, only: arrowhead_t, arrowhead_init, arrowhead_block_init, &
-                              arrowhead_factor, arrowhead_solve, arrowhead_matvec, &
-                              arrowhead_size
+                              arrowhead_factor, arrowhead_solve, arrowhead_matvec
    implicit none
-   type(arrowhead_t) :: ah, fresh
+   type(arrowhead_t) :: ah
+   type(banded_t) :: bm, fresh
    type(error_t) :: err
-   integer :: m, n, hb, reps, np, nj, i, r, c, k, rep, nt
+   integer :: m, n, hb, reps, np, nj, i, r, c, k, rep, nb, o
    integer(kind=8) :: t0, t1, t2, rate
-   real(wp), allocatable :: b(:), x(:), xt(:), res(:), tf(:), ts(:)
+   real(wp), allocatable :: bx(:), by(:), x(:), y(:), xt(:), rx(:), ry(:), tf(:), ts(:)
    character(len=32) :: arg
    call get_command_argument(1, arg)
    read (arg, *) m
@@ -30,17 +32,21 @@ program arrowhead_scaling
    read (arg, *) reps
    np = max(1, m/3)
    nj = 3*np + 6
-   call arrowhead_init(fresh, m, nj)
+   nb = m*n
+   call banded_init(fresh, nb, hb)
+   call banded_set_pivoting(fresh, .false.)
+   call arrowhead_init(ah, m, nj)
    do i = 1, m
-      call arrowhead_block_init(fresh, i, n, hb, [3*mod(i - 1, np) + [1, 2, 3], &
-                                3*np + [1, 2, 3, 4, 5, 6]], .false.)
-      associate (bl => fresh%blocks(i))
-         do c = 1, n
-            do r = max(1, c - hb), min(n, c + hb)
-               bl%a%ab(bl%a%kv + r - c, c) = val(r, c, i)
-            end do
-            bl%a%ab(bl%a%kv, c) = 4.0_wp*real(hb, wp)
+      o = (i - 1)*n
+      call arrowhead_block_init(ah, i, o + 1, o + n, [3*mod(i - 1, np) + [1, 2, 3], &
+                                3*np + [1, 2, 3, 4, 5, 6]])
+      do c = 1, n
+         do r = max(1, c - hb), min(n, c + hb)
+            fresh%ab(fresh%kv + r - c, o + c) = val(r, c, i)
          end do
+         fresh%ab(fresh%kv, o + c) = 4.0_wp*real(hb, wp)
+      end do
+      associate (bl => ah%blocks(i))
          do k = 1, size(bl%junctions)
             do r = 1, n
                if (r > 6 .and. r <= n - 6) cycle
@@ -51,30 +57,31 @@ program arrowhead_scaling
       end associate
    end do
    do c = 1, nj
-      fresh%c(c, c) = 8.0_wp*real(m, wp)
+      ah%c(c, c) = 8.0_wp*real(m, wp)
    end do
-   nt = arrowhead_size(fresh)
-   allocate (b(nt), x(nt), xt(nt), res(nt), tf(reps), ts(reps))
-   do r = 1, nt
+   allocate (bx(nb), by(nj), x(nb), y(nj), xt(nb + nj), rx(nb), ry(nj), tf(reps), ts(reps))
+   do r = 1, nb + nj
       xt(r) = val(r, 5, 3)
    end do
-   call arrowhead_matvec(fresh, xt, b)
+   call arrowhead_matvec(ah, fresh, xt(:nb), xt(nb + 1:), bx, by)
    call system_clock(count_rate=rate)
    do rep = 1, reps
-      ah = fresh
+      bm = fresh
       call system_clock(t0)
-      call arrowhead_factor(ah, err)
+      call arrowhead_factor(ah, bm, err)
       call system_clock(t1)
-      x = b
-      call arrowhead_solve(ah, x, err)
+      x = bx
+      y = by
+      call arrowhead_solve(ah, bm, x, y, err)
       call system_clock(t2)
       tf(rep) = real(t1 - t0, wp)/real(rate, wp)
       ts(rep) = real(t2 - t1, wp)/real(rate, wp)
    end do
    if (has_error(err)) error stop 'bench_arrowhead: factor or solve failed'
-   call arrowhead_matvec(fresh, x, res)
-   print '(i0,1x,i0,1x,i0,1x,es12.5,1x,es12.5,1x,es10.3)', m, nt, nj, minval(tf), &
-      minval(ts), maxval(abs(res - b))/maxval(abs(b))
+   call arrowhead_matvec(ah, fresh, x, y, rx, ry)
+   print '(i0,1x,i0,1x,i0,1x,es12.5,1x,es12.5,1x,es10.3)', m, nb + nj, nj, minval(tf), &
+      minval(ts), max(maxval(abs(rx - bx)), maxval(abs(ry - by))) &
+      /max(maxval(abs(bx)), maxval(abs(by)))
 contains
    pure real(wp) function val(i, j, k)
       integer, intent(in) :: i, j, k

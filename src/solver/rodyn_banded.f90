@@ -25,16 +25,33 @@
 !> k - top(k) columns instead of kl and ku: on the paper's case 1 (cubic elements,
 !> kl = 23) the factorisation does 4269 instead of 6003 multiply-adds an element and
 !> a solve 522 instead of 828.
+!>
+!> Block-diagonal matrices (banded_solve_range): a system's lines concatenated in one
+!> band, none coupled to another, give a matrix whose diagonal blocks (a line's rows
+!> lo..hi) have no entry outside their own rows and columns. Both factorisations keep
+!> that: without pivoting L and U have the zero pattern of A outside the blocks; with
+!> partial pivoting dgbtrf chooses each pivot among the rows of the column's own block
+!> (the others hold exact zeros), so ipiv(lo:hi) stays in lo..hi, and the fill of U
+!> (the kl rows above the superdiagonals) stays in the block too. Each block is then
+!> solved alone, with the factors of the whole band; and it can be factorised alone
+!> (banded_factor with lo, hi), which gives the same factors.
 module rodyn_banded
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t, set_error, stat_numerical
+   use rodyn_error, only: error_t, set_error, stat_numerical, stat_input
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: banded_t, banded_init, banded_zero, banded_add, banded_fix_dof
-   public :: banded_factor, banded_solve, banded_matvec, banded_keep_column
+   public :: banded_factor, banded_solve, banded_solve_range, banded_matvec
+   public :: banded_keep_column
    public :: banded_kept_axpy, banded_free, banded_set_pivoting, banded_set_reach
    public :: dense_factor, dense_solve
+
+   !> banded_solve_range(bm, b, lo, hi, err): solve A x = b for the rows lo..hi of a
+   !> diagonal block alone (solve_range), b(:) one right-hand side or b(:, :) several.
+   interface banded_solve_range
+      module procedure solve_range_vector, solve_range_matrix
+   end interface banded_solve_range
 
    !> A square banded matrix with kl sub- and ku super-diagonals: A(i, j) is ab(kv + i - j,
    !> j). Stored for dgbtrf with pivoting (ldab = 2 kl + ku + 1, kv = kl + ku + 1: the
@@ -55,6 +72,7 @@ module rodyn_banded
       real(wp), allocatable :: kept(:, :)     !< (kl + ku + 1, n_kept) their band entries
       integer, allocatable :: reach(:)        !< (n) last unknown coupled to unknown k
       integer, allocatable :: top(:)          !< (n) first unknown whose reach includes k
+      integer, allocatable :: ipiv_range(:)   !< (n) scratch: pivots of one range, shifted
    end type banded_t
 
    interface
@@ -106,8 +124,8 @@ contains
       bm%ldab = bm%kl + bm%ku + 1
       if (bm%pivoting) bm%ldab = bm%ldab + bm%kl
       bm%kv = bm%ldab - bm%kl
-      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
-      allocate (bm%ab(bm%ldab, n), bm%ipiv(n), bm%diag(n))
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag, bm%ipiv_range)
+      allocate (bm%ab(bm%ldab, n), bm%ipiv(n), bm%diag(n), bm%ipiv_range(n))
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
       bm%n_kept = 0
       bm%ab = 0.0_wp
@@ -160,7 +178,7 @@ contains
    !> Release the storage (the matrix is no longer needed).
    subroutine banded_free(bm)
       type(banded_t), intent(inout) :: bm !< matrix
-      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag)
+      if (allocated(bm%ab)) deallocate (bm%ab, bm%ipiv, bm%diag, bm%ipiv_range)
       if (allocated(bm%kept_dof)) deallocate (bm%kept_dof, bm%kept)
       if (allocated(bm%reach)) deallocate (bm%reach, bm%top)
       bm%n = 0
@@ -309,21 +327,42 @@ contains
 
    !> LU-factorise in place (dgbtrf). A zero pivot is a numerical error naming the dof,
    !> and its node and the node's own dof if the first dof of each node is given.
-   subroutine banded_factor(bm, err, first)
+   !> With lo and hi, only the diagonal block of rows lo..hi of a block-diagonal matrix
+   !> (module header), as if it were alone: a matrix factorised block by block, each
+   !> block's solves done while its factors are in cache (rodyn_arrowhead). The factors
+   !> and pivots are those of the whole matrix; bm%factored is set after each block,
+   !> and the caller factorises every block before it solves with one.
+   subroutine banded_factor(bm, err, first, lo, hi)
       type(banded_t), intent(inout) :: bm       !< matrix, replaced by its LU factors
       type(error_t), intent(inout) :: err       !< status
       integer, intent(in), optional :: first(:) !< (nn) first dof of each node (increasing)
-      integer :: info, node
+      integer, intent(in), optional :: lo       !< first row of the block (default 1)
+      integer, intent(in), optional :: hi       !< last row of the block (default n)
+      integer :: info, node, k0, k1, k
       character(len=240) :: msg
+      k0 = 1
+      k1 = bm%n
+      if (present(lo)) k0 = lo
+      if (present(hi)) k1 = hi
+      if (k0 < 1 .or. k1 > bm%n .or. k1 < k0 - 1) then
+         write (msg, '(a,i0,a,i0,a,i0)') 'banded_factor: rows ', k0, '..', k1, &
+            ' of a matrix of order ', bm%n
+         call set_error(err, stat_input, trim(msg))
+         return
+      end if
+      if (k1 < k0) then                   ! nothing to factorise
+         bm%factored = .true.
+         return
+      end if
       ! an overflowed state, not a mechanism: say so rather than blame the supports (the
       ! diagonal only: n values, against n kl ku operations of the factorisation)
-      if (.not. all(ieee_is_finite(bm%ab(bm%kv, :)))) then
+      if (.not. all(ieee_is_finite(bm%ab(bm%kv, k0:k1)))) then
          call set_error(err, stat_numerical, 'banded_factor: the stiffness holds Inf or '// &
                         'NaN: the state diverged (overflow), not a singular tangent')
          return
       end if
       if (.not. bm%pivoting) then
-         call factor_unpivoted(bm, info)
+         call factor_unpivoted(bm, info, k0, k1)
          if (info /= 0) then
             call banded_set_pivoting(bm, .true.)
             write (msg, '(a,i0,a)') 'banded_factor: pivot ', info, ' cancelled without '// &
@@ -334,7 +373,12 @@ contains
          bm%factored = .true.
          return
       end if
-      call dgbtrf(bm%n, bm%n, bm%kl, bm%ku, bm%ab, bm%ldab, bm%ipiv, info)
+      call dgbtrf(k1 - k0 + 1, k1 - k0 + 1, bm%kl, bm%ku, bm%ab(1, k0), bm%ldab, &
+                  bm%ipiv(k0), info)
+      do k = k0, k1                       ! the block's pivots as rows of the whole
+         bm%ipiv(k) = bm%ipiv(k) + k0 - 1
+      end do
+      if (info > 0) info = info + k0 - 1
       if (info /= 0) then
          if (present(first)) then
             node = count(first <= abs(info))
@@ -354,25 +398,29 @@ contains
       bm%factored = .true.
    end subroutine banded_factor
 
-   !> A = L U without pivoting, in place (no fill outside the envelope): for k = 1 .. n,
-   !>   l_ik = a_ik / a_kk (i = k+1 .. reach(k)),  a_ij -= l_ik a_kj (j = k+1 .. reach(k)).
+   !> A = L U without pivoting, in place (no fill outside the envelope), for the rows
+   !> lo..hi of a diagonal block (1..n: the whole matrix; the envelope clipped to the
+   !> block): for k = lo .. hi, with r = min(reach(k), hi),
+   !>   l_ik = a_ik / a_kk (i = k+1 .. r),  a_ij -= l_ik a_kj (j = k+1 .. r).
    !> info = k > 0 when pivot k is zero, not finite or below 1e-12 of its original
    !> diagonal (1e-12 of the column's largest entry if that diagonal was zero).
-   pure subroutine factor_unpivoted(bm, info)
+   pure subroutine factor_unpivoted(bm, info, lo, hi)
       type(banded_t), intent(inout) :: bm !< matrix, replaced by L and U
       integer, intent(out) :: info        !< 0, or the first failed pivot
+      integer, intent(in) :: lo           !< first row of the block
+      integer, intent(in) :: hi           !< last row of the block
       integer :: k, j, m, kv, i1, last, i
       real(wp) :: piv, akj, ref, rp
       kv = bm%kv
-      associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
-         do k = 1, n
+      associate (ab => bm%ab, ku => bm%ku)
+         do k = lo, hi
             bm%diag(k) = ab(kv, k)
          end do
          info = 0
-         do k = 1, n
+         do k = lo, hi
             piv = ab(kv, k)
             ref = abs(bm%diag(k))
-            m = bm%reach(k) - k           ! rows of column k inside the envelope
+            m = min(bm%reach(k), hi) - k  ! rows of column k inside the envelope
             if (ref == 0.0_wp) ref = maxval(abs(ab(kv - min(ku, k - 1):kv + m, k)))
             if (.not. (abs(piv) > 1.0e-12_wp*ref)) then
                info = k
@@ -384,7 +432,7 @@ contains
             do i = 1, m
                ab(kv + i, k) = ab(kv + i, k)*rp
             end do
-            last = bm%reach(k)            ! and columns of row k
+            last = k + m                  ! and columns of row k
             do j = k + 1, last
                i1 = kv + k - j               ! row of a_kj in column j
                akj = ab(i1, j)
@@ -397,30 +445,42 @@ contains
       end associate
    end subroutine factor_unpivoted
 
-   !> Solve L U x = b in place with unpivoted factors: forward with unit L by columns,
-   !> then back with U by columns (contiguous band columns in both).
-   pure subroutine solve_unpivoted(bm, b)
+   !> Solve L U X = B in place with unpivoted factors, for the rows lo..hi of a diagonal
+   !> block (1..n: the whole matrix): forward with unit L by columns, then back with U by
+   !> columns (contiguous band columns in both; each band column applied to every right-
+   !> hand side while it is in cache). The envelope is clipped to the block, so it need
+   !> not know the block boundaries (outside the block L and U hold zeros).
+   pure subroutine solve_unpivoted(bm, nrhs, b, lo, hi)
       type(banded_t), intent(in) :: bm  !< factored matrix (factor_unpivoted)
-      real(wp), intent(inout) :: b(:)   !< right-hand side, replaced by the solution
-      integer :: k, m, kv, i
+      integer, intent(in) :: nrhs       !< right-hand sides
+      integer, intent(in) :: lo         !< first row of the block
+      integer, intent(in) :: hi         !< last row of the block
+      real(wp), intent(inout) :: b(hi - lo + 1, nrhs) !< rows lo..hi of the right-hand
+                                        !< sides, replaced by the solutions
+      integer :: k, m, kv, i, o, c
       real(wp) :: bk
       kv = bm%kv
-      associate (ab => bm%ab, n => bm%n, kl => bm%kl, ku => bm%ku)
-         do k = 1, n - 1
-            m = bm%reach(k) - k
-            bk = b(k)
-            if (bk == 0.0_wp) cycle
-            do i = 1, m
-               b(k + i) = b(k + i) - bk*ab(kv + i, k)
+      o = lo - 1                                  ! b(k - o, :) is row k
+      associate (ab => bm%ab)
+         do k = lo, hi - 1
+            m = min(bm%reach(k), hi) - k
+            do c = 1, nrhs
+               bk = b(k - o, c)
+               if (bk == 0.0_wp) cycle
+               do i = 1, m
+                  b(k - o + i, c) = b(k - o + i, c) - bk*ab(kv + i, k)
+               end do
             end do
          end do
-         do k = n, 1, -1
-            b(k) = b(k)/ab(kv, k)
-            m = k - bm%top(k)
-            bk = b(k)
-            if (bk == 0.0_wp) cycle
-            do i = 1, m
-               b(k - i) = b(k - i) - bk*ab(kv - i, k)
+         do k = hi, lo, -1
+            m = k - max(bm%top(k), lo)
+            do c = 1, nrhs
+               b(k - o, c) = b(k - o, c)/ab(kv, k)
+               bk = b(k - o, c)
+               if (bk == 0.0_wp) cycle
+               do i = 1, m
+                  b(k - o - i, c) = b(k - o - i, c) - bk*ab(kv - i, k)
+               end do
             end do
          end do
       end associate
@@ -433,12 +493,95 @@ contains
       type(error_t), intent(inout) :: err !< status
       integer :: info
       if (.not. bm%pivoting) then
-         call solve_unpivoted(bm, b)
+         call solve_unpivoted(bm, 1, b, 1, bm%n)
          return
       end if
       call dgbtrs('N', bm%n, bm%kl, bm%ku, 1, bm%ab, bm%ldab, bm%ipiv, b, bm%n, info)
       if (info /= 0) call set_error(err, stat_numerical, 'banded_solve: dgbtrs failed')
    end subroutine banded_solve
+
+   !> banded_solve_range for one right-hand side: b (hi - lo + 1) holds the rows lo..hi
+   !> (pass b(lo:hi) of a whole vector, or a vector of its own).
+   subroutine solve_range_vector(bm, b, lo, hi, err)
+      type(banded_t), intent(inout) :: bm !< factored matrix (the scratch is used)
+      real(wp), intent(inout) :: b(:)     !< (hi - lo + 1) right-hand side, then solution
+      integer, intent(in) :: lo           !< first row of the block
+      integer, intent(in) :: hi           !< last row of the block
+      type(error_t), intent(inout) :: err !< status
+      if (range_ok(bm, size(b), lo, hi, err)) call solve_range(bm, 1, b, lo, hi, err)
+   end subroutine solve_range_vector
+
+   !> banded_solve_range for several right-hand sides at once (one sweep over the band):
+   !> b (hi - lo + 1, nrhs) holds their rows lo..hi, one column each.
+   subroutine solve_range_matrix(bm, b, lo, hi, err)
+      type(banded_t), intent(inout) :: bm  !< factored matrix (the scratch is used)
+      real(wp), intent(inout) :: b(:, :)   !< (hi - lo + 1, nrhs) right-hand sides, then
+                                           !< solutions
+      integer, intent(in) :: lo            !< first row of the block
+      integer, intent(in) :: hi            !< last row of the block
+      type(error_t), intent(inout) :: err  !< status
+      if (range_ok(bm, size(b, 1), lo, hi, err)) &
+         call solve_range(bm, size(b, 2), b, lo, hi, err)
+   end subroutine solve_range_matrix
+
+   !> True when lo..hi are rows of the factorised matrix (an empty range lo = hi + 1
+   !> included) and nb = hi - lo + 1; an input error naming banded_solve_range if not.
+   logical function range_ok(bm, nb, lo, hi, err)
+      type(banded_t), intent(in) :: bm    !< matrix
+      integer, intent(in) :: nb           !< rows of the right-hand side given
+      integer, intent(in) :: lo           !< first row of the block
+      integer, intent(in) :: hi           !< last row of the block
+      type(error_t), intent(inout) :: err !< status
+      character(len=160) :: msg
+      range_ok = .false.
+      if (lo < 1 .or. hi > bm%n .or. hi < lo - 1 .or. nb /= hi - lo + 1) then
+         write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'banded_solve_range: rows ', lo, '..', hi, &
+            ' with ', nb, ' values, of a matrix of order ', bm%n
+         call set_error(err, stat_input, trim(msg))
+      else if (.not. bm%factored) then
+         call set_error(err, stat_input, 'banded_solve_range: the matrix is not factorised')
+      else
+         range_ok = .true.
+      end if
+   end function range_ok
+
+   !> Solve A X = B in place for the rows lo..hi alone, with the LU factors of the whole
+   !> band, when those rows are a diagonal block of A: no unknown in lo..hi coupled to
+   !> one outside (block-diagonal matrices in the module header). Without pivoting the
+   !> solve runs over lo..hi (the envelope clipped to them); with pivoting, dgbtrs on
+   !> the sub-matrix from column lo, its pivots shifted by lo - 1 into the scratch
+   !> bm%ipiv_range (nothing allocates; the scratch makes bm intent(inout), so concurrent
+   !> solves need copies of bm). A pivot of rows lo..hi outside them (A not
+   !> block-diagonal there) is a numerical error.
+   subroutine solve_range(bm, nrhs, b, lo, hi, err)
+      type(banded_t), intent(inout) :: bm !< factored matrix
+      integer, intent(in) :: nrhs         !< right-hand sides
+      integer, intent(in) :: lo           !< first row of the block
+      integer, intent(in) :: hi           !< last row of the block
+      real(wp), intent(inout) :: b(hi - lo + 1, nrhs) !< their rows lo..hi, then solutions
+      type(error_t), intent(inout) :: err !< status
+      integer :: info, k, nr
+      character(len=160) :: msg
+      nr = hi - lo + 1
+      if (nr == 0 .or. nrhs == 0) return
+      if (.not. bm%pivoting) then
+         call solve_unpivoted(bm, nrhs, b, lo, hi)
+         return
+      end if
+      do k = 1, nr
+         bm%ipiv_range(k) = bm%ipiv(lo - 1 + k) - (lo - 1)
+         if (bm%ipiv_range(k) < 1 .or. bm%ipiv_range(k) > nr) then
+            write (msg, '(a,i0,a,i0,a,i0,a,i0,a)') 'banded_solve_range: row ', &
+               lo - 1 + k, ' pivoted with row ', bm%ipiv(lo - 1 + k), ', outside rows ', &
+               lo, '..', hi, ' (the matrix is not block-diagonal there)'
+            call set_error(err, stat_numerical, trim(msg))
+            return
+         end if
+      end do
+      call dgbtrs('N', nr, bm%kl, bm%ku, nrhs, bm%ab(1, lo), bm%ldab, bm%ipiv_range, b, &
+                  nr, info)
+      if (info /= 0) call set_error(err, stat_numerical, 'banded_solve_range: dgbtrs failed')
+   end subroutine solve_range
 
    !> LU-factorise a dense square matrix in place with partial pivoting (dgetrf): the
    !> small junction systems of rodyn_arrowhead. A zero pivot is a numerical error.
