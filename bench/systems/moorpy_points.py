@@ -12,7 +12,7 @@ still water level z = 0, flat seabed z = -100 m; z up):
   crowfoot      three legs of 420 m from FIXED anchors at radius 400 m, headings 0, 120,
                 240 deg, z = -100, to one FREE HUB (MASS 5000 kg, VOLUME 30 m3) started at
                 (0, 0, -30), with a steady external force of 50 kN along +x on the HUB
-                (rodyn: `*LOAD, POINT=HUB`, an assumed syntax; MoorPy: the point's fExt).
+                (rodyn: `*LOAD, POINT=HUB`; MoorPy: the point's fExt).
                 The legs lie partly on the seabed (241 to 282 m grounded).
   chain_of_two  two lines of 110 m in series between FIXED P1 (0, 0, -20) and P3
                 (200, 0, -20) through a FREE CONNECTOR of 500 kg (no volume) started at
@@ -34,7 +34,7 @@ MoorPy's conventions (MoorPy 1.3.0: moorpy/system.py, point.py, line.py, Catenar
   crowfoot's legs run from the anchor, end A). rodyn's seabed is a penalty: the decks'
   *SEABED STIFFNESS is 3e7 Pa/m on the diameter, ten times rodyn's default, so that the
   grounded chain sinks w/(k d) = 0.17 mm instead of 1.7 mm. Measured with --pinned
-  (today's rodyn, the crowfoot's legs alone, ends pinned at MoorPy's equilibrium), the
+  (rodyn without points: the crowfoot's legs alone, ends pinned at MoorPy's equilibrium), the
   legs' end tensions differ from MoorPy's by at most 5.6e-6 with 3e7 Pa/m and 240 cubic
   elements a leg, but 4.6e-5 with 3e6 Pa/m (the sinking) and 1.6e-5 with 120 elements
   (the touchdown's resolution); the crowfoot's legs therefore have 240 elements, the
@@ -89,7 +89,7 @@ lengths and lowest points are stored for reference only.
   python3 bench/systems/moorpy_points.py --quick [--rodyn build/rodyn]
                                           # rodyn on the decks against the stored values
   python3 bench/systems/moorpy_points.py --pinned [--rodyn build/rodyn]
-                                          # today's rodyn (no *POINT): each case's lines
+                                          # without *POINT: each case's lines
                                           # alone, ends PINNED at MoorPy's equilibrium
 Results: bench/results/moorpy_points.csv; decks: bench/systems/decks/<case>.inp
 (written by --write from the CASES below; --quick runs the files as they are and says
@@ -174,7 +174,7 @@ def case_points(case):
 
 # ---------------------------------------------------------------------------- decks
 def deck_text(name):
-    """The rodyn deck of a case in the *POINT syntax (docs/deck.md of the systems issue)."""
+    """The rodyn deck of a case in the *POINT syntax (docs/deck.md, *POINT)."""
     case = CASES[name]
     pts = case_points(case)
     out = [f"** bench/systems/decks/{name}.inp, the MoorPy cross-check of lines joined at",
@@ -212,9 +212,7 @@ def deck_text(name):
         out.append(f"*LINE, NAME={ln}, SECTION=CHAIN, LENGTH={fmt(length)}, ELEMENTS={ne}, "
                    f"ORDER={ORDER}, ELEMENT=CABLE, POINT A={a}, POINT B={b}")
     for pname, f in case["loads"].items():
-        out.append("** a steady force on the point, global axes [N]. ASSUMED SYNTAX: *LOAD takes")
-        out.append("** LINE= with END=/NODE= today; POINT= is what the systems issue is expected")
-        out.append("** to add (MoorPy: the point's fExt)")
+        out.append("** a steady force on the point, global axes [N] (MoorPy: the point's fExt)")
         out.append(f"*LOAD, POINT={pname}")
         out.append(", ".join(fmt(c) for c in f))
     out.append(f"*STATIC, INCREMENTS={case['increments']}, MAX ITERATIONS=50")
@@ -700,7 +698,7 @@ def quick(args):
 
 
 def pinned_deck(name, ref):
-    """Today's syntax: the case's lines alone, each end PINNED where MoorPy puts its point."""
+    """Without points: the case's lines alone, each end PINNED where MoorPy puts its point."""
     case = CASES[name]
     pts = case_points(case)
     r = {p: pts[p]["r"].copy() for p in pts}

@@ -16,8 +16,8 @@ program rodyn
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_assembly, only: dof_map
-   use rodyn_recovery, only: recover_static
-   use rodyn_results, only: line_result_t, run_summary_t
+   use rodyn_recovery, only: recover_static, recover_system
+   use rodyn_results, only: line_result_t, run_summary_t, system_result_t
    use rodyn_output, only: output_write_static, output_write_status, status_dynamics_pending
    use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
    use rodyn_run_dynamic, only: run_dynamic, dynamic_not_available, stderr_is_terminal
@@ -45,6 +45,7 @@ program rodyn
    type(mesh_t), target :: mesh
    type(state_t), target :: state
    type(static_problem_t), allocatable :: prob
+   type(system_result_t) :: system
    type(run_summary_t) :: summary
    type(line_result_t), allocatable :: lines(:)
    type(state_t), target :: dstate
@@ -146,7 +147,12 @@ program rodyn
       if (has_error(err)) write (error_unit, '(a)') opts%deck//': error: '//err%message
       ! results of the last converged state, complete or not
       call recover_static(model, prob, lines)
-      call output_write_static(opts%outdir, model, lines, summary, out_err)
+      if (summary%complete) then
+         call recover_system(model, prob, system, err)
+         call output_write_static(opts%outdir, model, lines, summary, out_err, system)
+      else
+         call output_write_static(opts%outdir, model, lines, summary, out_err)
+      end if
       if (has_error(out_err)) then
          write (error_unit, '(a)') out_err%message
          if (.not. has_error(err)) call finish(stat_io)

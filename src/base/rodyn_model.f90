@@ -23,6 +23,7 @@ module rodyn_model
    public :: rao_interp_complex, rao_interp_polar
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
+   public :: point_t, point_fixed, point_free, point_kind_names
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
    real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
@@ -53,6 +54,11 @@ module rodyn_model
    ! Interpolation of an RAO table (*VESSEL, INTERPOLATION=...)
    integer, parameter :: rao_interp_complex = 1  !< real and imaginary parts
    integer, parameter :: rao_interp_polar = 2    !< amplitude, and phase on the shorter arc
+
+   ! Kinds of point (*POINT, TYPE=...)
+   integer, parameter :: point_fixed = 1   !< held in place: the line ends on it are pinned
+   integer, parameter :: point_free = 2    !< moves with the lines: 3 unknowns of its own
+   character(len=5), parameter :: point_kind_names(2) = [character(len=5) :: 'FIXED', 'FREE']
 
    ! Symbolic node numbers for the two ends of a line (resolved by the mesh)
    integer, parameter :: end_a = 1         !< first node of a line (S = 0)
@@ -111,14 +117,34 @@ module rodyn_model
       integer, allocatable :: seg_elements(:)   !< (nseg) number of elements
       character(len=:), allocatable :: card_at  !< 'FILE:LINE' of its *LINE card (unset
                                                 !< for a line built in code)
+      integer :: point_a = 0        !< point end A is attached to (model%points; 0: none)
+      integer :: point_b = 0        !< point end B is attached to (0: none)
    end type line_def_t
+
+   !> A point of a mooring system (*POINT): where line ends meet (pinned). A FIXED point
+   !> holds them (an anchor, a fairlead on a fixed structure); a FREE point is a body of
+   !> its own with three translations (a connector, a clump weight, a subsea buoy): its
+   !> weight MASS g less the buoyancy of VOLUME (as an *ATTACHMENT's), the drag
+   !> 1/2 rho_w CDA |u| u on the velocity of the water relative to it, and the inertia
+   !> MASS + CA rho_w VOLUME (docs/systems.md).
+   type :: point_t
+      character(len=name_len) :: name = ''
+      integer :: kind = point_fixed     !< point_fixed or point_free
+      real(wp) :: position(3) = 0.0_wp  !< position at the start [m]
+      real(wp) :: mass = 0.0_wp         !< mass [kg]
+      real(wp) :: volume = 0.0_wp       !< displaced volume [m3]
+      real(wp) :: cda_area = 0.0_wp     !< drag coefficient times area, Cd A [m2]
+      real(wp) :: ca = 0.0_wp           !< added-mass coefficient on rho_w volume [-]
+      character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
+   end type point_t
 
    !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an
    !> unstretched arc length S from end A, applied at the node nearest to S (the mesh
    !> reports the distance). Force: (mass g - rho_w g volume submerged) plus Morison drag
    !> 1/2 rho_w cda_area |u| u on the relative velocity; inertia mass + ca rho_w volume.
    type :: attachment_t
-      integer :: line = 0           !< index into model%lines
+      integer :: line = 0           !< index into model%lines (0: on a point)
+      integer :: point = 0          !< a FREE point's own load (model%points; 0: on a line)
       real(wp) :: s = 0.0_wp        !< arc length from end A [m]
       real(wp) :: mass = 0.0_wp     !< mass [kg]
       real(wp) :: volume = 0.0_wp   !< displaced volume [m3]
@@ -219,7 +245,8 @@ module rodyn_model
 
    !> A point force and moment at a node (*LOAD), fixed in space.
    type :: point_load_t
-      integer :: line = 0           !< index into model%lines
+      integer :: line = 0           !< index into model%lines (0: on a point)
+      integer :: point = 0          !< index into model%points of a FREE point (0: on a line)
       integer :: node = end_a       !< node number along the line, or end_a / end_b
       real(wp) :: force(3) = 0.0_wp !< force [N]
       real(wp) :: moment(3) = 0.0_wp !< moment [N m]
@@ -369,6 +396,7 @@ module rodyn_model
       type(vessel_t), allocatable :: vessels(:)
       type(initial_velocity_t), allocatable :: initial_velocities(:)
       type(attachment_t), allocatable :: attachments(:)
+      type(point_t), allocatable :: points(:)        !< *POINT, in deck order
       type(water_t) :: water
       type(seabed_t) :: seabed
       type(waves_t) :: waves

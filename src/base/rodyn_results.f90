@@ -6,7 +6,7 @@ module rodyn_results
    use rodyn_model, only: name_len
    implicit none
    private
-   public :: line_result_t, run_summary_t, step_log_t
+   public :: line_result_t, run_summary_t, step_log_t, system_result_t
 
    !> Static results of one line.
    type :: line_result_t
@@ -33,6 +33,16 @@ module rodyn_results
       real(wp) :: reaction(6, 2) = 0.0_wp      !< (Fx,Fy,Fz,Mx,My,Mz) at end A, end B [N, N m]
       logical :: end_held(2) = .false.         !< end A / end B carries a support
    end type line_result_t
+
+   !> Static results of a mooring system beyond its lines: the stiffness at its FREE
+   !> points (docs/systems.md).
+   type :: system_result_t
+      integer, allocatable :: point(:)           !< (np) model%points index of each FREE
+                                                 !< point, in the order of the unknowns
+      !> (3 np, 3 np) K = -dF/dx, F the force of the lines on the points, x the points'
+      !> positions (x, y, z of each), every other unknown in equilibrium [N/m]
+      real(wp), allocatable :: stiffness(:, :)
+   end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and
    !> momentum (docs/theory.md eqs. (41)-(43): what the EMC scheme conserves).

@@ -31,8 +31,8 @@
 module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, scheme_alpha, scheme_emc, scheme_trapezoidal, motion_vessel, &
-                          vessel_t
+   use rodyn_model, only: model_t, end_a, end_b, scheme_alpha, scheme_emc, scheme_trapezoidal, &
+                          motion_vessel, vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather, copy_values
    use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields, &
@@ -50,6 +50,7 @@ module rodyn_dynamics
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
+   use rodyn_junctions, only: junctions_condense
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_motion, only: motion_displacement, motion_rotation, vessel_offset_rest
@@ -73,7 +74,7 @@ module rodyn_dynamics
       real(wp), allocatable :: xf(:, :)        !< (3, nn) positions at the force point [m]
       real(wp), allocatable :: vf(:, :)        !< (3, nn) velocities at the force point [m/s]
       real(wp), allocatable :: af_acc(:, :)    !< (3, nn) accelerations of the scheme [m/s2]
-      real(wp), allocatable :: gfac(:)         !< (nl) ones: the weight in full
+      real(wp), allocatable :: gfac(:)         !< (0:nl) ones: the weight in full
       type(inertia_t) :: inert
       !> roll gauges (rodyn_statics' header) of the runs of rod elements whose roll has
       !> no inertia (no OD, no RHOI) nor support: node (0 after the last), stiffness
@@ -152,7 +153,7 @@ contains
       prob%sup%moved = .false.     ! POSITION targets were reached in statics
       call loads_build(model, mesh, prob%loads)
       call water_loads_build(model, mesh, prob%water)
-      allocate (prob%gfac(mesh%n_lines))
+      allocate (prob%gfac(0:mesh%n_lines))
       prob%gfac = 1.0_wp
       if (prob%water%active) then
          allocate (prob%xf(3, nn), prob%vf(3, nn), prob%af_acc(3, nn))
@@ -223,7 +224,9 @@ contains
    end subroutine dynamics_setup
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
-   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes.
+   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes. A FREE
+   !> point moves with the ends on it: its velocity is the mean of theirs, and they take
+   !> it (ends of lines given different velocities meet at the point's).
    subroutine apply_initial_velocities(model, mesh, state)
       type(model_t), intent(in) :: model     !< model
       type(mesh_t), intent(in) :: mesh       !< mesh
@@ -248,7 +251,37 @@ contains
             end do
          end associate
       end do
+      call point_velocities(mesh, state)
    end subroutine apply_initial_velocities
+
+   !> Each FREE point's velocity the mean of its ends', and the ends' the point's.
+   pure subroutine point_velocities(mesh, state)
+      type(mesh_t), intent(in) :: mesh       !< mesh with its point nodes
+      type(state_t), intent(inout) :: state  !< velocities
+      integer :: q, l, k, n, ne
+      real(wp) :: v(3)
+      do q = 1, size(mesh%point_node)
+         if (mesh%point_node(q) == 0) cycle
+         v = 0.0_wp
+         ne = 0
+         do l = 1, mesh%n_lines
+            do k = 1, 2
+               if (mesh%end_point_node(k, l) /= mesh%point_node(q)) cycle
+               n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+               v = v + state%v(:, n)
+               ne = ne + 1
+            end do
+         end do
+         v = v/real(max(ne, 1), wp)
+         state%v(:, mesh%point_node(q)) = v
+         do l = 1, mesh%n_lines
+            do k = 1, 2
+               if (mesh%end_point_node(k, l) /= mesh%point_node(q)) cycle
+               state%v(:, mesh_node(mesh, l, merge(end_a, end_b, k == 1))) = v
+            end do
+         end do
+      end do
+   end subroutine point_velocities
 
    !> Start a step from t0 to t0 + dt: remember the state at t_n, set the loads at the
    !> midpoint and the prescribed positions at t_n+1, and predict the iterate by the state
@@ -264,7 +297,7 @@ contains
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
       real(wp) :: tm, w0, scale0
-      integer :: node, i
+      integer :: node, i, k
       prob%t0 = t0
       prob%dt = dt
       prob%base_set = .false.
@@ -321,6 +354,14 @@ contains
          else
             prob%dx(:, node) = 0.0_wp
          end if
+      end do
+      ! a line end on a FREE point moves with it (theory.md (131)): the point's predictor
+      do i = 1, prob%mesh%n_lines
+         do k = 1, 2
+            node = prob%mesh%end_point_node(k, i)
+            if (node > 0) prob%dx(:, mesh_node(prob%mesh, i, merge(end_a, end_b, k == 1))) &
+               = prob%dx(:, node)
+         end do
       end do
       prob%s1%x = prob%s0%x + prob%dx
       prob%s1%d = prob%s0%d
@@ -515,6 +556,7 @@ contains
          if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
+      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k)
    end subroutine dyn_evaluate
 
    !> The water's and seabed's loads of the step (rodyn_water) at the force point of the

@@ -43,14 +43,14 @@ module rodyn_deck
                                resolve_segments, validate_water, dynamic_scheme_default
    use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings, &
                                read_wave_probe_card
+   use rodyn_deck_line, only: read_line_card, all_cable, check_line_element, &
+                              check_line_geometry, static_analysis_runs, check_supported, &
+                              check_straight_start
+   use rodyn_deck_system, only: read_point_card, resolve_line_points, resolve_load_points, &
+                                check_point_ends, system_complete
    implicit none
    private
    public :: deck_read
-
-   real(wp), parameter :: coincide_tol = 1.0e-9_wp     !< ends coincide below tol*LENGTH
-   real(wp), parameter :: overlong_tol = 1.0e-12_wp    !< ends too far above (1+tol)*LENGTH
-   real(wp), parameter :: straight_tol = 1.0e-9_wp     !< relative tolerance, free lines
-   real(wp), parameter :: parallel_tol = 1.0e-6_wp     !< d1 hint parallel to the chord
 
 contains
 
@@ -102,6 +102,7 @@ contains
       allocate (model%vessels(keyword_count(deck, 'VESSEL')))
       allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
       allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
+      allocate (model%points(keyword_count(deck, 'POINT')))
       allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
       allocate (pend%section_card(size(model%sections)))
       allocate (pend%line_section(size(model%lines)))
@@ -118,6 +119,8 @@ contains
       allocate (pend%seg_length(size(pend%seg_line)))
       allocate (pend%seg_elements(size(pend%seg_line)))
       allocate (pend%att_line(size(model%attachments)))
+      allocate (pend%line_point_a(size(model%lines)), pend%line_point_b(size(model%lines)))
+      allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -156,6 +159,7 @@ contains
       model%vessels = model%vessels(1:pend%n_vessels)
       model%initial_velocities = model%initial_velocities(1:pend%n_ivs)
       model%attachments = model%attachments(1:pend%n_attachments)
+      model%points = model%points(1:pend%n_points)
    end subroutine trim_model
 
    !> Hand card `ic` to the reader of its keyword.
@@ -204,6 +208,8 @@ contains
             call read_segment_card(card, ic, pend, err)
          case ('ATTACHMENT')
             call read_attachment_card(deck, ic, model, pend, err)
+         case ('POINT')
+            call read_point_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
@@ -351,106 +357,6 @@ contains
       pend%section_card(pend%n_sections) = ic
    end subroutine read_section_card
 
-   !> *LINE: a rod between end A and end B; data line xA, yA, zA, xB, yB, zB and an
-   !> optional line v1x, v1y, v1z (direction d1 should point to). SECTION=, LENGTH= and
-   !> ELEMENTS= are required together; without SECTION= the line is made of *SEGMENT
-   !> cards, and LENGTH= and ELEMENTS= are optional (checked against the segments).
-   !> The geometry that depends on the length is checked by check_line_geometry.
-   subroutine read_line_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *LINE card
-      type(model_t), intent(inout) :: model   !< model: one line appended
-      type(pending_t), intent(inout) :: pend  !< remembers the SECTION= reference
-      type(error_t), intent(inout) :: err     !< status
-      character(len=*), parameter :: what1 = 'xA, yA, zA, xB, yB, zB'
-      character(len=*), parameter :: what2 = 'v1x, v1y, v1z'
-      type(line_def_t) :: line
-      character(len=:), allocatable :: name, section
-      real(wp) :: x(6), v(3), vn
-      logical :: plain
-      integer :: il
-
-      associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
-                                'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT'], err)
-         if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do il = 1, pend%n_lines
-            if (model%lines(il)%name == name) then
-               call card_error(card, "line '"//name//"' is already defined (at "// &
-                               location(deck, pend%line_section(il)%card)//')', err)
-               return
-            end if
-         end do
-         line%name = name
-         line%card_at = card%file//':'//int_str(card%line)
-         section = ''
-         call card_get_name(card, 'SECTION', section, err)
-         if (has_error(err)) return
-         plain = len(section) > 0     ! else segmented: LENGTH, ELEMENTS optional
-
-         call card_get_real(card, 'LENGTH', line%length, err, required=plain)
-         if (has_error(err)) return
-         if (card_find_param(card, 'LENGTH') > 0 .and. .not. line%length > 0.0_wp) then
-            call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
-                            real_str(line%length), err)
-            return
-         end if
-         if (line%length > max_distance) then
-            call param_fail(card, 'LENGTH', 'LENGTH must be at most '// &
-                            real_str(max_distance)//' m, got '//real_str(line%length), err)
-            return
-         end if
-         call card_get_int(card, 'ELEMENTS', line%n_elements, err, required=plain)
-         if (has_error(err)) return
-         if (card_find_param(card, 'ELEMENTS') > 0 .and. &
-             (line%n_elements < 1 .or. line%n_elements > max_elements)) then
-            call param_fail(card, 'ELEMENTS', 'ELEMENTS must be between 1 and '// &
-                            int_str(max_elements)//', got '//int_str(line%n_elements), err)
-            return
-         end if
-         call card_get_int(card, 'ORDER', line%order, err)
-         if (has_error(err)) return
-         if (line%order < 1 .or. line%order > 3) then
-            call param_fail(card, 'ORDER', 'ORDER must be 1, 2 or 3, got '// &
-                            int_str(line%order), err)
-            return
-         end if
-
-         call card_get_choice(card, 'ELEMENT', element_names, line%element, err)
-         if (has_error(err)) return
-
-         call card_check_data(card, 1, 2, err, what1)
-         if (has_error(err)) return
-         call card_data_reals(card, 1, 6, x, err, what1)
-         if (has_error(err)) return
-         if (maxval(abs(x)) > max_distance) then
-            call card_data_error(card, 1, 'a coordinate of '//real_str(maxval(abs(x)))// &
-                                 ' m is not physical: the ends must lie within '// &
-                                 real_str(max_distance)//' m of the origin', err)
-            return
-         end if
-         line%end_a = x(1:3)
-         line%end_b = x(4:6)
-
-         if (card%n_data >= 2) then
-            call card_data_reals(card, 2, 3, v, err, what2)
-            if (has_error(err)) return
-            vn = norm2(v)
-            if (.not. vn > 0.0_wp) then
-               call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is zero', err)
-               return
-            end if
-            line%has_d1_hint = .true.
-            line%d1_hint = v/vn
-         end if
-      end associate
-      pend%n_lines = pend%n_lines + 1
-      model%lines(pend%n_lines) = line
-      pend%line_section(pend%n_lines) = ref_t(section, ic)
-   end subroutine read_line_card
-
    !> *BOUNDARY: a node constraint of TYPE FREE, PINNED, HINGED (data line: axis),
    !> CLAMPED or POSITION (data line: position), at END=A|B or NODE=k of LINE=name.
    subroutine read_boundary_card(card, ic, model, pend, err)
@@ -520,17 +426,30 @@ contains
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'Fx, Fy, Fz, Mx, My, Mz'
       type(point_load_t) :: load
-      character(len=:), allocatable :: line, amplitude
+      character(len=:), allocatable :: line, amplitude, point
       real(wp) :: v(6)
       integer :: n
 
       call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
-                             'AMPLITUDE'], err)
+                             'AMPLITUDE', 'POINT'], err)
       if (has_error(err)) return
-      call card_get_name(card, 'LINE', line, err, required=.true.)
+      line = ''
+      point = ''
+      call card_get_name(card, 'POINT', point, err)
       if (has_error(err)) return
-      call get_node(card, load%node, err)
-      if (has_error(err)) return
+      if (len(point) > 0) then       ! on a FREE point (rodyn_deck_system)
+         if (card_find_param(card, 'LINE') > 0 .or. card_find_param(card, 'END') > 0 .or. &
+             card_find_param(card, 'NODE') > 0) then
+            call param_fail(card, 'POINT', 'give POINT= or LINE= with END= or NODE=, not'// &
+                            ' both', err)
+            return
+         end if
+      else
+         call card_get_name(card, 'LINE', line, err, required=.true.)
+         if (has_error(err)) return
+         call get_node(card, load%node, err)
+         if (has_error(err)) return
+      end if
       amplitude = ''
       call card_get_name(card, 'AMPLITUDE', amplitude, err)
       if (has_error(err)) return
@@ -551,6 +470,7 @@ contains
       pend%n_loads = pend%n_loads + 1
       model%loads(pend%n_loads) = load
       pend%load_line(pend%n_loads) = ref_t(line, ic)
+      pend%load_point(pend%n_loads) = ref_t(point, ic)
       pend%load_amp(pend%n_loads) = ref_t(amplitude, ic)
    end subroutine read_load_card
 
@@ -654,14 +574,6 @@ contains
       end if
    end subroutine get_pair
 
-   !> Cross product a x b.
-   pure function cross(a, b) result(c)
-      real(wp), intent(in) :: a(3)  !< first vector
-      real(wp), intent(in) :: b(3)  !< second vector
-      real(wp) :: c(3)              !< a x b
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross
-
    ! ================================================================ validation
 
    !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE;
@@ -687,6 +599,8 @@ contains
       end if
 
       call resolve_segments(deck, pend, model, err)
+      if (has_error(err)) return
+      call resolve_line_points(deck, pend, model, err)
       if (has_error(err)) return
       do il = 1, size(model%lines)
          call check_line_geometry(deck%cards(pend%line_section(il)%card), model%lines(il), &
@@ -717,6 +631,7 @@ contains
                                'must be FREE, PINNED or POSITION', err)
          case ('LOAD')
             iload = iload + 1
+            if (len(pend%load_point(iload)%name) > 0) cycle   ! (resolve_load_points)
             call resolve_line(deck%cards(ic), pend%load_line(iload)%name, model, &
                               iref, model%loads(iload)%node, err)
             if (has_error(err)) return
@@ -728,9 +643,15 @@ contains
          end select
          if (has_error(err)) return
       end do
+      call resolve_load_points(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_point_ends(deck, pend, model, err)
+      if (has_error(err)) return
       call validate_dynamics(deck, pend, model, err)
       if (has_error(err)) return
       call validate_water(deck, pend, model, err)
+      if (has_error(err)) return
+      call system_complete(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)
@@ -748,96 +669,6 @@ contains
          if (has_error(err)) return
       end do
    end subroutine validate_model
-
-   !> Whether line il is made of cable elements only: its ELEMENT=, else its sections'.
-   pure logical function all_cable(model, il)
-      type(model_t), intent(in) :: model !< model, segments resolved
-      integer, intent(in) :: il          !< line
-      associate (line => model%lines(il))
-         if (line%element /= 0) then
-            all_cable = line%element == element_cable
-         else if (allocated(line%seg_section)) then
-            all_cable = all(model%sections(line%seg_section)%element == element_cable)
-         else
-            all_cable = model%sections(line%section)%element == element_cable
-         end if
-      end associate
-   end function all_cable
-
-   !> ELEMENT=ROD on a line needs rod sections: a section of EI1 = EI2 = GJ = 0 (or
-   !> ELEMENT=CABLE) cannot be a rod.
-   subroutine check_line_element(card, model, il, err)
-      type(card_t), intent(in) :: card       !< the *LINE card
-      type(model_t), intent(in) :: model     !< model, segments resolved
-      integer, intent(in) :: il              !< line
-      type(error_t), intent(inout) :: err    !< status
-      integer :: k, is
-      if (model%lines(il)%element /= element_rod) return
-      do k = 1, max(1, merge(size(model%lines(il)%seg_section), 0, &
-                             allocated(model%lines(il)%seg_section)))
-         is = model%lines(il)%section
-         if (allocated(model%lines(il)%seg_section)) is = model%lines(il)%seg_section(k)
-         if (model%sections(is)%element == element_cable) then
-            call param_fail(card, 'ELEMENT', 'ELEMENT=ROD, but section '// &
-                            trim(model%sections(is)%name)//' is a cable section '// &
-                            '(ELEMENT=CABLE, or EI1 = EI2 = GJ = 0)', err)
-            return
-         end if
-      end do
-   end subroutine check_line_element
-
-   !> The geometry of a line with its total length (segments resolved): the ends do not
-   !> coincide, are not farther apart than the length, and the d1 hint is not parallel
-   !> to the chord. Reported at the *LINE card's data lines.
-   subroutine check_line_geometry(card, line, err)
-      type(card_t), intent(in) :: card       !< the *LINE card
-      type(line_def_t), intent(in) :: line   !< the line, length resolved
-      type(error_t), intent(inout) :: err    !< status
-      real(wp) :: chord(3), dist
-
-      chord = line%end_b - line%end_a
-      dist = norm2(chord)
-      if (dist < coincide_tol*line%length) then
-         call card_data_error(card, 1, 'ends A and B coincide', err)
-         return
-      end if
-      if (dist > line%length*(1.0_wp + overlong_tol)) then
-         call card_data_error(card, 1, 'the distance between ends A and B ('// &
-                              real_str(dist)//' m) is greater than LENGTH ('// &
-                              real_str(line%length)//' m)', err)
-         return
-      end if
-      if (.not. line%has_d1_hint) return
-      if (norm2(cross(line%d1_hint, chord/dist)) < parallel_tol) then
-         call card_data_error(card, 2, 'the d1 direction v1x, v1y, v1z is parallel '// &
-                              'to the chord from end A to end B', err)
-      end if
-   end subroutine check_line_geometry
-
-   !> True unless the deck asks only for a dynamic analysis from the defined shape
-   !> (*DYNAMIC with START=DEFINED and no *STATIC): a static analysis then never runs.
-   pure logical function static_analysis_runs(model)
-      type(model_t), intent(in) :: model  !< model with its analysis options read
-      static_analysis_runs = .not. (model%dynamic%requested .and. &
-                                    .not. model%dynamic%start_static .and. &
-                                    .not. model%static%requested)
-   end function static_analysis_runs
-
-   !> A line with no node held in position is a free body: it has no static solution
-   !> (checked only when a static analysis runs, see static_analysis_runs).
-   subroutine check_supported(card, model, il, err)
-      type(card_t), intent(in) :: card      !< the *LINE card
-      type(model_t), intent(in) :: model    !< model with resolved constraints
-      integer, intent(in) :: il             !< line to check
-      type(error_t), intent(inout) :: err   !< status
-      integer :: ib
-      do ib = 1, size(model%constraints)
-         if (model%constraints(ib)%line == il .and. model%constraints(ib)%kind /= bc_free) return
-      end do
-      call card_error(card, 'nothing holds line '//trim(model%lines(il)%name)// &
-                      ' in position: a static analysis needs at least one *BOUNDARY of'// &
-                      ' TYPE PINNED, HINGED, CLAMPED or POSITION on it', err)
-   end subroutine check_supported
 
    !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
    !> END=B is the last node).
@@ -882,46 +713,5 @@ contains
          end associate
       end do
    end subroutine resolve_section_defaults
-
-   !> A line not held in position at both ends (PINNED, HINGED, CLAMPED or POSITION)
-   !> starts straight from A towards B, so its end distance must equal LENGTH.
-   subroutine check_straight_start(card, model, il, err)
-      type(card_t), intent(in) :: card      !< the *LINE card
-      type(model_t), intent(in) :: model    !< model with resolved constraints
-      integer, intent(in) :: il             !< line to check
-      type(error_t), intent(inout) :: err   !< status
-      logical :: held_a, held_b
-      integer :: ib, nn, node
-      real(wp) :: dist
-      character(len=:), allocatable :: which
-
-      associate (line => model%lines(il))
-         nn = node_count(line)
-         held_a = .false.
-         held_b = .false.
-         do ib = 1, size(model%constraints)
-            associate (b => model%constraints(ib))
-               if (b%line /= il .or. b%kind == bc_free) cycle
-               node = node_number(b%node, nn)
-               if (node == 1) held_a = .true.
-               if (node == nn) held_b = .true.
-            end associate
-         end do
-         if (held_a .and. held_b) return
-         dist = norm2(line%end_b - line%end_a)
-         if (abs(dist - line%length) <= straight_tol*line%length) return
-         if (.not. held_a .and. .not. held_b) then
-            which = 'ends A and B are free'
-         else if (.not. held_a) then
-            which = 'end A is free'
-         else
-            which = 'end B is free'
-         end if
-         call card_error(card, which//', so line '//trim(line%name)//' starts straight'// &
-                         ' from A towards B: the distance between its ends ('// &
-                         real_str(dist)//' m) must equal LENGTH ('//real_str(line%length)// &
-                         ' m)', err)
-      end associate
-   end subroutine check_straight_start
 
 end module rodyn_deck

@@ -15,6 +15,7 @@ module rodyn_deck_support
    private
    public :: ref_t, pending_t, max_cutbacks, max_elements
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
+   public :: get_lumped_body
    public :: check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
@@ -50,6 +51,10 @@ module rodyn_deck_support
       real(wp), allocatable :: seg_length(:)      !< per *SEGMENT: LENGTH [m]
       integer, allocatable :: seg_elements(:)     !< per *SEGMENT: ELEMENTS
       type(ref_t), allocatable :: att_line(:)     !< per attachment: its LINE=
+      type(ref_t), allocatable :: line_point_a(:) !< per line: its POINT A= ('' if none)
+      type(ref_t), allocatable :: line_point_b(:) !< per line: its POINT B= ('' if none)
+      type(ref_t), allocatable :: load_point(:)   !< per load: its POINT= ('' if on a line)
+      integer, allocatable :: point_card(:)       !< per point: card index
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far
@@ -62,6 +67,7 @@ module rodyn_deck_support
       integer :: n_ivs = 0          !< initial velocities read so far
       integer :: n_segments = 0     !< segments read so far
       integer :: n_attachments = 0  !< attachments read so far
+      integer :: n_points = 0       !< points read so far
       integer :: heading = 0   !< card of the first *HEADING (0: none yet)
       integer :: gravity = 0   !< card of the first *GRAVITY
       integer :: static = 0    !< card of the first *STATIC
@@ -136,6 +142,26 @@ contains
          call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
       end if
    end subroutine get_bounded
+
+   !> MASS=, VOLUME=, CDA=, CA= of a lumped body (*ATTACHMENT, a FREE *POINT): each >= 0
+   !> (unchanged if absent), and CA > 0 only with VOLUME > 0 (the added mass is
+   !> CA rho_w VOLUME).
+   subroutine get_lumped_body(card, mass, volume, cda_area, ca, err)
+      type(card_t), intent(in) :: card       !< the card
+      real(wp), intent(inout) :: mass        !< MASS [kg]
+      real(wp), intent(inout) :: volume      !< VOLUME [m3]
+      real(wp), intent(inout) :: cda_area    !< CDA [m2]
+      real(wp), intent(inout) :: ca          !< CA [-]
+      type(error_t), intent(inout) :: err    !< status
+      call get_bounded(card, 'MASS', mass, .false., err)
+      call get_bounded(card, 'VOLUME', volume, .false., err)
+      call get_bounded(card, 'CDA', cda_area, .false., err)
+      call get_bounded(card, 'CA', ca, .false., err)
+      if (has_error(err)) return
+      if (ca > 0.0_wp .and. .not. volume > 0.0_wp) &
+         call param_fail(card, 'CA', 'CA > 0 needs VOLUME > 0 (the added mass is'// &
+                         ' CA rho_w VOLUME)', err)
+   end subroutine get_lumped_body
 
    !> A value no physical model has: refused when above vmax, with `why` (the physical
    !> meaning of the bound, ending the message).

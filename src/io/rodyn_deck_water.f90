@@ -17,6 +17,7 @@ module rodyn_deck_water
                                card_get_name, card_check_data, card_data_table, &
                                card_data_real, real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
+                                 get_lumped_body, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most
    implicit none
@@ -261,16 +262,8 @@ contains
                             ' them does nothing)', err)
             return
          end if
-         call get_bounded(card, 'MASS', att%mass, .false., err)
-         call get_bounded(card, 'VOLUME', att%volume, .false., err)
-         call get_bounded(card, 'CDA', att%cda_area, .false., err)
-         call get_bounded(card, 'CA', att%ca, .false., err)
+         call get_lumped_body(card, att%mass, att%volume, att%cda_area, att%ca, err)
          if (has_error(err)) return
-         if (att%ca > 0.0_wp .and. .not. att%volume > 0.0_wp) then
-            call param_fail(card, 'CA', 'CA > 0 needs VOLUME > 0 (the added mass is'// &
-                            ' CA rho_w VOLUME)', err)
-            return
-         end if
       end associate
       pend%n_attachments = pend%n_attachments + 1
       model%attachments(pend%n_attachments) = att

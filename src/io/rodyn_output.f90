@@ -15,7 +15,7 @@ module rodyn_output
    use rodyn_kinds, only: i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_model, only: model_t, parameter_value_t
-   use rodyn_results, only: line_result_t, run_summary_t
+   use rodyn_results, only: line_result_t, run_summary_t, system_result_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
       temp_name, commit_rename, remove_file
    use rodyn_outdir, only: outdir_make
@@ -26,6 +26,8 @@ module rodyn_output
    use rodyn_output_common, only: text_of, status_of, path_join, one_line, env_item_t, &
                                   environment_items, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, touchdown_of, write_parameters_h5
+   use rodyn_output_points, only: write_points_csv, points_csv, write_stiffness_csv, &
+                                  stiffness_csv
    use rodyn_output_table, only: write_line_table, write_described, write_h5_root, &
                                  group_name, line_result_complete
    implicit none
@@ -65,15 +67,17 @@ contains
    !> describe the static analysis the file holds, complete or not).
    !> Works even when err already holds an error (a failed analysis still writes its
    !> outputs); an output failure is then recorded only if err was clear.
-   subroutine output_write_static(dir, model, lines, summary, err)
+   subroutine output_write_static(dir, model, lines, summary, err, system)
       character(len=*), intent(in) :: dir            !< output folder (created if missing)
       type(model_t), intent(in) :: model             !< the model (title, deck, options)
       type(line_result_t), intent(in) :: lines(:)    !< static results per line
       type(run_summary_t), intent(in) :: summary     !< how the run went
       type(error_t), intent(inout) :: err            !< status
+      type(system_result_t), intent(in), optional :: system !< the system's stiffness
       ! the files in the order written (after environment.csv, results.h5)
       character(len=*), parameter :: order(*) = [character(len=20) :: nodes_csv, &
-         elements_csv, reactions_csv, lines_csv, environment_csv, results_h5]
+         elements_csv, reactions_csv, lines_csv, points_csv, stiffness_csv, &
+         environment_csv, results_h5]
       type(error_t) :: e, e_status
       type(run_summary_t) :: s
       integer :: k, j
@@ -90,8 +94,12 @@ contains
          case (1:4)
             if (model%output%csv) call write_line_table(dir, trim(order(k)), lines, e)
          case (5)
-            if (model%output%csv) call output_write_environment(dir, model, e)
+            if (model%output%csv) call write_points_csv(dir, model, lines, e)
          case (6)
+            if (model%output%csv) call write_stiffness_csv(dir, model, system, e)
+         case (7)
+            if (model%output%csv) call output_write_environment(dir, model, e)
+         case (8)
             if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
          end select
       end do

@@ -53,6 +53,21 @@ module rodyn_output_schema
       'static_reactions.csv | My_Nm | N m | y moment of the support on the line', &
       'static_reactions.csv | Mz_Nm | N m | z moment of the support on the line', &
       'static_reactions.csv | tension_N | N | magnitude of the support force', &
+      'static_points.csv | point | - | point name (*POINT)', &
+      'static_points.csv | type | - | FIXED or FREE', &
+      'static_points.csv | x_m | m | x of the point, global axes', &
+      'static_points.csv | y_m | m | y of the point, global axes', &
+      'static_points.csv | z_m | m | z of the point, global axes', &
+      'static_points.csv | Fx_N | N | x force of the lines on the point', &
+      'static_points.csv | Fy_N | N | y force of the lines on the point', &
+      'static_points.csv | Fz_N | N | z force of the lines on the point', &
+      'static_points.csv | lines | - | line ends on the point', &
+      'static_stiffness.csv | row_point | - | FREE point of the force (row)', &
+      'static_stiffness.csv | row_dof | - | x, y or z: the force component', &
+      'static_stiffness.csv | column_point | - | FREE point moved (column)', &
+      'static_stiffness.csv | column_dof | - | x, y or z: the direction moved', &
+      'static_stiffness.csv | stiffness | - | K = -dF/dx, the unit of the unit column', &
+      'static_stiffness.csv | unit | - | unit of the stiffness (N/m)', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
       'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &

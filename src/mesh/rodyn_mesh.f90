@@ -10,7 +10,7 @@ module rodyn_mesh
    use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_section, only: section_stiffness, section_damping
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position, end_a, end_b, element_cable, scheme_alpha
+                          bc_position, end_a, end_b, element_cable, scheme_alpha, point_free
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
@@ -60,8 +60,14 @@ module rodyn_mesh
       ! per node
       integer, allocatable :: node_line(:)        !< (nn)
       real(wp), allocatable :: node_s(:)          !< (nn) unstretched arc length [m]
-      ! per attachment (*ATTACHMENT)
+      ! per attachment (*ATTACHMENT, and a FREE point's own: its point's node)
       integer, allocatable :: att_node(:)         !< (na) node nearest to its arc length
+      ! the points of a system (*POINT): a FREE point is a node of its own after the
+      ! lines' nodes (node_line 0, no element: 3 unknowns); the line ends on it share
+      ! its position (rodyn_junctions)
+      integer :: n_line_nodes = 0                 !< nodes on lines (the first ones)
+      integer, allocatable :: point_node(:)       !< (np) node of each FREE point, 0 if FIXED
+      integer, allocatable :: end_point_node(:, :) !< (2, nl) point node of ends A, B (0: none)
    end type mesh_t
 
 contains
@@ -141,6 +147,8 @@ contains
          ne = ne + model%lines(l)%n_elements
          mesh%max_nen = max(mesh%max_nen, p + 1)
       end do
+      mesh%n_line_nodes = nn
+      call point_nodes(model, mesh, nn)
       mesh%n_nodes = nn
       mesh%n_elements = ne
       allocate (mesh%elem_line(ne), mesh%elem_nodes(mesh%max_nen, ne), mesh%elem_le(ne), &
@@ -161,12 +169,64 @@ contains
          call line_initial_shape(model, mesh, l, state, shape, err)
          if (has_error(err)) return
       end do
+      do k = 1, size(mesh%point_node)
+         if (mesh%point_node(k) == 0) cycle
+         mesh%node_line(mesh%point_node(k)) = 0
+         mesh%node_s(mesh%point_node(k)) = 0.0_wp
+         state%x(:, mesh%point_node(k)) = model%points(k)%position
+         state%d(:, :, mesh%point_node(k)) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+                                                      1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+                                                      1.0_wp], [3, 3])
+      end do
+      ! the line ends on FREE points where their points are
+      do l = 1, nl
+         if (mesh%end_point_node(1, l) > 0) state%x(:, mesh_node(mesh, l, end_a)) = &
+            state%x(:, mesh%end_point_node(1, l))
+         if (mesh%end_point_node(2, l) > 0) state%x(:, mesh_node(mesh, l, end_b)) = &
+            state%x(:, mesh%end_point_node(2, l))
+      end do
       mesh%n_cable = count(mesh%elem_cable)
       mesh%damped = any(mesh%elem_damp > 0.0_wp)
       allocate (mesh%att_node(0))
-      if (allocated(model%attachments)) mesh%att_node = [(mesh_nearest_node(mesh, &
-         model%attachments(k)%line, model%attachments(k)%s), k=1, size(model%attachments))]
+      if (allocated(model%attachments)) mesh%att_node = [(attachment_node(k), &
+                                                          k=1, size(model%attachments))]
+   contains
+      integer function attachment_node(i)
+         integer, intent(in) :: i
+         associate (at => model%attachments(i))
+            if (at%point > 0) then
+               attachment_node = mesh%point_node(at%point)
+            else
+               attachment_node = mesh_nearest_node(mesh, at%line, at%s)
+            end if
+         end associate
+      end function attachment_node
    end subroutine mesh_build
+
+   !> The FREE points' nodes, numbered after the lines' nn nodes (nn counts them on
+   !> return), and the point node of each line end.
+   pure subroutine point_nodes(model, mesh, nn)
+      type(model_t), intent(in) :: model   !< model
+      type(mesh_t), intent(inout) :: mesh  !< point_node, end_point_node set
+      integer, intent(inout) :: nn         !< nodes so far
+      integer :: np, k, l
+      np = 0
+      if (allocated(model%points)) np = size(model%points)
+      allocate (mesh%point_node(np), mesh%end_point_node(2, mesh%n_lines))
+      mesh%point_node = 0
+      do k = 1, np
+         if (model%points(k)%kind /= point_free) cycle
+         nn = nn + 1
+         mesh%point_node(k) = nn
+      end do
+      mesh%end_point_node = 0
+      do l = 1, mesh%n_lines
+         if (model%lines(l)%point_a > 0) &
+            mesh%end_point_node(1, l) = mesh%point_node(model%lines(l)%point_a)
+         if (model%lines(l)%point_b > 0) &
+            mesh%end_point_node(2, l) = mesh%point_node(model%lines(l)%point_b)
+      end do
+   end subroutine point_nodes
 
    !> Elements and nodes of line l, segment after segment from end A: each element of a
    !> segment has the segment's section and length / elements; nodes equally spaced in
@@ -280,8 +340,9 @@ contains
       integer, intent(in) :: l           !< line index
       integer, intent(in) :: k           !< end_a or end_b
       integer :: i, nn
-      held_in_position = .false.
-      if (.not. allocated(model%constraints)) return
+      ! an end on a point is where its point is (held, or moved with the point)
+      held_in_position = merge(model%lines(l)%point_a, model%lines(l)%point_b, k == end_a) > 0
+      if (held_in_position .or. .not. allocated(model%constraints)) return
       nn = model%lines(l)%n_elements*model%lines(l)%order + 1
       do i = 1, size(model%constraints)
          associate (c => model%constraints(i))

@@ -246,7 +246,11 @@ contains
       if (allocated(model%loads)) np = size(model%loads)
       allocate (loads%pt_node(np), loads%pt_amp(np), loads%pt_fm(6, np))
       do i = 1, np
-         loads%pt_node(i) = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
+         if (model%loads(i)%point > 0) then        ! on a FREE point: its node
+            loads%pt_node(i) = mesh%point_node(model%loads(i)%point)
+         else
+            loads%pt_node(i) = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
+         end if
          loads%pt_amp(i) = model%loads(i)%amplitude
          loads%pt_fm(1:3, i) = model%loads(i)%force
          loads%pt_fm(4:6, i) = model%loads(i)%moment
@@ -265,7 +269,7 @@ contains
    pure subroutine external_force(mesh, loads, gfac, lam, t, fext)
       type(mesh_t), intent(in) :: mesh        !< mesh
       type(loads_t), intent(in) :: loads      !< loads
-      real(wp), intent(in) :: gfac(:)         !< (nl) gravity factor of each line
+      real(wp), intent(in) :: gfac(0:)        !< (0:nl) gravity factor of each line, 0: points
       real(wp), intent(in) :: lam             !< load factor of the point loads
       real(wp), intent(in) :: t               !< time [s]
       real(wp), intent(out) :: fext(:, :)     !< (6, nn) external force [N, N m]

@@ -12,13 +12,14 @@ module rodyn_recovery
    use rodyn_rod_element, only: rod_element_resultants, max_points
    use rodyn_cable_element, only: cable_element_tension
    use rodyn_shape, only: max_order, max_nen
-   use rodyn_results, only: line_result_t
+   use rodyn_results, only: line_result_t, system_result_t
+   use rodyn_junctions, only: junctions_stiffness
    use rodyn_water, only: water_loads_t
    use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
    use rodyn_waves, only: wave_kinematics
    implicit none
    private
-   public :: recover_static, recover_state, touchdown_root
+   public :: recover_static, recover_state, touchdown_root, recover_system
 
 contains
 
@@ -32,6 +33,23 @@ contains
       call recover_state(model, prob%mesh, prob%state, prob%lam, prob%r, prob%sup%held, lines, &
                          prob%water)
    end subroutine recover_static
+
+   !> The system's results at the static equilibrium (prob solved to lambda = 1): the
+   !> stiffness at its FREE points, from the consistent tangent condensed onto them
+   !> (rodyn_junctions' junctions_stiffness). Nothing for a system without FREE points.
+   subroutine recover_system(model, prob, sys, err)
+      type(model_t), intent(in) :: model                 !< model
+      type(static_problem_t), intent(inout) :: prob      !< solved problem
+      type(system_result_t), intent(out) :: sys          !< results
+      type(error_t), intent(inout) :: err                !< status
+      integer :: k, n
+      n = count(prob%mesh%point_node > 0)
+      allocate (sys%point(n), sys%stiffness(3*n, 3*n))
+      if (n == 0) return
+      sys%point = pack([(k, k=1, size(model%points))], prob%mesh%point_node > 0)
+      call prob%evaluate(.true., err)
+      call junctions_stiffness(prob%jn, prob%bm, sys%stiffness, err)
+   end subroutine recover_system
 
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.
@@ -116,8 +134,10 @@ contains
             e = mesh%line_first_elem(l) + merge(0, ne - 1, k == 1)
             ! (the rotation unknowns of a cable's end are always held: only its position
             ! counts)
+            ! (an end on a FREE point: the point's force on it, as a support's)
             lines(l)%end_held(k) = any(held(1:3, node)) .or. &
-                                   (any(held(4:6, node)) .and. .not. mesh%elem_cable(e))
+                                   (any(held(4:6, node)) .and. .not. mesh%elem_cable(e)) .or. &
+                                   mesh%end_point_node(k, l) > 0
             lines(l)%reaction(:, k) = 0.0_wp
             if (lines(l)%end_held(k)) lines(l)%reaction(:, k) = r(:, node)
          end do

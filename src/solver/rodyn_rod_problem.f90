@@ -14,6 +14,7 @@ module rodyn_rod_problem
    use rodyn_newton, only: newton_problem_t
    use rodyn_rotation, only: rotation_cayley
    use rodyn_anderson, only: anderson_t, anderson_clear, anderson_step
+   use rodyn_junctions, only: junctions_t, junctions_build, junctions_factor, junctions_solve
    implicit none
    private
    public :: rod_problem_t, rod_problem_init
@@ -34,6 +35,7 @@ module rodyn_rod_problem
       !> started from (Newton's base); cleared by a problem when it starts a new solve
       logical :: base_set = .false.
       type(banded_t) :: bm                     !< tangent, then its LU factors
+      type(junctions_t) :: jn                  !< FREE points: their unknowns and line ends
       type(anderson_t) :: aa                   !< history of the accelerated chord steps
       real(wp) :: lref = 1.0_wp                !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp                !< shortest element [m]
@@ -75,6 +77,7 @@ contains
       allocate (reach(prob%sup%n_dof))
       call dof_reach(mesh, prob%sup, reach)
       call banded_set_reach(prob%bm, reach)
+      call junctions_build(mesh, prob%sup, prob%jn)
       prob%lref = maxval(model%lines%length)
       prob%href = minval(mesh%elem_le)
       ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the
@@ -151,7 +154,11 @@ contains
          call anderson_clear(this%aa)
       if (this%tangent_new) then
          this%tangent_new = .false.
-         call banded_factor(this%bm, err, this%sup%first)
+         if (this%jn%nj > 0) then
+            call junctions_factor(this%jn, this%bm, err)
+         else
+            call banded_factor(this%bm, err, this%sup%first)
+         end if
          if (has_error(err)) return
          this%factors_ok = .true.
       else if (.not. this%factors_ok) then
@@ -159,7 +166,11 @@ contains
          return
       end if
       this%du = -this%rhs
-      call banded_solve(this%bm, this%du, err)
+      if (this%jn%nj > 0) then
+         call junctions_solve(this%jn, this%sup, this%bm, this%du, err)
+      else
+         call banded_solve(this%bm, this%du, err)
+      end if
       if (this%accelerate) call anderson_step(this%aa, this%du)
    end subroutine rod_solve
 

@@ -42,6 +42,7 @@ module rodyn_statics
    use rodyn_load_check, only: load_divergence_hint
    use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
+   use rodyn_junctions, only: junctions_condense
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
                              add_node_block, roll_gauges, add_roll_gauges
@@ -61,7 +62,7 @@ module rodyn_statics
       type(water_loads_t) :: water            !< water and seabed (scene in water only)
       real(wp), allocatable :: zero3(:, :)    !< (3, nn) zero velocities and accelerations
       real(wp) :: lam = 0.0_wp                !< load factor of the current increment
-      real(wp), allocatable :: gfac(:)        !< (nl) gravity factor of each line
+      real(wp), allocatable :: gfac(:)        !< (0:nl) gravity factor of each line, 0: points
       real(wp), allocatable :: r0(:, :)       !< (6, nn) residual of the start, lam = 0
       real(wp), allocatable :: d0(:, :, :)    !< (3, 3, nn) directors of the start
       integer, allocatable :: gauge_node(:)   !< (ne) node of each roll gauge, 0: none
@@ -97,7 +98,7 @@ contains
       call water_loads_build(model, mesh, prob%water)
       allocate (prob%zero3(3, nn))
       prob%zero3 = 0.0_wp
-      allocate (prob%gfac(mesh%n_lines), prob%r0(6, nn), prob%x_held(3, nn), &
+      allocate (prob%gfac(0:mesh%n_lines), prob%r0(6, nn), prob%x_held(3, nn), &
                 prob%x_conv(3, nn), prob%d_conv(3, 3, nn), prob%d0(3, 3, nn))
       prob%gfac = 1.0_wp
       prob%r0 = 0.0_wp
@@ -153,7 +154,9 @@ contains
       real(wp), intent(in) :: cur                   !< current factor [-]
       integer :: i
       prob%lam = lam
-      where (.not. prob%mesh%line_catenary) prob%gfac = lam
+      ! (a FREE point's own weight and buoyancy in full, gfac(0): the homotopy holds the
+      ! point where it starts at lam = 0)
+      where (.not. prob%mesh%line_catenary) prob%gfac(1:) = lam
       ! the buoyancy with the weight: the weight in water is what is ramped (buoyancy in
       ! full under a tenth of the weight floated a free-hanging riser up and flipped it)
       if (prob%water%active) prob%water%bfac = prob%gfac
@@ -193,6 +196,7 @@ contains
          if (this%sup%moved(node)) this%gap(:, node) = this%x_held(:, node) - this%state%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
+      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k)
       ! the reactions are this problem's reference force and moment
       this%f_extra = 0.0_wp
       this%m_extra = 0.0_wp

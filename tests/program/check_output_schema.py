@@ -104,7 +104,7 @@ def check_attributes(src, attributes, out):
             for a in obj.attrs:
                 if isinstance(obj, h5py.Dataset) and a in ("units", "description"):
                     continue
-                key = re.sub(r"^/(static|dynamic)/LEG(/|$)", r"/\1/LINE\2", path)
+                key = re.sub(r"^/(static|dynamic)/(LEG|TETHER)(/|$)", r"/\1/LINE\3", path)
                 found.add(f"{key}:{'NAME' if key == '/parameters' else a}")
         with h5py.File(out / name, "r") as f:
             visit("/", f)
@@ -430,6 +430,11 @@ def check_run(src, work, rodyn, headers, datasets):
                         f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
                         "0.0, 0.0, 0.0, 30.0\n"
                         "*MOTION, LINE=LEG, END=B, TYPE=VESSEL, VESSEL=FPSO, RAMP=0\n*STATIC,")
+    # a clump weight hung from a FIXED point (a FREE point): the points and the stiffness
+    text = text.replace("*STATIC,", "*POINT, NAME=PA, TYPE=FIXED\n-400, 50, -40\n"
+                        "*POINT, NAME=PB, TYPE=FREE, MASS=500\n-400, 52, -69.9\n"
+                        "*LINE, NAME=TETHER, SECTION=CHAIN, LENGTH=30.0, ELEMENTS=4, ORDER=3,"
+                        " ELEMENT=CABLE, POINT A=PA, POINT B=PB\n*STATIC,")
     deck = work / "schema.inp"
     deck.write_text(text)
     out = work / "out"
@@ -458,7 +463,7 @@ def check_run(src, work, rodyn, headers, datasets):
                 if not {"units", "description"} <= set(obj.attrs):
                     bare.append(path)
                     return
-                key = re.sub(r"^(static|dynamic)/LEG/", r"\1/LINE/", path)
+                key = re.sub(r"^(static|dynamic)/(LEG|TETHER)/", r"\1/LINE/", path)
                 found["/" + key] = (str(obj.attrs["units"]), str(obj.attrs["description"]))
         with h5py.File(out / name, "r") as f:
             f.visititems(visit)

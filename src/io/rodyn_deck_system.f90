@@ -1,0 +1,227 @@
+!> Deck reader of the mooring-system keywords (*POINT) and the whole-deck checks of a
+!> system (docs/deck.md, *POINT; docs/systems.md): the points named by *LINE (POINT A=,
+!> POINT B=) and *LOAD (POINT=) exist, every point has a line, no *BOUNDARY sits on an
+!> end that is on a point, a FREE point's water properties need *WATER. Then the
+!> system is put in the terms the analyses use: a line end on a FIXED point is pinned
+!> there (a constraint of its own), a FREE point's mass, volume, drag and added mass are
+!> an attachment at the point's node.
+module rodyn_deck_system
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, point_fixed, &
+                          point_free, point_kind_names, bc_pinned, bc_free, end_a, end_b
+   use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
+                               card_error, card_get_name, card_get_choice, card_check_data, &
+                               card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
+                                 location, node_count, node_number
+   implicit none
+   private
+   public :: read_point_card, resolve_line_points, resolve_load_points, check_point_ends
+   public :: system_complete
+
+contains
+
+   !> *POINT, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=] [, CDA=] [, CA=]; data line
+   !> x, y, z (the position at the start). MASS, VOLUME, CDA and CA only for a FREE point.
+   subroutine read_point_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *POINT card
+      type(model_t), intent(inout) :: model   !< model: one point appended
+      type(pending_t), intent(inout) :: pend  !< counts the points
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what = 'x, y, z'
+      character(len=6), parameter :: props(4) = [character(len=6) :: 'MASS', 'VOLUME', &
+                                                 'CDA', 'CA']
+      type(point_t) :: pt
+      character(len=:), allocatable :: name
+      integer :: ip, k
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
+                                'VOLUME', 'CDA', 'CA'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         do ip = 1, pend%n_points
+            if (model%points(ip)%name /= name) cycle
+            call param_fail(card, 'NAME', "point '"//name//"' is already defined (at "// &
+                            location(deck, pend%point_card(ip))//')', err)
+            return
+         end do
+         pt%name = name
+         pt%card_at = card%file//':'//int_str(card%line)
+         if (card_find_param(card, 'TYPE') == 0) then
+            call card_error(card, 'missing parameter TYPE (FIXED or FREE)', err)
+            return
+         end if
+         call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err)
+         if (has_error(err)) return
+         if (pt%kind == point_fixed) then
+            do k = 1, size(props)
+               if (card_find_param(card, trim(props(k))) == 0) cycle
+               call param_fail(card, trim(props(k)), trim(props(k))//' is for a FREE '// &
+                               'point: a FIXED point does not move', err)
+               return
+            end do
+         end if
+         call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
+         if (has_error(err)) return
+         call card_check_data(card, 1, 1, err, what)
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 3, pt%position, err, what)
+         if (has_error(err)) return
+         if (maxval(abs(pt%position)) > max_distance) then
+            call card_error(card, 'a coordinate of '//real_str(maxval(abs(pt%position)))// &
+                            ' m is not physical: a point must lie within '// &
+                            real_str(max_distance)//' m of the origin', err)
+            return
+         end if
+      end associate
+      pend%n_points = pend%n_points + 1
+      model%points(pend%n_points) = pt
+      pend%point_card(pend%n_points) = ic
+   end subroutine read_point_card
+
+   !> The points of each line's ends (POINT A=, POINT B=): they exist, and the end takes
+   !> the point's position. Before the lines' geometry is checked.
+   subroutine resolve_line_points(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< POINT A=, POINT B= of each line
+      type(model_t), intent(inout) :: model   !< lines get their points and end positions
+      type(error_t), intent(inout) :: err     !< status
+      integer :: il
+      do il = 1, size(model%lines)
+         associate (line => model%lines(il))
+            call find_point(deck%cards(pend%line_point_a(il)%card), 'POINT A', &
+                            pend%line_point_a(il)%name, model, line%point_a, err)
+            if (has_error(err)) return
+            call find_point(deck%cards(pend%line_point_b(il)%card), 'POINT B', &
+                            pend%line_point_b(il)%name, model, line%point_b, err)
+            if (has_error(err)) return
+            if (line%point_a > 0) line%end_a = model%points(line%point_a)%position
+            if (line%point_b > 0) line%end_b = model%points(line%point_b)%position
+         end associate
+      end do
+   end subroutine resolve_line_points
+
+   !> The point of a *LOAD given with POINT= (instead of LINE=): it exists and is FREE
+   !> (a FIXED point's load would act on nothing).
+   subroutine resolve_load_points(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< POINT= of each load ('' if on a line)
+      type(model_t), intent(inout) :: model   !< loads get their point
+      type(error_t), intent(inout) :: err     !< status
+      integer :: k
+      do k = 1, size(model%loads)
+         associate (card => deck%cards(pend%load_point(k)%card))
+            call find_point(card, 'POINT', pend%load_point(k)%name, model, &
+                            model%loads(k)%point, err)
+            if (has_error(err)) return
+            if (model%loads(k)%point == 0) cycle
+            if (model%points(model%loads(k)%point)%kind /= point_free) then
+               call param_fail(card, 'POINT', "point '"//pend%load_point(k)%name// &
+                               "' is FIXED: a load on it acts on nothing (load a FREE"// &
+                               ' point, or a line)', err)
+               return
+            end if
+            if (any(model%loads(k)%moment /= 0.0_wp)) then
+               call card_error(card, "a point takes no moment: give Fx, Fy, Fz only", err)
+               return
+            end if
+         end associate
+      end do
+   end subroutine resolve_load_points
+
+   !> Point ip named `name` by parameter `param` of `card` ('' : none, ip = 0).
+   subroutine find_point(card, param, name, model, ip, err)
+      type(card_t), intent(in) :: card      !< the referring card
+      character(len=*), intent(in) :: param !< its parameter
+      character(len=*), intent(in) :: name  !< point name ('' for none)
+      type(model_t), intent(in) :: model    !< model with its points
+      integer, intent(out) :: ip            !< the point's index (0: none)
+      type(error_t), intent(inout) :: err   !< status
+      ip = 0
+      if (len(name) == 0) return
+      do ip = 1, size(model%points)
+         if (model%points(ip)%name == name) return
+      end do
+      ip = 0
+      call param_fail(card, param, param//" '"//name//"' is not defined (no *POINT with"// &
+                      ' NAME='//name//' in the deck)', err)
+   end subroutine find_point
+
+   !> No *BOUNDARY on a line end that is on a point (the point holds it, or moves it),
+   !> and every point has a line. Then each end on a FIXED point gets its constraint:
+   !> pinned at the point's position.
+   subroutine check_point_ends(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< card of each constraint
+      type(model_t), intent(inout) :: model   !< constraints appended
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ib, ip, il, node, nn
+      character(len=1) :: which
+      do ib = 1, pend%n_constraints
+         associate (b => model%constraints(ib))
+            nn = node_count(model%lines(b%line))
+            node = node_number(b%node, nn)
+            ip = 0
+            if (node == 1) ip = model%lines(b%line)%point_a
+            if (node == nn .and. ip == 0) ip = model%lines(b%line)%point_b
+            if (ip == 0) cycle
+            which = merge('A', 'B', node == 1 .and. model%lines(b%line)%point_a == ip)
+            call card_error(deck%cards(pend%bc_line(ib)%card), 'end '//which//' of line '// &
+                            trim(model%lines(b%line)%name)//" is on point '"// &
+                            trim(model%points(ip)%name)//"' (*POINT at "// &
+                            location(deck, pend%point_card(ip))//'): the point holds'// &
+                            ' it, a *BOUNDARY cannot', err)
+            return
+         end associate
+      end do
+      do ip = 1, size(model%points)
+         if (any(model%lines%point_a == ip .or. model%lines%point_b == ip)) cycle
+         call card_error(deck%cards(pend%point_card(ip)), "no line has an end on point '"// &
+                         trim(model%points(ip)%name)//"' (give POINT A= or POINT B= on"// &
+                         ' a *LINE)', err)
+         return
+      end do
+      do il = 1, size(model%lines)
+         call pin_end(il, model%lines(il)%point_a, end_a)
+         call pin_end(il, model%lines(il)%point_b, end_b)
+      end do
+   contains
+      subroutine pin_end(l, p, k)
+         integer, intent(in) :: l, p, k
+         if (p == 0) return
+         if (model%points(p)%kind /= point_fixed) return
+         model%constraints = [model%constraints, constraint_t(line=l, node=k, kind=bc_pinned)]
+      end subroutine pin_end
+   end subroutine check_point_ends
+
+   !> A FREE point's VOLUME, CDA and CA need *WATER; its mass, volume, drag and added
+   !> mass become an attachment at the point (rodyn_mesh puts it on the point's node).
+   subroutine system_complete(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< card of each point
+      type(model_t), intent(inout) :: model   !< attachments appended
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: no_water = ' needs *WATER (no *WATER in the deck)'
+      integer :: ip
+      do ip = 1, size(model%points)
+         associate (pt => model%points(ip), card => deck%cards(pend%point_card(ip)))
+            if (pt%kind /= point_free) cycle
+            if (.not. model%water%present) then
+               if (pt%volume > 0.0_wp) call param_fail(card, 'VOLUME', 'VOLUME > 0'// &
+                                                       no_water, err)
+               if (pt%cda_area > 0.0_wp .and. .not. has_error(err)) &
+                  call param_fail(card, 'CDA', 'CDA > 0'//no_water, err)
+               if (has_error(err)) return
+            end if
+            if (pt%mass == 0.0_wp .and. pt%volume == 0.0_wp .and. pt%cda_area == 0.0_wp) cycle
+            model%attachments = [model%attachments, attachment_t(line=0, point=ip, &
+                                 mass=pt%mass, volume=pt%volume, cda_area=pt%cda_area, &
+                                 ca=pt%ca)]
+         end associate
+      end do
+   end subroutine system_complete
+end module rodyn_deck_system

@@ -1,0 +1,109 @@
+!> The points of a mooring system in the static results: static_points.csv, one row per
+!> *POINT in deck order (docs/output.md, static_points.csv): where it is and the total
+!> force its lines exert on it, the sum over the line ends on it of minus the force on
+!> the end (the end's reaction, rodyn_recovery). At a FREE point in equilibrium it
+!> balances the point's own weight, buoyancy and load; at a FIXED point it is the load
+!> on the anchor or fairlead.
+module rodyn_output_points
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, point_kind_names
+   use rodyn_results, only: line_result_t, system_result_t
+   use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
+                            remove_file
+   use rodyn_output_schema, only: schema_header
+   use rodyn_output_common, only: path_join
+   use rodyn_format, only: real_text, int_text
+   implicit none
+   private
+   public :: write_points_csv, points_csv, write_stiffness_csv, stiffness_csv
+
+   character(len=*), parameter :: points_csv = 'static_points.csv'
+   character(len=*), parameter :: stiffness_csv = 'static_stiffness.csv'
+
+contains
+
+   !> Write static_points.csv into folder `dir` (a deck without *POINT: remove one that
+   !> an earlier run left there).
+   subroutine write_points_csv(dir, model, lines, err)
+      character(len=*), intent(in) :: dir          !< output folder (exists)
+      type(model_t), intent(in) :: model           !< model with its points
+      type(line_result_t), intent(in) :: lines(:)  !< static results per line
+      type(error_t), intent(inout) :: err          !< status
+      type(out_file_t) :: f
+      real(wp) :: x(3), force(3)
+      integer :: ip, l, k, n, nn
+      if (has_error(err)) return
+      if (.not. allocated(model%points)) then
+         call remove_file(path_join(dir, points_csv))
+         return
+      end if
+      if (size(model%points) == 0) then
+         call remove_file(path_join(dir, points_csv))
+         return
+      end if
+      call outfile_create(f, dir, points_csv, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(points_csv))
+      do ip = 1, size(model%points)
+         x = model%points(ip)%position
+         force = 0.0_wp
+         n = 0
+         do l = 1, size(model%lines)
+            nn = size(lines(l)%node_s)
+            do k = 1, 2
+               if (merge(model%lines(l)%point_a, model%lines(l)%point_b, k == 1) /= ip) cycle
+               n = n + 1
+               x = lines(l)%node_x(:, merge(1, nn, k == 1))
+               force = force - lines(l)%reaction(1:3, k)
+            end do
+         end do
+         call outfile_put(f, trim(model%points(ip)%name)//','// &
+                          trim(point_kind_names(model%points(ip)%kind))//','// &
+                          real_text(x(1))//','//real_text(x(2))//','//real_text(x(3))//','// &
+                          real_text(force(1))//','//real_text(force(2))//','// &
+                          real_text(force(3))//','//int_text(n))
+      end do
+      call outfile_commit(f, err)
+   end subroutine write_points_csv
+
+   !> Write static_stiffness.csv into folder `dir`: every entry K_jk of the stiffness at
+   !> the FREE points (system_result_t), one row each, rows by point and direction; a
+   !> system without FREE points, or without the result (statics not complete), removes
+   !> one an earlier run left there.
+   subroutine write_stiffness_csv(dir, model, sys, err)
+      character(len=*), intent(in) :: dir                 !< output folder (exists)
+      type(model_t), intent(in) :: model                  !< model with its points
+      type(system_result_t), intent(in), optional :: sys  !< the stiffness
+      type(error_t), intent(inout) :: err                 !< status
+      character(len=1), parameter :: xyz(3) = ['x', 'y', 'z']
+      type(out_file_t) :: f
+      integer :: i, j
+      if (has_error(err)) return
+      if (.not. present(sys)) then
+         call remove_file(path_join(dir, stiffness_csv))
+         return
+      end if
+      if (.not. allocated(sys%point)) then
+         call remove_file(path_join(dir, stiffness_csv))
+         return
+      end if
+      if (size(sys%point) == 0) then
+         call remove_file(path_join(dir, stiffness_csv))
+         return
+      end if
+      call outfile_create(f, dir, stiffness_csv, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(stiffness_csv))
+      do i = 1, size(sys%stiffness, 1)
+         do j = 1, size(sys%stiffness, 2)
+            call outfile_put(f, trim(model%points(sys%point((i - 1)/3 + 1))%name)//','// &
+                             xyz(mod(i - 1, 3) + 1)//','// &
+                             trim(model%points(sys%point((j - 1)/3 + 1))%name)//','// &
+                             xyz(mod(j - 1, 3) + 1)//','//real_text(sys%stiffness(i, j))// &
+                             ',N/m')
+         end do
+      end do
+      call outfile_commit(f, err)
+   end subroutine write_stiffness_csv
+end module rodyn_output_points
