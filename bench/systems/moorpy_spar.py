@@ -3,7 +3,7 @@
 
 The reference for rodyn's rigid bodies (*BODY): MoorPy 1.3.0 statics of the OC3-Hywind
 spar on its three chains, written to bench/results/moorpy_spar.csv, and the decks
-bench/systems/decks/spar_*.inp in the *BODY syntax rodyn is expected to get.
+bench/systems/decks/spar_*.inp (docs/deck.md, *BODY).
 
 Source: J. Jonkman, "Definition of the Floating System for Phase IV of OC3",
 NREL/TP-500-47535, May 2010 (below: the report). Its numbers used here, from memory of
@@ -134,25 +134,27 @@ Compared by --quick (|rodyn - MoorPy| / scale within the tolerance; dict TOL):
   5e-7 rad and its surge by 0.4 mm); the lines' force on the body over its |F|, its moment
   over |F| times 70.19 m (the fairleads' distance from R), 1e-4; end tensions relative,
   1e-4 (static_reactions.csv tension_N); the fixed body's stiffness K_ij over
-  sqrt(K_ii K_jj), 1e-3 (see Mesh below). Stored for reference only: Euler angles,
+  sqrt(K_ii K_jj), 1e-4 (see Mesh below). Stored for reference only: Euler angles,
   horizontal tensions, grounded lengths, fairlead positions, the lines' stiffness at the
   free cases' equilibria, the hydrostatic 6x6, MoorPy's central difference, the
   independent solution and the report's Eq. (5-3).
 
-Mesh: 240 cubic cable elements a line (3.76 m), not the brief's 100, for the stiffness.
-Measured with --pinned (today's rodyn: the lines alone, ends pinned where MoorPy puts the
+Mesh: 480 cubic cable elements a line (1.88 m), for the stiffness.
+Measured with --pinned (rodyn without bodies: the lines alone, ends pinned where MoorPy puts the
 anchors and fairleads; the fixed body's 6x6 by central differences of rodyn's reactions,
 +-1 cm, +-1e-4 rad), against MoorPy, max |dK_ij| / sqrt(K_ii K_jj): 1.3e-3 with 100
 elements a line, 3.4e-4 (150), 4.1e-4 (200), 2.4e-4 (240), 1.0e-4 (300), 2.7e-5 (400),
 1.5e-6 (600), largest in K33 and K11: the touchdown's resolution on the penalty bed (with
 a ten times stiffer bed, 3e8 Pa/m: 2.7e-3 at 100, 3.8e-4 at 400). The end tensions are
-within 6e-6 of MoorPy's already with 100 elements (suspended lines 1e-11).
+within 6e-6 of MoorPy's already with 100 elements (suspended lines 1e-11). With the
+body (spar_fixed.inp, static_stiffness.csv's lines_stiffness): 2.6e-4 at 240 elements,
+1.3e-5 at 480, 1.5e-6 at 720.
 
   python3 bench/systems/moorpy_spar.py --write        # MoorPy + checks -> results, decks
   python3 bench/systems/moorpy_spar.py --quick [--rodyn build/rodyn]
                                      # rodyn on the decks against the stored values
   python3 bench/systems/moorpy_spar.py --pinned [--rodyn build/rodyn]
-                                     # today's rodyn (no *BODY): each case's lines alone,
+                                     # without *BODY: each case's lines alone,
                                      # ends PINNED where MoorPy puts the anchors and
                                      # fairleads: end tensions against MoorPy's, and the
                                      # fixed body's 6x6 from rodyn's reactions
@@ -194,7 +196,7 @@ R_ANCHOR = 853.87
 R_FAIRLEAD = 5.2
 Z_FAIRLEAD = -70.0            # body axes from the reference point (on the SWL)
 HEADINGS = (0.0, 120.0, 240.0)   # deg; line 1 downwind along +x (see the docstring)
-ELEMENTS = 240                # cubic cable elements a line (the brief's 100: see the
+ELEMENTS = 480                # cubic cable elements a line (the brief's 100: see the
                               # docstring, the stiffness needs more)
 ORDER = 3
 # ---- platform (Table 3-1, Section 4)
@@ -264,7 +266,7 @@ LINES = [f"L{k + 1}" for k in range(len(HEADINGS))]
 DOF = ("x", "y", "z", "rx", "ry", "rz")
 
 # Tolerances of the compared quantities (|rodyn - MoorPy| / scale), see the docstring
-TOL = dict(position=1e-5, rotation=1e-5, force=1e-4, tension=1e-4, stiffness=1e-3)
+TOL = dict(position=1e-5, rotation=1e-5, force=1e-4, tension=1e-4, stiffness=1e-4)
 
 EQ_TOL = 1e-8         # m, MoorPy solveEquilibrium tol (catenaries 0.01 tol)
 EQ_TOL_CHECK = 1e-10
@@ -348,14 +350,13 @@ def euler_matrix(roll, pitch, yaw):
 
 # ---------------------------------------------------------------------------- decks
 def deck_text(name):
-    """The rodyn deck of a case in the ASSUMED *BODY syntax."""
+    """The rodyn deck of a case (docs/deck.md, *BODY)."""
     case = CASES[name]
     out = [f"** bench/systems/decks/spar_{name}.inp, the MoorPy cross-check of a floating body",
            "** on three catenary legs (the OC3-Hywind spar, Jonkman 2010, NREL/TP-500-47535):",
            "** written by bench/systems/moorpy_spar.py --write, which also compares rodyn's",
            "** statics with bench/results/moorpy_spar.csv (--quick).",
-           "** ASSUMED SYNTAX: *BODY, *BODY HYDROSTATICS, *POINT TYPE=BODY and *LOAD, BODY= are",
-           "** what the rigid-body work is expected to add; rodyn refuses them until then.",
+           "** (docs/deck.md: *BODY, *BODY HYDROSTATICS, *POINT TYPE=BODY, *LOAD BODY=)",
            "*HEADING",
            f"{case['title']} (MoorPy cross-check)",
            "** MoorPy's g (the report's is 9.80665) and the report's water density",
@@ -849,10 +850,10 @@ def write(args):
 
 
 # ---------------------------------------------------------------------------- rodyn
-# rodyn's output as assumed for *BODY; each reader returns plain values keyed simply, so
+# rodyn's output for *BODY (docs/output.md); each reader returns plain values keyed simply, so
 # that a change of file or column names touches only these lines.
 BODIES_CSV = "static_bodies.csv"        # body,x_m,y_m,z_m,rx_rad,ry_rad,rz_rad,Fx_N,...,Mz_Nm
-STIFFNESS_CSV = "static_body_stiffness.csv"   # body,row,column,stiffness,unit
+STIFFNESS_CSV = "static_stiffness.csv"   # row_object,row_dof,column_object,column_dof,...
 REACTIONS_CSV = "static_reactions.csv"  # line,end,Fx_N,Fy_N,Fz_N,...,tension_N
 BODY_COLUMNS = {"x": "x_m", "y": "y_m", "z": "z_m", "rx": "rx_rad", "ry": "ry_rad",
                 "rz": "rz_rad", "Fx": "Fx_N", "Fy": "Fy_N", "Fz": "Fz_N", "Mx": "Mx_Nm",
@@ -871,11 +872,15 @@ def read_bodies(out):
 
 
 def read_body_stiffness(out):
-    """{body: {(row, column): K}} from static_body_stiffness.csv (row, column: x..rz)."""
+    """{body: {(row, column): K}} of the lines alone from static_stiffness.csv (rows and
+    columns of one body; row, column: x..rz)."""
     k = {}
     for r in read_csv(os.path.join(out, STIFFNESS_CSV)):
-        k.setdefault(r["body"], {})[(r["row"].strip().lower(), r["column"].strip().lower())] = \
-            float(r["stiffness"])
+        if r["row_object"] != r["column_object"]:
+            continue
+        k.setdefault(r["row_object"], {})[(r["row_dof"].strip().lower(),
+                                           r["column_dof"].strip().lower())] = \
+            float(r["lines_stiffness"])
     return k
 
 
@@ -970,14 +975,12 @@ def quick(args):
                      f"rodyn ({rodyn}) against {os.path.relpath(RESULTS_CSV, ROOT)}")
     if refused:
         print(f"moorpy_spar: {len(refused)} of {len(CASES)} decks not run to the end "
-              f"({', '.join(refused)}): nothing compared for them. The decks use *BODY, "
-              "*BODY HYDROSTATICS, *POINT TYPE=BODY and *LOAD, BODY= (assumed syntax); "
-              "a rodyn without rigid bodies refuses them.")
+              f"({', '.join(refused)}): nothing compared for them.")
     return 0 if ok and not refused else 1
 
 
 def pinned_deck(name, ref, dq=None):
-    """Today's syntax: the case's lines alone, each end PINNED where MoorPy puts it; with
+    """Without *BODY: the case's lines alone, each end PINNED where MoorPy puts it; with
     dq (the fixed case), the fairleads where the body moved by dq (rotation vector) puts
     them."""
     fair = {}

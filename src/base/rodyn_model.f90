@@ -23,7 +23,8 @@ module rodyn_model
    public :: rao_interp_complex, rao_interp_polar
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
-   public :: point_t, point_fixed, point_free, point_kind_names
+   public :: point_t, point_fixed, point_free, point_body, point_kind_names
+   public :: body_t, body_fixed, body_free, body_kind_names
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
    real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
@@ -58,7 +59,14 @@ module rodyn_model
    ! Kinds of point (*POINT, TYPE=...)
    integer, parameter :: point_fixed = 1   !< held in place: the line ends on it are pinned
    integer, parameter :: point_free = 2    !< moves with the lines: 3 unknowns of its own
-   character(len=5), parameter :: point_kind_names(2) = [character(len=5) :: 'FIXED', 'FREE']
+   integer, parameter :: point_body = 3    !< fixed on a body (*BODY), moves with it
+   character(len=5), parameter :: point_kind_names(3) = [character(len=5) :: 'FIXED', 'FREE', &
+                                                         'BODY']
+
+   ! Kinds of body (*BODY, TYPE=...)
+   integer, parameter :: body_fixed = 1    !< held in place: its points are FIXED points
+   integer, parameter :: body_free = 2     !< six degrees of freedom of its own
+   character(len=5), parameter :: body_kind_names(2) = [character(len=5) :: 'FIXED', 'FREE']
 
    ! Symbolic node numbers for the two ends of a line (resolved by the mesh)
    integer, parameter :: end_a = 1         !< first node of a line (S = 0)
@@ -129,14 +137,39 @@ module rodyn_model
    !> MASS + CA rho_w VOLUME (docs/systems.md).
    type :: point_t
       character(len=name_len) :: name = ''
-      integer :: kind = point_fixed     !< point_fixed or point_free
-      real(wp) :: position(3) = 0.0_wp  !< position at the start [m]
+      integer :: kind = point_fixed     !< point_fixed, point_free or point_body
+      !> position at the start [m]; a BODY point's: in the body's axes from its reference
+      !> point (its global position at the start is then in `global`)
+      real(wp) :: position(3) = 0.0_wp
+      integer :: body = 0               !< the body of a BODY point (model%bodies)
+      real(wp) :: global(3) = 0.0_wp   !< position at the start, global axes [m]
       real(wp) :: mass = 0.0_wp         !< mass [kg]
       real(wp) :: volume = 0.0_wp       !< displaced volume [m3]
       real(wp) :: cda_area = 0.0_wp     !< drag coefficient times area, Cd A [m2]
       real(wp) :: ca = 0.0_wp           !< added-mass coefficient on rho_w volume [-]
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
    end type point_t
+
+   !> A rigid body (*BODY): a floating platform, a buoy, a vessel. Six degrees of freedom
+   !> (FREE) or held (FIXED); its points (*POINT, TYPE=BODY) carry line ends. Its loads:
+   !> the weight MASS g at G, the buoyancy rho_w g VOLUME at B, a linear waterplane
+   !> restoring about the reference point R (*BODY HYDROSTATICS), *LOAD, BODY=. Body axes
+   !> are the global axes at the start; G, B and the points are given in them, from R
+   !> (docs/systems.md; docs/theory.md section 17).
+   type :: body_t
+      character(len=name_len) :: name = ''
+      integer :: kind = body_free         !< body_fixed or body_free
+      real(wp) :: mass = 0.0_wp           !< mass [kg]
+      real(wp) :: volume = 0.0_wp         !< displaced volume [m3]
+      real(wp) :: position(3) = 0.0_wp    !< reference point R at the start, global [m]
+      real(wp) :: cog(3) = 0.0_wp         !< centre of gravity G, body axes from R [m]
+      real(wp) :: cob(3) = 0.0_wp         !< centre of buoyancy B, body axes from R [m]
+      real(wp) :: inertia(3) = 0.0_wp     !< Ixx, Iyy, Izz about G, body axes [kg m2]
+      !> linear waterplane restoring about R: force and moment -C (x_R - x_R0, theta) [N/m,
+      !> N, N m/m, N m/rad]; the weight and buoyancy are forces of their own (not in C)
+      real(wp) :: hydrostatic(6, 6) = 0.0_wp
+      character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
+   end type body_t
 
    !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an
    !> unstretched arc length S from end A, applied at the node nearest to S (the mesh
@@ -247,6 +280,7 @@ module rodyn_model
    type :: point_load_t
       integer :: line = 0           !< index into model%lines (0: on a point)
       integer :: point = 0          !< index into model%points of a FREE point (0: on a line)
+      integer :: body = 0           !< index into model%bodies: force and moment at its R
       integer :: node = end_a       !< node number along the line, or end_a / end_b
       real(wp) :: force(3) = 0.0_wp !< force [N]
       real(wp) :: moment(3) = 0.0_wp !< moment [N m]
@@ -397,6 +431,7 @@ module rodyn_model
       type(initial_velocity_t), allocatable :: initial_velocities(:)
       type(attachment_t), allocatable :: attachments(:)
       type(point_t), allocatable :: points(:)        !< *POINT, in deck order
+      type(body_t), allocatable :: bodies(:)         !< *BODY, in deck order
       type(water_t) :: water
       type(seabed_t) :: seabed
       type(waves_t) :: waves

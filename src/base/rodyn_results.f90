@@ -34,14 +34,24 @@ module rodyn_results
       logical :: end_held(2) = .false.         !< end A / end B carries a support
    end type line_result_t
 
-   !> Static results of a mooring system beyond its lines: the stiffness at its FREE
-   !> points (docs/systems.md).
+   !> Static results of a mooring system beyond its lines (docs/systems.md): its bodies
+   !> and its stiffness at its FREE points and bodies.
    type :: system_result_t
-      integer, allocatable :: point(:)           !< (np) model%points index of each FREE
-                                                 !< point, in the order of the unknowns
-      !> (3 np, 3 np) K = -dF/dx, F the force of the lines on the points, x the points'
-      !> positions (x, y, z of each), every other unknown in equilibrium [N/m]
+      !> the masters, in the order of the unknowns: each FREE point (3 unknowns), then each
+      !> body (6): kind 1 a point, 2 a body, and its model%points / model%bodies index
+      integer, allocatable :: kind(:)
+      integer, allocatable :: index(:)
+      !> (n, n) K = -dF/dq, F the force (and moment about each body's reference point R)
+      !> on the masters, q their positions (and R's position and the rotation vector), every
+      !> other unknown in equilibrium [N/m, N/rad, N m/m, N m/rad]: of everything
       real(wp), allocatable :: stiffness(:, :)
+      !> (n, n) the same of the lines alone (the mooring stiffness: no body's own load)
+      real(wp), allocatable :: lines_stiffness(:, :)
+      ! per body (model%bodies order)
+      real(wp), allocatable :: body_x(:, :)      !< (3, nb) position of R [m]
+      real(wp), allocatable :: body_rot(:, :)    !< (3, nb) rotation vector from the start [rad]
+      real(wp), allocatable :: body_force(:, :)  !< (6, nb) force and moment about R of its
+                                                 !< lines [N, N m]
    end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and

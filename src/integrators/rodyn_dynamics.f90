@@ -50,7 +50,8 @@ module rodyn_dynamics
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
-   use rodyn_junctions, only: junctions_condense
+   use rodyn_junctions, only: junctions_condense, junctions_place
+   use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_motion, only: motion_displacement, motion_rotation, vessel_offset_rest
@@ -98,7 +99,7 @@ module rodyn_dynamics
       !> from the static solution, at rest at their offset (vessel_offset_rest)
       type(vessel_t), allocatable :: vessels(:)
       real(wp), allocatable :: x_held(:, :)    !< (3, nn) prescribed positions at t_n+1 [m]
-      !> (3, 0:2, nn) the inertia's part per unit mass that does not depend on the unknowns
+      !> (3, 0:3, nn) the inertia's part per unit mass that does not depend on the unknowns
       !> (inertia_rest), of the position (0) and of the directors d_1, d_2, for the step
       real(wp), allocatable :: rest(:, :, :)
       real(wp), allocatable :: fdamp(:, :)     !< (6, nn) stiffness-proportional and
@@ -185,7 +186,7 @@ contains
       if (prob%scheme == scheme_emc) call numdiss_setup(prob%nd, mesh, state, &
                                                         model%dynamic%rho_inf, model%dynamic%dt)
       allocate (prob%x_start(3, nn), prob%x_held(3, nn), prob%fdamp(6, nn), prob%dx(3, nn), &
-                prob%dx_base(3, nn), prob%rest(3, 0:2, nn))
+                prob%dx_base(3, nn), prob%rest(3, 0:3, nn))
       if (mesh%damped) then
          allocate (prob%srate(3, 4, nn))
          prob%srate = 0.0_wp
@@ -254,12 +255,13 @@ contains
       call point_velocities(mesh, state)
    end subroutine apply_initial_velocities
 
-   !> Each FREE point's velocity the mean of its ends', and the ends' the point's.
+   !> Each FREE point's velocity the mean of its ends', and the ends' the point's; the
+   !> ends on a body move with it, v_e = v_b + omega x a (a body starts at rest).
    pure subroutine point_velocities(mesh, state)
-      type(mesh_t), intent(in) :: mesh       !< mesh with its point nodes
+      type(mesh_t), intent(in) :: mesh       !< mesh with its point and body nodes
       type(state_t), intent(inout) :: state  !< velocities
-      integer :: q, l, k, n, ne
-      real(wp) :: v(3)
+      integer :: q, l, k, n, ne, m
+      real(wp) :: v(3), om(3), a(3)
       do q = 1, size(mesh%point_node)
          if (mesh%point_node(q) == 0) cycle
          v = 0.0_wp
@@ -272,13 +274,18 @@ contains
                ne = ne + 1
             end do
          end do
-         v = v/real(max(ne, 1), wp)
-         state%v(:, mesh%point_node(q)) = v
-         do l = 1, mesh%n_lines
-            do k = 1, 2
-               if (mesh%end_point_node(k, l) /= mesh%point_node(q)) cycle
-               state%v(:, mesh_node(mesh, l, merge(end_a, end_b, k == 1))) = v
-            end do
+         state%v(:, mesh%point_node(q)) = v/real(max(ne, 1), wp)
+      end do
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            m = mesh%end_point_node(k, l)
+            if (m == 0) cycle
+            n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            om = 0.5_wp*(cross(state%d(:, 1, m), state%dd(:, 1, m)) + &
+                         cross(state%d(:, 2, m), state%dd(:, 2, m)) + &
+                         cross(state%d(:, 3, m), state%dd(:, 3, m)))
+            a = matmul(state%d(:, :, m), mesh%end_offset(:, k, l))
+            state%v(:, n) = state%v(:, m) + cross(om, a)
          end do
       end do
    end subroutine point_velocities
@@ -311,7 +318,7 @@ contains
       ! the inertia's constant part, once a step instead of once an iteration
       do node = 1, prob%mesh%n_nodes
          prob%rest(:, 0, node) = inertia_rest(prob, prob%s0%v(:, node), node, 0)
-         do i = 1, 2
+         do i = 1, 3
             if (prob%inert%md(i, node) == 0.0_wp) cycle
             prob%rest(:, i, node) = inertia_rest(prob, prob%s0%dd(:, i, node), node, i)
          end do
@@ -510,6 +517,9 @@ contains
                                        this%sd_cv, this%wf, this%scheme, this%fint, &
                                        this%fdamp, this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
+      if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%s0%x, this%s1%x, &
+                                               this%s0%d, this%s1%d, this%wf, 1.0_wp, &
+                                               this%fint, this%bm, want_k)
       fx = 0.0_wp
       mx = 0.0_wp
       do node = 1, this%mesh%n_nodes
@@ -556,7 +566,8 @@ contains
          if (this%sup%held(1, node)) this%gap(:, node) = this%x_held(:, node) - this%s1%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
-      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k)
+      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k, this%s0%d, &
+                              this%s1%d, this%wf)
    end subroutine dyn_evaluate
 
    !> The water's and seabed's loads of the step (rodyn_water) at the force point of the
@@ -658,6 +669,14 @@ contains
          end do
       end if
       call this%rotate_from_base(alpha, this%s1%d)
+      ! the ends on bodies (and points) exactly where their masters put them
+      if (this%jn%ns > 0) then
+         call junctions_place(this%jn, this%s1%x, this%s1%d)
+         do k = 1, this%jn%ns
+            node = this%jn%s_node(k)
+            this%dx(:, node) = this%s1%x(:, node) - this%s0%x(:, node)
+         end do
+      end if
    end subroutine dyn_apply_correction
 
    !> One node's inertia (and mass-proportional damping) force added to f, mass * (c2 dq
@@ -667,11 +686,11 @@ contains
    !> compiler sees plain arrays rather than the problem's components.
    pure subroutine node_inertia(m, md, c2, wp_, dx, rest, d0, d1, f, fx, kb, want_k)
       real(wp), intent(in) :: m            !< translational mass [kg]
-      real(wp), intent(in) :: md(2)        !< director inertias [kg m2]
+      real(wp), intent(in) :: md(3)        !< director inertias [kg m2] (d3: a body's)
       real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
       real(wp), intent(in) :: wp_          !< weight of t_n+1 in the force point [-]
       real(wp), intent(in) :: dx(3)        !< position increment [m]
-      real(wp), intent(in) :: rest(3, 0:2) !< the step's constant parts (inertia_rest)
+      real(wp), intent(in) :: rest(3, 0:3) !< the step's constant parts (inertia_rest)
       real(wp), intent(in) :: d0(3, 3)     !< directors at t_n
       real(wp), intent(in) :: d1(3, 3)     !< directors at t_n+1
       real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
@@ -689,7 +708,7 @@ contains
             kb(j, j) = c2*m
          end do
       end if
-      do i = 1, 2
+      do i = 1, 3
          mi = md(i)
          if (mi == 0.0_wp) cycle
          dm = (1.0_wp - wp_)*d0(:, i) + wp_*d1(:, i)

@@ -4,7 +4,7 @@
 !> none. The mass matrix is constant: all nonlinearity is in the stiffness.
 module rodyn_inertia
    use rodyn_kinds, only: wp
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, body_free
    use rodyn_mesh, only: mesh_t
    use rodyn_state, only: state_t
    use rodyn_rod_element, only: rod_element_lumped_mass
@@ -17,7 +17,8 @@ module rodyn_inertia
    !> Nodal lumped inertia.
    type :: inertia_t
       real(wp), allocatable :: m(:)       !< (nn) translational mass [kg]
-      real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0)
+      real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0 but
+                                          !< at a body's node: its Euler tensor)
    end type inertia_t
 
 contains
@@ -50,6 +51,16 @@ contains
             inert%md(2, node) = inert%md(2, node) + m2(a)
          end do
       end do
+      ! a FREE body: its mass at G and its Euler tensor on its directors (principal
+      ! axes): E_1 = (J_2 + J_3 - J_1)/2, ... (T_rot = 1/2 sum_i E_i |d_i dot|^2)
+      do e = 1, size(mesh%body_node)
+         node = mesh%body_node(e)
+         if (model%bodies(e)%kind /= body_free) cycle
+         associate (j => model%bodies(e)%inertia)
+            inert%m(node) = inert%m(node) + model%bodies(e)%mass
+            inert%md(:, node) = inert%md(:, node) + 0.5_wp*(sum(j) - 2.0_wp*j)
+         end associate
+      end do
       ! attachments: their mass and the isotropic added mass Ca rho_w V at their node
       if (.not. allocated(model%attachments)) return
       do e = 1, size(model%attachments)
@@ -70,7 +81,7 @@ contains
       t = 0.0_wp
       do a = 1, size(inert%m)
          t = t + inert%m(a)*dot_product(state%v(:, a), state%v(:, a))
-         do i = 1, 2
+         do i = 1, 3
             t = t + inert%md(i, a)*dot_product(state%dd(:, i, a), state%dd(:, i, a))
          end do
       end do
@@ -100,7 +111,7 @@ contains
       j = 0.0_wp
       do a = 1, size(inert%m)
          j = j + inert%m(a)*cross(state%x(:, a), state%v(:, a))
-         do i = 1, 2
+         do i = 1, 3
             j = j + inert%md(i, a)*cross(state%d(:, i, a), state%dd(:, i, a))
          end do
       end do

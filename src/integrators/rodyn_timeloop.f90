@@ -172,6 +172,15 @@ contains
          w_hydro = sum(prob%water%fh*prob%dx)
          w_seabed = sum(prob%water%fs*prob%dx)
       end if
+      ! the bodies' buoyancy and waterplane (water), the moment of their loads at R
+      do i = 1, prob%bl%nb
+         node = prob%bl%node(i)
+         th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
+                                                        prob%s0%d(:, :, node)))
+         w_hydro = w_hydro + dot_product(prob%bl%fh(1:3, i), prob%dx(:, node)) &
+                   + dot_product(prob%bl%fh(4:6, i), th)
+         w_ext = w_ext + dot_product(prob%bl%fe(:, i), th)
+      end do
       do node = 1, prob%mesh%n_nodes
          dx = prob%dx(:, node)
          grav = prob%loads%gravity(:, node)
@@ -192,7 +201,7 @@ contains
          end if
          if (prob%alpha > 0.0_wp) then
             w_damp = w_damp + prob%alpha*prob%inert%m(node)*dot_product(dx, dx)/prob%dt
-            do i = 1, 2
+            do i = 1, 3
                w_damp = w_damp + prob%alpha*prob%inert%md(i, node)/prob%dt* &
                         sum((prob%s1%d(:, i, node) - prob%s0%d(:, i, node))**2)
             end do

@@ -46,6 +46,8 @@ module rodyn_deck
    use rodyn_deck_line, only: read_line_card, all_cable, check_line_element, &
                               check_line_geometry, static_analysis_runs, check_supported, &
                               check_straight_start
+   use rodyn_deck_body, only: read_body_card, read_body_hydrostatics_card, &
+                              resolve_point_bodies, resolve_load_bodies, check_bodies
    use rodyn_deck_system, only: read_point_card, resolve_line_points, resolve_load_points, &
                                 check_point_ends, system_complete
    implicit none
@@ -103,6 +105,7 @@ contains
       allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
       allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
       allocate (model%points(keyword_count(deck, 'POINT')))
+      allocate (model%bodies(keyword_count(deck, 'BODY')))
       allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
       allocate (pend%section_card(size(model%sections)))
       allocate (pend%line_section(size(model%lines)))
@@ -121,6 +124,8 @@ contains
       allocate (pend%att_line(size(model%attachments)))
       allocate (pend%line_point_a(size(model%lines)), pend%line_point_b(size(model%lines)))
       allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
+      allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
+      allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -160,6 +165,7 @@ contains
       model%initial_velocities = model%initial_velocities(1:pend%n_ivs)
       model%attachments = model%attachments(1:pend%n_attachments)
       model%points = model%points(1:pend%n_points)
+      model%bodies = model%bodies(1:pend%n_bodies)
    end subroutine trim_model
 
    !> Hand card `ic` to the reader of its keyword.
@@ -210,6 +216,10 @@ contains
             call read_attachment_card(deck, ic, model, pend, err)
          case ('POINT')
             call read_point_card(deck, ic, model, pend, err)
+         case ('BODY')
+            call read_body_card(deck, ic, model, pend, err)
+         case ('BODY HYDROSTATICS')
+            call read_body_hydrostatics_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
@@ -426,22 +436,25 @@ contains
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'Fx, Fy, Fz, Mx, My, Mz'
       type(point_load_t) :: load
-      character(len=:), allocatable :: line, amplitude, point
+      character(len=:), allocatable :: line, amplitude, point, body
       real(wp) :: v(6)
       integer :: n
 
       call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
-                             'AMPLITUDE', 'POINT'], err)
+                             'AMPLITUDE', 'POINT', 'BODY'], err)
       if (has_error(err)) return
       line = ''
       point = ''
+      body = ''
       call card_get_name(card, 'POINT', point, err)
       if (has_error(err)) return
-      if (len(point) > 0) then       ! on a FREE point (rodyn_deck_system)
+      call card_get_name(card, 'BODY', body, err)
+      if (has_error(err)) return
+      if (len(point) > 0 .or. len(body) > 0) then   ! on a FREE point or body
          if (card_find_param(card, 'LINE') > 0 .or. card_find_param(card, 'END') > 0 .or. &
-             card_find_param(card, 'NODE') > 0) then
-            call param_fail(card, 'POINT', 'give POINT= or LINE= with END= or NODE=, not'// &
-                            ' both', err)
+             card_find_param(card, 'NODE') > 0 .or. (len(point) > 0 .and. len(body) > 0)) then
+            call param_fail(card, merge('POINT', 'BODY ', len(point) > 0), 'give one of'// &
+                            ' POINT=, BODY=, or LINE= with END= or NODE=', err)
             return
          end if
       else
@@ -471,6 +484,7 @@ contains
       model%loads(pend%n_loads) = load
       pend%load_line(pend%n_loads) = ref_t(line, ic)
       pend%load_point(pend%n_loads) = ref_t(point, ic)
+      pend%load_body(pend%n_loads) = ref_t(body, ic)
       pend%load_amp(pend%n_loads) = ref_t(amplitude, ic)
    end subroutine read_load_card
 
@@ -600,6 +614,8 @@ contains
 
       call resolve_segments(deck, pend, model, err)
       if (has_error(err)) return
+      call resolve_point_bodies(deck, pend, model, err)
+      if (has_error(err)) return
       call resolve_line_points(deck, pend, model, err)
       if (has_error(err)) return
       do il = 1, size(model%lines)
@@ -632,6 +648,7 @@ contains
          case ('LOAD')
             iload = iload + 1
             if (len(pend%load_point(iload)%name) > 0) cycle   ! (resolve_load_points)
+            if (len(pend%load_body(iload)%name) > 0) cycle    ! (resolve_load_bodies)
             call resolve_line(deck%cards(ic), pend%load_line(iload)%name, model, &
                               iref, model%loads(iload)%node, err)
             if (has_error(err)) return
@@ -645,6 +662,8 @@ contains
       end do
       call resolve_load_points(deck, pend, model, err)
       if (has_error(err)) return
+      call resolve_load_bodies(deck, pend, model, err)
+      if (has_error(err)) return
       call check_point_ends(deck, pend, model, err)
       if (has_error(err)) return
       call validate_dynamics(deck, pend, model, err)
@@ -652,6 +671,8 @@ contains
       call validate_water(deck, pend, model, err)
       if (has_error(err)) return
       call system_complete(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_bodies(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)

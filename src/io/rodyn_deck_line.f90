@@ -13,6 +13,7 @@ module rodyn_deck_line
                                card_data_reals, real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, max_distance, param_fail, &
                                  location, node_count, node_number
+   use rodyn_deck_system, only: point_junction, point_held
    implicit none
    private
    public :: read_line_card, all_cable, check_line_element, check_line_geometry
@@ -272,22 +273,31 @@ contains
       integer, intent(in) :: il             !< line to check
       type(error_t), intent(inout) :: err   !< status
       logical :: held(size(model%lines)), any_held, changed
-      integer :: ib, ip, l
+      integer :: ib, ij, l, nj
       held = .false.
       do ib = 1, size(model%constraints)
          if (model%constraints(ib)%kind /= bc_free) held(model%constraints(ib)%line) = .true.
       end do
+      do l = 1, size(model%lines)          ! an end on a FIXED body is held
+         if (model%lines(l)%point_a > 0) held(l) = held(l) .or. &
+                                                  point_held(model, model%lines(l)%point_a)
+         if (model%lines(l)%point_b > 0) held(l) = held(l) .or. &
+                                                  point_held(model, model%lines(l)%point_b)
+      end do
+      ! junctions: FREE points, then bodies (rodyn_deck_system's point_junction)
+      nj = size(model%points)
+      if (allocated(model%bodies)) nj = nj + size(model%bodies)
       changed = .true.
       do while (changed .and. .not. held(il))
          changed = .false.
-         do ip = 1, size(model%points)
+         do ij = 1, nj
             any_held = .false.
             do l = 1, size(model%lines)
-               if (on_point(model%lines(l), ip)) any_held = any_held .or. held(l)
+               if (on_junction(l, ij)) any_held = any_held .or. held(l)
             end do
             if (.not. any_held) cycle
             do l = 1, size(model%lines)
-               if (.not. on_point(model%lines(l), ip) .or. held(l)) cycle
+               if (.not. on_junction(l, ij) .or. held(l)) cycle
                held(l) = .true.
                changed = .true.
             end do
@@ -304,14 +314,17 @@ contains
       call card_error(card, 'nothing holds line '//trim(model%lines(il)%name)// &
                       ' in position: a static analysis needs at least one *BOUNDARY of'// &
                       ' TYPE PINNED, HINGED, CLAMPED or POSITION on it', err)
+   contains
+      logical function on_junction(l, ij)
+         integer, intent(in) :: l, ij
+         on_junction = .false.
+         if (model%lines(l)%point_a > 0) on_junction = &
+            point_junction(model, model%lines(l)%point_a) == ij
+         if (model%lines(l)%point_b > 0) on_junction = on_junction .or. &
+            point_junction(model, model%lines(l)%point_b) == ij
+      end function on_junction
    end subroutine check_supported
 
-   !> Whether an end of the line is on point ip.
-   pure logical function on_point(line, ip)
-      type(line_def_t), intent(in) :: line !< the line
-      integer, intent(in) :: ip            !< point index
-      on_point = line%point_a == ip .or. line%point_b == ip
-   end function on_point
 
    !> A line not held in position at both ends (PINNED, HINGED, CLAMPED or POSITION, or
    !> on a point) starts straight from A towards B, so its end distance must equal LENGTH.

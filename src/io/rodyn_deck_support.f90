@@ -55,6 +55,10 @@ module rodyn_deck_support
       type(ref_t), allocatable :: line_point_b(:) !< per line: its POINT B= ('' if none)
       type(ref_t), allocatable :: load_point(:)   !< per load: its POINT= ('' if on a line)
       integer, allocatable :: point_card(:)       !< per point: card index
+      type(ref_t), allocatable :: point_body(:)   !< per point: its BODY= ('' if none)
+      type(ref_t), allocatable :: load_body(:)    !< per load: its BODY= ('' if none)
+      integer, allocatable :: body_card(:)        !< per body: card index
+      integer, allocatable :: body_hydro(:)       !< per body: its *BODY HYDROSTATICS card
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far
@@ -68,6 +72,7 @@ module rodyn_deck_support
       integer :: n_segments = 0     !< segments read so far
       integer :: n_attachments = 0  !< attachments read so far
       integer :: n_points = 0       !< points read so far
+      integer :: n_bodies = 0       !< bodies read so far
       integer :: heading = 0   !< card of the first *HEADING (0: none yet)
       integer :: gravity = 0   !< card of the first *GRAVITY
       integer :: static = 0    !< card of the first *STATIC

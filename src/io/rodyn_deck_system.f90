@@ -9,7 +9,8 @@ module rodyn_deck_system
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, point_fixed, &
-                          point_free, point_kind_names, bc_pinned, bc_free, end_a, end_b
+                          point_free, point_body, point_kind_names, bc_pinned, bc_free, &
+                          end_a, end_b, body_fixed
    use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
                                card_error, card_get_name, card_get_choice, card_check_data, &
                                card_data_reals, real_str, int_str, param_len
@@ -18,12 +19,14 @@ module rodyn_deck_system
    implicit none
    private
    public :: read_point_card, resolve_line_points, resolve_load_points, check_point_ends
-   public :: system_complete
+   public :: system_complete, point_held, point_junction
 
 contains
 
-   !> *POINT, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=] [, CDA=] [, CA=]; data line
-   !> x, y, z (the position at the start). MASS, VOLUME, CDA and CA only for a FREE point.
+   !> *POINT, NAME=, TYPE=FIXED|FREE|BODY [, BODY=] [, MASS=] [, VOLUME=] [, CDA=] [, CA=];
+   !> data line x, y, z (the position at the start; on a body, in its axes from its
+   !> reference point). MASS, VOLUME, CDA and CA only for a FREE point, BODY= only (and
+   !> always) for a BODY point.
    subroutine read_point_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the *POINT card
@@ -34,12 +37,12 @@ contains
       character(len=6), parameter :: props(4) = [character(len=6) :: 'MASS', 'VOLUME', &
                                                  'CDA', 'CA']
       type(point_t) :: pt
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, body
       integer :: ip, k
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
-                                'VOLUME', 'CDA', 'CA'], err)
+                                'VOLUME', 'CDA', 'CA', 'BODY'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -52,18 +55,26 @@ contains
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
          if (card_find_param(card, 'TYPE') == 0) then
-            call card_error(card, 'missing parameter TYPE (FIXED or FREE)', err)
+            call card_error(card, 'missing parameter TYPE (FIXED, FREE or BODY)', err)
             return
          end if
          call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err)
          if (has_error(err)) return
-         if (pt%kind == point_fixed) then
+         if (pt%kind /= point_free) then
             do k = 1, size(props)
                if (card_find_param(card, trim(props(k))) == 0) cycle
                call param_fail(card, trim(props(k)), trim(props(k))//' is for a FREE '// &
-                               'point: a FIXED point does not move', err)
+                               'point: a '//trim(point_kind_names(pt%kind))// &
+                               ' point has no mass or water load of its own', err)
                return
             end do
+         end if
+         body = ''
+         call card_get_name(card, 'BODY', body, err, required=pt%kind == point_body)
+         if (has_error(err)) return
+         if (pt%kind /= point_body .and. len(body) > 0) then
+            call param_fail(card, 'BODY', 'BODY= is for TYPE=BODY', err)
+            return
          end if
          call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
          if (has_error(err)) return
@@ -78,9 +89,11 @@ contains
             return
          end if
       end associate
+      pt%global = pt%position
       pend%n_points = pend%n_points + 1
       model%points(pend%n_points) = pt
       pend%point_card(pend%n_points) = ic
+      pend%point_body(pend%n_points) = ref_t(body, ic)
    end subroutine read_point_card
 
    !> The points of each line's ends (POINT A=, POINT B=): they exist, and the end takes
@@ -99,8 +112,8 @@ contains
             call find_point(deck%cards(pend%line_point_b(il)%card), 'POINT B', &
                             pend%line_point_b(il)%name, model, line%point_b, err)
             if (has_error(err)) return
-            if (line%point_a > 0) line%end_a = model%points(line%point_a)%position
-            if (line%point_b > 0) line%end_b = model%points(line%point_b)%position
+            if (line%point_a > 0) line%end_a = model%points(line%point_a)%global
+            if (line%point_b > 0) line%end_b = model%points(line%point_b)%global
          end associate
       end do
    end subroutine resolve_line_points
@@ -197,6 +210,28 @@ contains
          model%constraints = [model%constraints, constraint_t(line=l, node=k, kind=bc_pinned)]
       end subroutine pin_end
    end subroutine check_point_ends
+
+   !> Whether point ip holds its line ends in place: a FIXED point, a point on a FIXED body.
+   pure logical function point_held(model, ip)
+      type(model_t), intent(in) :: model  !< model, points' bodies resolved
+      integer, intent(in) :: ip           !< point
+      point_held = model%points(ip)%kind == point_fixed
+      if (model%points(ip)%kind == point_body) &
+         point_held = model%bodies(model%points(ip)%body)%kind == body_fixed
+   end function point_held
+
+   !> The junction that line ends on point ip move with (0: none, a FIXED point pins
+   !> them): ip itself for a FREE point, size(points) + the body for a point on a body
+   !> (FIXED or FREE: a FIXED body is a junction whose unknowns are held).
+   pure integer function point_junction(model, ip)
+      type(model_t), intent(in) :: model  !< model, points' bodies resolved
+      integer, intent(in) :: ip           !< point
+      point_junction = 0
+      if (model%points(ip)%kind == point_fixed) return
+      point_junction = ip
+      if (model%points(ip)%kind == point_body) &
+         point_junction = size(model%points) + model%points(ip)%body
+   end function point_junction
 
    !> A FREE point's VOLUME, CDA and CA need *WATER; its mass, volume, drag and added
    !> mass become an attachment at the point (rodyn_mesh puts it on the point's node).

@@ -7,7 +7,7 @@
 module rodyn_output_points
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, point_kind_names
+   use rodyn_model, only: model_t, point_kind_names, body_kind_names, name_len
    use rodyn_results, only: line_result_t, system_result_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
                             remove_file
@@ -17,9 +17,11 @@ module rodyn_output_points
    implicit none
    private
    public :: write_points_csv, points_csv, write_stiffness_csv, stiffness_csv
+   public :: write_bodies_csv, bodies_csv
 
    character(len=*), parameter :: points_csv = 'static_points.csv'
    character(len=*), parameter :: stiffness_csv = 'static_stiffness.csv'
+   character(len=*), parameter :: bodies_csv = 'static_bodies.csv'
 
 contains
 
@@ -68,15 +70,19 @@ contains
    end subroutine write_points_csv
 
    !> Write static_stiffness.csv into folder `dir`: every entry K_jk of the stiffness at
-   !> the FREE points (system_result_t), one row each, rows by point and direction; a
-   !> system without FREE points, or without the result (statics not complete), removes
-   !> one an earlier run left there.
+   !> the FREE points and bodies (system_result_t), of everything and of the lines, one
+   !> row each; a system without them, or without the result (statics not complete),
+   !> removes one an earlier run left there.
    subroutine write_stiffness_csv(dir, model, sys, err)
       character(len=*), intent(in) :: dir                 !< output folder (exists)
       type(model_t), intent(in) :: model                  !< model with its points
       type(system_result_t), intent(in), optional :: sys  !< the stiffness
       type(error_t), intent(inout) :: err                 !< status
-      character(len=1), parameter :: xyz(3) = ['x', 'y', 'z']
+      character(len=2), parameter :: dofs(6) = ['x ', 'y ', 'z ', 'rx', 'ry', 'rz']
+      character(len=*), parameter :: units(2, 2) = reshape([character(len=7) :: 'N/m', &
+         'N m/m', 'N/rad', 'N m/rad'], [2, 2])
+      character(len=name_len), allocatable :: obj(:)
+      integer, allocatable :: dof(:)
       type(out_file_t) :: f
       integer :: i, j
       if (has_error(err)) return
@@ -84,26 +90,85 @@ contains
          call remove_file(path_join(dir, stiffness_csv))
          return
       end if
-      if (.not. allocated(sys%point)) then
+      if (.not. allocated(sys%stiffness)) then
          call remove_file(path_join(dir, stiffness_csv))
          return
       end if
-      if (size(sys%point) == 0) then
+      if (size(sys%stiffness, 1) == 0) then
          call remove_file(path_join(dir, stiffness_csv))
          return
       end if
+      call unknown_names(model, sys, obj, dof)
       call outfile_create(f, dir, stiffness_csv, err)
       if (has_error(err)) return
       call outfile_put(f, schema_header(stiffness_csv))
-      do i = 1, size(sys%stiffness, 1)
-         do j = 1, size(sys%stiffness, 2)
-            call outfile_put(f, trim(model%points(sys%point((i - 1)/3 + 1))%name)//','// &
-                             xyz(mod(i - 1, 3) + 1)//','// &
-                             trim(model%points(sys%point((j - 1)/3 + 1))%name)//','// &
-                             xyz(mod(j - 1, 3) + 1)//','//real_text(sys%stiffness(i, j))// &
-                             ',N/m')
+      do i = 1, size(obj)
+         do j = 1, size(obj)
+            call outfile_put(f, trim(obj(i))//','//trim(dofs(dof(i)))//','//trim(obj(j))// &
+                             ','//trim(dofs(dof(j)))//','//real_text(sys%stiffness(i, j))// &
+                             ','//real_text(sys%lines_stiffness(i, j))//','// &
+                             trim(units(merge(1, 2, dof(i) <= 3), merge(1, 2, dof(j) <= 3))))
          end do
       end do
       call outfile_commit(f, err)
    end subroutine write_stiffness_csv
+
+   !> The object (point or body name) and direction (1..6: x, y, z, rx, ry, rz) of each
+   !> unknown of the system's stiffness.
+   subroutine unknown_names(model, sys, obj, dof)
+      type(model_t), intent(in) :: model                        !< model
+      type(system_result_t), intent(in) :: sys                  !< masters
+      character(len=name_len), allocatable, intent(out) :: obj(:) !< names
+      integer, allocatable, intent(out) :: dof(:)               !< directions
+      integer :: m, c, k, n
+      n = size(sys%stiffness, 1)
+      allocate (obj(n), dof(n))
+      k = 0
+      do m = 1, size(sys%kind)
+         do c = 1, merge(3, 6, sys%kind(m) == 1)
+            k = k + 1
+            dof(k) = c
+            if (sys%kind(m) == 1) then
+               obj(k) = model%points(sys%index(m))%name
+            else
+               obj(k) = model%bodies(sys%index(m))%name
+            end if
+         end do
+      end do
+   end subroutine unknown_names
+
+   !> Write static_bodies.csv into folder `dir`: each body's reference point, rotation
+   !> and the force and moment about R of its lines (a deck without bodies, or without the
+   !> result: remove one an earlier run left there).
+   subroutine write_bodies_csv(dir, model, sys, err)
+      character(len=*), intent(in) :: dir                 !< output folder (exists)
+      type(model_t), intent(in) :: model                  !< model with its bodies
+      type(system_result_t), intent(in), optional :: sys  !< the bodies' results
+      type(error_t), intent(inout) :: err                 !< status
+      type(out_file_t) :: f
+      integer :: b, k
+      character(len=:), allocatable :: row
+      if (has_error(err)) return
+      call remove_file(path_join(dir, bodies_csv))
+      if (.not. present(sys)) return
+      if (.not. allocated(sys%body_x)) return
+      if (size(sys%body_x, 2) == 0) return
+      call outfile_create(f, dir, bodies_csv, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(bodies_csv))
+      do b = 1, size(sys%body_x, 2)
+         row = trim(model%bodies(b)%name)//','//trim(body_kind_names(model%bodies(b)%kind))
+         do k = 1, 3
+            row = row//','//real_text(sys%body_x(k, b))
+         end do
+         do k = 1, 3
+            row = row//','//real_text(sys%body_rot(k, b))
+         end do
+         do k = 1, 6
+            row = row//','//real_text(sys%body_force(k, b))
+         end do
+         call outfile_put(f, row)
+      end do
+      call outfile_commit(f, err)
+   end subroutine write_bodies_csv
 end module rodyn_output_points

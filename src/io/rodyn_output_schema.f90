@@ -62,12 +62,27 @@ module rodyn_output_schema
       'static_points.csv | Fy_N | N | y force of the lines on the point', &
       'static_points.csv | Fz_N | N | z force of the lines on the point', &
       'static_points.csv | lines | - | line ends on the point', &
-      'static_stiffness.csv | row_point | - | FREE point of the force (row)', &
-      'static_stiffness.csv | row_dof | - | x, y or z: the force component', &
-      'static_stiffness.csv | column_point | - | FREE point moved (column)', &
-      'static_stiffness.csv | column_dof | - | x, y or z: the direction moved', &
-      'static_stiffness.csv | stiffness | - | K = -dF/dx, the unit of the unit column', &
-      'static_stiffness.csv | unit | - | unit of the stiffness (N/m)', &
+      'static_stiffness.csv | row_object | - | FREE point or body of the force (row)', &
+      'static_stiffness.csv | row_dof | - | x, y, z (force) or rx, ry, rz (moment about R)', &
+      'static_stiffness.csv | column_object | - | FREE point or body moved (column)', &
+      'static_stiffness.csv | column_dof | - | x, y, z (a move) or rx, ry, rz (a turn)', &
+      'static_stiffness.csv | stiffness | - | K = -dF/dq of everything, in the unit column', &
+      'static_stiffness.csv | lines_stiffness | - | K of the lines alone, in the unit column', &
+      'static_stiffness.csv | unit | - | N/m, N/rad, N m/m or N m/rad', &
+      'static_bodies.csv | body | - | body name (*BODY)', &
+      'static_bodies.csv | type | - | FIXED or FREE', &
+      'static_bodies.csv | x_m | m | x of the reference point R, global axes', &
+      'static_bodies.csv | y_m | m | y of R, global axes', &
+      'static_bodies.csv | z_m | m | z of R, global axes', &
+      'static_bodies.csv | rx_rad | rad | rotation vector from the start, x', &
+      'static_bodies.csv | ry_rad | rad | rotation vector from the start, y', &
+      'static_bodies.csv | rz_rad | rad | rotation vector from the start, z', &
+      'static_bodies.csv | Fx_N | N | x force of the lines on the body', &
+      'static_bodies.csv | Fy_N | N | y force of the lines on the body', &
+      'static_bodies.csv | Fz_N | N | z force of the lines on the body', &
+      'static_bodies.csv | Mx_Nm | N m | x moment of the lines about R', &
+      'static_bodies.csv | My_Nm | N m | y moment of the lines about R', &
+      'static_bodies.csv | Mz_Nm | N m | z moment of the lines about R', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
       'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &

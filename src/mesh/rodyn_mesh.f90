@@ -10,7 +10,8 @@ module rodyn_mesh
    use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_section, only: section_stiffness, section_damping
    use rodyn_model, only: model_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position, end_a, end_b, element_cable, scheme_alpha, point_free
+                          bc_position, end_a, end_b, element_cable, scheme_alpha, point_free, &
+                          point_body, body_free
    use rodyn_state, only: state_t, state_allocate
    use rodyn_rotation, only: rotation_exp, rotation_frame, cross, skew
    use rodyn_catenary, only: catenary_t, catenary_solve, catenary_point, catenary_grounded
@@ -66,8 +67,14 @@ module rodyn_mesh
       ! lines' nodes (node_line 0, no element: 3 unknowns); the line ends on it share
       ! its position (rodyn_junctions)
       integer :: n_line_nodes = 0                 !< nodes on lines (the first ones)
-      integer, allocatable :: point_node(:)       !< (np) node of each FREE point, 0 if FIXED
-      integer, allocatable :: end_point_node(:, :) !< (2, nl) point node of ends A, B (0: none)
+      integer, allocatable :: point_node(:)       !< (np) node of each FREE point, else 0
+      !> (nb) node of each body (after the points' nodes; at its centre of gravity G, its
+      !> directors the body's axes: 6 unknowns, held for a FIXED body)
+      integer, allocatable :: body_node(:)
+      !> (2, nl) the node that ends A, B move with: a FREE point's or a FREE body's (0: none)
+      integer, allocatable :: end_point_node(:, :)
+      !> (3, 2, nl) where the end is on its body: body axes, from G [m] (0 on a point)
+      real(wp), allocatable :: end_offset(:, :, :)
    end type mesh_t
 
 contains
@@ -169,21 +176,14 @@ contains
          call line_initial_shape(model, mesh, l, state, shape, err)
          if (has_error(err)) return
       end do
-      do k = 1, size(mesh%point_node)
-         if (mesh%point_node(k) == 0) cycle
-         mesh%node_line(mesh%point_node(k)) = 0
-         mesh%node_s(mesh%point_node(k)) = 0.0_wp
-         state%x(:, mesh%point_node(k)) = model%points(k)%position
-         state%d(:, :, mesh%point_node(k)) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-                                                      1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-                                                      1.0_wp], [3, 3])
-      end do
-      ! the line ends on FREE points where their points are
+      call place_point_nodes(model, mesh, state)
+      ! the line ends on FREE points and bodies where their points are
       do l = 1, nl
-         if (mesh%end_point_node(1, l) > 0) state%x(:, mesh_node(mesh, l, end_a)) = &
-            state%x(:, mesh%end_point_node(1, l))
-         if (mesh%end_point_node(2, l) > 0) state%x(:, mesh_node(mesh, l, end_b)) = &
-            state%x(:, mesh%end_point_node(2, l))
+         do k = 1, 2
+            if (mesh%end_point_node(k, l) == 0) cycle
+            state%x(:, mesh_node(mesh, l, merge(end_a, end_b, k == 1))) = &
+               state%x(:, mesh%end_point_node(k, l)) + mesh%end_offset(:, k, l)
+         end do
       end do
       mesh%n_cable = count(mesh%elem_cable)
       mesh%damped = any(mesh%elem_damp > 0.0_wp)
@@ -203,30 +203,74 @@ contains
       end function attachment_node
    end subroutine mesh_build
 
-   !> The FREE points' nodes, numbered after the lines' nn nodes (nn counts them on
-   !> return), and the point node of each line end.
+   !> The FREE points' and the bodies' nodes, numbered after the lines' nn nodes (nn
+   !> counts them on return), and the node each line end moves with, with its offset.
    pure subroutine point_nodes(model, mesh, nn)
       type(model_t), intent(in) :: model   !< model
-      type(mesh_t), intent(inout) :: mesh  !< point_node, end_point_node set
+      type(mesh_t), intent(inout) :: mesh  !< point_node, body_node, end_* set
       integer, intent(inout) :: nn         !< nodes so far
-      integer :: np, k, l
+      integer :: np, nb, k, l, ip
       np = 0
+      nb = 0
       if (allocated(model%points)) np = size(model%points)
-      allocate (mesh%point_node(np), mesh%end_point_node(2, mesh%n_lines))
+      if (allocated(model%bodies)) nb = size(model%bodies)
+      allocate (mesh%point_node(np), mesh%body_node(nb), mesh%end_point_node(2, mesh%n_lines), &
+                mesh%end_offset(3, 2, mesh%n_lines))
       mesh%point_node = 0
+      mesh%body_node = 0
       do k = 1, np
          if (model%points(k)%kind /= point_free) cycle
          nn = nn + 1
          mesh%point_node(k) = nn
       end do
+      do k = 1, nb              ! (a FIXED body too: its unknowns are held)
+         nn = nn + 1
+         mesh%body_node(k) = nn
+      end do
       mesh%end_point_node = 0
+      mesh%end_offset = 0.0_wp
       do l = 1, mesh%n_lines
-         if (model%lines(l)%point_a > 0) &
-            mesh%end_point_node(1, l) = mesh%point_node(model%lines(l)%point_a)
-         if (model%lines(l)%point_b > 0) &
-            mesh%end_point_node(2, l) = mesh%point_node(model%lines(l)%point_b)
+         do k = 1, 2
+            ip = merge(model%lines(l)%point_a, model%lines(l)%point_b, k == 1)
+            if (ip == 0) cycle
+            if (model%points(ip)%kind == point_free) then
+               mesh%end_point_node(k, l) = mesh%point_node(ip)
+            else if (model%points(ip)%kind == point_body) then
+               mesh%end_point_node(k, l) = mesh%body_node(model%points(ip)%body)
+               mesh%end_offset(:, k, l) = model%points(ip)%position - &
+                                          model%bodies(model%points(ip)%body)%cog
+            end if
+         end do
       end do
    end subroutine point_nodes
+
+   !> The FREE points' and bodies' nodes at the start: a point where it is, its directors
+   !> the global axes; a body at its centre of gravity R + G, its directors the body's
+   !> axes (the global axes at the start).
+   pure subroutine place_point_nodes(model, mesh, state)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(inout) :: mesh    !< node_line, node_s of the nodes set
+      type(state_t), intent(inout) :: state  !< their positions and directors
+      real(wp), parameter :: eye(3, 3) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, &
+                                                  0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [3, 3])
+      integer :: k, n
+      do k = 1, size(mesh%point_node)
+         n = mesh%point_node(k)
+         if (n == 0) cycle
+         mesh%node_line(n) = 0
+         mesh%node_s(n) = 0.0_wp
+         state%x(:, n) = model%points(k)%position
+         state%d(:, :, n) = eye
+      end do
+      do k = 1, size(mesh%body_node)
+         n = mesh%body_node(k)
+         if (n == 0) cycle
+         mesh%node_line(n) = 0
+         mesh%node_s(n) = 0.0_wp
+         state%x(:, n) = model%bodies(k)%position + model%bodies(k)%cog
+         state%d(:, :, n) = eye
+      end do
+   end subroutine place_point_nodes
 
    !> Elements and nodes of line l, segment after segment from end A: each element of a
    !> segment has the segment's section and length / elements; nodes equally spaced in

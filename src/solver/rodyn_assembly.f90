@@ -9,7 +9,7 @@
 module rodyn_assembly
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, amplitude_t, bc_free, bc_pinned, bc_hinged, bc_clamped, &
-                          bc_position, end_a, end_b
+                          bc_position, end_a, end_b, body_fixed, body_free
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_water, only: water_loads_t, water_element, water_attachment
    use rodyn_hydro, only: water_section_t
@@ -86,6 +86,11 @@ contains
          nen = mesh%line_order(mesh%elem_line(i)) + 1
          sup%held(4:6, mesh%elem_nodes(1:nen, i)) = .false.
       end do
+      ! a body turns: its node's rotations are unknowns (held for a FIXED body)
+      do i = 1, size(mesh%body_node)
+         sup%held(4:6, mesh%body_node(i)) = model%bodies(i)%kind == body_fixed
+         if (model%bodies(i)%kind == body_fixed) sup%held(1:3, mesh%body_node(i)) = .true.
+      end do
       ! ... and no rotation unknowns in the linear system: 3 dofs, not 6
       call dof_map(mesh, sup%first, sup%ndof, sup%n_dof, sup%half_bw)
       sup%uniform = all(sup%ndof == 6)
@@ -156,9 +161,9 @@ contains
       end do
    end subroutine constraints_apply
 
-   !> The unknowns of the linear system: 6 at a node with a rod element, 3 (the
-   !> translations) at a node with cable elements only; node after node, so that the
-   !> half bandwidth is the largest span of one element's unknowns.
+   !> The unknowns of the linear system: 6 at a node with a rod element and at a body's,
+   !> 3 (the translations) at a node with cable elements only and at a FREE point's; node
+   !> after node, so that the half bandwidth is the largest span of one element's unknowns.
    subroutine dof_map(mesh, first, ndof, n_dof, half_bw)
       type(mesh_t), intent(in) :: mesh                !< mesh
       integer, allocatable, intent(out) :: first(:)   !< (nn) first dof of each node
@@ -172,6 +177,9 @@ contains
          if (mesh%elem_cable(e)) cycle
          nen = mesh%line_order(mesh%elem_line(e)) + 1
          ndof(mesh%elem_nodes(1:nen, e)) = 6
+      end do
+      do e = 1, size(mesh%body_node)       ! a body's node: 6
+         ndof(mesh%body_node(e)) = 6
       end do
       n_dof = 0
       do node = 1, mesh%n_nodes
@@ -235,6 +243,13 @@ contains
             loads%gravity(:, node) = loads%gravity(:, node) + fa(:, a)
          end do
       end do
+      if (allocated(model%bodies)) then        ! a FREE body's weight at its node, G
+         do i = 1, size(model%bodies)
+            node = mesh%body_node(i)
+            if (model%bodies(i)%kind == body_free) loads%gravity(:, node) = &
+               loads%gravity(:, node) + model%bodies(i)%mass*model%gravity
+         end do
+      end if
       if (allocated(model%attachments)) then
          do i = 1, size(model%attachments)
             node = mesh%att_node(i)
@@ -248,6 +263,8 @@ contains
       do i = 1, np
          if (model%loads(i)%point > 0) then        ! on a FREE point: its node
             loads%pt_node(i) = mesh%point_node(model%loads(i)%point)
+         else if (model%loads(i)%body > 0) then    ! on a FREE body: its node (at G)
+            loads%pt_node(i) = mesh%body_node(model%loads(i)%body)
          else
             loads%pt_node(i) = mesh_node(mesh, model%loads(i)%line, model%loads(i)%node)
          end if

@@ -1,21 +1,25 @@
-!> The junctions of a mooring system in the Newton step: the FREE points' unknowns and
-!> the line ends on them (docs/theory.md section 17, eqs. (131)-(134)).
+!> The junctions of a mooring system in the Newton step: the FREE points' and FREE
+!> bodies' unknowns and the line ends on them (docs/theory.md section 17, eqs.
+!> (131)-(136)).
 !>
-!> A line end on a FREE point is pinned to it: its position is the point's, x_e = x_p.
+!> A line end e on a FREE point p is pinned to it, x_e = x_p; on a FREE body b at the
+!> body-axes offset r from its node (its centre of gravity G, directors d_i), x_e = x_b +
+!> a, a = sum_i r_i d_i. A virtual move of the end is T q_m of its master's (point or
+!> body) unknowns: T = I for a point, T = [I, -skew(a)] for a body (135).
 !> The global band (rodyn_banded) is assembled as for separate lines, every node with
-!> its own unknowns, the point's node (no element) with its own loads only. Then the
-!> ends' translations are eliminated (u_e = u_p):
+!> its own unknowns, a master's node (no element) with its own loads and inertia only.
+!> Then the ends' translations are eliminated, with T_f = T at the scheme's force point
+!> (a_f of its directors; a at t_n+1 for the kinematics):
 !>
-!>   r_p <- r_p + sum_e r_e,   r_e <- 0                                          (131)
-!>   K_pp <- K_pp + sum_{e,e'} K_ee',  K_ip <- K_ie,  K_pi <- K_ei  (i a line unknown) (132)
+!>   r_m <- r_m + sum_e T_f^T r_e,   r_e <- 0                                     (131)
+!>   K_mm' <- K_mm' + sum T_f^T K_ee' T,  K_im <- K_ie T,  K_mi <- T_f^T K_ei        (132)
+!>   K_rot,rot <- + w (a r_e^T - (a . r_e) I)   (a body: the turning end force)   (136)
 !>
 !> The lines no longer couple to one another through the band, which keeps each line's
-!> unknowns (the ends' and the points' rows become identity rows); K_ip, K_pi and K_pp
+!> unknowns (the ends' and the masters' rows become identity rows); K_im, K_mi and K_mm
 !> are the arrowhead's E, F and C (rodyn_arrowhead), solved by condensing each line
-!> onto the points it touches:
-!>
-!>   (C - sum_i F_i A_i^-1 E_i) du_p = -(r_p - sum_i F_i A_i^-1 r_i)             (133)
-!>   du_i = -A_i^-1 (r_i + E_i du_p),   du_e = du_p                              (134)
+!> onto the masters it touches (133)-(134). After a correction the ends are placed on
+!> their masters exactly (junctions_place).
 !>
 !> Nothing here allocates after junctions_build.
 module rodyn_junctions
@@ -27,65 +31,85 @@ module rodyn_junctions
    use rodyn_arrowhead, only: arrowhead_t, arrowhead_init, arrowhead_block_init, &
                               arrowhead_zero, arrowhead_factor, arrowhead_solve
    use rodyn_assembly, only: supports_t
+   use rodyn_rotation, only: skew
    implicit none
    private
    public :: junctions_t, junctions_build, junctions_condense, junctions_factor, &
-             junctions_solve, junctions_stiffness
+             junctions_solve, junctions_stiffness, junctions_place
 
    !> The junction unknowns, the ends on them and the arrowhead matrix.
    type :: junctions_t
-      integer :: nj = 0                      !< junction unknowns: 3 per FREE point
+      integer :: nj = 0                      !< junction unknowns: 3 a FREE point, 6 a body
       integer, allocatable :: jdof(:)        !< (nj) the band's dof of each
-      integer :: ns = 0                      !< line ends on FREE points
+      logical, allocatable :: held(:)        !< (nj) held (a FIXED body's)
+      real(wp), allocatable :: rhs_held(:)   !< (nj) scratch: their right-hand side
+      !> held masters free (the system's stiffness, junctions_stiffness; default held)
+      logical :: free_all = .false.
+      integer :: nm = 0                      !< masters (FREE points, then FREE bodies)
+      integer, allocatable :: m_node(:)      !< (nm) node of each
+      integer, allocatable :: m_j0(:)        !< (nm) its first junction unknown - 1
+      integer, allocatable :: m_n(:)         !< (nm) its unknowns, 3 or 6
+      integer :: ns = 0                      !< line ends on masters
       integer, allocatable :: s_node(:)      !< (ns) node of each end
-      integer, allocatable :: s_j0(:)        !< (ns) its point's first junction unknown - 1
+      integer, allocatable :: s_m(:)         !< (ns) its master
       integer, allocatable :: s_line(:)      !< (ns) its line (the arrowhead block)
-      integer, allocatable :: s_col(:)       !< (ns) its point's first column - 1 in E_line
+      integer, allocatable :: s_col(:)       !< (ns) its master's first column - 1 in E_line
+      real(wp), allocatable :: s_r(:, :)     !< (3, ns) its offset, body axes from G [m]
+      real(wp), allocatable :: tk(:, :, :)   !< (3, 6, ns) T of the kinematics (scratch)
+      real(wp), allocatable :: tf(:, :, :)   !< (3, 6, ns) T at the force point (scratch)
       type(arrowhead_t) :: ah                !< E, F, C and the factors
       real(wp), allocatable :: y(:)          !< (nj) scratch
    end type junctions_t
 
 contains
 
-   !> The junctions of a mesh (none without FREE points: nj = 0, and nothing else is
-   !> done by the routines below).
+   !> The junctions of a mesh (none without FREE points or bodies: nj = 0, and nothing
+   !> else is done by the routines below).
    subroutine junctions_build(mesh, sup, jn)
-      type(mesh_t), intent(in) :: mesh       !< mesh with its point nodes
+      type(mesh_t), intent(in) :: mesh       !< mesh with its point and body nodes
       type(supports_t), intent(in) :: sup    !< dof map
       type(junctions_t), intent(out) :: jn   !< junctions
-      integer :: k, l, c, q, n, ns, np
-      integer, allocatable :: jpt(:)         ! (nn) first junction unknown - 1 of a point node
-      integer :: cols(6), nc
-      np = count(mesh%point_node > 0)
-      jn%nj = 3*np
-      allocate (jn%jdof(jn%nj), jn%y(jn%nj), jpt(mesh%n_nodes))
-      jpt = -1
-      k = 0
-      do q = 1, size(mesh%point_node)
-         n = mesh%point_node(q)
-         if (n == 0) cycle
-         jpt(n) = k
-         jn%jdof(k + 1:k + 3) = [(sup%first(n) + c - 1, c=1, 3)]
-         k = k + 3
+      integer :: k, l, c, n, m, nc
+      integer, allocatable :: m_of(:)        ! (nn) master of a node, 0: none
+      integer :: cols(12)
+      jn%nm = count(mesh%point_node > 0) + count(mesh%body_node > 0)
+      allocate (jn%m_node(jn%nm), jn%m_j0(jn%nm), jn%m_n(jn%nm), m_of(mesh%n_nodes))
+      jn%m_node = [pack(mesh%point_node, mesh%point_node > 0), &
+                   pack(mesh%body_node, mesh%body_node > 0)]
+      m_of = 0
+      jn%nj = 0
+      do m = 1, jn%nm
+         m_of(jn%m_node(m)) = m
+         jn%m_j0(m) = jn%nj
+         jn%m_n(m) = sup%ndof(jn%m_node(m))
+         jn%nj = jn%nj + jn%m_n(m)
       end do
-      ns = count(mesh%end_point_node > 0)
-      jn%ns = ns
-      allocate (jn%s_node(ns), jn%s_j0(ns), jn%s_line(ns), jn%s_col(ns))
+      allocate (jn%jdof(jn%nj), jn%y(jn%nj), jn%held(jn%nj), jn%rhs_held(jn%nj))
+      do m = 1, jn%nm
+         jn%jdof(jn%m_j0(m) + 1:jn%m_j0(m) + jn%m_n(m)) = &
+            [(sup%first(jn%m_node(m)) + c - 1, c=1, jn%m_n(m))]
+         jn%held(jn%m_j0(m) + 1:jn%m_j0(m) + jn%m_n(m)) = sup%held(1:jn%m_n(m), jn%m_node(m))
+      end do
+      jn%ns = count(mesh%end_point_node > 0)
+      allocate (jn%s_node(jn%ns), jn%s_m(jn%ns), jn%s_line(jn%ns), jn%s_col(jn%ns), &
+                jn%s_r(3, jn%ns), jn%tk(3, 6, jn%ns), jn%tf(3, 6, jn%ns))
       if (jn%nj == 0) return
       call arrowhead_init(jn%ah, mesh%n_lines, jn%nj)
       k = 0
       do l = 1, mesh%n_lines
          nc = 0
          do c = 1, 2
-            q = mesh%end_point_node(c, l)
-            if (q == 0) cycle
+            n = mesh%end_point_node(c, l)
+            if (n == 0) cycle
             k = k + 1
+            m = m_of(n)
             jn%s_node(k) = mesh_node(mesh, l, merge(end_a, end_b, c == 1))
-            jn%s_j0(k) = jpt(q)
+            jn%s_m(k) = m
             jn%s_line(k) = l
             jn%s_col(k) = nc
-            cols(nc + 1:nc + 3) = [(jpt(q) + n, n=1, 3)]
-            nc = nc + 3
+            jn%s_r(:, k) = mesh%end_offset(:, c, l)
+            cols(nc + 1:nc + jn%m_n(m)) = [(jn%m_j0(m) + n, n=1, jn%m_n(m))]
+            nc = nc + jn%m_n(m)
          end do
          n = mesh_node(mesh, l, end_b)
          call arrowhead_block_init(jn%ah, l, sup%first(mesh_node(mesh, l, end_a)), &
@@ -93,98 +117,191 @@ contains
       end do
    end subroutine junctions_build
 
-   !> Eliminate the ends' translations (eqs. (131)-(132)): the right-hand side always,
-   !> the tangent when it was formed (want_k; after apply_supports).
-   subroutine junctions_condense(jn, sup, rhs, bm, want_k)
+   !> T of each end (135), of the kinematics (directors d1) and at the force point
+   !> ((1 - w) d0 + w d1).
+   pure subroutine transfer_matrices(jn, d0, d1, w)
+      type(junctions_t), intent(inout) :: jn !< junctions: tk, tf set
+      real(wp), intent(in) :: d0(:, :, :)    !< (3, 3, nn) directors at t_n
+      real(wp), intent(in) :: d1(:, :, :)    !< (3, 3, nn) directors now
+      real(wp), intent(in) :: w              !< weight of d1 at the force point
+      real(wp) :: a1(3), af(3)
+      integer :: s, c, n
+      do s = 1, jn%ns
+         jn%tk(:, :, s) = 0.0_wp
+         do c = 1, 3
+            jn%tk(c, c, s) = 1.0_wp
+         end do
+         jn%tf(:, :, s) = jn%tk(:, :, s)
+         if (jn%m_n(jn%s_m(s)) == 3) cycle
+         n = jn%m_node(jn%s_m(s))
+         a1 = matmul(d1(:, :, n), jn%s_r(:, s))
+         af = (1.0_wp - w)*matmul(d0(:, :, n), jn%s_r(:, s)) + w*a1
+         jn%tk(:, 4:6, s) = -skew(a1)
+         jn%tf(:, 4:6, s) = -skew(af)
+      end do
+   end subroutine transfer_matrices
+
+   !> Eliminate the ends' translations (eqs. (131), (132), (136)): the right-hand side
+   !> always, the tangent when it was formed (want_k; after apply_supports). d0, d1 and
+   !> w as for transfer_matrices (statics: d0 = d1, w = 1). A held master unknown (a
+   !> FIXED body's) keeps apply_supports' row: C's row and column, E's column and F's row
+   !> of it are those of the identity; with jn%free_all (the stiffness of the system,
+   !> junctions_stiffness) it is free like the others (with no load of its own).
+   subroutine junctions_condense(jn, sup, rhs, bm, want_k, d0, d1, w)
       type(junctions_t), intent(inout) :: jn !< junctions: E, F, C set when want_k
       type(supports_t), intent(in) :: sup    !< dof map
       real(wp), intent(inout) :: rhs(:)      !< (n_dof) right-hand side
-      type(banded_t), intent(inout) :: bm    !< tangent (its rows of ends and points cleared)
+      type(banded_t), intent(inout) :: bm    !< tangent (its rows of ends and masters cleared)
       logical, intent(in) :: want_k          !< the tangent was formed
-      integer :: s, c, k
+      real(wp), intent(in) :: d0(:, :, :)    !< (3, 3, nn) directors at t_n
+      real(wp), intent(in) :: d1(:, :, :)    !< (3, 3, nn) directors now
+      real(wp), intent(in) :: w              !< weight of d1 at the force point
+      real(wp) :: re(3), a1(3)
+      integer :: s, c, k, j0, nm
+      logical :: hold
       if (jn%nj == 0) return
-      do s = 1, jn%ns
-         k = sup%first(jn%s_node(s)) - 1
-         do c = 1, 3
-            rhs(jn%jdof(jn%s_j0(s) + c)) = rhs(jn%jdof(jn%s_j0(s) + c)) + rhs(k + c)
-            rhs(k + c) = 0.0_wp
+      hold = .not. jn%free_all
+      call transfer_matrices(jn, d0, d1, w)
+      jn%rhs_held = rhs(jn%jdof)
+      if (want_k) then
+         call arrowhead_zero(jn%ah)
+         call master_blocks(jn, bm, hold)
+         do s = 1, jn%ns
+            call end_couplings(jn, sup, bm, s)
          end do
-      end do
-      if (.not. want_k) return
-      call arrowhead_zero(jn%ah)
-      call point_blocks(jn, bm)
-      do s = 1, jn%ns
-         call end_couplings(jn, sup, bm, s)
-      end do
+      end if
       do s = 1, jn%ns
          k = sup%first(jn%s_node(s)) - 1
+         j0 = jn%m_j0(jn%s_m(s))
+         nm = jn%m_n(jn%s_m(s))
+         re = rhs(k + 1:k + 3)
+         do c = 1, nm
+            rhs(jn%jdof(j0 + c)) = rhs(jn%jdof(j0 + c)) + dot_product(jn%tf(:, c, s), re)
+         end do
+         rhs(k + 1:k + 3) = 0.0_wp
+         if (.not. want_k) cycle
          do c = 1, 3
             call banded_fix_dof(bm, k + c)
          end do
+         if (nm == 3) cycle
+         ! (136): the end's force turning with the body
+         a1 = matmul(d1(:, :, jn%m_node(jn%s_m(s))), jn%s_r(:, s))
+         do c = 1, 3
+            jn%ah%c(j0 + 4:j0 + 6, j0 + 3 + c) = jn%ah%c(j0 + 4:j0 + 6, j0 + 3 + c) &
+                                                 + w*a1*re(c)
+            jn%ah%c(j0 + 3 + c, j0 + 3 + c) = jn%ah%c(j0 + 3 + c, j0 + 3 + c) &
+                                              - w*dot_product(a1, re)
+         end do
       end do
+      if (hold) then
+         where (jn%held) rhs(jn%jdof) = jn%rhs_held
+      end if
+      if (.not. want_k) return
       do k = 1, jn%nj
          call banded_fix_dof(bm, jn%jdof(k))
       end do
+      if (hold .and. any(jn%held)) call hold_masters(jn)
    end subroutine junctions_condense
 
-   !> C(p, p) = the points' own 3 x 3 blocks (their loads and inertia) of the band.
-   subroutine point_blocks(jn, bm)
+   !> The held master unknowns decoupled: identity rows and columns of C, no E column
+   !> and F row.
+   subroutine hold_masters(jn)
+      type(junctions_t), intent(inout) :: jn !< junctions
+      integer :: j, i, c
+      do j = 1, jn%nj
+         if (.not. jn%held(j)) cycle
+         jn%ah%c(j, :) = 0.0_wp
+         jn%ah%c(:, j) = 0.0_wp
+         jn%ah%c(j, j) = 1.0_wp
+      end do
+      do i = 1, size(jn%ah%blocks)
+         associate (b => jn%ah%blocks(i))
+            do c = 1, size(b%junctions)
+               if (.not. jn%held(b%junctions(c))) cycle
+               b%e(:, c) = 0.0_wp
+               b%f(c, :) = 0.0_wp
+            end do
+         end associate
+      end do
+   end subroutine hold_masters
+
+   !> C = the masters' own blocks (their loads and inertia) of the band; a held
+   !> master's (a FIXED body: no load of its own) zero when it is not held (hold false).
+   subroutine master_blocks(jn, bm, hold)
       type(junctions_t), intent(inout) :: jn !< junctions
       type(banded_t), intent(in) :: bm       !< tangent
-      integer :: j0, a, b
-      do j0 = 0, jn%nj - 3, 3
-         do b = 1, 3
-            do a = 1, 3
+      logical, intent(in) :: hold            !< held masters held
+      integer :: m, j0, a, b
+      do m = 1, jn%nm
+         j0 = jn%m_j0(m)
+         do b = 1, jn%m_n(m)
+            do a = 1, jn%m_n(m)
                jn%ah%c(j0 + a, j0 + b) = band_entry(bm, jn%jdof(j0 + a), jn%jdof(j0 + b))
+               if (.not. hold .and. jn%held(j0 + a)) jn%ah%c(j0 + a, j0 + b) = 0.0_wp
             end do
          end do
       end do
-   end subroutine point_blocks
+   end subroutine master_blocks
 
    !> The couplings of end s's translations with its line (E, F of the line's block) and
-   !> with the ends of that line on points (C), read from the band (eq. (132)).
+   !> with the ends of that line on masters (C), read from the band (eq. (132)).
    subroutine end_couplings(jn, sup, bm, s)
       type(junctions_t), intent(inout) :: jn !< junctions
       type(supports_t), intent(in) :: sup    !< dof map
       type(banded_t), intent(in) :: bm       !< tangent
       integer, intent(in) :: s               !< the end
-      integer :: c, col, row, lo, hi, j, jr
+      integer :: c, col, row, lo, hi, t, cr, nm, nt, j0, jt, a, b
+      real(wp) :: kv, kh
+      nm = jn%m_n(jn%s_m(s))
+      j0 = jn%m_j0(jn%s_m(s))
       associate (blk => jn%ah%blocks(jn%s_line(s)))
          lo = blk%lo
          hi = blk%hi
          do c = 1, 3
             col = sup%first(jn%s_node(s)) + c - 1
-            j = jn%s_j0(s) + c
             do row = max(lo, col - bm%kl), min(hi, col + bm%kl)
-               jr = end_unknown(jn, sup, s, row)
-               if (jr > 0) then              ! an end on a point: C
-                  jn%ah%c(jr, j) = jn%ah%c(jr, j) + band_entry(bm, row, col)
+               kv = band_entry(bm, row, col)      ! K(row, end)
+               kh = band_entry(bm, col, row)      ! K(end, row)
+               call end_of(jn, sup, s, row, t, cr)
+               if (t > 0) then                    ! another end's (or its own) row: C
+                  nt = jn%m_n(jn%s_m(t))
+                  jt = jn%m_j0(jn%s_m(t))
+                  do b = 1, nm
+                     do a = 1, nt
+                        jn%ah%c(jt + a, j0 + b) = jn%ah%c(jt + a, j0 + b) &
+                                                  + jn%tf(cr, a, t)*kv*jn%tk(c, b, s)
+                     end do
+                  end do
                else
-                  blk%e(row - lo + 1, jn%s_col(s) + c) = band_entry(bm, row, col)
-                  blk%f(jn%s_col(s) + c, row - lo + 1) = band_entry(bm, col, row)
+                  do b = 1, nm
+                     blk%e(row - lo + 1, jn%s_col(s) + b) = &
+                        blk%e(row - lo + 1, jn%s_col(s) + b) + kv*jn%tk(c, b, s)
+                     blk%f(jn%s_col(s) + b, row - lo + 1) = &
+                        blk%f(jn%s_col(s) + b, row - lo + 1) + jn%tf(c, b, s)*kh
+                  end do
                end if
             end do
          end do
       end associate
    end subroutine end_couplings
 
-   !> The junction unknown of band dof `row` when it is a translation of an end on a
-   !> point of the same line as end s, else 0.
-   pure integer function end_unknown(jn, sup, s, row) result(j)
+   !> The end t of the same line as end s whose translation c is band dof `row` (t = 0:
+   !> none).
+   pure subroutine end_of(jn, sup, s, row, t, c)
       type(junctions_t), intent(in) :: jn !< junctions
       type(supports_t), intent(in) :: sup !< dof map
       integer, intent(in) :: s            !< an end
       integer, intent(in) :: row          !< band dof
-      integer :: k, t
-      j = 0
+      integer, intent(out) :: t           !< the end, or 0
+      integer, intent(out) :: c           !< its translation 1..3
       do t = max(1, s - 1), min(jn%ns, s + 1)     ! a line's two ends are neighbours
          if (jn%s_line(t) /= jn%s_line(s)) cycle
-         k = row - sup%first(jn%s_node(t)) + 1
-         if (k < 1 .or. k > 3) cycle
-         j = jn%s_j0(t) + k
-         return
+         c = row - sup%first(jn%s_node(t)) + 1
+         if (c >= 1 .and. c <= 3) return
       end do
-   end function end_unknown
+      t = 0
+      c = 0
+   end subroutine end_of
 
    !> A(i, j) of a band matrix (0 outside the band).
    pure real(wp) function band_entry(bm, i, j)
@@ -204,27 +321,44 @@ contains
    end subroutine junctions_factor
 
    !> Solve K du = b in place (b = du on entry), with the factors of junctions_factor;
-   !> the ends take their points' correction (eq. (134)).
+   !> the ends take their masters' correction, T du_m (eq. (134)).
    subroutine junctions_solve(jn, sup, bm, du, err)
       type(junctions_t), intent(inout) :: jn !< junctions (scratch y)
       type(supports_t), intent(in) :: sup    !< dof map
       type(banded_t), intent(inout) :: bm    !< factors (and their scratch)
       real(wp), intent(inout) :: du(:)       !< right-hand side, then the solution
       type(error_t), intent(inout) :: err    !< status
-      integer :: s, c, k
+      integer :: s, c, k, j0, nm
       jn%y = du(jn%jdof)
       call arrowhead_solve(jn%ah, bm, du, jn%y, err)
       if (has_error(err)) return
       du(jn%jdof) = jn%y
       do s = 1, jn%ns
          k = sup%first(jn%s_node(s)) - 1
+         j0 = jn%m_j0(jn%s_m(s))
+         nm = jn%m_n(jn%s_m(s))
          do c = 1, 3
-            du(k + c) = du(jn%jdof(jn%s_j0(s) + c))
+            du(k + c) = dot_product(jn%tk(c, 1:nm, s), du(jn%jdof(j0 + 1:j0 + nm)))
          end do
       end do
    end subroutine junctions_solve
 
-   !> The stiffness of the system at its FREE points, the lines in equilibrium: the Schur
+   !> Place every end on its master exactly: x_e = x_m + sum_i r_i d_i (a body's turn
+   !> is not linear in its correction).
+   pure subroutine junctions_place(jn, x, d)
+      type(junctions_t), intent(in) :: jn   !< junctions
+      real(wp), intent(inout) :: x(:, :)    !< (3, nn) positions: the ends' set
+      real(wp), intent(in) :: d(:, :, :)    !< (3, 3, nn) directors
+      integer :: s, n
+      do s = 1, jn%ns
+         n = jn%m_node(jn%s_m(s))
+         x(:, jn%s_node(s)) = x(:, n) + d(:, 1, n)*jn%s_r(1, s) + d(:, 2, n)*jn%s_r(2, s) &
+                              + d(:, 3, n)*jn%s_r(3, s)
+      end do
+   end subroutine junctions_place
+
+   !> The stiffness of the system at its FREE points and bodies (about each body's G),
+   !> every other unknown in equilibrium: the Schur
    !> complement K = C - sum_i F_i A_i^-1 E_i of (133) before its LU, from a condensed
    !> tangent (junctions_condense with want_k; the band is factorised here). K_jk is the
    !> change of the residual of junction unknown j with a unit move of unknown k, minus
@@ -232,11 +366,19 @@ contains
    subroutine junctions_stiffness(jn, bm, k, err)
       type(junctions_t), intent(inout) :: jn !< junctions with a condensed tangent
       type(banded_t), intent(inout) :: bm    !< tangent, replaced by its factors
-      real(wp), intent(out) :: k(:, :)       !< (nj, nj) stiffness [N/m]
+      real(wp), intent(out) :: k(:, :)       !< (nj, nj) stiffness [N/m, N, N m/rad]
       type(error_t), intent(inout) :: err    !< status
       integer :: i, a, c, r
-      call arrowhead_factor(jn%ah, bm, err)
-      if (has_error(err)) return
+      type(error_t) :: e
+      ! (the complement need not be regular: a FIXED body's turn may have no stiffness
+      ! from its lines; only the lines' bands must factorise)
+      call arrowhead_factor(jn%ah, bm, e)
+      if (has_error(e)) then
+         if (index(e%message, 'dense_factor') == 0) then
+            err = e
+            return
+         end if
+      end if
       k = jn%ah%c
       do i = 1, size(jn%ah%blocks)
          associate (b => jn%ah%blocks(i))

@@ -4,7 +4,7 @@
 !> docs/theory.md eqs. (30)-(31), (77)-(79).
 module rodyn_recovery
    use rodyn_kinds, only: wp, pi
-   use rodyn_error, only: error_t
+   use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_statics, only: static_problem_t
@@ -14,6 +14,7 @@ module rodyn_recovery
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t, system_result_t
    use rodyn_junctions, only: junctions_stiffness
+   use rodyn_rotation, only: cross, skew, rotation_log
    use rodyn_water, only: water_loads_t
    use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
    use rodyn_waves, only: wave_kinematics
@@ -34,22 +35,119 @@ contains
                          prob%water)
    end subroutine recover_static
 
-   !> The system's results at the static equilibrium (prob solved to lambda = 1): the
-   !> stiffness at its FREE points, from the consistent tangent condensed onto them
-   !> (rodyn_junctions' junctions_stiffness). Nothing for a system without FREE points.
+   !> The system's results at the static equilibrium (prob solved to lambda = 1): each
+   !> body's position, rotation and the force of its lines, and the stiffness at the FREE
+   !> points and bodies, of everything and of the lines alone, from the consistent tangent
+   !> condensed onto them (rodyn_junctions' junctions_stiffness), a body's taken to its
+   !> reference point R (system_stiffness_at_r).
    subroutine recover_system(model, prob, sys, err)
       type(model_t), intent(in) :: model                 !< model
       type(static_problem_t), intent(inout) :: prob      !< solved problem
       type(system_result_t), intent(out) :: sys          !< results
       type(error_t), intent(inout) :: err                !< status
-      integer :: k, n
-      n = count(prob%mesh%point_node > 0)
-      allocate (sys%point(n), sys%stiffness(3*n, 3*n))
-      if (n == 0) return
-      sys%point = pack([(k, k=1, size(model%points))], prob%mesh%point_node > 0)
+      integer :: k, nb, np, nj
+      np = count(prob%mesh%point_node > 0)
+      nb = size(prob%mesh%body_node)
+      allocate (sys%kind(np + nb), sys%index(np + nb), sys%body_x(3, nb), &
+                sys%body_rot(3, nb), sys%body_force(6, nb))
+      nj = prob%jn%nj
+      allocate (sys%stiffness(nj, nj), sys%lines_stiffness(nj, nj))
+      if (np + nb == 0) return
+      sys%kind = [(1, k=1, np), (2, k=1, nb)]
+      sys%index = [pack([(k, k=1, size(model%points))], prob%mesh%point_node > 0), &
+                   (k, k=1, nb)]
+      call prob%evaluate(.false., err)
+      call body_results(model, prob, sys)
+      prob%jn%free_all = .true.
       call prob%evaluate(.true., err)
       call junctions_stiffness(prob%jn, prob%bm, sys%stiffness, err)
+      prob%bl%off = .true.
+      call prob%evaluate(.true., err)
+      call junctions_stiffness(prob%jn, prob%bm, sys%lines_stiffness, err)
+      prob%bl%off = .false.
+      prob%jn%free_all = .false.
+      call prob%evaluate(.false., err)
+      if (has_error(err)) then
+         deallocate (sys%stiffness, sys%lines_stiffness)
+         return
+      end if
+      call stiffness_at_r(prob, sys)
    end subroutine recover_system
+
+   !> Each body's reference point, rotation vector and the force and moment about R of its
+   !> lines: minus the sum of the residuals at the line ends on it (before they are moved
+   !> onto the body; rodyn_junctions).
+   subroutine body_results(model, prob, sys)
+      type(model_t), intent(in) :: model                 !< model
+      type(static_problem_t), intent(in) :: prob         !< evaluated problem
+      type(system_result_t), intent(inout) :: sys        !< body results set
+      integer :: b, n, l, k, e
+      real(wp) :: xr(3), fe(3)
+      do b = 1, size(prob%mesh%body_node)
+         n = prob%mesh%body_node(b)
+         associate (d => prob%state%d(:, :, n))
+            xr = prob%state%x(:, n) + matmul(d, -model%bodies(b)%cog)
+            sys%body_x(:, b) = xr
+            sys%body_rot(:, b) = rotation_log(d)
+         end associate
+         sys%body_force(:, b) = 0.0_wp
+         do l = 1, prob%mesh%n_lines
+            do k = 1, 2
+               if (prob%mesh%end_point_node(k, l) /= n) cycle
+               e = mesh_node(prob%mesh, l, merge(end_a, end_b, k == 1))
+               fe = -prob%r(1:3, e)
+               sys%body_force(1:3, b) = sys%body_force(1:3, b) + fe
+               sys%body_force(4:6, b) = sys%body_force(4:6, b) + &
+                                        cross(prob%state%x(:, e) - xr, fe)
+            end do
+         end do
+      end do
+   end subroutine body_results
+
+   !> The stiffness with each body's rows and columns taken from G (its node) to its
+   !> reference point R: K_R = T^T K_G T, T = [I, -skew(g); 0, I] on the body's unknowns
+   !> (g = G - R, global), less (g F^T - (g . F) I) on its rotations, F the force on it
+   !> that the matrix is of (its lines' for the lines' stiffness; none of everything for
+   !> a FREE body in equilibrium, its lines' for a FIXED one).
+   subroutine stiffness_at_r(prob, sys)
+      type(static_problem_t), intent(in) :: prob         !< problem
+      type(system_result_t), intent(inout) :: sys        !< stiffness transformed
+      real(wp) :: t(size(sys%stiffness, 1), size(sys%stiffness, 1)), g(3), f(3)
+      integer :: m, j0, i, b
+      t = 0.0_wp
+      do i = 1, size(t, 1)
+         t(i, i) = 1.0_wp
+      end do
+      do m = 1, prob%jn%nm
+         if (sys%kind(m) /= 2) cycle
+         b = sys%index(m)
+         j0 = prob%jn%m_j0(m)
+         g = prob%state%x(:, prob%mesh%body_node(b)) - sys%body_x(:, b)
+         t(j0 + 1:j0 + 3, j0 + 4:j0 + 6) = -skew(g)
+      end do
+      sys%stiffness = matmul(transpose(t), matmul(sys%stiffness, t))
+      sys%lines_stiffness = matmul(transpose(t), matmul(sys%lines_stiffness, t))
+      do m = 1, prob%jn%nm
+         if (sys%kind(m) /= 2) cycle
+         b = sys%index(m)
+         j0 = prob%jn%m_j0(m)
+         g = prob%state%x(:, prob%mesh%body_node(b)) - sys%body_x(:, b)
+         f = sys%body_force(1:3, b)
+         call less_moment_tangent(sys%lines_stiffness(j0 + 4:j0 + 6, j0 + 4:j0 + 6), g, f)
+         if (prob%jn%held(j0 + 1)) &
+            call less_moment_tangent(sys%stiffness(j0 + 4:j0 + 6, j0 + 4:j0 + 6), g, f)
+      end do
+   contains
+      pure subroutine less_moment_tangent(k, a, force)
+         real(wp), intent(inout) :: k(3, 3)
+         real(wp), intent(in) :: a(3), force(3)
+         integer :: i
+         do i = 1, 3
+            k(:, i) = k(:, i) - a*force(i)
+            k(i, i) = k(i, i) + dot_product(a, force)
+         end do
+      end subroutine less_moment_tangent
+   end subroutine stiffness_at_r
 
    !> Results of a configuration: node positions, resultants at the reduced points (with
    !> stress-free strains scaled by eps0_scale), and end reactions r(:, node) where held.

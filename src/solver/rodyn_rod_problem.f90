@@ -15,6 +15,7 @@ module rodyn_rod_problem
    use rodyn_rotation, only: rotation_cayley
    use rodyn_anderson, only: anderson_t, anderson_clear, anderson_step
    use rodyn_junctions, only: junctions_t, junctions_build, junctions_factor, junctions_solve
+   use rodyn_bodies, only: body_loads_t, body_loads_build
    implicit none
    private
    public :: rod_problem_t, rod_problem_init
@@ -36,6 +37,7 @@ module rodyn_rod_problem
       logical :: base_set = .false.
       type(banded_t) :: bm                     !< tangent, then its LU factors
       type(junctions_t) :: jn                  !< FREE points: their unknowns and line ends
+      type(body_loads_t) :: bl                 !< FREE bodies' turning loads
       type(anderson_t) :: aa                   !< history of the accelerated chord steps
       real(wp) :: lref = 1.0_wp                !< length scale of the criteria [m]
       real(wp) :: href = 1.0_wp                !< shortest element [m]
@@ -78,6 +80,7 @@ contains
       call dof_reach(mesh, prob%sup, reach)
       call banded_set_reach(prob%bm, reach)
       call junctions_build(mesh, prob%sup, prob%jn)
+      call body_loads_build(model, mesh, prob%bl)
       prob%lref = maxval(model%lines%length)
       prob%href = minval(mesh%elem_le)
       ! forces below what a strain of sqrt(epsilon) produces are numerically zero: the

@@ -42,7 +42,8 @@ module rodyn_statics
    use rodyn_load_check, only: load_divergence_hint
    use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
-   use rodyn_junctions, only: junctions_condense
+   use rodyn_junctions, only: junctions_condense, junctions_place
+   use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
                              add_node_block, roll_gauges, add_roll_gauges
@@ -190,13 +191,17 @@ contains
                                                  this%state%x, this%zero3, this%zero3, &
                                                  1.0_wp, 0.0_wp, 0.0_wp, this%fint, &
                                                  this%bm, want_k)
+      if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%state%x, this%state%x, &
+                                               this%state%d, this%state%d, 1.0_wp, &
+                                               this%lam, this%fint, this%bm, want_k)
       call homotopy_and_gauge(this, want_k)
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
          if (this%sup%moved(node)) this%gap(:, node) = this%x_held(:, node) - this%state%x(:, node)
       end do
       call apply_supports(this%sup, this%r, this%gap, this%rhs, this%bm, want_k)
-      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k)
+      call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k, this%state%d, &
+                              this%state%d, 1.0_wp)
       ! the reactions are this problem's reference force and moment
       this%f_extra = 0.0_wp
       this%m_extra = 0.0_wp
@@ -269,6 +274,7 @@ contains
          this%state%x(:, node) = this%x_base(:, node) + alpha*this%du(k + 1:k + 3)
       end do
       call this%rotate_from_base(alpha, this%state%d)
+      call junctions_place(this%jn, this%state%x, this%state%d)
    end subroutine static_apply_correction
 
    !> Load stepping from lambda = 0 to 1 with bounded halving of failed increments.

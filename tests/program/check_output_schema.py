@@ -430,8 +430,10 @@ def check_run(src, work, rodyn, headers, datasets):
                         f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
                         "0.0, 0.0, 0.0, 30.0\n"
                         "*MOTION, LINE=LEG, END=B, TYPE=VESSEL, VESSEL=FPSO, RAMP=0\n*STATIC,")
-    # a clump weight hung from a FIXED point (a FREE point): the points and the stiffness
-    text = text.replace("*STATIC,", "*POINT, NAME=PA, TYPE=FIXED\n-400, 50, -40\n"
+    # a clump weight (a FREE point) hung from a point of a FIXED body: the points, the
+    # bodies and the stiffness
+    text = text.replace("*STATIC,", "*BODY, NAME=PLAT, TYPE=FIXED\n-400, 50, -40\n0, 0, 0\n"
+                        "0, 0, 0\n0, 0, 0\n*POINT, NAME=PA, TYPE=BODY, BODY=PLAT\n0, 0, 0\n"
                         "*POINT, NAME=PB, TYPE=FREE, MASS=500\n-400, 52, -69.9\n"
                         "*LINE, NAME=TETHER, SECTION=CHAIN, LENGTH=30.0, ELEMENTS=4, ORDER=3,"
                         " ELEMENT=CABLE, POINT A=PA, POINT B=PB\n*STATIC,")

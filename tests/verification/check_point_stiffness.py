@@ -20,31 +20,22 @@ from anchors at 400 m to a buoyant hub pulled by 50 kN along +x.
 Usage: check_point_stiffness.py RODYN DECK RESULTS_CSV OUT_DIR [--no-moorpy]"""
 import csv
 import os
-import subprocess
 import sys
 
 import numpy as np
+
+from stiffness_lib import read_stiffness, run_rodyn
 
 DF = 1.0
 FX = 50000.0
 
 
 def run(rodyn, deck, out, **params):
-    sets = []
-    for k, v in params.items():
-        sets += ["--set", f"{k}={v}"]
-    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet", *sets], capture_output=True,
-                          text=True)
-    if proc.returncode != 0:
-        sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+    run_rodyn(rodyn, deck, out, params)
     with open(os.path.join(out, "static_points.csv")) as f:
         hub = [r for r in csv.DictReader(f) if r["point"] == "HUB"][0]
     x = np.array([float(hub[c]) for c in ("x_m", "y_m", "z_m")])
-    k = np.zeros((3, 3))
-    with open(os.path.join(out, "static_stiffness.csv")) as f:
-        for r in csv.DictReader(f):
-            k["xyz".index(r["row_dof"]), "xyz".index(r["column_dof"])] = float(r["stiffness"])
-    return x, k
+    return x, read_stiffness(out, "HUB", 3)
 
 
 def main():

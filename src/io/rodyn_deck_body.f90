@@ -1,0 +1,239 @@
+!> Deck reader of the rigid bodies of a mooring system (*BODY, *BODY HYDROSTATICS) and
+!> their whole-deck checks: the points on a body (*POINT, TYPE=BODY) and the loads on it
+!> (*LOAD, BODY=) name a body of the deck, a point sits within reach of its body, a
+!> FREE body has mass and inertia, its volume needs *WATER (docs/deck.md, *BODY;
+!> docs/systems.md).
+module rodyn_deck_body
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error
+   use rodyn_model, only: model_t, body_t, body_fixed, body_free, body_kind_names, &
+                          point_body
+   use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
+                               card_error, card_data_error, card_get_name, card_get_choice, &
+                               card_check_data, card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
+                                 location
+   implicit none
+   private
+   public :: read_body_card, read_body_hydrostatics_card, resolve_point_bodies, &
+             resolve_load_bodies, check_bodies
+
+   !> a point farther from its body's reference point than this many radii of gyration
+   !> (sqrt(I_max / MASS)) is taken for a mistake (a global position given in body axes)
+   real(wp), parameter :: reach_radii = 50.0_wp
+
+contains
+
+   !> *BODY, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=]; four data lines of 3 values:
+   !> the reference point R at the start (global), G and B (body axes from R), and the
+   !> inertia Ixx, Iyy, Izz about G (body axes). A FREE body needs MASS > 0 and inertia.
+   subroutine read_body_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the *BODY card
+      type(model_t), intent(inout) :: model   !< model: one body appended
+      type(pending_t), intent(inout) :: pend  !< counts the bodies
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what(4) = [character(len=40) :: 'xR, yR, zR', &
+         'xG, yG, zG (body axes from R)', 'xB, yB, zB (body axes from R)', 'Ixx, Iyy, Izz']
+      type(body_t) :: b
+      character(len=:), allocatable :: name
+      real(wp) :: v(3, 4)
+      integer :: ib, k
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
+                                'VOLUME'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'NAME', name, err, required=.true.)
+         if (has_error(err)) return
+         do ib = 1, pend%n_bodies
+            if (model%bodies(ib)%name /= name) cycle
+            call card_error(card, "body '"//name//"' is already defined (at "// &
+                            location(deck, pend%body_card(ib))//')', err)
+            return
+         end do
+         b%name = name
+         b%card_at = card%file//':'//int_str(card%line)
+         if (card_find_param(card, 'TYPE') == 0) then
+            call card_error(card, 'missing parameter TYPE (FIXED or FREE)', err)
+            return
+         end if
+         call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err)
+         call get_bounded(card, 'MASS', b%mass, .false., err)
+         call get_bounded(card, 'VOLUME', b%volume, .false., err)
+         if (has_error(err)) return
+         call card_check_data(card, 4, 4, err, trim(what(min(card%n_data + 1, 4))))
+         if (has_error(err)) return
+         do k = 1, 4
+            call card_data_reals(card, k, 3, v(:, k), err, trim(what(k)))
+            if (has_error(err)) return
+         end do
+         if (maxval(abs(v(:, 1:3))) > max_distance) then
+            call card_error(card, 'a coordinate of '//real_str(maxval(abs(v(:, 1:3))))// &
+                            ' m is not physical: within '//real_str(max_distance)// &
+                            ' m of the origin', err)
+            return
+         end if
+         b%position = v(:, 1)
+         b%cog = v(:, 2)
+         b%cob = v(:, 3)
+         b%inertia = v(:, 4)
+         if (b%kind == body_free) call check_free_body(card, b, err)
+         if (has_error(err)) return
+      end associate
+      pend%n_bodies = pend%n_bodies + 1
+      model%bodies(pend%n_bodies) = b
+      pend%body_card(pend%n_bodies) = ic
+      pend%body_hydro(pend%n_bodies) = 0
+   end subroutine read_body_card
+
+   !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
+   !> other two (the inertia of a real body).
+   subroutine check_free_body(card, b, err)
+      type(card_t), intent(in) :: card      !< the *BODY card
+      type(body_t), intent(in) :: b         !< the body
+      type(error_t), intent(inout) :: err   !< status
+      integer :: i
+      if (.not. b%mass > 0.0_wp) then
+         call card_error(card, 'a FREE body needs MASS > 0 (its inertia), got '// &
+                         real_str(b%mass), err)
+         return
+      end if
+      if (.not. all(b%inertia > 0.0_wp)) then
+         call card_data_error(card, 4, 'a FREE body needs Ixx, Iyy, Izz > 0', err)
+         return
+      end if
+      do i = 1, 3
+         if (b%inertia(i) <= (sum(b%inertia) - b%inertia(i))*(1.0_wp + 1.0e-12_wp)) cycle
+         call card_data_error(card, 4, 'no body has these inertias: each of Ixx, Iyy, '// &
+                              'Izz is at most the sum of the other two', err)
+         return
+      end do
+   end subroutine check_free_body
+
+   !> *BODY HYDROSTATICS, BODY=name: 6 data lines of 6 values, the waterplane restoring
+   !> matrix C about the body's reference point (rows: force x, y, z and moment x, y, z;
+   !> columns: x, y, z and rotations x, y, z of R) [N/m, N, N m/m, N m/rad]. After its
+   !> *BODY card; one per body.
+   subroutine read_body_hydrostatics_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(model_t), intent(inout) :: model   !< the body's matrix set
+      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
+      type(error_t), intent(inout) :: err     !< status
+      character(len=:), allocatable :: name
+      integer :: ib, k
+
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'BODY', name, err, required=.true.)
+         if (has_error(err)) return
+         do ib = 1, pend%n_bodies
+            if (model%bodies(ib)%name == name) exit
+         end do
+         if (ib > pend%n_bodies) then
+            call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
+                            ' card with NAME='//name//' comes first)', err)
+            return
+         end if
+         if (pend%body_hydro(ib) > 0) then
+            call card_error(card, "body '"//name//"' already has its *BODY HYDROSTATICS (at "// &
+                            location(deck, pend%body_hydro(ib))//')', err)
+            return
+         end if
+         call card_check_data(card, 6, 6, err, 'row of 6 values of C')
+         if (has_error(err)) return
+         do k = 1, 6
+            call card_data_reals(card, k, 6, model%bodies(ib)%hydrostatic(k, :), err, &
+                                 'C(k,1), ..., C(k,6)')
+            if (has_error(err)) return
+         end do
+         pend%body_hydro(ib) = ic
+      end associate
+   end subroutine read_body_hydrostatics_card
+
+   !> The body of each BODY point: it exists; the point lies within reach of it
+   !> (reach_radii radii of gyration); its global position at the start is R + offset.
+   subroutine resolve_point_bodies(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< BODY= of each point
+      type(model_t), intent(inout) :: model   !< points get their body and position
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ip, ib
+      real(wp) :: radius
+      do ip = 1, size(model%points)
+         associate (pt => model%points(ip), card => deck%cards(pend%point_card(ip)))
+            if (pt%kind /= point_body) cycle
+            call find_body(card, 'BODY', pend%point_body(ip)%name, model, ib, err)
+            if (has_error(err)) return
+            pt%body = ib
+            pt%global = model%bodies(ib)%position + pt%position
+            associate (b => model%bodies(ib))
+               if (b%kind /= body_free) cycle
+               radius = sqrt(maxval(b%inertia)/b%mass)
+               if (norm2(pt%position - b%cog) <= reach_radii*radius) cycle
+               call card_data_error(card, 1, 'the point is '// &
+                                    real_str(norm2(pt%position - b%cog))//' m from the'// &
+                                    ' centre of gravity of body '//trim(b%name)//', '// &
+                                    'more than 50 radii of gyration ('// &
+                                    real_str(reach_radii*radius)//' m): give it in the'// &
+                                    " body's axes, from its reference point", err)
+               return
+            end associate
+         end associate
+      end do
+   end subroutine resolve_point_bodies
+
+   !> The body of a *LOAD given with BODY=: it exists and is FREE.
+   subroutine resolve_load_bodies(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< BODY= of each load ('' if none)
+      type(model_t), intent(inout) :: model   !< loads get their body
+      type(error_t), intent(inout) :: err     !< status
+      integer :: k
+      do k = 1, size(model%loads)
+         associate (card => deck%cards(pend%load_body(k)%card))
+            if (len(pend%load_body(k)%name) == 0) cycle
+            call find_body(card, 'BODY', pend%load_body(k)%name, model, &
+                           model%loads(k)%body, err)
+            if (has_error(err)) return
+            if (model%bodies(model%loads(k)%body)%kind == body_free) cycle
+            call param_fail(card, 'BODY', "body '"//pend%load_body(k)%name//"' is FIXED: "// &
+                            'a load on it acts on nothing', err)
+            return
+         end associate
+      end do
+   end subroutine resolve_load_bodies
+
+   !> Body ib named `name` by parameter `param` of `card`.
+   subroutine find_body(card, param, name, model, ib, err)
+      type(card_t), intent(in) :: card      !< the referring card
+      character(len=*), intent(in) :: param !< its parameter
+      character(len=*), intent(in) :: name  !< body name
+      type(model_t), intent(in) :: model    !< model with its bodies
+      integer, intent(out) :: ib            !< the body's index
+      type(error_t), intent(inout) :: err   !< status
+      do ib = 1, size(model%bodies)
+         if (model%bodies(ib)%name == name) return
+      end do
+      ib = 0
+      call param_fail(card, param, param//" '"//name//"' is not defined (no *BODY with"// &
+                      ' NAME='//name//' in the deck)', err)
+   end subroutine find_body
+
+   !> A body's VOLUME needs *WATER.
+   subroutine check_bodies(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< card of each body
+      type(model_t), intent(in) :: model      !< model
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ib
+      do ib = 1, size(model%bodies)
+         if (model%water%present .or. .not. model%bodies(ib)%volume > 0.0_wp) cycle
+         call param_fail(deck%cards(pend%body_card(ib)), 'VOLUME', 'VOLUME > 0 needs'// &
+                         ' *WATER (no *WATER in the deck)', err)
+         return
+      end do
+   end subroutine check_bodies
+end module rodyn_deck_body

@@ -1,0 +1,140 @@
+!> The loads of a rigid body that turn with it (docs/theory.md section 17, eqs.
+!> (137)-(139)): the buoyancy rho_w g V at its centre of buoyancy B, the linear
+!> waterplane restoring about its reference point R, and the moment about G of a load
+!> given at R (*LOAD, BODY=). The weight acts at G, the body's node (rodyn_assembly's
+!> loads_build), and the load's force and its moment about R are point loads there.
+!>
+!> All are forces and moments on the body's node at its centre of gravity G, evaluated
+!> at the scheme's force point: with a the body-axes offset r carried by the directors
+!> at the force point, a_f = (1 - w) D0 r + w D1 r, a force F at that point gives the
+!> moment a_f x F (137), whose work over the step is F . (a^{n+1} - a^n) exactly for
+!> EMC (w = 1/2 and the Cayley update). The waterplane acts on q_R = (x_R - x_R0,
+!> theta), theta = log(D1) the body's rotation (its axes are the global ones at the
+!> start):
+!>
+!>   F_w = -C q_R (force at R, moment about R),                                 (138)
+!>   its tangent S C T_R, T_R = [I, -skew(a_R); 0, I], S = T_R^T          (139)
+!>
+!> (the rotation's log linearised as theta: exact at small rotations, which is what a
+!> linear C describes).
+module rodyn_bodies
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: model_t, body_free
+   use rodyn_mesh, only: mesh_t
+   use rodyn_rotation, only: cross, skew, rotation_log
+   implicit none
+   private
+   public :: body_loads_t, body_loads_build, body_force
+
+   !> The bodies' loads, fixed for the run (and the last forces, for the work's books).
+   type :: body_loads_t
+      integer :: nb = 0                        !< FREE bodies
+      integer, allocatable :: node(:)          !< (nb) node of each
+      integer, allocatable :: body(:)          !< (nb) its model%bodies index
+      real(wp), allocatable :: fb(:, :)        !< (3, nb) buoyancy force, global [N]
+      real(wp), allocatable :: rb(:, :)        !< (3, nb) B - G, body axes [m]
+      real(wp), allocatable :: rr(:, :)        !< (3, nb) R - G, body axes [m]
+      real(wp), allocatable :: xr0(:, :)       !< (3, nb) R at the start [m]
+      real(wp), allocatable :: c(:, :, :)      !< (6, 6, nb) waterplane restoring about R
+      real(wp), allocatable :: fr(:, :)        !< (3, nb) force of the loads at R, global [N]
+      real(wp), allocatable :: fh(:, :)        !< (6, nb) last water force and moment at G
+      real(wp), allocatable :: fe(:, :)        !< (3, nb) last moment of the loads at R about G
+      logical :: off = .false.                 !< none of these loads (the lines' stiffness)
+   end type body_loads_t
+
+contains
+
+   !> The FREE bodies' loads of a model.
+   subroutine body_loads_build(model, mesh, bl)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh with its body nodes
+      type(body_loads_t), intent(out) :: bl  !< loads
+      integer :: i, k
+      bl%nb = 0
+      if (allocated(model%bodies)) bl%nb = count(model%bodies%kind == body_free)
+      allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
+                bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), bl%fr(3, bl%nb), &
+                bl%fh(6, bl%nb), bl%fe(3, bl%nb))
+      bl%fh = 0.0_wp
+      bl%fe = 0.0_wp
+      k = 0
+      do i = 1, size(mesh%body_node)
+         if (model%bodies(i)%kind /= body_free) cycle
+         k = k + 1
+         associate (b => model%bodies(i))
+            bl%node(k) = mesh%body_node(i)
+            bl%body(k) = i
+            bl%fb(:, k) = 0.0_wp
+            if (model%water%present) bl%fb(:, k) = -model%water%density*b%volume*model%gravity
+            bl%rb(:, k) = b%cob - b%cog
+            bl%rr(:, k) = -b%cog
+            bl%xr0(:, k) = b%position
+            bl%c(:, :, k) = b%hydrostatic
+            bl%fr(:, k) = 0.0_wp
+         end associate
+      end do
+      if (.not. allocated(model%loads)) return
+      do i = 1, size(model%loads)
+         if (model%loads(i)%body == 0) cycle
+         k = findloc(bl%body, model%loads(i)%body, dim=1)
+         bl%fr(:, k) = bl%fr(:, k) + model%loads(i)%force
+      end do
+   end subroutine body_loads_build
+
+   !> Body k's turning loads at the force point (eqs. (137)-(139)): force and moment f
+   !> on its node, and their derivative kb with respect to its translation and rotation
+   !> at t_n+1 (the residual's is -kb). xg0, xg1: G at t_n and now; d0, d1 its directors;
+   !> w the weight of t_n+1; lam the factor on the loads given at R.
+   pure subroutine body_force(bl, k, xg0, xg1, d0, d1, w, lam, f, kb)
+      type(body_loads_t), intent(inout) :: bl  !< loads (fh, fe: the forces kept)
+      integer, intent(in) :: k                 !< body
+      real(wp), intent(in) :: xg0(3), xg1(3)   !< G at t_n and at t_n+1 [m]
+      real(wp), intent(in) :: d0(3, 3), d1(3, 3) !< directors at t_n and t_n+1
+      real(wp), intent(in) :: w                !< weight of t_n+1 at the force point
+      real(wp), intent(in) :: lam              !< factor on the loads at R
+      real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
+      real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
+      real(wp) :: dm(3, 3), ab(3), ar(3), ar1(3), q(6), fw(6), t(6, 6), fe(3)
+      integer :: i
+      dm = (1.0_wp - w)*d0 + w*d1
+      ab = matmul(dm, bl%rb(:, k))
+      ar = matmul(dm, bl%rr(:, k))
+      ar1 = matmul(d1, bl%rr(:, k))
+      ! buoyancy at B, the loads' force at R (its moment about R is a point load)
+      f(1:3) = bl%fb(:, k)
+      fe = cross(ar, lam*bl%fr(:, k))
+      f(4:6) = cross(ab, bl%fb(:, k))
+      kb = 0.0_wp
+      kb(4:6, 4:6) = w*(moment_tangent(matmul(d1, bl%rb(:, k)), bl%fb(:, k)) &
+                        + moment_tangent(ar1, lam*bl%fr(:, k)))
+      ! waterplane about R, at the force point
+      q(1:3) = (1.0_wp - w)*xg0 + w*xg1 + ar - bl%xr0(:, k)
+      q(4:6) = rotation_log(dm)
+      fw = -matmul(bl%c(:, :, k), q)
+      fw(4:6) = fw(4:6) + cross(ar, fw(1:3))
+      t = 0.0_wp
+      do i = 1, 6
+         t(i, i) = 1.0_wp
+      end do
+      t(1:3, 4:6) = -skew(ar1)
+      kb = kb - w*matmul(transpose(t), matmul(bl%c(:, :, k), t))
+      bl%fh(1:3, k) = f(1:3) + fw(1:3)
+      bl%fh(4:6, k) = f(4:6) + fw(4:6)
+      bl%fe(:, k) = fe
+      f = bl%fh(:, k)
+      f(4:6) = f(4:6) + fe
+   end subroutine body_force
+
+   !> d(a x F)/d theta for a vector a = D r turning with the body and a fixed F:
+   !> a F^T - (a . F) I.
+   pure function moment_tangent(a, force) result(k)
+      real(wp), intent(in) :: a(3)       !< arm [m]
+      real(wp), intent(in) :: force(3)   !< force [N]
+      real(wp) :: k(3, 3)
+      integer :: i
+      do i = 1, 3
+         k(:, i) = a*force(i)
+         k(i, i) = k(i, i) - dot_product(a, force)
+      end do
+   end function moment_tangent
+end module rodyn_bodies

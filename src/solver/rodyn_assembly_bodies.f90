@@ -1,0 +1,38 @@
+!> The turning loads of the FREE bodies (rodyn_bodies: buoyancy at B, waterplane
+!> restoring, the moment of a load given at R) added to the internal forces and the
+!> tangent, as the water's are (docs/theory.md eqs. (137)-(139)).
+module rodyn_assembly_bodies
+   use rodyn_kinds, only: wp
+   use rodyn_bodies, only: body_loads_t, body_force
+   use rodyn_assembly, only: supports_t, add_node_block
+   use rodyn_banded, only: banded_t
+   implicit none
+   private
+   public :: assemble_bodies
+
+contains
+
+   !> fint -= f of each body at the force point, and the tangent -df/dq (want_k).
+   subroutine assemble_bodies(bl, sup, x0, x1, d0, d1, w, lam, fint, bm, want_k)
+      type(body_loads_t), intent(inout) :: bl !< bodies' loads (their last forces kept)
+      type(supports_t), intent(in) :: sup     !< supports (dof map)
+      real(wp), intent(in) :: x0(:, :)        !< (3, nn) positions at t_n [m]
+      real(wp), intent(in) :: x1(:, :)        !< (3, nn) positions now [m]
+      real(wp), intent(in) :: d0(:, :, :)     !< (3, 3, nn) directors at t_n
+      real(wp), intent(in) :: d1(:, :, :)     !< (3, 3, nn) directors now
+      real(wp), intent(in) :: w               !< weight of t_n+1 at the force point
+      real(wp), intent(in) :: lam             !< factor on the loads given at R
+      real(wp), intent(inout) :: fint(:, :)   !< (6, nn) internal forces
+      type(banded_t), intent(inout) :: bm     !< tangent
+      logical, intent(in) :: want_k           !< form the tangent
+      real(wp) :: f(6), kb(6, 6)
+      integer :: k, n
+      if (bl%off) return
+      do k = 1, bl%nb
+         n = bl%node(k)
+         call body_force(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, lam, f, kb)
+         fint(:, n) = fint(:, n) - f
+         if (want_k) call add_node_block(sup, n, -kb, bm)
+      end do
+   end subroutine assemble_bodies
+end module rodyn_assembly_bodies
