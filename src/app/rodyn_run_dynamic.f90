@@ -272,7 +272,7 @@ contains
                             prob%sup%held, this%frame_lines, prob%water, t)
          if (this%scene%active) then
             call sea_values(this%scene, this%model, prob%water%field, t, this%r_start, &
-                            this%sea_now)
+                            prob%s1%x, prob%s1%d, this%sea_now)
             call dynamic_output_sea(this%writer, 0, t, this%sea_now, .true., err)
          end if
          call dynamic_output_ends_step(this%writer, 0, t, this%end_forces(prob, this%r_start), &
@@ -315,8 +315,14 @@ contains
       this%pend%pending = .false.
       reaction = this%end_forces(prob, this%r_frame)
       if (this%scene%active) then
-         call sea_values(this%scene, this%model, prob%water%field, this%pend%t_pend, this%r_frame, &
-                         this%sea_now)
+         ! (the state at t_pend: the next step's start, or the last state)
+         if (next) then
+            call sea_values(this%scene, this%model, prob%water%field, this%pend%t_pend, &
+                            this%r_frame, prob%s0%x, prob%s0%d, this%sea_now)
+         else
+            call sea_values(this%scene, this%model, prob%water%field, this%pend%t_pend, &
+                            this%r_frame, prob%s1%x, prob%s1%d, this%sea_now)
+         end if
          call dynamic_output_sea(this%writer, this%pend%k_pend, this%pend%t_pend, this%sea_now, &
                                  this%pend%frame_waiting, err)
       end if

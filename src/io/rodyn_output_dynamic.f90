@@ -82,19 +82,21 @@ module rodyn_output_dynamic
       'log', 'sea']
    ! Tables of the sea and the vessels (written only for a scene with probes or vessels)
    integer, parameter :: sf_waves = 1, sf_waves_step = 2, sf_vessels = 3, &
-      sf_vessels_step = 4, sf_conn = 5, sf_conn_step = 6, n_sea = 6
+      sf_vessels_step = 4, sf_conn = 5, sf_conn_step = 6, sf_bodies = 7, &
+      sf_bodies_step = 8, n_sea = 8
    character(len=*), parameter :: sea_csv(n_sea) = [character(len=28) :: &
       'dynamic_waves.csv', 'dynamic_waves_step.csv', 'dynamic_vessels.csv', &
-      'dynamic_vessels_step.csv', 'dynamic_connections.csv', 'dynamic_connections_step.csv']
+      'dynamic_vessels_step.csv', 'dynamic_connections.csv', 'dynamic_connections_step.csv', &
+      'dynamic_bodies.csv', 'dynamic_bodies_step.csv']
    ! The same in dynamic.h5, /dynamic/sea (index into dynamic_writer_t%sea_h5): at the
    ! frames and at every step
    integer, parameter :: sh_elevation = 1, sh_motion = 2, sh_load = 3, sh_conn = 4, &
       sh_step_elevation = 5, sh_step_motion = 6, sh_step_load = 7, sh_step_conn = 8, &
-      sh_step_time = 9, n_sea_h5 = 9
+      sh_step_time = 9, sh_body = 10, sh_step_body = 11, n_sea_h5 = 11
    character(len=*), parameter :: sea_h5_name(n_sea_h5) = [character(len=24) :: &
       'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', &
       'step_probe_elevation', 'step_vessel_motion', 'step_vessel_load', &
-      'step_connection_load', 'step_time']
+      'step_connection_load', 'step_time', 'body_motion', 'step_body_motion']
    character(len=*), parameter :: running = 'running'
 
    integer, parameter :: log_block = 1024  !< step rows kept for dynamic.h5 at most
@@ -140,7 +142,7 @@ module rodyn_output_dynamic
    !> Where the output of a run stands at a checkpoint (dynamic_output_mark): what the
    !> files hold, and the writer's counters; dynamic_output_open continues from it.
    type :: dynamic_output_mark_t
-      integer(i8) :: csv_bytes(12) = 0_i8 !< bytes of dynamic_nodes, _elements, _ends,
+      integer(i8) :: csv_bytes(14) = 0_i8 !< bytes of dynamic_nodes, _elements, _ends,
                                           !< _log, _lines, _ends_step.csv, then of the
                                           !< sea tables (sea_csv; 0 when not written)
       integer :: frames = 0               !< frames written
@@ -186,6 +188,7 @@ module rodyn_output_dynamic
       logical :: sea_on(n_sea) = .false.             !< which of them are written
       type(text_t), allocatable :: probe_head(:)     !< (np) ',PROBE,x,y'
       type(text_t), allocatable :: vessel_head(:)    !< (nv) ',VESSEL'
+      type(text_t), allocatable :: body_head(:)      !< (nb) ',BODY'
       type(text_t), allocatable :: conn_head(:)      !< (nc) ',VESSEL,LINE,END'
       integer :: sea_cols(n_sea_h5) = 0              !< columns of each /dynamic/sea series
       real(wp), allocatable :: probe_xy(:, :)        !< (2, np) the probes' points [m]
@@ -577,6 +580,15 @@ contains
             if (frame) call outfile_put(w%f_sea(sf_conn), row(index(row, ',') + 1:n))
          end do
       end if
+      if (w%sea_on(sf_bodies)) then
+         do k = 1, size(w%body_head)
+            n = ns
+            call put_text(row, n, w%body_head(k)%s)
+            call put_reals(row, n, v%body(:, k))
+            call outfile_put(w%f_sea(sf_bodies_step), row(:n))
+            if (frame) call outfile_put(w%f_sea(sf_bodies), row(index(row, ',') + 1:n))
+         end do
+      end if
    end subroutine dynamic_output_sea
 
    !> The values of dynamic_output_sea appended to /dynamic/sea (held until the next sync).
@@ -598,7 +610,9 @@ contains
       call put(sh_step_motion, reshape(v%pose, [size(v%pose)]))
       call put(sh_step_load, reshape(v%load, [size(v%load)]))
       call put(sh_step_conn, reshape(conn, [size(conn)]))
+      call put(sh_step_body, reshape(v%body, [size(v%body)]))
       if (.not. frame) return
+      call put(sh_body, reshape(v%body, [size(v%body)]))
       call put(sh_elevation, v%eta)
       call put(sh_motion, reshape(v%pose, [size(v%pose)]))
       call put(sh_load, reshape(v%load, [size(v%load)]))
@@ -626,6 +640,7 @@ contains
          call hdf5_write_attribute(h5, g, 'probes', names(w%probe_head, 1), err)
          call hdf5_write_attribute(h5, g, 'vessels', names(w%vessel_head, 1), err)
          call hdf5_write_attribute(h5, g, 'connections', names(w%conn_head, 3), err)
+         call hdf5_write_attribute(h5, g, 'bodies', names(w%body_head, 1), err)
          if (size(w%probe_head) > 0) then
             xy = w%probe_xy     ! (2, np): h5py's (np, 2), a row per probe
             call write_described(h5, dynamic_h5, g//'/probe_xy', err, x2=xy)
@@ -739,14 +754,17 @@ contains
       w%sea_on(sf_vessels_step) = sea%n_vessels > 0
       w%sea_on(sf_conn) = sea%n_conn > 0
       w%sea_on(sf_conn_step) = sea%n_conn > 0
+      w%sea_on(sf_bodies) = sea%n_bodies > 0
+      w%sea_on(sf_bodies_step) = sea%n_bodies > 0
       allocate (w%probe_head(sea%n_probes), w%vessel_head(sea%n_vessels), &
-                w%conn_head(sea%n_conn))
+                w%conn_head(sea%n_conn), w%body_head(sea%n_bodies))
       w%probe_xy = sea%probe_xy
       w%sea_cols = 0
       w%sea_cols([sh_elevation, sh_step_elevation]) = sea%n_probes
       w%sea_cols([sh_motion, sh_step_motion]) = 7*sea%n_vessels
       w%sea_cols([sh_load, sh_step_load]) = 12*sea%n_vessels
       w%sea_cols([sh_conn, sh_step_conn]) = 13*sea%n_conn
+      w%sea_cols([sh_body, sh_step_body]) = 12*sea%n_bodies
       w%sea_cols(sh_step_time) = 1
       do k = 1, sea%n_probes
          n = 0
@@ -756,6 +774,9 @@ contains
       end do
       do k = 1, sea%n_vessels
          w%vessel_head(k)%s = ','//csv_name(model%vessels(k)%name)
+      end do
+      do k = 1, sea%n_bodies
+         w%body_head(k)%s = ','//csv_name(model%bodies(k)%name)
       end do
       do k = 1, sea%n_conn
          w%conn_head(k)%s = ','//csv_name(model%vessels(sea%conn_vessel(k))%name)//','// &

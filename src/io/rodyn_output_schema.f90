@@ -224,6 +224,35 @@ module rodyn_output_schema
       'dynamic_connections_step.csv | My_vessel_Nm | N m | y moment of the line, vessel axes', &
       'dynamic_connections_step.csv | Mz_vessel_Nm | N m | z moment of the line, vessel axes', &
       'dynamic_connections_step.csv | tension_N | N | magnitude of the force', &
+      'dynamic_bodies.csv | time_s | s | time of the frame', &
+      'dynamic_bodies.csv | body | - | body name', &
+      'dynamic_bodies.csv | x_m | m | x of the reference point R, global axes', &
+      'dynamic_bodies.csv | y_m | m | y of R, global axes', &
+      'dynamic_bodies.csv | z_m | m | z of R, global axes', &
+      'dynamic_bodies.csv | rx_rad | rad | rotation vector from the start, x', &
+      'dynamic_bodies.csv | ry_rad | rad | rotation vector from the start, y', &
+      'dynamic_bodies.csv | rz_rad | rad | rotation vector from the start, z', &
+      'dynamic_bodies.csv | Fx_N | N | x force of the lines on the body', &
+      'dynamic_bodies.csv | Fy_N | N | y force of the lines on the body', &
+      'dynamic_bodies.csv | Fz_N | N | z force of the lines on the body', &
+      'dynamic_bodies.csv | Mx_Nm | N m | x moment of the lines about R', &
+      'dynamic_bodies.csv | My_Nm | N m | y moment of the lines about R', &
+      'dynamic_bodies.csv | Mz_Nm | N m | z moment of the lines about R', &
+      'dynamic_bodies_step.csv | step | - | step number, 0 for the start', &
+      'dynamic_bodies_step.csv | time_s | s | time at the end of the step', &
+      'dynamic_bodies_step.csv | body | - | body name', &
+      'dynamic_bodies_step.csv | x_m | m | x of the reference point R, global axes', &
+      'dynamic_bodies_step.csv | y_m | m | y of R, global axes', &
+      'dynamic_bodies_step.csv | z_m | m | z of R, global axes', &
+      'dynamic_bodies_step.csv | rx_rad | rad | rotation vector from the start, x', &
+      'dynamic_bodies_step.csv | ry_rad | rad | rotation vector from the start, y', &
+      'dynamic_bodies_step.csv | rz_rad | rad | rotation vector from the start, z', &
+      'dynamic_bodies_step.csv | Fx_N | N | x force of the lines on the body', &
+      'dynamic_bodies_step.csv | Fy_N | N | y force of the lines on the body', &
+      'dynamic_bodies_step.csv | Fz_N | N | z force of the lines on the body', &
+      'dynamic_bodies_step.csv | Mx_Nm | N m | x moment of the lines about R', &
+      'dynamic_bodies_step.csv | My_Nm | N m | y moment of the lines about R', &
+      'dynamic_bodies_step.csv | Mz_Nm | N m | z moment of the lines about R', &
       'dynamic_log.csv | step | - | step number, from 1', &
       'dynamic_log.csv | time_s | s | time at the end of the step', &
       'dynamic_log.csv | dt_s | s | step length used', &
@@ -359,6 +388,7 @@ module rodyn_output_schema
       'dynamic.h5 | /dynamic/sea:probes | - | names of the probes, comma-separated', &
       'dynamic.h5 | /dynamic/sea:vessels | - | names of the vessels, comma-separated', &
       'dynamic.h5 | /dynamic/sea:connections | - | VESSEL/LINE/END of each connection', &
+      'dynamic.h5 | /dynamic/sea:bodies | - | names of the bodies, comma-separated', &
       'dynamic.h5 | /environment:seabed | - | 1 when a seabed is modelled, else 0', &
       'dynamic.h5 | /parameters:NAME | - | deck parameter NAME as used (number or text)']
 
@@ -489,6 +519,12 @@ module rodyn_output_schema
          '| as vessel_load, at the times of step_time (every step)', &
       'dynamic.h5 | /dynamic/sea/step_connection_load | N (Fx, Fy, Fz, tension), N m '// &
          '(Mx, My, Mz) | as connection_load, at the times of step_time (every step)', &
+      'dynamic.h5 | /dynamic/sea/body_motion | m (x, y, z), rad (rx, ry, rz), N (Fx, '// &
+         'Fy, Fz), N m (Mx, My, Mz) | per frame, 12 values per body: R, the rotation '// &
+         'vector, the force of the lines and their moment about R, global axes', &
+      'dynamic.h5 | /dynamic/sea/step_body_motion | m (x, y, z), rad (rx, ry, rz), N '// &
+         '(Fx, Fy, Fz), N m (Mx, My, Mz) | as body_motion, at the times of step_time '// &
+         '(every step)', &
       'dynamic.h5 | /dynamic/sea/step_time | s | time of each row of the step_ '// &
          'datasets of /dynamic/sea: 0, then the end of each step', &
       'dynamic.h5 | /dynamic/time | s | time of each output frame']

@@ -17,6 +17,10 @@
 !> global axes and in vessel axes (R^T F_c, R^T M_c). Per vessel, their sum: F = sum F_c
 !> and the moment about the reference point M = sum (X_c - X_ref) x F_c + M_c, X_c =
 !> X_ref + R p_c the connection point (p_c in vessel axes, where the node is at t = 0).
+!>
+!> Body b (*BODY): its reference point R = G + D (R - G)_body, D its directors, the
+!> rotation vector log D from the start, and the force of its lines on it (minus the
+!> forces r at the line ends on its points) with their moment about R.
 module rodyn_sea_output
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, motion_vessel, end_a, end_b
@@ -24,6 +28,7 @@ module rodyn_sea_output
    use rodyn_waves, only: wave_field_t, wave_elevation
    use rodyn_vessel, only: vessel_rotation, vessel_local_point
    use rodyn_motion, only: vessel_pose
+   use rodyn_rotation, only: rotation_log
    implicit none
    private
    public :: sea_scene_t, sea_values_t, sea_scene_build, sea_values, sea_rotation
@@ -41,6 +46,11 @@ module rodyn_sea_output
       integer, allocatable :: conn_node(:)    !< (nc) its node in the mesh
       character(len=8), allocatable :: conn_end(:) !< (nc) 'A', 'B' or the node number
       real(wp), allocatable :: conn_p(:, :)   !< (3, nc) point p_c in vessel axes [m]
+      integer :: n_bodies = 0                 !< bodies (*BODY)
+      integer, allocatable :: body_node(:)    !< (nb) each body's node (at G)
+      real(wp), allocatable :: body_rg(:, :)  !< (3, nb) R - G, body axes [m]
+      integer, allocatable :: bend_node(:)    !< (ne) line ends on bodies: their node
+      integer, allocatable :: bend_body(:)    !< (ne) and their body
    end type sea_scene_t
 
    !> The outputs at one time.
@@ -52,6 +62,9 @@ module rodyn_sea_output
                                             !< same in vessel axes [N, N m]
       real(wp), allocatable :: conn(:, :)   !< (12, nc) F_c, M_c global, then in vessel
                                             !< axes [N, N m]
+      !> (12, nb) each body's R [m], rotation vector [rad], force of its lines [N] and
+      !> their moment about R [N m], global axes
+      real(wp), allocatable :: body(:, :)
    end type sea_values_t
 
 contains
@@ -102,8 +115,33 @@ contains
          end do
       end if
       where (scene%ramp < 0.0_wp) scene%ramp = 0.0_wp
-      scene%active = scene%n_probes > 0 .or. scene%n_vessels > 0
+      call body_scene(model, mesh, scene)
+      scene%active = scene%n_probes > 0 .or. scene%n_vessels > 0 .or. scene%n_bodies > 0
    end subroutine sea_scene_build
+
+   !> The bodies of the scene and the line ends on them.
+   pure subroutine body_scene(model, mesh, scene)
+      type(model_t), intent(in) :: model        !< model
+      type(mesh_t), intent(in) :: mesh          !< mesh
+      type(sea_scene_t), intent(inout) :: scene !< bodies set
+      integer :: b, l, k, e
+      scene%n_bodies = size(mesh%body_node)
+      allocate (scene%body_node(scene%n_bodies), scene%body_rg(3, scene%n_bodies))
+      do b = 1, scene%n_bodies
+         scene%body_node(b) = mesh%body_node(b)
+         scene%body_rg(:, b) = -model%bodies(b)%cog
+      end do
+      allocate (scene%bend_node(0), scene%bend_body(0))
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            b = findloc(scene%body_node, mesh%end_point_node(k, l), dim=1)
+            if (mesh%end_point_node(k, l) == 0 .or. b == 0) cycle
+            e = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            scene%bend_node = [scene%bend_node, e]
+            scene%bend_body = [scene%bend_body, b]
+         end do
+      end do
+   end subroutine body_scene
 
    !> R = Rz(psi) Rv(roll, pitch, yaw): the rotation of vessel axes for a pose.
    pure function sea_rotation(pose) result(r)
@@ -120,18 +158,35 @@ contains
    end function sea_rotation
 
    !> The outputs at time t (module header): r(:, node) the force and moment of the
-   !> support on the line at each held node.
-   pure subroutine sea_values(scene, model, field, t, r, v)
+   !> support on the line at each held node (and of a point or body on a line end); x, d
+   !> the state at t (the bodies').
+   pure subroutine sea_values(scene, model, field, t, r, x, d, v)
       type(sea_scene_t), intent(in) :: scene  !< the scene
       type(model_t), intent(in) :: model      !< model (vessels)
       type(wave_field_t), intent(in) :: field !< the run's sea
       real(wp), intent(in) :: t               !< time [s]
       real(wp), intent(in) :: r(:, :)         !< (6, nn) support forces [N, N m]
+      real(wp), intent(in) :: x(:, :)         !< (3, nn) positions at t [m]
+      real(wp), intent(in) :: d(:, :, :)      !< (3, 3, nn) directors at t
       type(sea_values_t), intent(inout) :: v  !< the values (allocated here once)
       real(wp) :: rot(3, 3), f(3), m(3), arm(3)
       integer :: k, c, iv
       if (.not. allocated(v%eta)) allocate (v%eta(scene%n_probes), &
-         v%pose(7, scene%n_vessels), v%load(12, scene%n_vessels), v%conn(12, scene%n_conn))
+         v%pose(7, scene%n_vessels), v%load(12, scene%n_vessels), v%conn(12, scene%n_conn), &
+         v%body(12, scene%n_bodies))
+      do k = 1, scene%n_bodies
+         c = scene%body_node(k)
+         v%body(1:3, k) = x(:, c) + matmul(d(:, :, c), scene%body_rg(:, k))
+         v%body(4:6, k) = rotation_log(d(:, :, c)) + 0.0_wp
+         v%body(7:12, k) = 0.0_wp
+      end do
+      do k = 1, size(scene%bend_node)
+         c = scene%bend_node(k)
+         iv = scene%bend_body(k)
+         f = 0.0_wp - r(1:3, c)
+         v%body(7:9, iv) = v%body(7:9, iv) + f
+         v%body(10:12, iv) = v%body(10:12, iv) + cross(x(:, c) - v%body(1:3, iv), f)
+      end do
       do k = 1, scene%n_probes
          ! + 0: a zero elevation (before the ramp) written as 0, not -0
          v%eta(k) = wave_elevation(field, scene%probe_xy(1, k), scene%probe_xy(2, k), t) &
