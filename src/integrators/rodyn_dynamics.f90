@@ -518,8 +518,9 @@ contains
                                        this%fdamp, this%bm, want_k)
       if (this%water%active) call water_loads_step(this, want_k)
       if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%s0%x, this%s1%x, &
-                                               this%s0%d, this%s1%d, this%wf, 1.0_wp, &
-                                               this%fint, this%bm, want_k)
+                                               this%s0%d, this%s1%d, this%wf, this%fext, &
+                                               this%loads%gravity, this%fint, this%bm, &
+                                               want_k)
       fx = 0.0_wp
       mx = 0.0_wp
       do node = 1, this%mesh%n_nodes
@@ -643,7 +644,8 @@ contains
    subroutine dyn_save_base(this)
       class(dynamic_problem_t), intent(inout) :: this !< problem
       call copy_values(size(this%x_base), this%s1%x, this%x_base)
-      if (this%mesh%n_cable < this%mesh%n_elements) &
+      ! (directors turn at rod nodes and at bodies' only)
+      if (this%mesh%n_cable < this%mesh%n_elements .or. size(this%mesh%body_node) > 0) &
          call copy_values(size(this%d_base), this%s1%d, this%d_base)
       call copy_values(size(this%dx_base), this%dx, this%dx_base)
       this%base_set = .true.

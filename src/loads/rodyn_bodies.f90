@@ -36,7 +36,6 @@ module rodyn_bodies
       real(wp), allocatable :: rr(:, :)        !< (3, nb) R - G, body axes [m]
       real(wp), allocatable :: xr0(:, :)       !< (3, nb) R at the start [m]
       real(wp), allocatable :: c(:, :, :)      !< (6, 6, nb) waterplane restoring about R
-      real(wp), allocatable :: fr(:, :)        !< (3, nb) force of the loads at R, global [N]
       real(wp), allocatable :: fh(:, :)        !< (6, nb) last water force and moment at G
       real(wp), allocatable :: fe(:, :)        !< (3, nb) last moment of the loads at R about G
       logical :: off = .false.                 !< none of these loads (the lines' stiffness)
@@ -53,7 +52,7 @@ contains
       bl%nb = 0
       if (allocated(model%bodies)) bl%nb = count(model%bodies%kind == body_free)
       allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
-                bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), bl%fr(3, bl%nb), &
+                bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), &
                 bl%fh(6, bl%nb), bl%fe(3, bl%nb))
       bl%fh = 0.0_wp
       bl%fe = 0.0_wp
@@ -70,28 +69,22 @@ contains
             bl%rr(:, k) = -b%cog
             bl%xr0(:, k) = b%position
             bl%c(:, :, k) = b%hydrostatic
-            bl%fr(:, k) = 0.0_wp
          end associate
-      end do
-      if (.not. allocated(model%loads)) return
-      do i = 1, size(model%loads)
-         if (model%loads(i)%body == 0) cycle
-         k = findloc(bl%body, model%loads(i)%body, dim=1)
-         bl%fr(:, k) = bl%fr(:, k) + model%loads(i)%force
       end do
    end subroutine body_loads_build
 
    !> Body k's turning loads at the force point (eqs. (137)-(139)): force and moment f
    !> on its node, and their derivative kb with respect to its translation and rotation
    !> at t_n+1 (the residual's is -kb). xg0, xg1: G at t_n and now; d0, d1 its directors;
-   !> w the weight of t_n+1; lam the factor on the loads given at R.
-   pure subroutine body_force(bl, k, xg0, xg1, d0, d1, w, lam, f, kb)
+   !> w the weight of t_n+1; fr the force of the loads given at R at the force time (their
+   !> amplitudes and load factor applied: the node's point loads).
+   pure subroutine body_force(bl, k, xg0, xg1, d0, d1, w, fr, f, kb)
       type(body_loads_t), intent(inout) :: bl  !< loads (fh, fe: the forces kept)
       integer, intent(in) :: k                 !< body
       real(wp), intent(in) :: xg0(3), xg1(3)   !< G at t_n and at t_n+1 [m]
       real(wp), intent(in) :: d0(3, 3), d1(3, 3) !< directors at t_n and t_n+1
       real(wp), intent(in) :: w                !< weight of t_n+1 at the force point
-      real(wp), intent(in) :: lam              !< factor on the loads at R
+      real(wp), intent(in) :: fr(3)            !< force of the loads at R [N]
       real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
       real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
       real(wp) :: dm(3, 3), ab(3), ar(3), ar1(3), q(6), fw(6), t(6, 6), fe(3)
@@ -102,11 +95,11 @@ contains
       ar1 = matmul(d1, bl%rr(:, k))
       ! buoyancy at B, the loads' force at R (its moment about R is a point load)
       f(1:3) = bl%fb(:, k)
-      fe = cross(ar, lam*bl%fr(:, k))
+      fe = cross(ar, fr)
       f(4:6) = cross(ab, bl%fb(:, k))
       kb = 0.0_wp
       kb(4:6, 4:6) = w*(moment_tangent(matmul(d1, bl%rb(:, k)), bl%fb(:, k)) &
-                        + moment_tangent(ar1, lam*bl%fr(:, k)))
+                        + moment_tangent(ar1, fr))
       ! waterplane about R, at the force point
       q(1:3) = (1.0_wp - w)*xg0 + w*xg1 + ar - bl%xr0(:, k)
       q(4:6) = rotation_log(dm)

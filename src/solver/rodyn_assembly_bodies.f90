@@ -12,8 +12,9 @@ module rodyn_assembly_bodies
 
 contains
 
-   !> fint -= f of each body at the force point, and the tangent -df/dq (want_k).
-   subroutine assemble_bodies(bl, sup, x0, x1, d0, d1, w, lam, fint, bm, want_k)
+   !> fint -= f of each body at the force point, and the tangent -df/dq (want_k). The
+   !> force of the loads given at R is the node's external force less its weight.
+   subroutine assemble_bodies(bl, sup, x0, x1, d0, d1, w, fext, grav, fint, bm, want_k)
       type(body_loads_t), intent(inout) :: bl !< bodies' loads (their last forces kept)
       type(supports_t), intent(in) :: sup     !< supports (dof map)
       real(wp), intent(in) :: x0(:, :)        !< (3, nn) positions at t_n [m]
@@ -21,7 +22,8 @@ contains
       real(wp), intent(in) :: d0(:, :, :)     !< (3, 3, nn) directors at t_n
       real(wp), intent(in) :: d1(:, :, :)     !< (3, 3, nn) directors now
       real(wp), intent(in) :: w               !< weight of t_n+1 at the force point
-      real(wp), intent(in) :: lam             !< factor on the loads given at R
+      real(wp), intent(in) :: fext(:, :)      !< (6, nn) external forces (point loads, weight)
+      real(wp), intent(in) :: grav(:, :)      !< (3, nn) the weight [N]
       real(wp), intent(inout) :: fint(:, :)   !< (6, nn) internal forces
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
@@ -30,7 +32,8 @@ contains
       if (bl%off) return
       do k = 1, bl%nb
          n = bl%node(k)
-         call body_force(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, lam, f, kb)
+         call body_force(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, &
+                         fext(1:3, n) - grav(:, n), f, kb)
          fint(:, n) = fint(:, n) - f
          if (want_k) call add_node_block(sup, n, -kb, bm)
       end do

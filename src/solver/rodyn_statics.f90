@@ -193,7 +193,8 @@ contains
                                                  this%bm, want_k)
       if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%state%x, this%state%x, &
                                                this%state%d, this%state%d, 1.0_wp, &
-                                               this%lam, this%fint, this%bm, want_k)
+                                               this%fext, this%loads%gravity, this%fint, &
+                                               this%bm, want_k)
       call homotopy_and_gauge(this, want_k)
       do node = 1, this%mesh%n_nodes
          this%gap(:, node) = 0.0_wp
