@@ -5,8 +5,10 @@
 # cases (input/paper_case1.inp .. paper_case4.inp, the paper's Figures 3 to 6), and the
 # mooring leg in water (input/mooring_catenary.inp, mooring_surge.inp,
 # mooring_current.inp) and the published lazy-wave cable (input/riser_lazy_wave.inp,
-# riser_lazy_wave_heave.inp) and the chain - wire - chain leg of the README
-# (input/chain_wire_chain.inp), each into ./<deck name>/ with every plot of
+# riser_lazy_wave_heave.inp), the chain - wire - chain leg of the README
+# (input/chain_wire_chain.inp), and two mooring systems: a tethered subsea buoy
+# (input/tethered_buoy.inp) and the OC3-Hywind spar on its three chains
+# (input/oc3_spar.inp), each into ./<deck name>/ with every plot of
 # rodyn-plot-all (the post-processing package of postproc/, installed by tools/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +18,8 @@ else
   decks=(input/paper_cable.inp input/paper_case1.inp input/paper_case2.inp
          input/paper_case3.inp input/paper_case4.inp input/mooring_catenary.inp
          input/mooring_surge.inp input/mooring_current.inp input/riser_lazy_wave.inp
-         input/riser_lazy_wave_heave.inp input/chain_wire_chain.inp)
+         input/riser_lazy_wave_heave.inp input/chain_wire_chain.inp input/tethered_buoy.inp
+         input/oc3_spar.inp)
 fi
 bash tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
