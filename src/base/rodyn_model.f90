@@ -168,6 +168,9 @@ module rodyn_model
       !> linear waterplane restoring about R: force and moment -C (x_R - x_R0, theta) [N/m,
       !> N, N m/m, N m/rad]; the weight and buoyancy are forces of their own (not in C)
       real(wp) :: hydrostatic(6, 6) = 0.0_wp
+      !> linear damping about R (*BODY DAMPING): force and moment -B (v_R, omega) [N s/m,
+      !> N s, N m s/m, N m s/rad], dynamics only
+      real(wp) :: damping(6, 6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
    end type body_t
 

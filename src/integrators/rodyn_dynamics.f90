@@ -520,7 +520,7 @@ contains
       if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%s0%x, this%s1%x, &
                                                this%s0%d, this%s1%d, this%wf, this%fext, &
                                                this%loads%gravity, this%fint, this%bm, &
-                                               want_k)
+                                               want_k, this%dt)
       fx = 0.0_wp
       mx = 0.0_wp
       do node = 1, this%mesh%n_nodes

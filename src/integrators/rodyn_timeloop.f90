@@ -180,6 +180,8 @@ contains
          w_hydro = w_hydro + dot_product(prob%bl%fh(1:3, i), prob%dx(:, node)) &
                    + dot_product(prob%bl%fh(4:6, i), th)
          w_ext = w_ext + dot_product(prob%bl%fe(:, i), th)
+         w_damp = w_damp - dot_product(prob%bl%fd(1:3, i), prob%dx(:, node)) &
+                  - dot_product(prob%bl%fd(4:6, i), th)
       end do
       do node = 1, prob%mesh%n_nodes
          dx = prob%dx(:, node)

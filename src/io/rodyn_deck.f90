@@ -125,7 +125,8 @@ contains
       allocate (pend%line_point_a(size(model%lines)), pend%line_point_b(size(model%lines)))
       allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
       allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
-      allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)))
+      allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)), &
+                pend%body_damp(size(model%bodies)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -218,7 +219,7 @@ contains
             call read_point_card(deck, ic, model, pend, err)
          case ('BODY')
             call read_body_card(deck, ic, model, pend, err)
-         case ('BODY HYDROSTATICS')
+         case ('BODY HYDROSTATICS', 'BODY DAMPING')
             call read_body_hydrostatics_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)

@@ -85,6 +85,7 @@ contains
       model%bodies(pend%n_bodies) = b
       pend%body_card(pend%n_bodies) = ic
       pend%body_hydro(pend%n_bodies) = 0
+      pend%body_damp(pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -113,8 +114,10 @@ contains
 
    !> *BODY HYDROSTATICS, BODY=name: 6 data lines of 6 values, the waterplane restoring
    !> matrix C about the body's reference point (rows: force x, y, z and moment x, y, z;
-   !> columns: x, y, z and rotations x, y, z of R) [N/m, N, N m/m, N m/rad]. After its
-   !> *BODY card; one per body.
+   !> columns: x, y, z and rotations x, y, z of R) [N/m, N, N m/m, N m/rad]; *BODY
+   !> DAMPING, BODY=name: the linear damping matrix B about R likewise, on R's velocity
+   !> and the angular velocity [N s/m, N s, N m s/m, N m s/rad]. After the *BODY card;
+   !> one of each per body.
    subroutine read_body_hydrostatics_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the card
@@ -122,9 +125,12 @@ contains
       type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
+      real(wp) :: mat(6, 6), row(6)
+      logical :: damping
       integer :: ib, k
 
       associate (card => deck%cards(ic))
+         damping = card%keyword == 'BODY DAMPING'
          call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
@@ -137,19 +143,26 @@ contains
                             ' card with NAME='//name//' comes first)', err)
             return
          end if
-         if (pend%body_hydro(ib) > 0) then
-            call card_error(card, "body '"//name//"' already has its *BODY HYDROSTATICS (at "// &
-                            location(deck, pend%body_hydro(ib))//')', err)
+         k = merge(pend%body_damp(ib), pend%body_hydro(ib), damping)
+         if (k > 0) then
+            call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
+                            ' (at '//location(deck, k)//')', err)
             return
          end if
-         call card_check_data(card, 6, 6, err, 'row of 6 values of C')
+         call card_check_data(card, 6, 6, err, 'row of 6 values')
          if (has_error(err)) return
          do k = 1, 6
-            call card_data_reals(card, k, 6, model%bodies(ib)%hydrostatic(k, :), err, &
-                                 'C(k,1), ..., C(k,6)')
+            call card_data_reals(card, k, 6, row, err, 'C(k,1), ..., C(k,6)')
             if (has_error(err)) return
+            mat(k, :) = row
          end do
-         pend%body_hydro(ib) = ic
+         if (damping) then
+            model%bodies(ib)%damping = mat
+            pend%body_damp(ib) = ic
+         else
+            model%bodies(ib)%hydrostatic = mat
+            pend%body_hydro(ib) = ic
+         end if
       end associate
    end subroutine read_body_hydrostatics_card
 

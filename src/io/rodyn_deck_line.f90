@@ -6,7 +6,7 @@ module rodyn_deck_line
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, line_def_t, bc_free, element_names, element_cable, &
-                          element_rod
+                          element_rod, point_body
    use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_get_real, card_get_int, &
                                card_get_name, card_get_choice, card_check_data, &
@@ -278,11 +278,13 @@ contains
       do ib = 1, size(model%constraints)
          if (model%constraints(ib)%kind /= bc_free) held(model%constraints(ib)%line) = .true.
       end do
-      do l = 1, size(model%lines)          ! an end on a FIXED body is held
-         if (model%lines(l)%point_a > 0) held(l) = held(l) .or. &
-                                                  point_held(model, model%lines(l)%point_a)
+      do l = 1, size(model%lines)          ! an end on a FIXED body, or on a body with
+         if (model%lines(l)%point_a > 0) held(l) = held(l) .or. &      ! a waterplane, is held
+                                                  point_held(model, model%lines(l)%point_a) &
+                                                  .or. restored(model%lines(l)%point_a)
          if (model%lines(l)%point_b > 0) held(l) = held(l) .or. &
-                                                  point_held(model, model%lines(l)%point_b)
+                                                  point_held(model, model%lines(l)%point_b) &
+                                                  .or. restored(model%lines(l)%point_b)
       end do
       ! junctions: FREE points, then bodies (rodyn_deck_system's point_junction)
       nj = size(model%points)
@@ -315,6 +317,12 @@ contains
                       ' in position: a static analysis needs at least one *BOUNDARY of'// &
                       ' TYPE PINNED, HINGED, CLAMPED or POSITION on it', err)
    contains
+      logical function restored(ip)
+         integer, intent(in) :: ip
+         restored = .false.
+         if (model%points(ip)%kind /= point_body) return
+         restored = any(model%bodies(model%points(ip)%body)%hydrostatic /= 0.0_wp)
+      end function restored
       logical function on_junction(l, ij)
          integer, intent(in) :: l, ij
          on_junction = .false.

@@ -59,6 +59,7 @@ module rodyn_deck_support
       type(ref_t), allocatable :: load_body(:)    !< per load: its BODY= ('' if none)
       integer, allocatable :: body_card(:)        !< per body: card index
       integer, allocatable :: body_hydro(:)       !< per body: its *BODY HYDROSTATICS card
+      integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far

@@ -24,7 +24,7 @@ module rodyn_bodies
    use rodyn_rotation, only: cross, skew, rotation_log
    implicit none
    private
-   public :: body_loads_t, body_loads_build, body_force
+   public :: body_loads_t, body_loads_build, body_force, body_damping
 
    !> The bodies' loads, fixed for the run (and the last forces, for the work's books).
    type :: body_loads_t
@@ -36,6 +36,8 @@ module rodyn_bodies
       real(wp), allocatable :: rr(:, :)        !< (3, nb) R - G, body axes [m]
       real(wp), allocatable :: xr0(:, :)       !< (3, nb) R at the start [m]
       real(wp), allocatable :: c(:, :, :)      !< (6, 6, nb) waterplane restoring about R
+      real(wp), allocatable :: b(:, :, :)      !< (6, 6, nb) linear damping about R
+      real(wp), allocatable :: fd(:, :)        !< (6, nb) last damping force and moment at G
       real(wp), allocatable :: fh(:, :)        !< (6, nb) last water force and moment at G
       real(wp), allocatable :: fe(:, :)        !< (3, nb) last moment of the loads at R about G
       logical :: off = .false.                 !< none of these loads (the lines' stiffness)
@@ -53,8 +55,9 @@ contains
       if (allocated(model%bodies)) bl%nb = count(model%bodies%kind == body_free)
       allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
                 bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), &
-                bl%fh(6, bl%nb), bl%fe(3, bl%nb))
+                bl%fh(6, bl%nb), bl%fe(3, bl%nb), bl%b(6, 6, bl%nb), bl%fd(6, bl%nb))
       bl%fh = 0.0_wp
+      bl%fd = 0.0_wp
       bl%fe = 0.0_wp
       k = 0
       do i = 1, size(mesh%body_node)
@@ -69,6 +72,7 @@ contains
             bl%rr(:, k) = -b%cog
             bl%xr0(:, k) = b%position
             bl%c(:, :, k) = b%hydrostatic
+            bl%b(:, :, k) = b%damping
          end associate
       end do
    end subroutine body_loads_build
@@ -117,6 +121,39 @@ contains
       f = bl%fh(:, k)
       f(4:6) = f(4:6) + fe
    end subroutine body_force
+
+   !> Body k's linear damping over a time step dt (eq. (141)): the velocity of R and the
+   !> angular velocity of the step, v = (x_R^{n+1} - x_R^n)/dt, omega = theta/dt (theta
+   !> the Cayley parameter of the step's turn, given), the force and moment about R
+   !> -B (v, omega) moved to G at the force point (as the waterplane's, (138)); f the
+   !> force on the node and kb its derivative (c_v: d velocity / d increment, 1/dt).
+   pure subroutine body_damping(bl, k, xg0, xg1, d0, d1, w, dt, th, f, kb)
+      type(body_loads_t), intent(inout) :: bl  !< loads (fd: the force kept)
+      integer, intent(in) :: k                 !< body
+      real(wp), intent(in) :: xg0(3), xg1(3)   !< G at t_n and at t_n+1 [m]
+      real(wp), intent(in) :: d0(3, 3), d1(3, 3) !< directors at t_n and t_n+1
+      real(wp), intent(in) :: w                !< weight of t_n+1 at the force point
+      real(wp), intent(in) :: dt               !< time step [s]
+      real(wp), intent(in) :: th(3)            !< Cayley parameter of the step's turn [rad]
+      real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
+      real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
+      real(wp) :: ar(3), ar0(3), ar1(3), v(6), t(6, 6)
+      integer :: i
+      ar0 = matmul(d0, bl%rr(:, k))
+      ar1 = matmul(d1, bl%rr(:, k))
+      ar = (1.0_wp - w)*ar0 + w*ar1
+      v(1:3) = (xg1 + ar1 - xg0 - ar0)/dt
+      v(4:6) = th/dt
+      f = -matmul(bl%b(:, :, k), v)
+      f(4:6) = f(4:6) + cross(ar, f(1:3))
+      bl%fd(:, k) = f
+      t = 0.0_wp
+      do i = 1, 6
+         t(i, i) = 1.0_wp
+      end do
+      t(1:3, 4:6) = -skew(ar1)
+      kb = -matmul(transpose(t), matmul(bl%b(:, :, k), t))/dt
+   end subroutine body_damping
 
    !> d(a x F)/d theta for a vector a = D r turning with the body and a fixed F:
    !> a F^T - (a . F) I.

@@ -3,7 +3,8 @@
 !> tangent, as the water's are (docs/theory.md eqs. (137)-(139)).
 module rodyn_assembly_bodies
    use rodyn_kinds, only: wp
-   use rodyn_bodies, only: body_loads_t, body_force
+   use rodyn_bodies, only: body_loads_t, body_force, body_damping
+   use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
    use rodyn_assembly, only: supports_t, add_node_block
    use rodyn_banded, only: banded_t
    implicit none
@@ -14,7 +15,7 @@ contains
 
    !> fint -= f of each body at the force point, and the tangent -df/dq (want_k). The
    !> force of the loads given at R is the node's external force less its weight.
-   subroutine assemble_bodies(bl, sup, x0, x1, d0, d1, w, fext, grav, fint, bm, want_k)
+   subroutine assemble_bodies(bl, sup, x0, x1, d0, d1, w, fext, grav, fint, bm, want_k, dt)
       type(body_loads_t), intent(inout) :: bl !< bodies' loads (their last forces kept)
       type(supports_t), intent(in) :: sup     !< supports (dof map)
       real(wp), intent(in) :: x0(:, :)        !< (3, nn) positions at t_n [m]
@@ -27,13 +28,21 @@ contains
       real(wp), intent(inout) :: fint(:, :)   !< (6, nn) internal forces
       type(banded_t), intent(inout) :: bm     !< tangent
       logical, intent(in) :: want_k           !< form the tangent
-      real(wp) :: f(6), kb(6, 6)
+      real(wp), intent(in), optional :: dt    !< time step [s] (dynamics: the damping)
+      real(wp) :: f(6), kb(6, 6), th(3)
       integer :: k, n
       if (bl%off) return
       do k = 1, bl%nb
          n = bl%node(k)
          call body_force(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, &
                          fext(1:3, n) - grav(:, n), f, kb)
+         fint(:, n) = fint(:, n) - f
+         if (want_k) call add_node_block(sup, n, -kb, bm)
+         if (.not. present(dt)) cycle
+         if (.not. any(bl%b(:, :, k) /= 0.0_wp)) cycle
+         th = rotation_cayley_inverse(relative_rotation(d1(:, :, n), d0(:, :, n)))
+         call body_damping(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, dt, th, &
+                           f, kb)
          fint(:, n) = fint(:, n) - f
          if (want_k) call add_node_block(sup, n, -kb, bm)
       end do
