@@ -171,6 +171,9 @@ module rodyn_model
       !> linear damping about R (*BODY DAMPING): force and moment -B (v_R, omega) [N s/m,
       !> N s, N m s/m, N m s/rad], dynamics only
       real(wp) :: damping(6, 6) = 0.0_wp
+      !> added mass (*BODY ADDED MASS): A11, A22, A33 at G [kg] and A44, A55, A66 about G
+      !> [kg m2], body axes
+      real(wp) :: added_mass(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
    end type body_t
 

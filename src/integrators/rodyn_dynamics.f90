@@ -490,7 +490,7 @@ contains
       type(error_t), intent(inout) :: err             !< status (cannot fail)
       real(wp) :: c2, kb(6, 6), bdt2, wp_
       real(wp) :: fx, mx
-      integer :: node
+      integer :: node, i
       if (has_error(err)) return
       ! a tangent formed after a correction takes its stresses from the strains
       ! linearized from the iterate before (rodyn_rod_dynamic's header, EMC only)
@@ -541,6 +541,14 @@ contains
          call node_inertia(this%inert%m(node), this%inert%md(:, node), c2, wp_, &
                            this%dx(:, node), this%rest(:, :, node), this%s0%d(:, :, node), &
                            this%s1%d(:, :, node), this%fint(:, node), fx, kb, want_k)
+         if (want_k) call add_node_block(this%sup, node, kb, this%bm)
+      end do
+      ! the bodies' added mass in their axes, D A D^T at the force point (theory.md (142))
+      do i = 1, size(this%inert%ma_node)
+         node = this%inert%ma_node(i)
+         call added_mass_force(this%inert%ma(:, i), (1.0_wp - wp_)*this%s0%d(:, :, node) + &
+                               wp_*this%s1%d(:, :, node), c2, this%dx(:, node), &
+                               this%rest(:, 0, node), this%fint(:, node), kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged
@@ -729,6 +737,29 @@ contains
          kb(4:6, 4:6) = kb(4:6, 4:6) + blk
       end do
    end subroutine node_inertia
+
+   !> A body's added mass in its axes (docs/theory.md eq. (142)): the force
+   !> D A D^T (c2 dx - g0) on its node, D its directors at the force point, and its
+   !> derivative c2 D A D^T (the turn of D left out).
+   pure subroutine added_mass_force(ma, d, c2, dx, rest0, f, kb, want_k)
+      real(wp), intent(in) :: ma(3)        !< A11, A22, A33 [kg]
+      real(wp), intent(in) :: d(3, 3)      !< directors at the force point
+      real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
+      real(wp), intent(in) :: dx(3)        !< position increment [m]
+      real(wp), intent(in) :: rest0(3)     !< the step's constant part (inertia_rest)
+      real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
+      real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
+      logical, intent(in) :: want_k        !< form kb
+      real(wp) :: ma_g(3, 3)
+      integer :: j
+      do j = 1, 3
+         ma_g(:, j) = matmul(d, ma*d(j, :))
+      end do
+      f(1:3) = f(1:3) + matmul(ma_g, c2*dx - rest0)
+      if (.not. want_k) return
+      kb = 0.0_wp
+      kb(1:3, 1:3) = c2*ma_g
+   end subroutine added_mass_force
 
    !> The velocity and acceleration of the trapezoidal rule over n values, v = dx/dt and
    !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: the loops

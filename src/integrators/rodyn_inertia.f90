@@ -13,12 +13,17 @@ module rodyn_inertia
    implicit none
    private
    public :: inertia_t, inertia_build, kinetic_energy, linear_momentum, angular_momentum
+   public :: added_momentum
 
    !> Nodal lumped inertia.
    type :: inertia_t
       real(wp), allocatable :: m(:)       !< (nn) translational mass [kg]
       real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0 but
                                           !< at a body's node: its Euler tensor)
+      !> bodies with a translational added mass in their axes (theory.md (142)): node and
+      !> A11, A22, A33 [kg]
+      integer, allocatable :: ma_node(:)  !< (nma)
+      real(wp), allocatable :: ma(:, :)   !< (3, nma)
    end type inertia_t
 
 contains
@@ -56,10 +61,18 @@ contains
       do e = 1, size(mesh%body_node)
          node = mesh%body_node(e)
          if (model%bodies(e)%kind /= body_free) cycle
-         associate (j => model%bodies(e)%inertia)
+         associate (j => model%bodies(e)%inertia + model%bodies(e)%added_mass(4:6))
             inert%m(node) = inert%m(node) + model%bodies(e)%mass
             inert%md(:, node) = inert%md(:, node) + 0.5_wp*(sum(j) - 2.0_wp*j)
          end associate
+      end do
+      allocate (inert%ma_node(0), inert%ma(3, 0))
+      do e = 1, size(mesh%body_node)
+         if (model%bodies(e)%kind /= body_free) cycle
+         if (all(model%bodies(e)%added_mass(1:3) == 0.0_wp)) cycle
+         inert%ma_node = [inert%ma_node, mesh%body_node(e)]
+         inert%ma = reshape([inert%ma, model%bodies(e)%added_mass(1:3)], &
+                            [3, size(inert%ma_node)])
       end do
       ! attachments: their mass and the isotropic added mass Ca rho_w V at their node
       if (.not. allocated(model%attachments)) return
@@ -85,6 +98,10 @@ contains
             t = t + inert%md(i, a)*dot_product(state%dd(:, i, a), state%dd(:, i, a))
          end do
       end do
+      do i = 1, size(inert%ma_node)          ! a body's added mass, in its axes
+         a = inert%ma_node(i)
+         t = t + sum(inert%ma(:, i)*matmul(transpose(state%d(:, :, a)), state%v(:, a))**2)
+      end do
       t = 0.5_wp*t
    end function kinetic_energy
 
@@ -94,10 +111,14 @@ contains
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities
       real(wp) :: p(3)
-      integer :: a
+      integer :: a, i
       p = 0.0_wp
       do a = 1, size(inert%m)
          p = p + inert%m(a)*state%v(:, a)
+      end do
+      do i = 1, size(inert%ma_node)
+         a = inert%ma_node(i)
+         p = p + added_momentum(inert%ma(:, i), state%d(:, :, a), state%v(:, a))
       end do
    end function linear_momentum
 
@@ -115,5 +136,19 @@ contains
             j = j + inert%md(i, a)*cross(state%d(:, i, a), state%dd(:, i, a))
          end do
       end do
+      do i = 1, size(inert%ma_node)
+         a = inert%ma_node(i)
+         j = j + cross(state%x(:, a), added_momentum(inert%ma(:, i), state%d(:, :, a), &
+                                                     state%v(:, a)))
+      end do
    end function angular_momentum
+
+   !> D diag(ma) D^T v: the momentum of a body's added mass in its axes.
+   pure function added_momentum(ma, d, v) result(p)
+      real(wp), intent(in) :: ma(3)      !< A11, A22, A33 [kg]
+      real(wp), intent(in) :: d(3, 3)    !< the body's directors
+      real(wp), intent(in) :: v(3)       !< velocity [m/s]
+      real(wp) :: p(3)
+      p = matmul(d, ma*matmul(transpose(d), v))
+   end function added_momentum
 end module rodyn_inertia

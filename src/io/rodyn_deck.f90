@@ -47,6 +47,7 @@ module rodyn_deck
                               check_line_geometry, static_analysis_runs, check_supported, &
                               check_straight_start
    use rodyn_deck_body, only: read_body_card, read_body_hydrostatics_card, &
+                              read_body_added_mass_card, &
                               resolve_point_bodies, resolve_load_bodies, check_bodies
    use rodyn_deck_system, only: read_point_card, resolve_line_points, resolve_load_points, &
                                 check_point_ends, system_complete
@@ -126,7 +127,7 @@ contains
       allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
       allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
       allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)), &
-                pend%body_damp(size(model%bodies)))
+                pend%body_damp(size(model%bodies)), pend%body_added(size(model%bodies)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -221,6 +222,8 @@ contains
             call read_body_card(deck, ic, model, pend, err)
          case ('BODY HYDROSTATICS', 'BODY DAMPING')
             call read_body_hydrostatics_card(deck, ic, model, pend, err)
+         case ('BODY ADDED MASS')
+            call read_body_added_mass_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')

@@ -15,7 +15,8 @@ module rodyn_deck_body
                                  location
    implicit none
    private
-   public :: read_body_card, read_body_hydrostatics_card, resolve_point_bodies, &
+   public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
+   public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 
    !> a point farther from its body's reference point than this many radii of gyration
@@ -86,6 +87,7 @@ contains
       pend%body_card(pend%n_bodies) = ic
       pend%body_hydro(pend%n_bodies) = 0
       pend%body_damp(pend%n_bodies) = 0
+      pend%body_added(pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -165,6 +167,50 @@ contains
          end if
       end associate
    end subroutine read_body_hydrostatics_card
+
+   !> *BODY ADDED MASS, BODY=name: one data line A11, A22, A33 [kg] (translations of G),
+   !> A44, A55, A66 [kg m2] (rotations about G), body axes, each >= 0. After the *BODY
+   !> card; one per body.
+   subroutine read_body_added_mass_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(model_t), intent(inout) :: model   !< the body's added mass set
+      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
+      type(error_t), intent(inout) :: err     !< status
+      character(len=*), parameter :: what = 'A11, A22, A33, A44, A55, A66'
+      character(len=:), allocatable :: name
+      real(wp) :: a(6)
+      integer :: ib
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
+         if (has_error(err)) return
+         call card_get_name(card, 'BODY', name, err, required=.true.)
+         if (has_error(err)) return
+         do ib = 1, pend%n_bodies
+            if (model%bodies(ib)%name == name) exit
+         end do
+         if (ib > pend%n_bodies) then
+            call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
+                            ' card with NAME='//name//' comes first)', err)
+            return
+         end if
+         if (pend%body_added(ib) > 0) then
+            call card_error(card, "body '"//name//"' already has its *BODY ADDED MASS (at "// &
+                            location(deck, pend%body_added(ib))//')', err)
+            return
+         end if
+         call card_check_data(card, 1, 1, err, what)
+         if (has_error(err)) return
+         call card_data_reals(card, 1, 6, a, err, what)
+         if (has_error(err)) return
+         if (.not. all(a >= 0.0_wp)) then
+            call card_data_error(card, 1, 'an added mass or inertia is negative', err)
+            return
+         end if
+         model%bodies(ib)%added_mass = a
+         pend%body_added(ib) = ic
+      end associate
+   end subroutine read_body_added_mass_card
 
    !> The body of each BODY point: it exists; the point lies within reach of it
    !> (reach_radii radii of gyration); its global position at the start is R + offset.

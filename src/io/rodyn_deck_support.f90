@@ -60,6 +60,7 @@ module rodyn_deck_support
       integer, allocatable :: body_card(:)        !< per body: card index
       integer, allocatable :: body_hydro(:)       !< per body: its *BODY HYDROSTATICS card
       integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
+      integer, allocatable :: body_added(:)       !< per body: its *BODY ADDED MASS card
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far

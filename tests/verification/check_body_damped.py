@@ -12,7 +12,10 @@ Checks (dynamic_bodies_step.csv, dynamic_log.csv):
    total_J - hydro_work_J + damping_work_J = 0 at every step, to 1e-9 of k z0^2/2; and the
    damping's work at the end within 1e-3 of the energy the closed form has lost.
 
-Usage: check_body_damped.py RODYN DECK OUT_DIR. Exit 0 on success."""
+With NAME=VALUE arguments (the deck's parameters A11 ... A66: *BODY ADDED MASS), the
+same with the added mass: m is 1000 kg + A33 in the closed form.
+
+Usage: check_body_damped.py RODYN DECK OUT_DIR [NAME=VALUE ...]. Exit 0 on success."""
 import csv
 import math
 import os
@@ -26,15 +29,23 @@ M, K, C, Z0 = 1000.0, 1.0e5, 1000.0, 0.1
 
 def main():
     rodyn, deck, out = sys.argv[1:4]
-    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet"], capture_output=True, text=True)
+    sets = []
+    added = {}
+    for arg in sys.argv[4:]:
+        sets += ["--set", arg]
+        k, v = arg.split("=")
+        added[k] = float(v)
+    m = M + added.get("A33", 0.0)
+    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet", *sets], capture_output=True,
+                          text=True)
     if proc.returncode != 0:
         sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
     with open(os.path.join(out, "dynamic_bodies_step.csv")) as f:
         rows = list(csv.DictReader(f))
     t = np.array([float(r["time_s"]) for r in rows])
     z = np.array([float(r["z_m"]) for r in rows])
-    w = math.sqrt(K / M)
-    zeta = C / (2 * math.sqrt(K * M))
+    w = math.sqrt(K / m)
+    zeta = C / (2 * math.sqrt(K * m))
     wd = w * math.sqrt(1 - zeta**2)
     ref = Z0 * np.exp(-zeta * w * t) * (np.cos(wd * t) + zeta / math.sqrt(1 - zeta**2)
                                          * np.sin(wd * t))
@@ -46,7 +57,7 @@ def main():
            for r in log]
     e_bal = max(abs(b) for b in bal) / e0
     vz = np.gradient(ref, t)
-    lost = e0 - (0.5 * K * ref[-1]**2 + 0.5 * M * vz[-1]**2)
+    lost = e0 - (0.5 * K * ref[-1]**2 + 0.5 * m * vz[-1]**2)
     e_work = abs(float(log[-1]["damping_work_J"]) - lost) / e0
     print(f"heave within {err:.2e} z0 of the closed form over {len(t) - 1} steps; energy "
           f"balance within {e_bal:.2e} of k z0^2/2; damping work {float(log[-1]['damping_work_J']):.4f} J "
