@@ -54,8 +54,26 @@ equations; the differences of model (consistent against lumped line mass: the li
 3e-6; the start (MoorDyn's Init moves the pendulum's point to x = 9.938 m, which changes
 the finite-amplitude term th0^2/16 by 8e-6); the time integration (MoorDyn RK4 at cfl
 0.1 / its dtM 1 ms, rodyn EMC with dt = T/400 and 0.01 s: periods elongated by
-(w dt)^2/12 = 2e-5 and 1e-4) are each below 1e-4; 1e-3 is ten times the largest and still
-25 times tighter than MoorDyn's own peak-time tolerance.
+(w dt)^2/12 = 2e-5 and 8e-6) are each below 1e-4; 1e-3 is ten times the largest and still
+25 times tighter than MoorDyn's own peak-time tolerance. The mean roll of the pinned body
+within 1e-4 rad of MoorDyn's: the two means are taken over the test's own window, which
+ends at the 4th extremum of each side's samples (a step more or less moves the mean by
+up to the swing's 0.05 rad over 1300 samples, 4e-5 rad); 1e-4 is 10 times tighter than
+the test's own 0.001 rad against atan(-a/g).
+
+Measured (Release build, MoorDyn 2.7.2; bench/results/moordyn_cases.csv):
+  pendulum: period from the zero crossings, rodyn 20.16285 s, MoorDyn 20.16303 s
+    (9.0e-6 apart); MoorDyn's test formula 2 pi sqrt(l0/g) = 20.11407 s (both 2.43e-3
+    above it, within the test's 0.025 T); the compound pendulum (stretched line, line
+    inertia, amplitude) 20.16284 s for rodyn's start, 20.16302 s for MoorDyn's (within
+    9.3e-6 of each side); amplitude over the start x 0.99907 (rodyn) and 0.99810
+    (MoorDyn). MoorDyn's own checks on rodyn: length within 1.96e-3 l0, peaks within
+    0.0200 T of i T/2 (10 peaks), |x_peak| within 3.8e-3 x0; on MoorDyn: 1.00e-3, 0.0200 T,
+    9.975e-3 x0 (just inside its own 1 %: its Init moved the point to x = 9.938 m).
+  pinned body: mean roll over the test's window, rodyn -0.050890 rad (1323 steps),
+    MoorDyn -0.050852 rad (1324 steps), atan(-a/g) = -0.050942 rad (5.1e-5 and 9.0e-5
+    from it, the test's 0.001); period rodyn 6.60835 s, MoorDyn 6.60830 s, compound
+    pendulum 6.60830 s (7.8e-6 and 1.3e-7); swing amplitude 0.050942 rad on both.
 
 Not done (the other point/body cases of MoorDyn's tests/, and why):
   "Rotating body" (rotatingBody.txt): a point coupled to the caller dragged on arcs;
