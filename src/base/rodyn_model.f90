@@ -24,7 +24,7 @@ module rodyn_model
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
    public :: point_t, point_fixed, point_free, point_body, point_kind_names
-   public :: body_t, body_fixed, body_free, body_kind_names
+   public :: body_t, body_fixed, body_free, body_kind_names, failure_t
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
    real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
@@ -176,6 +176,15 @@ module rodyn_model
       real(wp) :: added_mass(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
    end type body_t
+
+   !> A line end that fails (*FAILURE): released from its support, point or body at a
+   !> time or when its force first reaches a break load, whichever comes first.
+   type :: failure_t
+      integer :: line = 0               !< index into model%lines
+      integer :: end = 1                !< 1: end A, 2: end B
+      real(wp) :: time = -1.0_wp        !< release time [s] (< 0: none)
+      real(wp) :: break_load = -1.0_wp  !< force that releases it [N] (<= 0: none)
+   end type failure_t
 
    !> A point attachment on a line (*ATTACHMENT): a clump weight or a buoy at an
    !> unstretched arc length S from end A, applied at the node nearest to S (the mesh
@@ -438,6 +447,7 @@ module rodyn_model
       type(attachment_t), allocatable :: attachments(:)
       type(point_t), allocatable :: points(:)        !< *POINT, in deck order
       type(body_t), allocatable :: bodies(:)         !< *BODY, in deck order
+      type(failure_t), allocatable :: failures(:)    !< *FAILURE, in deck order
       type(water_t) :: water
       type(seabed_t) :: seabed
       type(waves_t) :: waves

@@ -51,6 +51,8 @@ module rodyn_dynamics
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
    use rodyn_junctions, only: junctions_condense, junctions_place
+   use rodyn_system_dynamics, only: point_velocities, added_mass_force, failures_t, &
+                                    failures_build, failures_step
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
@@ -68,6 +70,7 @@ module rodyn_dynamics
    !> The step problem and its workspace (allocated once in dynamics_setup).
    type, extends(rod_problem_t) :: dynamic_problem_t
       type(model_t), pointer :: model => null()
+      type(failures_t) :: fl                   !< line ends that fail (*FAILURE)
       type(state_t), pointer :: s1 => null()   !< state at t_n+1 (the iterate)
       type(state_t) :: s0                      !< state at t_n
       type(loads_t) :: loads
@@ -144,6 +147,7 @@ contains
       integer :: nn, i
       call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
+      call failures_build(model, mesh, prob%fl)
       call anderson_init(prob%aa, prob%sup%n_dof, anderson_depth)
       ! the step tangent is factorised without pivoting (rodyn_banded's header: cheaper,
       ! and stable for the mass-dominated step tangent)
@@ -255,40 +259,6 @@ contains
       call point_velocities(mesh, state)
    end subroutine apply_initial_velocities
 
-   !> Each FREE point's velocity the mean of its ends', and the ends' the point's; the
-   !> ends on a body move with it, v_e = v_b + omega x a (a body starts at rest).
-   pure subroutine point_velocities(mesh, state)
-      type(mesh_t), intent(in) :: mesh       !< mesh with its point and body nodes
-      type(state_t), intent(inout) :: state  !< velocities
-      integer :: q, l, k, n, ne, m
-      real(wp) :: v(3), om(3), a(3)
-      do q = 1, size(mesh%point_node)
-         if (mesh%point_node(q) == 0) cycle
-         v = 0.0_wp
-         ne = 0
-         do l = 1, mesh%n_lines
-            do k = 1, 2
-               if (mesh%end_point_node(k, l) /= mesh%point_node(q)) cycle
-               n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-               v = v + state%v(:, n)
-               ne = ne + 1
-            end do
-         end do
-         state%v(:, mesh%point_node(q)) = v/real(max(ne, 1), wp)
-      end do
-      do l = 1, mesh%n_lines
-         do k = 1, 2
-            m = mesh%end_point_node(k, l)
-            if (m == 0) cycle
-            n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
-            om = 0.5_wp*(cross(state%d(:, 1, m), state%dd(:, 1, m)) + &
-                         cross(state%d(:, 2, m), state%dd(:, 2, m)) + &
-                         cross(state%d(:, 3, m), state%dd(:, 3, m)))
-            a = matmul(state%d(:, :, m), mesh%end_offset(:, k, l))
-            state%v(:, n) = state%v(:, m) + cross(om, a)
-         end do
-      end do
-   end subroutine point_velocities
 
    !> Start a step from t0 to t0 + dt: remember the state at t_n, set the loads at the
    !> midpoint and the prescribed positions at t_n+1, and predict the iterate by the state
@@ -305,6 +275,12 @@ contains
       real(wp), intent(in) :: dt                     !< step [s]
       real(wp) :: tm, w0, scale0
       integer :: node, i, k
+      logical :: released
+      ! a line end whose failure is due is released (rodyn_system_dynamics)
+      if (prob%fl%n > 0) then
+         call failures_step(prob%fl, prob%sup, prob%jn, prob%r, t0, released)
+         if (released) prob%factors_ok = .false.
+      end if
       prob%t0 = t0
       prob%dt = dt
       prob%base_set = .false.
@@ -362,13 +338,10 @@ contains
             prob%dx(:, node) = 0.0_wp
          end if
       end do
-      ! a line end on a FREE point moves with it (theory.md (131)): the point's predictor
-      do i = 1, prob%mesh%n_lines
-         do k = 1, 2
-            node = prob%mesh%end_point_node(k, i)
-            if (node > 0) prob%dx(:, mesh_node(prob%mesh, i, merge(end_a, end_b, k == 1))) &
-               = prob%dx(:, node)
-         end do
+      ! a line end on a FREE point or body moves with it (theory.md (131)): its predictor
+      do k = 1, prob%jn%ns
+         if (.not. prob%jn%s_on(k)) cycle
+         prob%dx(:, prob%jn%s_node(k)) = prob%dx(:, prob%jn%m_node(prob%jn%s_m(k)))
       end do
       prob%s1%x = prob%s0%x + prob%dx
       prob%s1%d = prob%s0%d
@@ -738,28 +711,6 @@ contains
       end do
    end subroutine node_inertia
 
-   !> A body's added mass in its axes (docs/theory.md eq. (142)): the force
-   !> D A D^T (c2 dx - g0) on its node, D its directors at the force point, and its
-   !> derivative c2 D A D^T (the turn of D left out).
-   pure subroutine added_mass_force(ma, d, c2, dx, rest0, f, kb, want_k)
-      real(wp), intent(in) :: ma(3)        !< A11, A22, A33 [kg]
-      real(wp), intent(in) :: d(3, 3)      !< directors at the force point
-      real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
-      real(wp), intent(in) :: dx(3)        !< position increment [m]
-      real(wp), intent(in) :: rest0(3)     !< the step's constant part (inertia_rest)
-      real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
-      real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
-      logical, intent(in) :: want_k        !< form kb
-      real(wp) :: ma_g(3, 3)
-      integer :: j
-      do j = 1, 3
-         ma_g(:, j) = matmul(d, ma*d(j, :))
-      end do
-      f(1:3) = f(1:3) + matmul(ma_g, c2*dx - rest0)
-      if (.not. want_k) return
-      kb = 0.0_wp
-      kb(1:3, 1:3) = c2*ma_g
-   end subroutine added_mass_force
 
    !> The velocity and acceleration of the trapezoidal rule over n values, v = dx/dt and
    !> a = 2 dx/dt^2 - 2 v0/dt (explicit shapes, as rodyn_state's copy_values: the loops

@@ -49,7 +49,8 @@ module rodyn_deck
    use rodyn_deck_body, only: read_body_card, read_body_hydrostatics_card, &
                               read_body_added_mass_card, &
                               resolve_point_bodies, resolve_load_bodies, check_bodies
-   use rodyn_deck_system, only: read_point_card, resolve_line_points, resolve_load_points, &
+   use rodyn_deck_system, only: read_failure_card, check_failures, &
+                                read_point_card, resolve_line_points, resolve_load_points, &
                                 check_point_ends, system_complete
    implicit none
    private
@@ -107,6 +108,8 @@ contains
       allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
       allocate (model%points(keyword_count(deck, 'POINT')))
       allocate (model%bodies(keyword_count(deck, 'BODY')))
+      allocate (model%failures(keyword_count(deck, 'FAILURE')))
+      allocate (pend%failure_line(size(model%failures)))
       allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
       allocate (pend%section_card(size(model%sections)))
       allocate (pend%line_section(size(model%lines)))
@@ -168,6 +171,7 @@ contains
       model%attachments = model%attachments(1:pend%n_attachments)
       model%points = model%points(1:pend%n_points)
       model%bodies = model%bodies(1:pend%n_bodies)
+      model%failures = model%failures(1:pend%n_failures)
    end subroutine trim_model
 
    !> Hand card `ic` to the reader of its keyword.
@@ -224,6 +228,8 @@ contains
             call read_body_hydrostatics_card(deck, ic, model, pend, err)
          case ('BODY ADDED MASS')
             call read_body_added_mass_card(deck, ic, model, pend, err)
+         case ('FAILURE')
+            call read_failure_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
@@ -677,6 +683,8 @@ contains
       call system_complete(deck, pend, model, err)
       if (has_error(err)) return
       call check_bodies(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_failures(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)

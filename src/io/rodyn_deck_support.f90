@@ -61,6 +61,7 @@ module rodyn_deck_support
       integer, allocatable :: body_hydro(:)       !< per body: its *BODY HYDROSTATICS card
       integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
       integer, allocatable :: body_added(:)       !< per body: its *BODY ADDED MASS card
+      type(ref_t), allocatable :: failure_line(:) !< per *FAILURE: its LINE=
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far
@@ -75,6 +76,7 @@ module rodyn_deck_support
       integer :: n_attachments = 0  !< attachments read so far
       integer :: n_points = 0       !< points read so far
       integer :: n_bodies = 0       !< bodies read so far
+      integer :: n_failures = 0     !< failures read so far
       integer :: heading = 0   !< card of the first *HEADING (0: none yet)
       integer :: gravity = 0   !< card of the first *GRAVITY
       integer :: static = 0    !< card of the first *STATIC

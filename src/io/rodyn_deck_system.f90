@@ -8,18 +8,19 @@
 module rodyn_deck_system
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, point_fixed, &
+   use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, failure_t, point_fixed, &
                           point_free, point_body, point_kind_names, bc_pinned, bc_free, &
                           end_a, end_b, body_fixed
    use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
                                card_error, card_get_name, card_get_choice, card_check_data, &
-                               card_data_reals, real_str, int_str, param_len
+                               card_data_reals, card_get_real, real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
+                                 get_bounded, &
                                  location, node_count, node_number
    implicit none
    private
    public :: read_point_card, resolve_line_points, resolve_load_points, check_point_ends
-   public :: system_complete, point_held, point_junction
+   public :: system_complete, point_held, point_junction, read_failure_card, check_failures
 
 contains
 
@@ -259,4 +260,99 @@ contains
          end associate
       end do
    end subroutine system_complete
+
+   !> *FAILURE, LINE=name, END=A|B [, TIME=t] [, BREAK LOAD=T]: that end is released at
+   !> time t or when its force first reaches T, whichever comes first (one of them given).
+   subroutine read_failure_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(model_t), intent(inout) :: model   !< one failure appended
+      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
+      type(error_t), intent(inout) :: err     !< status
+      type(failure_t) :: f
+      character(len=:), allocatable :: line
+      associate (card => deck%cards(ic))
+         call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
+                                'BREAK LOAD'], err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         call card_get_name(card, 'LINE', line, err, required=.true.)
+         if (has_error(err)) return
+         if (card_find_param(card, 'END') == 0) then
+            call card_error(card, 'missing parameter END (A or B)', err)
+            return
+         end if
+         call card_get_choice(card, 'END', [character(len=1) :: 'A', 'B'], f%end, err)
+         if (has_error(err)) return
+         if (card_find_param(card, 'TIME') == 0 .and. card_find_param(card, 'BREAK LOAD') == 0) then
+            call card_error(card, 'give TIME= or BREAK LOAD= (or both): when the end is'// &
+                            ' released', err)
+            return
+         end if
+         call get_bounded(card, 'TIME', f%time, .false., err)
+         call get_bounded(card, 'BREAK LOAD', f%break_load, .true., err)
+         if (has_error(err)) return
+      end associate
+      pend%n_failures = pend%n_failures + 1
+      model%failures(pend%n_failures) = f
+      pend%failure_line(pend%n_failures) = ref_t(line, ic)
+   end subroutine read_failure_card
+
+   !> Each *FAILURE: its line exists, the end is held or on a point (else nothing holds
+   !> it to release), one per end, the deck has *DYNAMIC, and no CHECKPOINT (a checkpoint
+   !> does not hold which ends were released).
+   subroutine check_failures(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< LINE= of each failure
+      type(model_t), intent(inout) :: model   !< failures get their line
+      type(error_t), intent(inout) :: err     !< status
+      integer :: k, j, il, ib, nn
+      logical :: held
+      do k = 1, size(model%failures)
+         associate (card => deck%cards(pend%failure_line(k)%card), f => model%failures(k))
+            do il = 1, size(model%lines)
+               if (model%lines(il)%name == pend%failure_line(k)%name) exit
+            end do
+            if (il > size(model%lines)) then
+               call param_fail(card, 'LINE', "LINE '"//pend%failure_line(k)%name// &
+                               "' is not defined (no *LINE with NAME="// &
+                               pend%failure_line(k)%name//' in the deck)', err)
+               return
+            end if
+            f%line = il
+            held = merge(model%lines(il)%point_a, model%lines(il)%point_b, f%end == 1) > 0
+            nn = node_count(model%lines(il))
+            do ib = 1, size(model%constraints)
+               if (model%constraints(ib)%line /= il .or. &
+                   model%constraints(ib)%kind == bc_free) cycle
+               if (node_number(model%constraints(ib)%node, nn) == merge(1, nn, f%end == 1)) &
+                  held = .true.
+            end do
+            if (.not. held) then
+               call param_fail(card, 'END', 'end '//merge('A', 'B', f%end == 1)// &
+                               ' of line '//trim(model%lines(il)%name)//' is free: there is'// &
+                               ' nothing to release it from', err)
+               return
+            end if
+            do j = 1, k - 1
+               if (model%failures(j)%line /= il .or. model%failures(j)%end /= f%end) cycle
+               call card_error(card, 'end '//merge('A', 'B', f%end == 1)//' of line '// &
+                               trim(model%lines(il)%name)//' already has a *FAILURE (at '// &
+                               location(deck, pend%failure_line(j)%card)//')', err)
+               return
+            end do
+            if (.not. model%dynamic%requested) then
+               call card_error(card, 'a failure happens in a dynamic analysis: the deck'// &
+                               ' has no *DYNAMIC', err)
+               return
+            end if
+            if (model%dynamic%checkpoint > 0.0_wp) then
+               call card_error(card, 'not with *DYNAMIC CHECKPOINT: a checkpoint does not'// &
+                               ' hold which ends were released', err)
+               return
+            end if
+         end associate
+      end do
+   end subroutine check_failures
 end module rodyn_deck_system

@@ -24,7 +24,7 @@ module rodyn_assembly
    use rodyn_shape, only: max_nen
    implicit none
    private
-   public :: supports_t, loads_t, supports_build, loads_build
+   public :: supports_t, loads_t, supports_build, loads_build, supports_held_lists
    public :: assemble_static, assemble_dynamic, assemble_dynamic_cables, apply_supports
    public :: external_force
    public :: add_node_block, assemble_water, dof_map, dof_reach, roll_gauges, &
@@ -107,14 +107,22 @@ contains
             sup%x_target(:, node) = ends
          end do
       end do
-      ! the held unknowns of the linear system, listed (apply_supports)
+      call supports_held_lists(sup)
+   end subroutine supports_build
+
+   !> The held unknowns of the linear system, listed from sup%held (apply_supports); again
+   !> when an end is released (a line failure, rodyn_system_dynamics).
+   subroutine supports_held_lists(sup)
+      type(supports_t), intent(inout) :: sup !< supports: held_* set
+      integer :: node, k, i
+      if (allocated(sup%held_dof)) deallocate (sup%held_dof, sup%held_node, sup%held_j)
       sup%n_held = 0
-      do node = 1, nn
+      do node = 1, size(sup%ndof)
          sup%n_held = sup%n_held + count(sup%held(1:sup%ndof(node), node))
       end do
       allocate (sup%held_dof(sup%n_held), sup%held_node(sup%n_held), sup%held_j(sup%n_held))
       i = 0
-      do node = 1, nn
+      do node = 1, size(sup%ndof)
          do k = 1, sup%ndof(node)
             if (.not. sup%held(k, node)) cycle
             i = i + 1
@@ -123,7 +131,7 @@ contains
             sup%held_j(i) = k
          end do
       end do
-   end subroutine supports_build
+   end subroutine supports_held_lists
 
    !> The *BOUNDARY cards' constraints into sup (supports_build).
    subroutine constraints_apply(model, mesh, sup)

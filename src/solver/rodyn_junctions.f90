@@ -35,7 +35,7 @@ module rodyn_junctions
    implicit none
    private
    public :: junctions_t, junctions_build, junctions_condense, junctions_factor, &
-             junctions_solve, junctions_stiffness, junctions_place
+             junctions_solve, junctions_stiffness, junctions_place, junctions_release
 
    !> The junction unknowns, the ends on them and the arrowhead matrix.
    type :: junctions_t
@@ -55,6 +55,7 @@ module rodyn_junctions
       integer, allocatable :: s_line(:)      !< (ns) its line (the arrowhead block)
       integer, allocatable :: s_col(:)       !< (ns) its master's first column - 1 in E_line
       real(wp), allocatable :: s_r(:, :)     !< (3, ns) its offset, body axes from G [m]
+      logical, allocatable :: s_on(:)        !< (ns) still on its master (not released)
       real(wp), allocatable :: tk(:, :, :)   !< (3, 6, ns) T of the kinematics (scratch)
       real(wp), allocatable :: tf(:, :, :)   !< (3, 6, ns) T at the force point (scratch)
       type(arrowhead_t) :: ah                !< E, F, C and the factors
@@ -92,7 +93,8 @@ contains
       end do
       jn%ns = count(mesh%end_point_node > 0)
       allocate (jn%s_node(jn%ns), jn%s_m(jn%ns), jn%s_line(jn%ns), jn%s_col(jn%ns), &
-                jn%s_r(3, jn%ns), jn%tk(3, 6, jn%ns), jn%tf(3, 6, jn%ns))
+                jn%s_r(3, jn%ns), jn%tk(3, 6, jn%ns), jn%tf(3, 6, jn%ns), jn%s_on(jn%ns))
+      jn%s_on = .true.
       if (jn%nj == 0) return
       call arrowhead_init(jn%ah, mesh%n_lines, jn%nj)
       k = 0
@@ -167,10 +169,11 @@ contains
          call arrowhead_zero(jn%ah)
          call master_blocks(jn, bm, hold)
          do s = 1, jn%ns
-            call end_couplings(jn, sup, bm, s)
+            if (jn%s_on(s)) call end_couplings(jn, sup, bm, s)
          end do
       end if
       do s = 1, jn%ns
+         if (.not. jn%s_on(s)) cycle
          k = sup%first(jn%s_node(s)) - 1
          j0 = jn%m_j0(jn%s_m(s))
          nm = jn%m_n(jn%s_m(s))
@@ -295,7 +298,7 @@ contains
       integer, intent(out) :: t           !< the end, or 0
       integer, intent(out) :: c           !< its translation 1..3
       do t = max(1, s - 1), min(jn%ns, s + 1)     ! a line's two ends are neighbours
-         if (jn%s_line(t) /= jn%s_line(s)) cycle
+         if (jn%s_line(t) /= jn%s_line(s) .or. .not. jn%s_on(t)) cycle
          c = row - sup%first(jn%s_node(t)) + 1
          if (c >= 1 .and. c <= 3) return
       end do
@@ -334,6 +337,7 @@ contains
       if (has_error(err)) return
       du(jn%jdof) = jn%y
       do s = 1, jn%ns
+         if (.not. jn%s_on(s)) cycle
          k = sup%first(jn%s_node(s)) - 1
          j0 = jn%m_j0(jn%s_m(s))
          nm = jn%m_n(jn%s_m(s))
@@ -351,6 +355,7 @@ contains
       real(wp), intent(in) :: d(:, :, :)    !< (3, 3, nn) directors
       integer :: s, n
       do s = 1, jn%ns
+         if (.not. jn%s_on(s)) cycle
          n = jn%m_node(jn%s_m(s))
          x(:, jn%s_node(s)) = x(:, n) + d(:, 1, n)*jn%s_r(1, s) + d(:, 2, n)*jn%s_r(2, s) &
                               + d(:, 3, n)*jn%s_r(3, s)
@@ -393,4 +398,19 @@ contains
          end associate
       end do
    end subroutine junctions_stiffness
+
+   !> Release the line end at node `node` from its master (a line failure): it is no
+   !> longer eliminated; released is false when no end on a master is at that node.
+   subroutine junctions_release(jn, node, released)
+      type(junctions_t), intent(inout) :: jn !< junctions
+      integer, intent(in) :: node            !< the end's node
+      logical, intent(out) :: released       !< an end was released
+      integer :: s
+      released = .false.
+      do s = 1, jn%ns
+         if (jn%s_node(s) /= node .or. .not. jn%s_on(s)) cycle
+         jn%s_on(s) = .false.
+         released = .true.
+      end do
+   end subroutine junctions_release
 end module rodyn_junctions

@@ -1,0 +1,140 @@
+!> What the dynamics of a mooring system adds to a line's (docs/systems.md): the velocities
+!> of FREE points and of the ends on points and bodies at the start, a body's added mass
+!> in its axes (docs/theory.md eq. (142)), and line failure: a line end released from its
+!> support, point or body at a given time or when its force first reaches a break load
+!> (*FAILURE; eq. (143)), after which the run goes on with the system that remains.
+module rodyn_system_dynamics
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: model_t, end_a, end_b
+   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_state, only: state_t
+   use rodyn_rotation, only: cross
+   use rodyn_assembly, only: supports_t, supports_held_lists
+   use rodyn_junctions, only: junctions_t, junctions_release
+   implicit none
+   private
+   public :: point_velocities, added_mass_force, failures_t, failures_build, failures_step
+
+   !> The line ends that fail (*FAILURE) and whether they have.
+   type :: failures_t
+      integer :: n = 0                         !< ends that may fail
+      integer, allocatable :: node(:)          !< (n) the end's node
+      real(wp), allocatable :: time(:)         !< (n) release time [s] (< 0: none)
+      real(wp), allocatable :: break_load(:)   !< (n) force that releases it [N] (<= 0: none)
+      logical, allocatable :: failed(:)        !< (n) released
+      real(wp), allocatable :: t_failed(:)     !< (n) time of the release [s]
+   end type failures_t
+
+contains
+
+   !> The ends of the model's *FAILURE cards.
+   subroutine failures_build(model, mesh, fl)
+      type(model_t), intent(in) :: model    !< model
+      type(mesh_t), intent(in) :: mesh      !< mesh
+      type(failures_t), intent(out) :: fl   !< failures
+      integer :: i
+      fl%n = 0
+      if (allocated(model%failures)) fl%n = size(model%failures)
+      allocate (fl%node(fl%n), fl%time(fl%n), fl%break_load(fl%n), fl%failed(fl%n), &
+                fl%t_failed(fl%n))
+      do i = 1, fl%n
+         associate (f => model%failures(i))
+            fl%node(i) = mesh_node(mesh, f%line, merge(end_a, end_b, f%end == 1))
+            fl%time(i) = f%time
+            fl%break_load(i) = f%break_load
+         end associate
+      end do
+      fl%failed = .false.
+      fl%t_failed = -1.0_wp
+   end subroutine failures_build
+
+   !> Before the step from t0: release each end whose time has come (t0 >= its time) or
+   !> whose force in the last converged state r reached its break load (eq. (143)): an end
+   !> on a point or body leaves it (junctions_release), a held end is held no more. The
+   !> tangent then has to be formed again (factors_ok cleared by the caller when any).
+   subroutine failures_step(fl, sup, jn, r, t0, any_released)
+      type(failures_t), intent(inout) :: fl   !< failures
+      type(supports_t), intent(inout) :: sup  !< supports: a released end's held cleared
+      type(junctions_t), intent(inout) :: jn  !< junctions: a released end off its master
+      real(wp), intent(in) :: r(:, :)         !< (6, nn) forces of the last converged state
+      real(wp), intent(in) :: t0              !< time at the start of the step [s]
+      logical, intent(out) :: any_released    !< an end was released
+      integer :: i, n
+      logical :: due, on_master
+      any_released = .false.
+      do i = 1, fl%n
+         if (fl%failed(i)) cycle
+         n = fl%node(i)
+         due = fl%time(i) >= 0.0_wp .and. t0 >= fl%time(i)*(1.0_wp - 1.0e-12_wp)
+         if (fl%break_load(i) > 0.0_wp) due = due .or. norm2(r(1:3, n)) >= fl%break_load(i)
+         if (.not. due) cycle
+         call junctions_release(jn, n, on_master)
+         if (.not. on_master) then
+            sup%held(1:3, n) = .false.
+            sup%moved(n) = .false.
+            call supports_held_lists(sup)
+         end if
+         fl%failed(i) = .true.
+         fl%t_failed(i) = t0
+         any_released = .true.
+      end do
+   end subroutine failures_step
+
+   !> Each FREE point's velocity the mean of its ends', and the ends' the point's; the
+   !> ends on a body move with it, v_e = v_b + omega x a (a body starts at rest).
+   pure subroutine point_velocities(mesh, state)
+      type(mesh_t), intent(in) :: mesh       !< mesh with its point and body nodes
+      type(state_t), intent(inout) :: state  !< velocities
+      integer :: q, l, k, n, ne, m
+      real(wp) :: v(3), om(3), a(3)
+      do q = 1, size(mesh%point_node)
+         if (mesh%point_node(q) == 0) cycle
+         v = 0.0_wp
+         ne = 0
+         do l = 1, mesh%n_lines
+            do k = 1, 2
+               if (mesh%end_point_node(k, l) /= mesh%point_node(q)) cycle
+               n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+               v = v + state%v(:, n)
+               ne = ne + 1
+            end do
+         end do
+         state%v(:, mesh%point_node(q)) = v/real(max(ne, 1), wp)
+      end do
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            m = mesh%end_point_node(k, l)
+            if (m == 0) cycle
+            n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            om = 0.5_wp*(cross(state%d(:, 1, m), state%dd(:, 1, m)) + &
+                         cross(state%d(:, 2, m), state%dd(:, 2, m)) + &
+                         cross(state%d(:, 3, m), state%dd(:, 3, m)))
+            a = matmul(state%d(:, :, m), mesh%end_offset(:, k, l))
+            state%v(:, n) = state%v(:, m) + cross(om, a)
+         end do
+      end do
+   end subroutine point_velocities
+
+   !> A body's added mass in its axes (docs/theory.md eq. (142)): the force
+   !> D A D^T (c2 dx - g0) on its node, D its directors at the force point, and its
+   !> derivative c2 D A D^T (the turn of D left out).
+   pure subroutine added_mass_force(ma, d, c2, dx, rest0, f, kb, want_k)
+      real(wp), intent(in) :: ma(3)        !< A11, A22, A33 [kg]
+      real(wp), intent(in) :: d(3, 3)      !< directors at the force point
+      real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
+      real(wp), intent(in) :: dx(3)        !< position increment [m]
+      real(wp), intent(in) :: rest0(3)     !< the step's constant part (inertia_rest)
+      real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
+      real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
+      logical, intent(in) :: want_k        !< form kb
+      real(wp) :: ma_g(3, 3)
+      integer :: j
+      do j = 1, 3
+         ma_g(:, j) = matmul(d, ma*d(j, :))
+      end do
+      f(1:3) = f(1:3) + matmul(ma_g, c2*dx - rest0)
+      if (.not. want_k) return
+      kb = 0.0_wp
+      kb(1:3, 1:3) = c2*ma_g
+   end subroutine added_mass_force
+end module rodyn_system_dynamics
