@@ -52,6 +52,12 @@ module rodyn_results
       real(wp), allocatable :: body_rot(:, :)    !< (3, nb) rotation vector from the start [rad]
       real(wp), allocatable :: body_force(:, :)  !< (6, nb) force and moment about R of its
                                                  !< lines [N, N m]
+      !> (6, nb) each FREE body's natural periods as a rigid body on its moorings (its
+      !> stiffness of everything at R, the lines quasi-static; its mass, inertia and added
+      !> mass), ascending [s]; 0 where the stiffness is not positive (no oscillation)
+      real(wp), allocatable :: body_periods(:, :)
+      real(wp), allocatable :: body_modes(:, :, :) !< (6, 6, nb) the modes (columns), largest
+                                                   !< entry 1 (x, y, z [m], rx, ry, rz [rad])
    end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and

@@ -7,7 +7,7 @@
 module rodyn_output_points
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, point_kind_names, body_kind_names, name_len
+   use rodyn_model, only: model_t, point_kind_names, body_kind_names, name_len, body_free
    use rodyn_results, only: line_result_t, system_result_t
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
                             remove_file
@@ -17,11 +17,12 @@ module rodyn_output_points
    implicit none
    private
    public :: write_points_csv, points_csv, write_stiffness_csv, stiffness_csv
-   public :: write_bodies_csv, bodies_csv
+   public :: write_bodies_csv, bodies_csv, write_body_modes_csv, body_modes_csv
 
    character(len=*), parameter :: points_csv = 'static_points.csv'
    character(len=*), parameter :: stiffness_csv = 'static_stiffness.csv'
    character(len=*), parameter :: bodies_csv = 'static_bodies.csv'
+   character(len=*), parameter :: body_modes_csv = 'static_body_modes.csv'
 
 contains
 
@@ -171,4 +172,38 @@ contains
       end do
       call outfile_commit(f, err)
    end subroutine write_bodies_csv
+
+   !> Write static_body_modes.csv into folder `dir`: each FREE body's six natural periods
+   !> as a rigid body on its moorings and their modes (a deck without them: remove one
+   !> an earlier run left there).
+   subroutine write_body_modes_csv(dir, model, sys, err)
+      character(len=*), intent(in) :: dir                 !< output folder (exists)
+      type(model_t), intent(in) :: model                  !< model with its bodies
+      type(system_result_t), intent(in), optional :: sys  !< the periods
+      type(error_t), intent(inout) :: err                 !< status
+      type(out_file_t) :: f
+      integer :: b, i, k, n
+      character(len=:), allocatable :: row
+      if (has_error(err)) return
+      call remove_file(path_join(dir, body_modes_csv))
+      if (.not. present(sys)) return
+      if (.not. allocated(sys%body_periods)) return
+      n = count(model%bodies%kind == body_free)
+      if (n == 0) return
+      call outfile_create(f, dir, body_modes_csv, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(body_modes_csv))
+      do b = 1, size(sys%body_periods, 2)
+         if (model%bodies(b)%kind /= body_free) cycle
+         do i = 1, 6
+            row = trim(model%bodies(b)%name)//','//int_text(i)//','// &
+                  real_text(sys%body_periods(i, b))
+            do k = 1, 6
+               row = row//','//real_text(sys%body_modes(k, i, b))
+            end do
+            call outfile_put(f, row)
+         end do
+      end do
+      call outfile_commit(f, err)
+   end subroutine write_body_modes_csv
 end module rodyn_output_points

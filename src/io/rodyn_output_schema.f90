@@ -83,6 +83,15 @@ module rodyn_output_schema
       'static_bodies.csv | Mx_Nm | N m | x moment of the lines about R', &
       'static_bodies.csv | My_Nm | N m | y moment of the lines about R', &
       'static_bodies.csv | Mz_Nm | N m | z moment of the lines about R', &
+      'static_body_modes.csv | body | - | body name (*BODY, FREE)', &
+      'static_body_modes.csv | mode | - | mode number, by period (longest first)', &
+      'static_body_modes.csv | period_s | s | natural period (0: no restoring)', &
+      'static_body_modes.csv | x | - | mode shape: x of R (largest entry 1)', &
+      'static_body_modes.csv | y | - | mode shape: y of R', &
+      'static_body_modes.csv | z | - | mode shape: z of R', &
+      'static_body_modes.csv | rx | - | mode shape: rotation about x [rad per unit]', &
+      'static_body_modes.csv | ry | - | mode shape: rotation about y', &
+      'static_body_modes.csv | rz | - | mode shape: rotation about z', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
       'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &

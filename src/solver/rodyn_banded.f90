@@ -45,7 +45,7 @@ module rodyn_banded
    public :: banded_factor, banded_solve, banded_solve_range, banded_matvec
    public :: banded_keep_column
    public :: banded_kept_axpy, banded_free, banded_set_pivoting, banded_set_reach
-   public :: dense_factor, dense_solve
+   public :: dense_factor, dense_solve, dense_sym_eigen
 
    !> banded_solve_range(bm, b, lo, hi, err): solve A x = b for the rows lo..hi of a
    !> diagonal block alone (solve_range), b(:) one right-hand side or b(:, :) several.
@@ -76,6 +76,14 @@ module rodyn_banded
    end type banded_t
 
    interface
+      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
+         import :: wp
+         integer, intent(in) :: itype, n, lda, ldb, lwork
+         character(len=1), intent(in) :: jobz, uplo
+         real(wp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(wp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsygv
       subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
          import :: wp
          integer, intent(in) :: m, n, kl, ku, ldab
@@ -610,4 +618,26 @@ contains
       call dgetrs('N', size(a, 1), size(b, 2), a, size(a, 1), ipiv, b, size(b, 1), info)
       if (info /= 0) call set_error(err, stat_numerical, 'dense_solve: dgetrs failed')
    end subroutine dense_solve
+
+   !> The generalized symmetric eigenproblem K v = lambda M v (dsygv; M positive
+   !> definite): eigenvalues ascending in lambda, M-normalised eigenvectors in the
+   !> columns of k. A failure (M not positive definite) is a numerical error.
+   subroutine dense_sym_eigen(k, m, lambda, err)
+      real(wp), intent(inout) :: k(:, :)      !< (n, n) K (upper triangle), then the vectors
+      real(wp), intent(inout) :: m(:, :)      !< (n, n) M (upper triangle), then overwritten
+      real(wp), intent(out) :: lambda(:)      !< (n) eigenvalues
+      type(error_t), intent(inout) :: err     !< status
+      real(wp), allocatable :: work(:)
+      integer :: n, info
+      character(len=80) :: msg
+      n = size(k, 1)
+      if (n == 0) return
+      allocate (work(max(1, 8*n)))
+      call dsygv(1, 'V', 'U', n, k, n, m, n, lambda, work, size(work), info)
+      if (info /= 0) then
+         write (msg, '(a,i0)') 'dense_sym_eigen: dsygv info = ', info
+         call set_error(err, stat_numerical, trim(msg)//' (the mass matrix is not '// &
+                        'positive definite, or the eigenproblem did not converge)')
+      end if
+   end subroutine dense_sym_eigen
 end module rodyn_banded

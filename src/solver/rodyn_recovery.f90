@@ -5,7 +5,7 @@
 module rodyn_recovery
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, end_a, end_b
+   use rodyn_model, only: model_t, end_a, end_b, body_free
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_statics, only: static_problem_t
    use rodyn_state, only: state_t, state_gather
@@ -15,6 +15,7 @@ module rodyn_recovery
    use rodyn_results, only: line_result_t, system_result_t
    use rodyn_junctions, only: junctions_stiffness
    use rodyn_rotation, only: cross, skew, rotation_log
+   use rodyn_banded, only: dense_sym_eigen, dense_factor, dense_solve
    use rodyn_water, only: water_loads_t
    use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
    use rodyn_waves, only: wave_kinematics
@@ -72,7 +73,91 @@ contains
          return
       end if
       call stiffness_at_r(prob, sys)
+      call body_periods(model, prob, sys, err)
    end subroutine recover_system
+
+   !> Each FREE body's natural periods and modes as a rigid body on its moorings (docs/
+   !> theory.md eq. (144)): K_b the stiffness of everything at R condensed onto the body
+   !> (every other FREE point and body relaxed), made symmetric; M_R = T^T diag(m I + D
+   !> A_t D^T, D (J + A_r) D^T) T the mass about R (T = [I, -skew(g); 0, I], g = G - R);
+   !> K_b v = omega^2 M_R v (dense_sym_eigen).
+   subroutine body_periods(model, prob, sys, err)
+      type(model_t), intent(in) :: model                 !< model
+      type(static_problem_t), intent(in) :: prob         !< problem (state, junctions)
+      type(system_result_t), intent(inout) :: sys        !< periods and modes set
+      type(error_t), intent(inout) :: err                !< status
+      real(wp) :: kb(6, 6), mr(6, 6), mg(6, 6), t(6, 6), lam(6), g(3), d(3, 3)
+      integer :: m, b, j0, i, nb
+      nb = size(prob%mesh%body_node)
+      allocate (sys%body_periods(6, nb), sys%body_modes(6, 6, nb))
+      sys%body_periods = 0.0_wp
+      sys%body_modes = 0.0_wp
+      do m = 1, prob%jn%nm
+         if (sys%kind(m) /= 2) cycle
+         b = sys%index(m)
+         if (model%bodies(b)%kind /= body_free) cycle
+         j0 = prob%jn%m_j0(m)
+         call condensed_block(sys%stiffness, j0, kb, err)
+         if (has_error(err)) return
+         kb = 0.5_wp*(kb + transpose(kb))
+         d = prob%state%d(:, :, prob%mesh%body_node(b))
+         g = prob%state%x(:, prob%mesh%body_node(b)) - sys%body_x(:, b)
+         mg = 0.0_wp
+         associate (bd => model%bodies(b))
+            do i = 1, 3
+               mg(i, i) = bd%mass
+            end do
+            mg(1:3, 1:3) = mg(1:3, 1:3) + matmul(d, matmul(diagonal(bd%added_mass(1:3)), &
+                                                           transpose(d)))
+            mg(4:6, 4:6) = matmul(d, matmul(diagonal(bd%inertia + bd%added_mass(4:6)), &
+                                            transpose(d)))
+         end associate
+         t = 0.0_wp
+         do i = 1, 6
+            t(i, i) = 1.0_wp
+         end do
+         t(1:3, 4:6) = -skew(g)
+         mr = matmul(transpose(t), matmul(mg, t))
+         call dense_sym_eigen(kb, mr, lam, err)
+         if (has_error(err)) return
+         do i = 1, 6
+            if (lam(i) > 0.0_wp) sys%body_periods(i, b) = 2.0_wp*pi/sqrt(lam(i))
+            sys%body_modes(:, i, b) = kb(:, i)/maxval(abs(kb(:, i)))
+         end do
+      end do
+   contains
+      pure function diagonal(v) result(a)
+         real(wp), intent(in) :: v(3)
+         real(wp) :: a(3, 3)
+         a = 0.0_wp
+         a(1, 1) = v(1)
+         a(2, 2) = v(2)
+         a(3, 3) = v(3)
+      end function diagonal
+   end subroutine body_periods
+
+   !> The 6 x 6 block of k at rows and columns j0 + 1 .. j0 + 6 with every other unknown
+   !> of k relaxed: k_bb - k_bo k_oo^-1 k_ob.
+   subroutine condensed_block(k, j0, kb, err)
+      real(wp), intent(in) :: k(:, :)     !< (n, n) the system's stiffness
+      integer, intent(in) :: j0           !< the block's first unknown - 1
+      real(wp), intent(out) :: kb(6, 6)   !< the condensed block
+      type(error_t), intent(inout) :: err !< status
+      real(wp), allocatable :: koo(:, :), kob(:, :)
+      integer, allocatable :: o(:), ipiv(:)
+      integer :: n, i
+      n = size(k, 1)
+      kb = k(j0 + 1:j0 + 6, j0 + 1:j0 + 6)
+      if (n == 6) return
+      o = [(i, i=1, j0), (i, i=j0 + 7, n)]
+      koo = k(o, o)
+      kob = k(o, j0 + 1:j0 + 6)
+      allocate (ipiv(size(o)))
+      call dense_factor(koo, ipiv, err)
+      call dense_solve(koo, ipiv, kob, err)
+      if (has_error(err)) return
+      kb = kb - matmul(k(j0 + 1:j0 + 6, o), kob)
+   end subroutine condensed_block
 
    !> Each body's reference point, rotation vector and the force and moment about R of its
    !> lines: minus the sum of the residuals at the line ends on it (before they are moved

@@ -430,10 +430,14 @@ def check_run(src, work, rodyn, headers, datasets):
                         f"*VESSEL, NAME=FPSO, TYPE=RAO, INPUT={rao}, PHASE=LEAD\n"
                         "0.0, 0.0, 0.0, 30.0\n"
                         "*MOTION, LINE=LEG, END=B, TYPE=VESSEL, VESSEL=FPSO, RAMP=0\n*STATIC,")
-    # a clump weight (a FREE point) hung from a point of a FIXED body: the points, the
-    # bodies and the stiffness
-    text = text.replace("*STATIC,", "*BODY, NAME=PLAT, TYPE=FIXED\n-400, 50, -40\n0, 0, 0\n"
-                        "0, 0, 0\n0, 0, 0\n*POINT, NAME=PA, TYPE=BODY, BODY=PLAT\n0, 0, 0\n"
+    # a clump weight (a FREE point) hung from a point of a FREE body on springs: the
+    # points, the bodies, their periods and the stiffness
+    springs = "".join(f"{', '.join('1e6' if i == j else '0' for j in range(6))}\n"
+                      for i in range(6))
+    text = text.replace("*STATIC,", "*BODY, NAME=PLAT, TYPE=FREE, MASS=1000\n-400, 50, -40\n"
+                        "0, 0, 0\n0, 0, 0\n100, 100, 100\n"
+                        f"*BODY HYDROSTATICS, BODY=PLAT\n{springs}"
+                        "*POINT, NAME=PA, TYPE=BODY, BODY=PLAT\n0, 0, 0\n"
                         "*POINT, NAME=PB, TYPE=FREE, MASS=500\n-400, 52, -69.9\n"
                         "*LINE, NAME=TETHER, SECTION=CHAIN, LENGTH=30.0, ELEMENTS=4, ORDER=3,"
                         " ELEMENT=CABLE, POINT A=PA, POINT B=PB\n*STATIC,")
