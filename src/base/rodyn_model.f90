@@ -24,7 +24,7 @@ module rodyn_model
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
    public :: point_t, point_fixed, point_free, point_body, point_kind_names
-   public :: body_t, body_fixed, body_free, body_kind_names, failure_t
+   public :: body_t, body_fixed, body_free, body_kind_names, failure_t, offset_curve_t
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
    real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
@@ -176,6 +176,16 @@ module rodyn_model
       real(wp) :: added_mass(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
    end type body_t
+
+   !> The offset-restoring-force curve of a body (*OFFSET CURVE): after the statics, a
+   !> horizontal force at R towards `heading` raised to `force` in `steps` equal steps,
+   !> each a static solution.
+   type :: offset_curve_t
+      integer :: body = 0               !< model%bodies index (0: none)
+      real(wp) :: heading = 0.0_wp      !< direction of the force, from +x to +y [rad]
+      real(wp) :: force = 0.0_wp        !< largest force [N]
+      integer :: steps = 10             !< steps to it
+   end type offset_curve_t
 
    !> A line end that fails (*FAILURE): released from its support, point or body at a
    !> time or when its force first reaches a break load, whichever comes first.
@@ -448,6 +458,7 @@ module rodyn_model
       type(point_t), allocatable :: points(:)        !< *POINT, in deck order
       type(body_t), allocatable :: bodies(:)         !< *BODY, in deck order
       type(failure_t), allocatable :: failures(:)    !< *FAILURE, in deck order
+      type(offset_curve_t) :: offset_curve           !< *OFFSET CURVE (body 0: none)
       type(water_t) :: water
       type(seabed_t) :: seabed
       type(waves_t) :: waves

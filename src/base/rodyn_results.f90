@@ -58,6 +58,10 @@ module rodyn_results
       real(wp), allocatable :: body_periods(:, :)
       real(wp), allocatable :: body_modes(:, :, :) !< (6, 6, nb) the modes (columns), largest
                                                    !< entry 1 (x, y, z [m], rx, ry, rz [rad])
+      !> (9, 0:steps) the offset curve (*OFFSET CURVE): force [N], offset of R along the
+      !> force from the equilibrium [m], R's x, y, z [m], rotation vector [rad], the
+      !> largest force on a line end on the body [N]; unallocated: none
+      real(wp), allocatable :: curve(:, :)
    end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and

@@ -47,7 +47,8 @@ module rodyn_deck
                               check_line_geometry, static_analysis_runs, check_supported, &
                               check_straight_start
    use rodyn_deck_body, only: read_body_card, read_body_hydrostatics_card, &
-                              read_body_added_mass_card, &
+                              read_body_added_mass_card, read_offset_curve_card, &
+                              resolve_offset_curve, &
                               resolve_point_bodies, resolve_load_bodies, check_bodies
    use rodyn_deck_system, only: read_failure_card, check_failures, &
                                 read_point_card, resolve_line_points, resolve_load_points, &
@@ -230,6 +231,8 @@ contains
             call read_body_added_mass_card(deck, ic, model, pend, err)
          case ('FAILURE')
             call read_failure_card(deck, ic, model, pend, err)
+         case ('OFFSET CURVE')
+            call read_offset_curve_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
@@ -685,6 +688,8 @@ contains
       call check_bodies(deck, pend, model, err)
       if (has_error(err)) return
       call check_failures(deck, pend, model, err)
+      if (has_error(err)) return
+      call resolve_offset_curve(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)

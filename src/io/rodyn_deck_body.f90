@@ -10,12 +10,14 @@ module rodyn_deck_body
                           point_body
    use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_get_name, card_get_choice, &
-                               card_check_data, card_data_reals, real_str, int_str, param_len
+                               card_check_data, card_data_reals, card_get_real, card_get_int, &
+                               real_str, int_str, param_len
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
-                                 location
+                                 location, check_once
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
+   public :: read_offset_curve_card, resolve_offset_curve
    public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 
@@ -211,6 +213,64 @@ contains
          pend%body_added(ib) = ic
       end associate
    end subroutine read_body_added_mass_card
+
+   !> *OFFSET CURVE, BODY=name, FORCE=F [, HEADING=deg] [, STEPS=n]: after the statics, a
+   !> horizontal force at the body's R towards HEADING raised to F in n steps (1 to 1000,
+   !> default 10). At most one; the body is resolved with the whole deck.
+   subroutine read_offset_curve_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(model_t), intent(inout) :: model   !< the curve's parameters set
+      type(pending_t), intent(inout) :: pend  !< remembers the card and BODY=
+      type(error_t), intent(inout) :: err     !< status
+      character(len=:), allocatable :: name
+      real(wp) :: deg
+      associate (card => deck%cards(ic), oc => model%offset_curve)
+         call check_once(deck, ic, pend%offset_card, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) :: 'BODY', 'FORCE', &
+                                'HEADING', 'STEPS'], err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         call card_get_name(card, 'BODY', name, err, required=.true.)
+         if (has_error(err)) return
+         call card_get_real(card, 'FORCE', oc%force, err, required=.true.)
+         if (has_error(err)) return
+         if (.not. oc%force > 0.0_wp) then
+            call param_fail(card, 'FORCE', 'FORCE must be > 0, got '//real_str(oc%force), err)
+            return
+         end if
+         deg = 0.0_wp
+         call card_get_real(card, 'HEADING', deg, err)
+         oc%heading = deg*acos(-1.0_wp)/180.0_wp
+         call card_get_int(card, 'STEPS', oc%steps, err)
+         if (has_error(err)) return
+         if (oc%steps < 1 .or. oc%steps > 1000) then
+            call param_fail(card, 'STEPS', 'STEPS must be between 1 and 1000, got '// &
+                            int_str(oc%steps), err)
+            return
+         end if
+      end associate
+      pend%offset_body = ref_t(name, ic)
+   end subroutine read_offset_curve_card
+
+   !> The body of *OFFSET CURVE: it exists and is FREE.
+   subroutine resolve_offset_curve(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< its card and BODY=
+      type(model_t), intent(inout) :: model   !< the curve's body set
+      type(error_t), intent(inout) :: err     !< status
+      if (pend%offset_card == 0) return
+      associate (card => deck%cards(pend%offset_card))
+         call find_body(card, 'BODY', pend%offset_body%name, model, &
+                        model%offset_curve%body, err)
+         if (has_error(err)) return
+         if (model%bodies(model%offset_curve%body)%kind /= body_free) &
+            call param_fail(card, 'BODY', "body '"//pend%offset_body%name//"' is FIXED: it"// &
+                            ' has no offset', err)
+      end associate
+   end subroutine resolve_offset_curve
 
    !> The body of each BODY point: it exists; the point lies within reach of it
    !> (reach_radii radii of gyration); its global position at the start is R + offset.

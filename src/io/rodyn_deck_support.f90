@@ -62,6 +62,7 @@ module rodyn_deck_support
       integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
       integer, allocatable :: body_added(:)       !< per body: its *BODY ADDED MASS card
       type(ref_t), allocatable :: failure_line(:) !< per *FAILURE: its LINE=
+      type(ref_t) :: offset_body                  !< *OFFSET CURVE's BODY=
       integer, allocatable :: section_card(:)     !< per section: card index
       integer, allocatable :: amplitude_card(:)   !< per amplitude: card index
       integer :: n_sections = 0     !< sections read so far
@@ -86,6 +87,7 @@ module rodyn_deck_support
       integer :: water = 0     !< card of the first *WATER
       integer :: current = 0   !< card of the first *CURRENT
       integer :: seabed = 0    !< card of the first *SEABED
+      integer :: offset_card = 0 !< card of the first *OFFSET CURVE
    end type pending_t
 
 contains

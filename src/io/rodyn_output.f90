@@ -28,7 +28,8 @@ module rodyn_output
                                   seabed_force_of, touchdown_of, write_parameters_h5
    use rodyn_output_points, only: write_points_csv, points_csv, write_stiffness_csv, &
                                   stiffness_csv, write_bodies_csv, bodies_csv, &
-                                  write_body_modes_csv, body_modes_csv
+                                  write_body_modes_csv, body_modes_csv, &
+                                  write_offset_curve_csv, offset_curve_csv
    use rodyn_output_table, only: write_line_table, write_described, write_h5_root, &
                                  group_name, line_result_complete
    implicit none
@@ -78,7 +79,7 @@ contains
       ! the files in the order written (after environment.csv, results.h5)
       character(len=*), parameter :: order(*) = [character(len=20) :: nodes_csv, &
          elements_csv, reactions_csv, lines_csv, points_csv, bodies_csv, stiffness_csv, &
-         body_modes_csv, environment_csv, results_h5]
+         body_modes_csv, offset_curve_csv, environment_csv, results_h5]
       type(error_t) :: e, e_status
       type(run_summary_t) :: s
       integer :: k, j
@@ -103,8 +104,10 @@ contains
          case (8)
             if (model%output%csv) call write_body_modes_csv(dir, model, system, e)
          case (9)
-            if (model%output%csv) call output_write_environment(dir, model, e)
+            if (model%output%csv) call write_offset_curve_csv(dir, model, system, e)
          case (10)
+            if (model%output%csv) call output_write_environment(dir, model, e)
+         case (11)
             if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
          end select
       end do

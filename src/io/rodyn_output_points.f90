@@ -18,11 +18,13 @@ module rodyn_output_points
    private
    public :: write_points_csv, points_csv, write_stiffness_csv, stiffness_csv
    public :: write_bodies_csv, bodies_csv, write_body_modes_csv, body_modes_csv
+   public :: write_offset_curve_csv, offset_curve_csv
 
    character(len=*), parameter :: points_csv = 'static_points.csv'
    character(len=*), parameter :: stiffness_csv = 'static_stiffness.csv'
    character(len=*), parameter :: bodies_csv = 'static_bodies.csv'
    character(len=*), parameter :: body_modes_csv = 'static_body_modes.csv'
+   character(len=*), parameter :: offset_curve_csv = 'static_offset_curve.csv'
 
 contains
 
@@ -206,4 +208,31 @@ contains
       end do
       call outfile_commit(f, err)
    end subroutine write_body_modes_csv
+
+   !> Write static_offset_curve.csv into folder `dir` (*OFFSET CURVE): a row per step of
+   !> the curve (without one: remove one an earlier run left there).
+   subroutine write_offset_curve_csv(dir, model, sys, err)
+      character(len=*), intent(in) :: dir                 !< output folder (exists)
+      type(model_t), intent(in) :: model                  !< model with its curve
+      type(system_result_t), intent(in), optional :: sys  !< the curve
+      type(error_t), intent(inout) :: err                 !< status
+      type(out_file_t) :: f
+      integer :: k, j
+      character(len=:), allocatable :: row
+      if (has_error(err)) return
+      call remove_file(path_join(dir, offset_curve_csv))
+      if (.not. present(sys)) return
+      if (.not. allocated(sys%curve)) return
+      call outfile_create(f, dir, offset_curve_csv, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(offset_curve_csv))
+      do k = lbound(sys%curve, 2), ubound(sys%curve, 2)
+         row = trim(model%bodies(model%offset_curve%body)%name)//','//int_text(k)
+         do j = 1, 9
+            row = row//','//real_text(sys%curve(j, k))
+         end do
+         call outfile_put(f, row)
+      end do
+      call outfile_commit(f, err)
+   end subroutine write_offset_curve_csv
 end module rodyn_output_points

@@ -92,6 +92,17 @@ module rodyn_output_schema
       'static_body_modes.csv | rx | - | mode shape: rotation about x [rad per unit]', &
       'static_body_modes.csv | ry | - | mode shape: rotation about y', &
       'static_body_modes.csv | rz | - | mode shape: rotation about z', &
+      'static_offset_curve.csv | body | - | body name (*OFFSET CURVE)', &
+      'static_offset_curve.csv | step | - | step of the force, 0 for the equilibrium', &
+      'static_offset_curve.csv | force_N | N | horizontal force at R towards HEADING', &
+      'static_offset_curve.csv | offset_m | m | move of R along the force from step 0', &
+      'static_offset_curve.csv | x_m | m | x of R, global axes', &
+      'static_offset_curve.csv | y_m | m | y of R, global axes', &
+      'static_offset_curve.csv | z_m | m | z of R, global axes', &
+      'static_offset_curve.csv | rx_rad | rad | rotation vector from the start, x', &
+      'static_offset_curve.csv | ry_rad | rad | rotation vector from the start, y', &
+      'static_offset_curve.csv | rz_rad | rad | rotation vector from the start, z', &
+      'static_offset_curve.csv | max_end_force_N | N | largest force on a line end on the body', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
       'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &

@@ -54,7 +54,7 @@ module rodyn_statics
    use rodyn_results, only: run_summary_t
    implicit none
    private
-   public :: static_problem_t, statics_setup, statics_solve, statics_run
+   public :: static_problem_t, statics_setup, statics_solve, statics_run, static_set_load_factor
 
    !> The static problem with its workspace (allocated once in statics_setup).
    type, extends(rod_problem_t) :: static_problem_t
