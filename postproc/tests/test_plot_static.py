@@ -337,3 +337,24 @@ def test_real_paper_cable(tmp_path):
     for key in ("node_s", "node_xyz", "gp_s", "effective_tension", "moment", "reactions"):
         np.testing.assert_array_equal(getattr(from_csv, key),
                                       getattr(results.line("CABLE"), key), err_msg=key)
+
+
+def test_real_offset_curve(tmp_path):
+    """A body's offset curve (*OFFSET CURVE) is plotted from static_offset_curve.csv: the
+    applied force and the most loaded line end's force against the offset."""
+    exe = rodyn_exe()
+    out = tmp_path / "spar"
+    deck = REPO / "tests" / "verification" / "decks" / "spar_offset_curve.inp"
+    run = subprocess.run([str(exe), str(deck), "-o", str(out), "--quiet"],
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    proc = run_script(out, "--dpi", 80, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert_png(out / "static_offset_curve.png")
+    with open(out / "static_offset_curve.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    ax = plot_static.offset_figure(load_static(out)).axes[0]
+    applied = [c for c in ax.lines if c.get_label().startswith("restoring force")][0]
+    np.testing.assert_array_equal(applied.get_xdata(), [float(r["offset_m"]) for r in rows])
+    np.testing.assert_array_equal(applied.get_ydata(),
+                                  [float(r["force_N"]) / 1e3 for r in rows])

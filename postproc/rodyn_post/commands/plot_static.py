@@ -18,6 +18,9 @@ into OUT_DIR (default: the results folder) and prints the paths written:
                       wall and effective tension against arc length
   static_seabed.png   when a line touches the seabed: seabed normal and friction force
                       per length against arc length, touchdown points marked
+  static_offset_curve.png   with *OFFSET CURVE (static_offset_curve.csv): the body's
+                      restoring force and its most loaded fairlead's force against its
+                      offset
 
 A run that did not complete is still plotted (its last converged state), with a
 warning on stderr and in the plot titles.
@@ -25,7 +28,9 @@ warning on stderr and in the plot titles.
 Exit status: 0 success, 1 bad input (missing or malformed results), 2 bad command
 line, 3 cannot write the plots.
 """
+import csv
 import sys
+from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -43,6 +48,8 @@ PLAN_PNG = "static_plan.png"
 TENSION_PNG = "static_tension.png"
 WALL_PNG = "static_wall_tension.png"
 SEABED_PNG = "static_seabed.png"
+OFFSET_PNG = "static_offset_curve.png"
+OFFSET_CSV = "static_offset_curve.csv"
 
 
 def tension_curves(line):
@@ -202,9 +209,39 @@ def seabed_figure(results):
     return fig
 
 
+def offset_rows(results):
+    """The rows of static_offset_curve.csv beside the results ([] without one)."""
+    path = Path(results.folder) / OFFSET_CSV
+    if not path.is_file():
+        return []
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def offset_figure(results):
+    """The body's restoring force and its most loaded fairlead's force against its
+    offset (*OFFSET CURVE)."""
+    rows = offset_rows(results)
+    off = np.array([float(r["offset_m"]) for r in rows])
+    force = np.array([float(r["force_N"]) for r in rows])
+    fair = np.array([float(r["max_end_force_N"]) for r in rows])
+    fig = Figure(figsize=(7.0, 4.5))
+    ax = fig.add_subplot(1, 1, 1)
+    ax.plot(off, force / 1e3, "o-", label="restoring force (the force applied)")
+    ax.plot(off, fair / 1e3, "s--", label="most loaded line end")
+    ax.set_xlabel(f"offset of {rows[0]['body']} along the force [m]")
+    ax.set_ylabel("force [kN]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.suptitle(run_title(results, "offset curve"))
+    return fig
+
+
 def figures(results):
     """[(PNG name, figure maker)] of the plots that apply to these results."""
     makers = [(SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)]
+    if offset_rows(results):
+        makers.append((OFFSET_PNG, offset_figure))
     if wants_plan(results):
         makers.insert(1, (PLAN_PNG, plan_figure))
     if wants_wall(results):
