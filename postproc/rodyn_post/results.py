@@ -38,6 +38,8 @@ LINES_CSV = "static_lines.csv"
 NODES_HEADER = header(NODES_CSV)
 ELEMENTS_HEADER = header(ELEMENTS_CSV)
 LINES_HEADER = header(LINES_CSV)
+OFFSET_CURVE_CSV = "static_offset_curve.csv"
+OFFSET_CURVE_HEADER = header(OFFSET_CURVE_CSV)
 # columns an older rodyn did not write (read as: wall = effective, seabed forces and
 # hydro and seabed work 0); static and dynamic tables
 OPTIONAL_COLUMNS = ("wall_tension_N", "seabed_normal_N_per_m", "seabed_friction_N_per_m",
@@ -381,6 +383,30 @@ def _csv_line(name, node_rows, point_rows, support_rows, where, touchdown=-1.0) 
         if column in rows[0]:
             arrays[key] = columns(rows, column)[:, 0]
     return _make_line(name, arrays, where)
+
+
+def load_offset_curve(folder) -> dict:
+    """The offset curve of a body (*OFFSET CURVE) in results folder `folder`
+    (static_offset_curve.csv, docs/output.md): {"body": name, column: float array for
+    every other column}; {} when the run wrote none."""
+    path = Path(folder) / OFFSET_CURVE_CSV
+    if not path.is_file():
+        return {}
+    with open(path, newline="", encoding="utf-8") as f:
+        reader = csv.reader(f)
+        cols = check_header(path, next(reader, []), OFFSET_CURVE_HEADER)
+        rows = [fields for fields in reader if fields]
+    if not rows:
+        raise RodynResultsError(f"{path}: no rows")
+    out = {"body": rows[0][cols.index("body")]}
+    for j, c in enumerate(cols):
+        if c == "body":
+            continue
+        try:
+            out[c] = np.array([float(r[j]) for r in rows])
+        except (ValueError, IndexError) as e:
+            raise RodynResultsError(f"{path}: column {c}: {e}") from None
+    return out
 
 
 def check_header(path: Path, first: list, header: tuple) -> tuple:

@@ -28,14 +28,13 @@ warning on stderr and in the plot titles.
 Exit status: 0 success, 1 bad input (missing or malformed results), 2 bad command
 line, 3 cannot write the plots.
 """
-import csv
 import sys
-from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from rodyn_post import cli, load_static  # cli: the Agg backend (never needs a display)
+from rodyn_post.results import load_offset_curve
 from rodyn_post.cli import static_title as run_title
 from rodyn_post.environment import (current_inset, draw_sea, elevation_range,
                                     fit_elevation, scale_note)
@@ -49,7 +48,6 @@ TENSION_PNG = "static_tension.png"
 WALL_PNG = "static_wall_tension.png"
 SEABED_PNG = "static_seabed.png"
 OFFSET_PNG = "static_offset_curve.png"
-OFFSET_CSV = "static_offset_curve.csv"
 
 
 def tension_curves(line):
@@ -209,27 +207,16 @@ def seabed_figure(results):
     return fig
 
 
-def offset_rows(results):
-    """The rows of static_offset_curve.csv beside the results ([] without one)."""
-    path = Path(results.folder) / OFFSET_CSV
-    if not path.is_file():
-        return []
-    with open(path, newline="", encoding="utf-8") as f:
-        return list(csv.DictReader(f))
-
-
 def offset_figure(results):
     """The body's restoring force and its most loaded fairlead's force against its
     offset (*OFFSET CURVE)."""
-    rows = offset_rows(results)
-    off = np.array([float(r["offset_m"]) for r in rows])
-    force = np.array([float(r["force_N"]) for r in rows])
-    fair = np.array([float(r["max_end_force_N"]) for r in rows])
+    curve = load_offset_curve(results.folder)
+    off, force, fair = curve["offset_m"], curve["force_N"], curve["max_end_force_N"]
     fig = Figure(figsize=(7.0, 4.5))
     ax = fig.add_subplot(1, 1, 1)
     ax.plot(off, force / 1e3, "o-", label="restoring force (the force applied)")
     ax.plot(off, fair / 1e3, "s--", label="most loaded line end")
-    ax.set_xlabel(f"offset of {rows[0]['body']} along the force [m]")
+    ax.set_xlabel(f"offset of {curve['body']} along the force [m]")
     ax.set_ylabel("force [kN]")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
@@ -240,7 +227,7 @@ def offset_figure(results):
 def figures(results):
     """[(PNG name, figure maker)] of the plots that apply to these results."""
     makers = [(SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)]
-    if offset_rows(results):
+    if load_offset_curve(results.folder):
         makers.append((OFFSET_PNG, offset_figure))
     if wants_plan(results):
         makers.insert(1, (PLAN_PNG, plan_figure))
