@@ -139,14 +139,8 @@ contains
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
-         do ib = 1, pend%n_bodies
-            if (model%bodies(ib)%name == name) exit
-         end do
-         if (ib > pend%n_bodies) then
-            call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
-                            ' card with NAME='//name//' comes first)', err)
-            return
-         end if
+         call body_above(card, name, model, pend, ib, err)
+         if (has_error(err)) return
          k = merge(pend%body_damp(ib), pend%body_hydro(ib), damping)
          if (k > 0) then
             call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
@@ -188,14 +182,8 @@ contains
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
-         do ib = 1, pend%n_bodies
-            if (model%bodies(ib)%name == name) exit
-         end do
-         if (ib > pend%n_bodies) then
-            call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
-                            ' card with NAME='//name//' comes first)', err)
-            return
-         end if
+         call body_above(card, name, model, pend, ib, err)
+         if (has_error(err)) return
          if (pend%body_added(ib) > 0) then
             call card_error(card, "body '"//name//"' already has its *BODY ADDED MASS (at "// &
                             location(deck, pend%body_added(ib))//')', err)
@@ -271,6 +259,22 @@ contains
                             ' has no offset', err)
       end associate
    end subroutine resolve_offset_curve
+
+   !> Body ib named `name` among those read so far (a card that refers to the body above
+   !> it: *BODY HYDROSTATICS, *BODY DAMPING, *BODY ADDED MASS).
+   subroutine body_above(card, name, model, pend, ib, err)
+      type(card_t), intent(in) :: card      !< the referring card
+      character(len=*), intent(in) :: name  !< body name
+      type(model_t), intent(in) :: model    !< model with the bodies read so far
+      type(pending_t), intent(in) :: pend   !< how many
+      integer, intent(out) :: ib            !< the body's index
+      type(error_t), intent(inout) :: err   !< status
+      do ib = 1, pend%n_bodies
+         if (model%bodies(ib)%name == name) return
+      end do
+      call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
+                      ' card with NAME='//name//' comes first)', err)
+   end subroutine body_above
 
    !> The body of each BODY point: it exists; the point lies within reach of it
    !> (reach_radii radii of gyration); its global position at the start is R + offset.
