@@ -70,7 +70,8 @@ def fortran_rows(text, name):
 def generate():
     text = FORTRAN.read_text()
     columns, datasets = {}, {}
-    for file, column, unit, meaning in fortran_rows(text, "output_columns"):
+    for file, column, unit, meaning in (fortran_rows(text, "static_columns") +
+                                        fortran_rows(text, "dynamic_columns")):
         columns.setdefault(file, []).append((column, unit, meaning))
     for file, path, units, description in fortran_rows(text, "output_datasets"):
         datasets.setdefault(file, {})[path] = (units, description)

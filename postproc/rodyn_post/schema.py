@@ -109,6 +109,33 @@ COLUMNS = {'static_nodes.csv': (('line', '-', 'line name'),
                              ('max_end_force_N',
                               'N',
                               'largest force on a line end on the body')),
+ 'static_modes.csv': (('mode', '-', 'mode number, longest period first (*MODAL)'),
+                      ('period_s', 's', 'natural period about the static equilibrium'),
+                      ('frequency_hz', 'Hz', 'natural frequency'),
+                      ('dominant',
+                       '-',
+                       'line, point or body with the largest share of the kinetic energy'),
+                      ('share', '-', 'that share of the kinetic energy (0 to 1)')),
+ 'static_mode_shapes.csv': (('mode', '-', 'mode number (static_modes.csv)'),
+                            ('object', '-', 'line name, or FREE point or body name'),
+                            ('node',
+                             '-',
+                             'node number along the line from 1 (end A); 0 a point or '
+                             'body'),
+                            ('s_m',
+                             'm',
+                             'unstretched arc length S of the node (0 a point or body)'),
+                            ('x',
+                             '-',
+                             'x translation [m; largest translation of the system 1 m] (a '
+                             'body: of its R)'),
+                            ('y', '-', 'y translation [m]'),
+                            ('z', '-', 'z translation [m]'),
+                            ('rx',
+                             '-',
+                             'rotation about x [rad] (0 without rotation unknowns)'),
+                            ('ry', '-', 'rotation about y [rad]'),
+                            ('rz', '-', 'rotation about z [rad]')),
  'static_lines.csv': (('line', '-', 'line name'),
                       ('length_m', 'm', 'unstretched length L'),
                       ('touchdown_s_m',
@@ -378,6 +405,27 @@ DATASETS = {'results.h5': {'/deck': ('-', 'full text of the input deck, includes
                                            'force and moment of the support on the line, '
                                            'global axes; rows end A, end B; columns Fx, '
                                            'Fy, Fz, Mx, My, Mz; zero where end_held is 0'),
+                '/modes/period_s': ('s', 'natural periods (*MODAL), longest first'),
+                '/modes/frequency_hz': ('Hz', 'natural frequencies'),
+                '/modes/omega_rad_s': ('rad/s', 'natural circular frequencies'),
+                '/modes/LINE/ux': ('m',
+                                   '(node, mode) x translation of the node in each mode, '
+                                   'largest translation of the system 1 m'),
+                '/modes/LINE/uy': ('m',
+                                   '(node, mode) y translation of the node in each mode, '
+                                   'largest translation of the system 1 m'),
+                '/modes/LINE/uz': ('m',
+                                   '(node, mode) z translation of the node in each mode, '
+                                   'largest translation of the system 1 m'),
+                '/modes/LINE/rx': ('rad',
+                                   '(node, mode) rotation about x of the node in each '
+                                   'mode, largest translation of the system 1 m'),
+                '/modes/LINE/ry': ('rad',
+                                   '(node, mode) rotation about y of the node in each '
+                                   'mode, largest translation of the system 1 m'),
+                '/modes/LINE/rz': ('rad',
+                                   '(node, mode) rotation about z of the node in each '
+                                   'mode, largest translation of the system 1 m'),
                 '/static/LINE/seabed_friction': ('N/m',
                                                  'magnitude of the seabed friction force '
                                                  'per unit length at the nodes'),

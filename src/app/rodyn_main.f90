@@ -18,6 +18,7 @@ program rodyn
    use rodyn_assembly, only: dof_map
    use rodyn_recovery, only: recover_static, recover_system
    use rodyn_offset_curve, only: offset_curve
+   use rodyn_modal, only: modal_analysis
    use rodyn_results, only: line_result_t, run_summary_t, system_result_t
    use rodyn_output, only: output_write_static, output_write_status, status_dynamics_pending
    use rodyn_outdir, only: outdir_lock_t, outdir_lock, outdir_unlock
@@ -150,6 +151,7 @@ program rodyn
       call recover_static(model, prob, lines)
       if (summary%complete) then
          call recover_system(model, prob, system, err)
+         call modal_analysis(model, prob, system, err)
          if (.not. has_error(err)) call offset_curve(prob, model, system, err)
          call output_write_static(opts%outdir, model, lines, summary, out_err, system)
       else

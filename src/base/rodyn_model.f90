@@ -24,7 +24,7 @@ module rodyn_model
    public :: bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, bc_names
    public :: end_a, end_b, name_len
    public :: point_t, point_fixed, point_free, point_body, point_kind_names
-   public :: body_t, body_fixed, body_free, body_kind_names, failure_t, offset_curve_t
+   public :: body_t, body_fixed, body_free, body_kind_names, failure_t, offset_curve_t, modal_t
 
    integer, parameter :: name_len = 32     !< longest name of a section or line
    real(wp), parameter :: rho_water_default = 1025.0_wp !< sea water density [kg/m3]
@@ -186,6 +186,13 @@ module rodyn_model
       real(wp) :: force = 0.0_wp        !< largest force [N]
       integer :: steps = 10             !< steps to it
    end type offset_curve_t
+
+   !> The modal analysis of the system about its static equilibrium (*MODAL): the
+   !> `modes` longest natural periods and their shapes (docs/theory.md eqs. (145)-(148)).
+   type :: modal_t
+      logical :: requested = .false.    !< *MODAL given
+      integer :: modes = 10             !< modes wanted (fewer if the system has fewer)
+   end type modal_t
 
    !> A line end that fails (*FAILURE): released from its support, point or body at a
    !> time or when its force first reaches a break load, whichever comes first.
@@ -459,6 +466,7 @@ module rodyn_model
       type(body_t), allocatable :: bodies(:)         !< *BODY, in deck order
       type(failure_t), allocatable :: failures(:)    !< *FAILURE, in deck order
       type(offset_curve_t) :: offset_curve           !< *OFFSET CURVE (body 0: none)
+      type(modal_t) :: modal                         !< *MODAL
       type(water_t) :: water
       type(seabed_t) :: seabed
       type(waves_t) :: waves

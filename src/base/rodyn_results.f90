@@ -62,6 +62,18 @@ module rodyn_results
       !> force from the equilibrium [m], R's x, y, z [m], rotation vector [rad], the
       !> largest force on a line end on the body [N]; unallocated: none
       real(wp), allocatable :: curve(:, :)
+      ! the modal analysis (*MODAL; docs/theory.md eqs. (145)-(148)); unallocated: none
+      real(wp), allocatable :: modal_period(:)       !< (nm) natural periods, longest first [s]
+      !> (6, nn, nm) each mode's motion of every node (translation [m], rotation [rad];
+      !> a body's node is its G), the largest translation 1 m
+      real(wp), allocatable :: modal_shape(:, :, :)
+      !> (6, nmaster, nm) the motion of each master (kind, index above): a point's
+      !> translation, a body's at its R and its rotation
+      real(wp), allocatable :: modal_master(:, :, :)
+      !> (no, nm) each object's share of the mode's kinetic energy, objects the lines (deck
+      !> order) then the masters (kind, index above)
+      real(wp), allocatable :: modal_share(:, :)
+      real(wp) :: modal_asymmetry = 0.0_wp !< |K - K^T| / |K| of the tangent used [-]
    end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and

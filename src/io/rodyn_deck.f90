@@ -48,7 +48,7 @@ module rodyn_deck
                               check_straight_start
    use rodyn_deck_body, only: read_body_card, read_body_hydrostatics_card, &
                               read_body_added_mass_card, read_offset_curve_card, &
-                              resolve_offset_curve, &
+                              resolve_offset_curve, read_modal_card, check_modal, &
                               resolve_point_bodies, resolve_load_bodies, check_bodies
    use rodyn_deck_system, only: read_failure_card, check_failures, &
                                 read_point_card, resolve_line_points, resolve_load_points, &
@@ -233,6 +233,8 @@ contains
             call read_failure_card(deck, ic, model, pend, err)
          case ('OFFSET CURVE')
             call read_offset_curve_card(deck, ic, model, pend, err)
+         case ('MODAL')
+            call read_modal_card(deck, ic, model, pend, err)
          case ('VESSEL')
             call read_vessel_card(deck, ic, model, pend, err)
          case ('WAVE')
@@ -690,6 +692,8 @@ contains
       call check_failures(deck, pend, model, err)
       if (has_error(err)) return
       call resolve_offset_curve(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_modal(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)

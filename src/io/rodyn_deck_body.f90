@@ -17,7 +17,7 @@ module rodyn_deck_body
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
-   public :: read_offset_curve_card, resolve_offset_curve
+   public :: read_offset_curve_card, resolve_offset_curve, read_modal_card, check_modal
    public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 
@@ -359,4 +359,46 @@ contains
          return
       end do
    end subroutine check_bodies
+
+   !> *MODAL [, MODES=n]: after the statics, the n (1 to 1000, default 10) longest
+   !> natural periods of the whole system about its equilibrium and their shapes. At most
+   !> one.
+   subroutine read_modal_card(deck, ic, model, pend, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(model_t), intent(inout) :: model   !< model%modal set
+      type(pending_t), intent(inout) :: pend  !< remembers the card
+      type(error_t), intent(inout) :: err     !< status
+      associate (card => deck%cards(ic), mo => model%modal)
+         call check_once(deck, ic, pend%modal_card, err)
+         if (has_error(err)) return
+         call card_check_params(card, [character(len=param_len) :: 'MODES'], err)
+         if (has_error(err)) return
+         call card_check_data(card, 0, 0, err)
+         if (has_error(err)) return
+         call card_get_int(card, 'MODES', mo%modes, err)
+         if (has_error(err)) return
+         if (mo%modes < 1 .or. mo%modes > 1000) then
+            call param_fail(card, 'MODES', 'MODES must be between 1 and 1000, got '// &
+                            int_str(mo%modes), err)
+            return
+         end if
+         mo%requested = .true.
+      end associate
+   end subroutine read_modal_card
+
+   !> *MODAL is about the static equilibrium: a deck whose dynamics start from the
+   !> defined shape without *STATIC has none.
+   subroutine check_modal(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< the card of *MODAL
+      type(model_t), intent(in) :: model      !< model
+      type(error_t), intent(inout) :: err     !< status
+      if (pend%modal_card == 0) return
+      if (model%dynamic%requested .and. .not. model%dynamic%start_static .and. &
+          .not. model%static%requested) &
+         call card_error(deck%cards(pend%modal_card), '*MODAL needs the static '// &
+                        'equilibrium, and the dynamics start from the defined shape without '// &
+                        '*STATIC: add *STATIC or START=STATIC', err)
+   end subroutine check_modal
 end module rodyn_deck_body

@@ -88,6 +88,7 @@ module rodyn_deck_support
       integer :: current = 0   !< card of the first *CURRENT
       integer :: seabed = 0    !< card of the first *SEABED
       integer :: offset_card = 0 !< card of the first *OFFSET CURVE
+      integer :: modal_card = 0  !< card of the first *MODAL
    end type pending_t
 
 contains

@@ -30,6 +30,7 @@ module rodyn_output
                                   stiffness_csv, write_bodies_csv, bodies_csv, &
                                   write_body_modes_csv, body_modes_csv, &
                                   write_offset_curve_csv, offset_curve_csv
+   use rodyn_output_modal, only: write_modes_csv, modes_csv, mode_shapes_csv, write_modes_h5
    use rodyn_output_table, only: write_line_table, write_described, write_h5_root, &
                                  group_name, line_result_complete
    implicit none
@@ -77,9 +78,10 @@ contains
       type(error_t), intent(inout) :: err            !< status
       type(system_result_t), intent(in), optional :: system !< the system's stiffness
       ! the files in the order written (after environment.csv, results.h5)
-      character(len=*), parameter :: order(*) = [character(len=20) :: nodes_csv, &
+      character(len=*), parameter :: order(*) = [character(len=24) :: nodes_csv, &
          elements_csv, reactions_csv, lines_csv, points_csv, bodies_csv, stiffness_csv, &
-         body_modes_csv, offset_curve_csv, environment_csv, results_h5]
+         body_modes_csv, offset_curve_csv, modes_csv, mode_shapes_csv, environment_csv, &
+         results_h5]
       type(error_t) :: e, e_status
       type(run_summary_t) :: s
       integer :: k, j
@@ -106,9 +108,13 @@ contains
          case (9)
             if (model%output%csv) call write_offset_curve_csv(dir, model, system, e)
          case (10)
+            if (model%output%csv) call write_modes_csv(dir, model, lines, system, e)
+         case (11)      ! (written with static_modes.csv)
+         case (12)
             if (model%output%csv) call output_write_environment(dir, model, e)
-         case (11)
-            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e)
+         case (13)
+            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e, &
+                                                         system)
          end select
       end do
       ! status.txt last, and true: not complete when a file could not be written
@@ -261,12 +267,13 @@ contains
    ! ------------------------------------------------------------------ HDF5
 
    !> results.h5: root attributes, /deck, /static and one group per line.
-   subroutine write_results_h5(dir, model, lines, summary, err)
+   subroutine write_results_h5(dir, model, lines, summary, err, system)
       character(len=*), intent(in) :: dir         !< output folder
       type(model_t), intent(in) :: model          !< the model
       type(line_result_t), intent(in) :: lines(:) !< results
       type(run_summary_t), intent(in) :: summary  !< how the run went
       type(error_t), intent(inout) :: err         !< status
+      type(system_result_t), intent(in), optional :: system !< the modes (*MODAL)
       type(hdf5_file_t) :: h5
       character(len=:), allocatable :: tmp
       integer :: i
@@ -286,6 +293,7 @@ contains
       do i = 1, size(lines)
          call write_h5_line(h5, '/static/'//group_name(lines(i)%name, i), lines(i), err)
       end do
+      call write_modes_h5(h5, lines, system, err)
       call hdf5_close_file(h5, err)
       if (.not. has_error(err)) call commit_rename(tmp, path_join(dir, results_h5), err)
       if (has_error(err)) then

@@ -19,8 +19,9 @@ module rodyn_output_schema
 
    integer, parameter :: row_len = 240  !< longest row of the tables
 
-   !> Every column of every CSV table, file by file, in the order written.
-   character(len=row_len), parameter :: output_columns(*) = [character(len=row_len) :: &
+   !> Every column of every CSV table, file by file, in the order written: the static
+   !> tables', then the dynamic tables' (two arrays: a statement has at most 255 lines).
+   character(len=row_len), parameter :: static_columns(*) = [character(len=row_len) :: &
       'static_nodes.csv | line | - | line name', &
       'static_nodes.csv | node | - | node number along the line, from 1 (end A)', &
       'static_nodes.csv | s_m | m | unstretched arc length S of the node', &
@@ -103,13 +104,33 @@ module rodyn_output_schema
       'static_offset_curve.csv | ry_rad | rad | rotation vector from the start, y', &
       'static_offset_curve.csv | rz_rad | rad | rotation vector from the start, z', &
       'static_offset_curve.csv | max_end_force_N | N | largest force on a line end on the body', &
+      'static_modes.csv | mode | - | mode number, longest period first (*MODAL)', &
+      'static_modes.csv | period_s | s | natural period about the static equilibrium', &
+      'static_modes.csv | frequency_hz | Hz | natural frequency', &
+      'static_modes.csv | dominant | - | line, point or body with the largest share of '// &
+         'the kinetic energy', &
+      'static_modes.csv | share | - | that share of the kinetic energy (0 to 1)', &
+      'static_mode_shapes.csv | mode | - | mode number (static_modes.csv)', &
+      'static_mode_shapes.csv | object | - | line name, or FREE point or body name', &
+      'static_mode_shapes.csv | node | - | node number along the line from 1 (end A); 0 '// &
+         'a point or body', &
+      'static_mode_shapes.csv | s_m | m | unstretched arc length S of the node (0 a point '// &
+         'or body)', &
+      'static_mode_shapes.csv | x | - | x translation [m; largest translation of the '// &
+         'system 1 m] (a body: of its R)', &
+      'static_mode_shapes.csv | y | - | y translation [m]', &
+      'static_mode_shapes.csv | z | - | z translation [m]', &
+      'static_mode_shapes.csv | rx | - | rotation about x [rad] (0 without rotation unknowns)', &
+      'static_mode_shapes.csv | ry | - | rotation about y [rad]', &
+      'static_mode_shapes.csv | rz | - | rotation about z [rad]', &
       'static_lines.csv | line | - | line name', &
       'static_lines.csv | length_m | m | unstretched length L', &
       'static_lines.csv | touchdown_s_m | m | largest S in contact with the seabed (between '// &
          'the last node in contact and the next); -1 when none', &
       'environment.csv | key | - | name of the quantity', &
       'environment.csv | value | - | its value, in the unit of the row', &
-      'environment.csv | unit | - | unit of the value', &
+      'environment.csv | unit | - | unit of the value']
+   character(len=row_len), parameter :: dynamic_columns(*) = [character(len=row_len) :: &
       'dynamic_nodes.csv | time_s | s | time of the frame', &
       'dynamic_nodes.csv | line | - | line name', &
       'dynamic_nodes.csv | node | - | node number along the line, from 1 (end A)', &
@@ -297,6 +318,8 @@ module rodyn_output_schema
       'dynamic_log.csv | Lx | kg m2/s | x of the total angular momentum about the origin', &
       'dynamic_log.csv | Ly | kg m2/s | y of the total angular momentum about the origin', &
       'dynamic_log.csv | Lz | kg m2/s | z of the total angular momentum about the origin']
+   !> Every table's columns: 'file | column | unit | meaning'
+   character(len=row_len), parameter :: output_columns(*) = [static_columns, dynamic_columns]
 
    !> Every key of status.txt, in the order written: 'status.txt | key | unit | meaning'
    !> (NAME: one key per table or deck parameter). rodyn_output's output_write_status
@@ -437,6 +460,21 @@ module rodyn_output_schema
       'results.h5 | /static/LINE/reactions | N (columns 1-3), N m (columns 4-6) '// &
          '| force and moment of the support on the line, global axes; rows end A, '// &
          'end B; columns Fx, Fy, Fz, Mx, My, Mz; zero where end_held is 0', &
+      'results.h5 | /modes/period_s | s | natural periods (*MODAL), longest first', &
+      'results.h5 | /modes/frequency_hz | Hz | natural frequencies', &
+      'results.h5 | /modes/omega_rad_s | rad/s | natural circular frequencies', &
+      'results.h5 | /modes/LINE/ux | m | (node, mode) x translation of the node in each '// &
+         'mode, largest translation of the system 1 m', &
+      'results.h5 | /modes/LINE/uy | m | (node, mode) y translation of the node in each '// &
+         'mode, largest translation of the system 1 m', &
+      'results.h5 | /modes/LINE/uz | m | (node, mode) z translation of the node in each '// &
+         'mode, largest translation of the system 1 m', &
+      'results.h5 | /modes/LINE/rx | rad | (node, mode) rotation about x of the node in each '// &
+         'mode, largest translation of the system 1 m', &
+      'results.h5 | /modes/LINE/ry | rad | (node, mode) rotation about y of the node in each '// &
+         'mode, largest translation of the system 1 m', &
+      'results.h5 | /modes/LINE/rz | rad | (node, mode) rotation about z of the node in each '// &
+         'mode, largest translation of the system 1 m', &
       'results.h5 | /static/LINE/seabed_friction | N/m | magnitude of the '// &
          'seabed friction force per unit length at the nodes', &
       'results.h5 | /static/LINE/seabed_normal | N/m | seabed normal contact '// &
