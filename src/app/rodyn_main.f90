@@ -153,6 +153,11 @@ program rodyn
          call recover_system(model, prob, system, err)
          call modal_analysis(model, prob, system, err)
          if (.not. has_error(err)) call offset_curve(prob, model, system, err)
+         if (has_error(err)) then     ! the equilibrium stands; what follows it failed
+            summary%complete = .false.
+            summary%status = err%message
+            write (error_unit, '(a)') opts%deck//': error: '//err%message
+         end if
          call output_write_static(opts%outdir, model, lines, summary, out_err, system)
       else
          call output_write_static(opts%outdir, model, lines, summary, out_err)

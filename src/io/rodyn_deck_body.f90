@@ -397,8 +397,8 @@ contains
       if (pend%modal_card == 0) return
       if (model%dynamic%requested .and. .not. model%dynamic%start_static .and. &
           .not. model%static%requested) &
-         call card_error(deck%cards(pend%modal_card), '*MODAL needs the static '// &
-                        'equilibrium, and the dynamics start from the defined shape without '// &
-                        '*STATIC: add *STATIC or START=STATIC', err)
+         call card_error(deck%cards(pend%modal_card), 'the modal analysis needs the '// &
+                        'static equilibrium, and the dynamics start from the defined shape '// &
+                        'without *STATIC: add *STATIC or START=STATIC', err)
    end subroutine check_modal
 end module rodyn_deck_body

@@ -438,7 +438,7 @@ def check_run(src, work, rodyn, headers, datasets):
                         "0, 0, 0\n0, 0, 0\n100, 100, 100\n"
                         f"*BODY HYDROSTATICS, BODY=PLAT\n{springs}"
                         "*POINT, NAME=PA, TYPE=BODY, BODY=PLAT\n0, 0, 0\n"
-                        "*OFFSET CURVE, BODY=PLAT, FORCE=1e4, STEPS=2\n"
+                        "*OFFSET CURVE, BODY=PLAT, FORCE=1e4, STEPS=2\n*MODAL, MODES=3\n"
                         "*POINT, NAME=PB, TYPE=FREE, MASS=500\n-400, 52, -69.9\n"
                         "*LINE, NAME=TETHER, SECTION=CHAIN, LENGTH=30.0, ELEMENTS=4, ORDER=3,"
                         " ELEMENT=CABLE, POINT A=PA, POINT B=PB\n*STATIC,")
@@ -470,7 +470,7 @@ def check_run(src, work, rodyn, headers, datasets):
                 if not {"units", "description"} <= set(obj.attrs):
                     bare.append(path)
                     return
-                key = re.sub(r"^(static|dynamic)/(LEG|TETHER)/", r"\1/LINE/", path)
+                key = re.sub(r"^(static|dynamic|modes)/(LEG|TETHER)/", r"\1/LINE/", path)
                 found["/" + key] = (str(obj.attrs["units"]), str(obj.attrs["description"]))
         with h5py.File(out / name, "r") as f:
             f.visititems(visit)

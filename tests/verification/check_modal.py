@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""The modal analysis of a system (*MODAL, docs/theory.md eqs. (145)-(148)) against closed
+forms.
+
+string: decks/modal_string.inp, a taut cable (L = 99.9 m pulled to s = 100 m, EA 1e8 N,
+10 kg/m) on 10, 20 and 40 cubic elements: the transverse periods 2 s / n, T = 2 s /
+(n sqrt(T_0 s / m)), n = 1 .. 10 (two planes each), and the first axial period 2 L /
+sqrt(EA / rhoA), told apart by their shapes, within 1e-4 on 20 elements; the observed
+order of convergence of the first transverse and axial periods at least 3.5 between
+each pair of meshes.
+
+body: decks/modal_body_springs.inp, a body on uncoupled springs with an added mass in
+every direction: the six periods 2 pi sqrt((m + A_ii) / k_i), each mode along its one
+direction (shape of R), within 1e-6, and equal to the rigid-body periods of
+static_body_modes.csv within 1e-9.
+
+Usage: check_modal.py RODYN DECK_DIR OUT_DIR. Exit 0 on success."""
+import csv
+import math
+import os
+import subprocess
+import sys
+
+EA, L, S, MU = 1.0e8, 99.9, 100.0, 10.0
+DOFS = ("x", "y", "z", "rx", "ry", "rz")
+
+
+def run(rodyn, deck, out, *sets):
+    args = [rodyn, deck, "-o", out, "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    proc = subprocess.run(args, capture_output=True, text=True)
+    if proc.returncode != 0:
+        sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+    with open(os.path.join(out, "static_modes.csv")) as f:
+        modes = list(csv.DictReader(f))
+    with open(os.path.join(out, "static_mode_shapes.csv")) as f:
+        shapes = list(csv.DictReader(f))
+    return modes, shapes
+
+
+def string_periods(rodyn, deck, out, n):
+    """Transverse periods in order (x-motion below 1e-6 of the largest) and axial."""
+    modes, shapes = run(rodyn, deck, os.path.join(out, f"string_{n}"), f"N={n}")
+    big = {}
+    for r in shapes:
+        k = int(r["mode"])
+        b = big.setdefault(k, [0.0, 0.0])
+        b[0] = max(b[0], abs(float(r["x"])))
+        b[1] = max(b[1], abs(float(r["y"])), abs(float(r["z"])))
+    trans = [float(m["period_s"]) for m in modes if big[int(m["mode"])][0] < 1e-6]
+    axial = [float(m["period_s"]) for m in modes if big[int(m["mode"])][1] < 1e-6]
+    return trans, axial
+
+
+def check_string(rodyn, decks, out, fails):
+    tension = EA * (S / L - 1.0)
+    closed = [1.0 / (n / (2 * S) * math.sqrt(tension * S / (MU * L))) for n in range(1, 11)]
+    axial_closed = 2 * L / math.sqrt(EA / MU)
+    first = {}
+    for n in (10, 20, 40):
+        trans, axial = string_periods(rodyn, os.path.join(decks, "modal_string.inp"), out, n)
+        if len(trans) < 20 or not axial:
+            fails.append(f"string on {n} elements: {len(trans)} transverse and "
+                         f"{len(axial)} axial modes found")
+            return
+        errs = [abs(trans[2 * i + j] / closed[i] - 1) for i in range(10) for j in (0, 1)]
+        ax = abs(axial[0] / axial_closed - 1)
+        first[n] = (errs[0], ax)
+        print(f"string, {n} elements: transverse n = 1..10 largest error {max(errs):.2e} "
+              f"(n = 1: {errs[0]:.2e}); axial n = 1: {axial[0]:.9f} s, error {ax:.2e}")
+        if n == 20 and not (max(errs) <= 1e-4 and ax <= 1e-4):
+            fails.append(f"string on 20 elements: errors {max(errs):.2e}, {ax:.2e} > 1e-4")
+    for a, b in ((10, 20), (20, 40)):
+        for i, name in enumerate(("transverse", "axial")):
+            order = math.log(first[a][i] / first[b][i]) / math.log(b / a)
+            print(f"string, {name} n = 1: observed order {order:.2f} ({a} -> {b} elements)")
+            if not order >= 3.5:
+                fails.append(f"string {name}: order {order:.2f} < 3.5 ({a} -> {b})")
+
+
+def check_body(rodyn, decks, out, fails):
+    out = os.path.join(out, "body")
+    modes, shapes = run(rodyn, os.path.join(decks, "modal_body_springs.inp"), out)
+    added = (200.0, 300.0, 500.0, 10.0, 25.0, 35.0)
+    inertia = (1000.0,) * 3 + (100.0,) * 3
+    stiff = (1.0e5, 1.0e5, 1.0e5 + 1.0, 1.0e4, 1.0e4, 1.0e4)   # the thread's EA/L in z
+    closed = {d: 2 * math.pi * math.sqrt((m + a) / k)
+              for d, m, a, k in zip(DOFS, inertia, added, stiff)}
+    with open(os.path.join(out, "static_body_modes.csv")) as f:
+        rigid = sorted((float(r["period_s"]) for r in csv.DictReader(f)), reverse=True)
+    seen = set()
+    for m, p_rigid in zip(modes, rigid):
+        row = next(r for r in shapes if r["mode"] == m["mode"] and r["object"] == "BOX")
+        shape = {d: float(row[d]) for d in DOFS}
+        along = max(shape, key=lambda d: abs(shape[d]))
+        period = float(m["period_s"])
+        err = abs(period / closed[along] - 1)
+        err_rigid = abs(period / p_rigid - 1)
+        seen.add(along)
+        print(f"body mode {m['mode']}: {period:.12f} s along {along}: closed form "
+              f"{err:.1e}, rigid-body period {err_rigid:.1e}")
+        if not err <= 1e-6:
+            fails.append(f"body mode {m['mode']} ({along}) off the closed form by {err:.2e}")
+        if not err_rigid <= 1e-9:
+            fails.append(f"body mode {m['mode']} off static_body_modes by {err_rigid:.2e}")
+    if seen != set(DOFS):
+        fails.append(f"the body's modes are along {sorted(seen)}, not all six directions")
+
+
+def main():
+    rodyn, decks, out = sys.argv[1:4]
+    fails = []
+    check_string(rodyn, decks, out, fails)
+    check_body(rodyn, decks, out, fails)
+    for msg in fails:
+        print("FAIL:", msg)
+    sys.exit(1 if fails else 0)
+
+
+if __name__ == "__main__":
+    main()
