@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install what rodyn needs on a Debian machine, only what is missing:
-# gfortran, CMake, LAPACK/BLAS, HDF5 with its Fortran interface, m4 (to build pFUnit for
+# gfortran, CMake, LAPACK/BLAS, ARPACK, HDF5 with its Fortran interface, m4 (to build pFUnit for
 # the tests: tools/pfunit.sh) (Debian packages),
 # numpy, matplotlib, h5py for the post-processing, pytest and scipy for the tests, Dask
 # for batches beyond one machine (PyPI), and the post-processing package itself
@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-debs=(gfortran cmake make liblapack-dev libblas-dev libhdf5-dev m4)
+debs=(gfortran cmake make liblapack-dev libblas-dev libarpack2-dev libhdf5-dev m4)
 # --tests (tools/test.sh): also valgrind, for the allocation check of the Newton loops
 # (bench/alloc_check.sh, CTest bench_alloc_check_quick), and strace, which stops a run at
 # a chosen system call (tests/program/check_status_gap.py)

@@ -187,11 +187,18 @@ module rodyn_model
       integer :: steps = 10             !< steps to it
    end type offset_curve_t
 
+   !> *MODAL's eigensolver: by the size of the system, LAPACK's dense dsygv, ARPACK's
+   !> shift-invert Lanczos
+   integer, parameter, public :: modal_auto = 0, modal_dense = 1, modal_lanczos = 2
+   character(len=*), parameter, public :: modal_solver_names(0:2) = &
+      [character(len=7) :: 'AUTO', 'DENSE', 'LANCZOS']
+
    !> The modal analysis of the system about its static equilibrium (*MODAL): the
    !> `modes` longest natural periods and their shapes (docs/theory.md eqs. (145)-(148)).
    type :: modal_t
       logical :: requested = .false.    !< *MODAL given
       integer :: modes = 10             !< modes wanted (fewer if the system has fewer)
+      integer :: solver = modal_auto    !< modal_auto, modal_dense or modal_lanczos
    end type modal_t
 
    !> A line end that fails (*FAILURE): released from its support, point or body at a

@@ -24,23 +24,28 @@
 module rodyn_modal
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
-   use rodyn_model, only: model_t
+   use rodyn_model, only: model_t, modal_auto, modal_dense, modal_lanczos
    use rodyn_mesh, only: mesh_t
    use rodyn_statics, only: static_problem_t
    use rodyn_results, only: system_result_t
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_assembly, only: supports_t, add_node_block, assemble_water
-   use rodyn_banded, only: banded_t, banded_init, banded_matvec, dense_sym_eigen
-   use rodyn_junctions, only: junctions_t, junctions_condense
+   use rodyn_banded, only: banded_t, banded_init, banded_matvec, dense_sym_eigen, &
+                           banded_factor, banded_solve
+   use rodyn_junctions, only: junctions_t, junctions_condense, junctions_factor, &
+                              junctions_solve
+   use rodyn_lanczos, only: eigen_operator_t, lanczos_modes
    use rodyn_arrowhead, only: arrowhead_matvec
    use rodyn_water, only: water_loads_t
    use rodyn_rotation, only: cross
    implicit none
    private
-   public :: modal_analysis, modal_max_unknowns
+   public :: modal_analysis, modal_max_unknowns, modal_dense_limit
 
    !> The largest reduced system the dense eigensolver takes (two matrices of 290 MB)
    integer, parameter :: modal_max_unknowns = 6000
+   !> SOLVER=AUTO: dense up to this many reduced unknowns, Lanczos above
+   integer, parameter :: modal_dense_limit = 300
 
    !> The reduced unknowns (145): free band rows, then junction unknowns not held.
    type :: reduced_t
@@ -57,49 +62,209 @@ module rodyn_modal
       type(junctions_t) :: jn             !< junctions (E, F, C in jn%ah)
    end type operator_t
 
+   !> The eigenproblem's operations with their context (rodyn_lanczos).
+   type, extends(eigen_operator_t) :: system_operator_t
+      type(static_problem_t), pointer :: prob => null() !< statics, K factorised
+      type(operator_t), pointer :: mass => null()       !< the mass
+      type(reduced_t), pointer :: red => null()         !< reduced unknowns
+      real(wp), allocatable :: x(:), rx(:)              !< (n_dof) scratch, band layout
+      real(wp), allocatable :: y(:), ry(:)              !< (nj) scratch, junctions
+   contains
+      procedure :: solve_k => system_solve_k
+      procedure :: apply_m => system_apply_m
+   end type system_operator_t
+
 contains
 
    !> The modal analysis of model%modal into sys (nothing without *MODAL): prob solved
-   !> to its equilibrium (lambda = 1).
+   !> to its equilibrium (lambda = 1). The eigensolver: DENSE, LANCZOS, or AUTO (dense up
+   !> to modal_dense_limit reduced unknowns, docs/benchmarks.md "Modal analysis").
    subroutine modal_analysis(model, prob, sys, err)
-      type(model_t), intent(in) :: model              !< model (*MODAL, inertia)
-      type(static_problem_t), intent(inout) :: prob   !< solved statics
-      type(system_result_t), intent(inout) :: sys     !< modal results set
-      type(error_t), intent(inout) :: err             !< status
-      type(reduced_t) :: red
-      type(operator_t) :: mass
-      real(wp), allocatable :: kr(:, :), mr(:, :), mu(:)
-      character(len=160) :: msg
-      integer :: nm
+      type(model_t), intent(in) :: model                   !< model (*MODAL, inertia)
+      type(static_problem_t), intent(inout), target :: prob !< solved statics
+      type(system_result_t), intent(inout) :: sys          !< modal results set
+      type(error_t), intent(inout) :: err                  !< status
+      type(reduced_t), target :: red
+      type(operator_t), target :: mass
+      real(wp), allocatable :: v(:, :), mu(:)
+      integer :: nev, solver
       if (.not. model%modal%requested .or. has_error(err)) return
       call prob%evaluate(.true., err)
       if (has_error(err)) return
       call reduced_build(prob%sup, prob%jn, red)
+      call mass_build(model, prob, mass)
+      sys%modal_asymmetry = asymmetry(prob%bm, prob%jn, red)
+      call symmetric_part(prob%bm, prob%jn)
+      nev = min(model%modal%modes, red%n - 1)
+      solver = model%modal%solver
+      if (solver == modal_auto) solver = merge(modal_dense, modal_lanczos, &
+                                               red%n <= modal_dense_limit)
+      if (nev < 1) solver = modal_dense
+      if (solver == modal_dense) then
+         call dense_modes(prob, mass, red, model%modal%modes, v, mu, err)
+      else
+         call lanczos_path(prob, mass, red, nev, v, mu, err)
+      end if
+      if (has_error(err)) then
+         call set_error(err, stat_numerical, '*MODAL: '//err%message)
+         return
+      end if
+      call modes_store(prob, mass, red, v, mu, sys)
+   end subroutine modal_analysis
+
+   !> The modes by LAPACK's dense dsygv on the reduced matrices (147), the largest mu
+   !> (at most `modes` of them, those with mass).
+   subroutine dense_modes(prob, mass, red, modes, v, mu, err)
+      type(static_problem_t), intent(inout) :: prob   !< solved statics, K formed
+      type(operator_t), intent(in) :: mass            !< the mass
+      type(reduced_t), intent(in) :: red              !< reduced unknowns
+      integer, intent(in) :: modes                    !< modes wanted
+      real(wp), allocatable, intent(out) :: v(:, :)   !< (n, nm) modes
+      real(wp), allocatable, intent(out) :: mu(:)     !< (nm) 1/omega^2, descending [s2]
+      type(error_t), intent(inout) :: err             !< status
+      real(wp), allocatable :: kr(:, :), mr(:, :), all(:)
+      character(len=160) :: msg
+      integer :: nm
       if (red%n > modal_max_unknowns) then
-         write (msg, '(a,i0,a,i0,a)') '*MODAL: the system has ', red%n, &
-            ' unknowns, more than the dense eigensolver takes (', modal_max_unknowns, &
-            '): use fewer ELEMENTS'
+         write (msg, '(a,i0,a,i0,a)') 'the system has ', red%n, ' unknowns, more than '// &
+            'the dense eigensolver takes (', modal_max_unknowns, '): use SOLVER=LANCZOS'
          call set_error(err, stat_numerical, trim(msg))
          return
       end if
-      call mass_build(model, prob, mass)
-      allocate (kr(red%n, red%n), mr(red%n, red%n), mu(red%n))
+      allocate (kr(red%n, red%n), mr(red%n, red%n), all(red%n))
       call dense_of(prob%bm, prob%jn, red, kr)
       call dense_of(mass%bm, mass%jn, red, mr)
-      sys%modal_asymmetry = maxval(abs(kr - transpose(kr)))/max(maxval(abs(kr)), tiny(1.0_wp))
       kr = 0.5_wp*(kr + transpose(kr))
       mr = 0.5_wp*(mr + transpose(mr))
-      call dense_sym_eigen(mr, kr, mu, err)
+      call dense_sym_eigen(mr, kr, all, err)
       if (has_error(err)) then
-         call set_error(err, stat_numerical, '*MODAL: the stiffness about the equilibrium '// &
-                        'is not positive definite (a motion without restoring, or an '// &
-                        'unstable equilibrium): '//err%message)
+         err%message = 'the stiffness about the equilibrium is not positive definite (a '// &
+                       'motion without restoring, or an unstable equilibrium): '//err%message
          return
       end if
-      nm = min(model%modal%modes, count(mu > 1.0e-12_wp*maxval(mu)))
-      call modes_store(prob, mass, red, mr(:, red%n:red%n - nm + 1:-1), &
-                       mu(red%n:red%n - nm + 1:-1), sys)
-   end subroutine modal_analysis
+      nm = min(modes, count(all > 1.0e-12_wp*maxval(all)))
+      mu = all(red%n:red%n - nm + 1:-1)
+      v = mr(:, red%n:red%n - nm + 1:-1)
+   end subroutine dense_modes
+
+   !> The nev modes by ARPACK's shift-invert Lanczos (rodyn_lanczos) with the statics'
+   !> factorised tangent.
+   subroutine lanczos_path(prob, mass, red, nev, v, mu, err)
+      type(static_problem_t), intent(inout), target :: prob !< solved statics, K formed
+      type(operator_t), intent(inout), target :: mass      !< the mass
+      type(reduced_t), intent(in), target :: red           !< reduced unknowns
+      integer, intent(in) :: nev                           !< modes wanted (< red%n)
+      real(wp), allocatable, intent(out) :: v(:, :)        !< (n, nev) modes
+      real(wp), allocatable, intent(out) :: mu(:)          !< (nev) 1/omega^2 [s2]
+      type(error_t), intent(inout) :: err                  !< status
+      type(system_operator_t) :: op
+      if (prob%jn%nj > 0) then
+         call junctions_factor(prob%jn, prob%bm, err)
+      else
+         call banded_factor(prob%bm, err, prob%sup%first)
+      end if
+      if (has_error(err)) then
+         err%message = 'the stiffness about the equilibrium is singular: '//err%message
+         return
+      end if
+      op%prob => prob
+      op%mass => mass
+      op%red => red
+      allocate (op%x(prob%sup%n_dof), op%rx(prob%sup%n_dof), op%y(prob%jn%nj), &
+                op%ry(prob%jn%nj))
+      allocate (v(red%n, nev), mu(nev))
+      call lanczos_modes(op, red%n, nev, mu, v, err)
+   end subroutine lanczos_path
+
+   !> y = K^-1 x in the reduced unknowns (the factorised tangent of the statics).
+   subroutine system_solve_k(this, x, y, err)
+      class(system_operator_t), intent(inout) :: this !< context
+      real(wp), intent(in) :: x(:)                    !< (n) right-hand side
+      real(wp), intent(out) :: y(:)                   !< (n) solution
+      type(error_t), intent(inout) :: err             !< status
+      associate (red => this%red, p => this%prob)
+         this%x = 0.0_wp
+         this%x(red%band) = x(1:red%nb)
+         if (size(red%junc) > 0) this%x(p%jn%jdof(red%junc)) = x(red%nb + 1:)
+         if (p%jn%nj > 0) then
+            call junctions_solve(p%jn, p%sup, p%bm, this%x, err)
+         else
+            call banded_solve(p%bm, this%x, err)
+         end if
+         y(1:red%nb) = this%x(red%band)
+         if (size(red%junc) > 0) y(red%nb + 1:) = this%x(p%jn%jdof(red%junc))
+      end associate
+   end subroutine system_solve_k
+
+   !> y = M x in the reduced unknowns.
+   subroutine system_apply_m(this, x, y)
+      class(system_operator_t), intent(inout) :: this !< context
+      real(wp), intent(in) :: x(:)                    !< (n) vector
+      real(wp), intent(out) :: y(:)                   !< (n) product
+      associate (red => this%red)
+         this%x = 0.0_wp
+         this%y = 0.0_wp
+         this%x(red%band) = x(1:red%nb)
+         this%y(red%junc) = x(red%nb + 1:)
+         call apply(this%mass%bm, this%mass%jn, this%x, this%y, this%rx, this%ry)
+         y(1:red%nb) = this%rx(red%band)
+         y(red%nb + 1:) = this%ry(red%junc)
+      end associate
+   end subroutine system_apply_m
+
+   !> K <- (K + K^T)/2 in place: the band, the arrowhead's E and F^T, and C (eq. (147):
+   !> the modes of the symmetric part of the tangent).
+   subroutine symmetric_part(bm, jn)
+      type(banded_t), intent(inout) :: bm     !< band (not factorised)
+      type(junctions_t), intent(inout) :: jn  !< junctions condensed with it
+      real(wp) :: a
+      integer :: i, j, b
+      do j = 1, bm%n
+         do i = j + 1, min(bm%n, j + min(bm%kl, bm%ku))
+            a = 0.5_wp*(bm%ab(bm%kv + i - j, j) + bm%ab(bm%kv + j - i, i))
+            bm%ab(bm%kv + i - j, j) = a
+            bm%ab(bm%kv + j - i, i) = a
+         end do
+      end do
+      if (jn%nj == 0) return
+      jn%ah%c = 0.5_wp*(jn%ah%c + transpose(jn%ah%c))
+      do b = 1, size(jn%ah%blocks)
+         associate (blk => jn%ah%blocks(b))
+            blk%e = 0.5_wp*(blk%e + transpose(blk%f))
+            blk%f = transpose(blk%e)
+         end associate
+      end do
+   end subroutine symmetric_part
+
+   !> An estimate of |K - K^T| / |K| from two fixed vectors a, b of the reduced unknowns:
+   !> |a^T K b - b^T K a| / (|K a| |b|), K before its factorisation.
+   function asymmetry(bm, jn, red) result(r)
+      type(banded_t), intent(in) :: bm        !< tangent
+      type(junctions_t), intent(in) :: jn     !< junctions condensed with it
+      type(reduced_t), intent(in) :: red      !< reduced unknowns
+      real(wp) :: r
+      real(wp), allocatable :: a(:), b(:), ka(:), kb(:), x(:), y(:), rx(:), ry(:)
+      integer :: i
+      allocate (x(bm%n), rx(bm%n), y(jn%nj), ry(jn%nj))
+      a = [(sin(1.0_wp + 0.7_wp*i), i=1, red%n)]
+      b = [(cos(2.0_wp + 1.3_wp*i), i=1, red%n)]
+      allocate (ka(red%n), kb(red%n))
+      call product(a, ka)
+      call product(b, kb)
+      r = abs(dot_product(b, ka) - dot_product(a, kb))/max(norm2(ka)*norm2(b), tiny(1.0_wp))
+   contains
+      subroutine product(u, ku)
+         real(wp), intent(in) :: u(:)
+         real(wp), intent(out) :: ku(:)
+         x = 0.0_wp
+         y = 0.0_wp
+         x(red%band) = u(1:red%nb)
+         y(red%junc) = u(red%nb + 1:)
+         call apply(bm, jn, x, y, rx, ry)
+         ku(1:red%nb) = rx(red%band)
+         ku(red%nb + 1:) = ry(red%junc)
+      end subroutine product
+   end function asymmetry
 
    !> The reduced unknowns of the statics' Newton step (145).
    subroutine reduced_build(sup, jn, red)

@@ -7,7 +7,7 @@ module rodyn_deck_body
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, body_t, body_fixed, body_free, body_kind_names, &
-                          point_body
+                          point_body, modal_solver_names
    use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
                                card_error, card_data_error, card_get_name, card_get_choice, &
                                card_check_data, card_data_reals, card_get_real, card_get_int, &
@@ -360,19 +360,20 @@ contains
       end do
    end subroutine check_bodies
 
-   !> *MODAL [, MODES=n]: after the statics, the n (1 to 1000, default 10) longest
-   !> natural periods of the whole system about its equilibrium and their shapes. At most
-   !> one.
+   !> *MODAL [, MODES=n] [, SOLVER=AUTO|DENSE|LANCZOS]: after the statics, the n (1 to
+   !> 1000, default 10) longest natural periods of the whole system about its equilibrium
+   !> and their shapes. At most one.
    subroutine read_modal_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the card
       type(model_t), intent(inout) :: model   !< model%modal set
       type(pending_t), intent(inout) :: pend  !< remembers the card
       type(error_t), intent(inout) :: err     !< status
+      integer :: k
       associate (card => deck%cards(ic), mo => model%modal)
          call check_once(deck, ic, pend%modal_card, err)
          if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'MODES'], err)
+         call card_check_params(card, [character(len=param_len) :: 'MODES', 'SOLVER'], err)
          if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
@@ -383,6 +384,10 @@ contains
                             int_str(mo%modes), err)
             return
          end if
+         k = mo%solver + 1              ! (choices from 1; the names from 0)
+         call card_get_choice(card, 'SOLVER', modal_solver_names, k, err)
+         if (has_error(err)) return
+         mo%solver = k - 1
          mo%requested = .true.
       end associate
    end subroutine read_modal_card
