@@ -3,8 +3,9 @@
 # gfortran, CMake, LAPACK/BLAS, ARPACK, HDF5 with its Fortran interface, m4 (to build pFUnit for
 # the tests: tools/pfunit.sh) (Debian packages),
 # numpy, matplotlib, h5py for the post-processing, pytest and scipy for the tests, Dask
-# for batches beyond one machine (PyPI), and the post-processing package itself
-# (postproc/, editable, with its extra 'dask': its console commands go on the PATH).
+# for batches beyond one machine, fypp for the build (PyPI), and the post-processing
+# package itself (postproc/, editable, with its extra 'dask': its console commands go on
+# the PATH).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -33,6 +34,15 @@ if ! python3 -c 'import numpy, matplotlib, scipy, h5py, pytest, distributed' >/d
   echo "setup: installing Python packages from postproc/requirements.txt"
   python3 -m pip install -q -r postproc/requirements.txt 2>/dev/null ||
     python3 -m pip install -q --break-system-packages -r postproc/requirements.txt
+fi
+
+# fypp, the preprocessor the build runs (CMakeLists.txt) to generate the per-type and
+# per-rank routines of the HDF5 layer from src/io/rodyn_hdf5_arrays.fypp
+if ! command -v fypp >/dev/null 2>&1; then
+  echo "setup: installing fypp (PyPI)"
+  python3 -m pip install -q 'fypp>=3.1' 2>/dev/null ||
+    python3 -m pip install -q --break-system-packages 'fypp>=3.1'
+  if command -v pyenv >/dev/null 2>&1; then pyenv rehash; fi  # the shim of its command
 fi
 
 # The post-processing package (postproc/pyproject.toml: rodyn_post and its console

@@ -5,7 +5,7 @@ program and its current figures; the order in which the work was done belongs to
 usage: check_no_history.py SOURCE_DIR [--self-test]
 
 Scans README.md, docs/, src/, postproc/, bench/ and tools/ (text files: .md, .f90, .F90,
-.pf, .inc, .py, .sh, .txt, .toml, .cmake, .inp, CMakeLists.txt; bench/results/, the
+.fypp, .pf, .inc, .py, .sh, .txt, .toml, .cmake, .inp, CMakeLists.txt; bench/results/, the
 generated data, is left out) and reports FILE:LINE: history: TEXT for
   - `session` as a word (case-insensitive): "the ninth session", "this session"
     (identifiers such as start_new_session are not words of prose, and a pytest
@@ -33,11 +33,11 @@ import re
 import sys
 
 SCAN_DIRS = ("docs", "src", "postproc", "bench", "tools")
-SUFFIXES = {".md", ".f90", ".F90", ".pf", ".inc", ".py", ".sh", ".txt", ".toml",
+SUFFIXES = {".md", ".f90", ".F90", ".fypp", ".pf", ".inc", ".py", ".sh", ".txt", ".toml",
             ".cmake", ".inp"}
 SKIP_PARTS = {"results", ".venv", ".work", "__pycache__", "build", ".git",
               "node_modules", ".pytest_cache"}
-CODE_SUFFIXES = {".f90", ".F90", ".pf", ".inc", ".py", ".sh", ".cmake"}
+CODE_SUFFIXES = {".f90", ".F90", ".fypp", ".pf", ".inc", ".py", ".sh", ".cmake"}
 
 DATE = r"20\d\d-[01]\d-[0-3]\d"
 RULES = [
@@ -51,7 +51,7 @@ RULES = [
     ("a date tied to a change", re.compile(
         r"\b(since|before|until|till|as of|up to)\s+(the\s+)?" + DATE, re.I)),
 ]
-COMMENT = {".f90": "!", ".F90": "!", ".pf": "!", ".inc": "!", ".py": "#", ".sh": "#",
+COMMENT = {".f90": "!", ".F90": "!", ".fypp": "!", ".pf": "!", ".inc": "!", ".py": "#", ".sh": "#",
            ".cmake": "#"}
 CHANGE_WORD = re.compile(
     r"\b(add|added|change|changed|fix|fixed|move|moved|removed|replaced|rewritten|"

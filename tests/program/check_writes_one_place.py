@@ -4,14 +4,16 @@
 usage: check_writes_one_place.py SOURCE_DIR
 
 Every byte rodyn writes to a file goes through rodyn_outfile (write(2), close(2),
-ftruncate(2), rename(2): every call checked) or rodyn_hdf5 (every HDF5 call checked), so
-a full disk or a failed close is seen wherever it happens. Checks, over src/**/*.f90:
+ftruncate(2), rename(2): every call checked) or the HDF5 layer, rodyn_hdf5 (every HDF5
+call checked), so a full disk or a failed close is seen wherever it happens. Checks, over
+src/**/*.f90 and the fypp templates src/**/*.fypp the build generates Fortran from:
   1. every Fortran OPEN (continuation lines joined) is ACTION='READ', but the lock of
      rodyn_outdir (STATUS='NEW', ACTION='WRITE': an exclusive create, closed at once;
      its content is written through rodyn_outfile);
   2. the C file calls (open, write, pwrite, close, ftruncate, rename, unlink, fsync,
      creat, fopen, fwrite) are bound only in rodyn_outfile.f90;
-  3. HDF5 is called (CALL H5...) only in rodyn_hdf5.f90.
+  3. HDF5 is called (CALL H5...) only in the HDF5 layer's files: rodyn_hdf5.f90,
+     rodyn_hdf5_base.f90 and the template rodyn_hdf5_arrays.fypp.
 """
 import pathlib
 import re
@@ -19,6 +21,7 @@ import sys
 
 C_FILE_CALLS = ("open", "write", "pwrite", "close", "ftruncate", "rename", "unlink",
                 "fsync", "creat", "fopen", "fwrite")
+HDF5_LAYER = ("rodyn_hdf5.f90", "rodyn_hdf5_base.f90", "rodyn_hdf5_arrays.fypp")
 
 
 def statements(text):
@@ -43,7 +46,7 @@ def statements(text):
 def main():
     src = pathlib.Path(sys.argv[1]).resolve() / "src"
     problems, opens, binds, hdf5 = [], 0, 0, 0
-    for path in sorted(src.rglob("*.f90")):
+    for path in sorted(src.rglob("*.f90")) + sorted(src.rglob("*.fypp")):
         name = path.name
         for stmt in statements(path.read_text()):
             low = stmt.lower().replace(" ", "")
@@ -60,7 +63,7 @@ def main():
                         problems.append(f"{path}: binds C's {m.group(1)}: {stmt}")
             if re.search(r"(^|\))callh5", low):
                 hdf5 += 1
-                if name != "rodyn_hdf5.f90":
+                if name not in HDF5_LAYER:
                     problems.append(f"{path}: calls HDF5 outside rodyn_hdf5: {stmt}")
     for p in problems:
         print("FAIL: " + p)
@@ -71,7 +74,7 @@ def main():
         sys.exit(1)
     print(f"{opens} OPEN statements: all for reading but the lock's exclusive create; "
           f"{binds} C file calls bound, all in rodyn_outfile.f90; {hdf5} HDF5 calls, all "
-          "in rodyn_hdf5.f90")
+          "in the HDF5 layer (" + ", ".join(HDF5_LAYER) + ")")
     print("OK")
 
 
