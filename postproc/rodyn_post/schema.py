@@ -636,6 +636,12 @@ ATTRIBUTES = {'results.h5': {'/:program': ('-', 'program name: rodyn'),
                 '/static:iterations': ('-', 'Newton iterations in total'),
                 '/static:cutbacks': ('-', 'increment halvings'),
                 '/static:wall_time_s': ('s', 'solve wall time'),
+                '/modes:solver': ('-',
+                                  'the eigensolver of *MODAL: DENSE (LAPACK) or LANCZOS '
+                                  '(ARPACK)'),
+                '/modes:tangent_asymmetry': ('-',
+                                             '|K - K^T| / |K| of the tangent, estimated; '
+                                             'the modes are those of its symmetric part'),
                 '/static/LINE:name': ('-', 'the line name'),
                 '/static/LINE:touchdown_s': ('m',
                                              'largest S in contact with the seabed '

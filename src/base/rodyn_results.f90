@@ -73,7 +73,8 @@ module rodyn_results
       !> (no, nm) each object's share of the mode's kinetic energy, objects the lines (deck
       !> order) then the masters (kind, index above)
       real(wp), allocatable :: modal_share(:, :)
-      real(wp) :: modal_asymmetry = 0.0_wp !< |K - K^T| / |K| of the tangent used [-]
+      real(wp) :: modal_asymmetry = 0.0_wp !< |K - K^T| / |K| of the tangent, estimated [-]
+      character(len=7) :: modal_solver = ''  !< the eigensolver used: DENSE or LANCZOS
    end type system_result_t
 
    !> One time step of a dynamic run: solver effort and the balance of energy and

@@ -24,7 +24,8 @@
 module rodyn_modal
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
-   use rodyn_model, only: model_t, modal_auto, modal_dense, modal_lanczos
+   use rodyn_model, only: model_t, modal_auto, modal_dense, modal_lanczos, &
+                          modal_solver_names
    use rodyn_mesh, only: mesh_t
    use rodyn_statics, only: static_problem_t
    use rodyn_results, only: system_result_t
@@ -45,7 +46,7 @@ module rodyn_modal
    !> The largest reduced system the dense eigensolver takes (two matrices of 290 MB)
    integer, parameter :: modal_max_unknowns = 6000
    !> SOLVER=AUTO: dense up to this many reduced unknowns, Lanczos above
-   integer, parameter :: modal_dense_limit = 300
+   integer, parameter :: modal_dense_limit = 100
 
    !> The reduced unknowns (145): free band rows, then junction unknowns not held.
    type :: reduced_t
@@ -100,6 +101,7 @@ contains
       if (solver == modal_auto) solver = merge(modal_dense, modal_lanczos, &
                                                red%n <= modal_dense_limit)
       if (nev < 1) solver = modal_dense
+      sys%modal_solver = modal_solver_names(solver)
       if (solver == modal_dense) then
          call dense_modes(prob, mass, red, model%modal%modes, v, mu, err)
       else

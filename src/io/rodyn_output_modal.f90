@@ -12,7 +12,7 @@ module rodyn_output_modal
    use rodyn_output_schema, only: schema_header
    use rodyn_output_common, only: path_join, csv_name
    use rodyn_output_table, only: write_described, group_name
-   use rodyn_hdf5, only: hdf5_file_t, hdf5_create_group
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_create_group, hdf5_write_attribute
    use rodyn_format, only: real_text, int_text
    implicit none
    private
@@ -132,6 +132,8 @@ contains
       if (has_error(err) .or. .not. present(sys)) return
       if (.not. allocated(sys%modal_period)) return
       call hdf5_create_group(h5, '/modes', err)
+      call hdf5_write_attribute(h5, '/modes', 'solver', trim(sys%modal_solver), err)
+      call hdf5_write_attribute(h5, '/modes', 'tangent_asymmetry', sys%modal_asymmetry, err)
       call write_described(h5, results_h5, '/modes/period_s', err, x1=sys%modal_period)
       call write_described(h5, results_h5, '/modes/frequency_hz', err, &
                            x1=1.0_wp/sys%modal_period)

@@ -397,6 +397,10 @@ module rodyn_output_schema
       'results.h5 | /static:iterations | - | Newton iterations in total', &
       'results.h5 | /static:cutbacks | - | increment halvings', &
       'results.h5 | /static:wall_time_s | s | solve wall time', &
+      'results.h5 | /modes:solver | - | the eigensolver of *MODAL: DENSE (LAPACK) or '// &
+         'LANCZOS (ARPACK)', &
+      'results.h5 | /modes:tangent_asymmetry | - | |K - K^T| / |K| of the tangent, '// &
+         'estimated; the modes are those of its symmetric part', &
       'results.h5 | /static/LINE:name | - | the line name', &
       'results.h5 | /static/LINE:touchdown_s | m | largest S in contact with the seabed '// &
          '(between the last node in contact and the next); -1 when none', &

@@ -14,6 +14,11 @@ every direction: the six periods 2 pi sqrt((m + A_ii) / k_i), each mode along it
 direction (shape of R), within 1e-6, and equal to the rigid-body periods of
 static_body_modes.csv within 1e-9.
 
+spar: decks/modal_spar.inp, the OC3-Hywind spar on its chains (20 cubic elements a line,
+a FREE body and three lines joined through it): the ten longest periods by SOLVER=DENSE
+(LAPACK) and SOLVER=LANCZOS (ARPACK) within 1e-9 of each other, the longest (surge) in
+the spar (share of the kinetic energy above 0.9).
+
 Usage: check_modal.py RODYN DECK_DIR OUT_DIR. Exit 0 on success."""
 import csv
 import math
@@ -108,11 +113,31 @@ def check_body(rodyn, decks, out, fails):
         fails.append(f"the body's modes are along {sorted(seen)}, not all six directions")
 
 
+def check_spar(rodyn, decks, out, fails):
+    deck = os.path.join(decks, "modal_spar.inp")
+    dense, _ = run(rodyn, deck, os.path.join(out, "spar_dense"), "SOLVER=DENSE")
+    lanczos, _ = run(rodyn, deck, os.path.join(out, "spar_lanczos"), "SOLVER=LANCZOS")
+    if len(dense) != 10 or len(lanczos) != 10:
+        fails.append(f"spar: {len(dense)} dense and {len(lanczos)} Lanczos modes, not 10")
+        return
+    diff = max(abs(float(a["period_s"]) / float(b["period_s"]) - 1)
+               for a, b in zip(dense, lanczos))
+    first = lanczos[0]
+    print(f"spar: ten periods {float(lanczos[0]['period_s']):.3f} s to "
+          f"{float(lanczos[-1]['period_s']):.3f} s; DENSE and LANCZOS differ by {diff:.1e}; "
+          f"mode 1 in {first['dominant']} ({float(first['share']):.3f})")
+    if not diff <= 1e-9:
+        fails.append(f"spar: the solvers' periods differ by {diff:.2e}")
+    if first["dominant"] != "SPAR" or not float(first["share"]) > 0.9:
+        fails.append(f"spar: mode 1 in {first['dominant']} ({first['share']}), not the spar")
+
+
 def main():
     rodyn, decks, out = sys.argv[1:4]
     fails = []
     check_string(rodyn, decks, out, fails)
     check_body(rodyn, decks, out, fails)
+    check_spar(rodyn, decks, out, fails)
     for msg in fails:
         print("FAIL:", msg)
     sys.exit(1 if fails else 0)
