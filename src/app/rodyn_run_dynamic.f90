@@ -107,38 +107,14 @@ contains
       type(checkpoint_t), intent(in), optional :: resume !< continue from this checkpoint
       type(dynamic_problem_t) :: prob
       type(error_t) :: werr
-      character(len=32) :: hook
-      integer :: stat
       type(dynamic_run_t), target :: run
       run%model => model
       run%summary => summary
-      run%dir = dir
-      run%program_id = ''
-      if (model%dynamic%checkpoint > 0.0_wp) run%program_id = checkpoint_program_id()
-      run%kill_after = -1
-      call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
-      if (stat == 0) read (hook, *, iostat=stat) run%kill_after
-      run%r_start = r0
-      run%pend%pending = .false.
-      run%pend%have_back = .false.
-      run%pend%frame_waiting = .false.
-      run%pend%k_pend = 0
-      if (allocated(run%pend%r_pend)) deallocate (run%pend%r_pend, run%pend%r_back, run%r_frame)
-      allocate (run%pend%r_pend(6, mesh%n_nodes), run%pend%r_back(6, mesh%n_nodes), &
-                run%r_frame(6, mesh%n_nodes))
-      run%show_progress = progress
-      if (.not. model%dynamic%start_static .and. .not. present(resume)) &
-         call apply_initial_velocities(model, mesh, state)
-      run%start_state = state
-      call dynamics_setup(prob, model, mesh, state)
-      call sea_scene_build(model, mesh, prob%x_start, run%scene)
-      run%sea_now = sea_values_t()
-      call recover_state(model, mesh, state, 1.0_wp, run%r_start, prob%sup%held, &
-                         run%frame_lines, prob%water, 0.0_wp)
+      call set_up(run, prob, mesh, state, r0, dir, progress, present(resume))
       if (present(resume)) then
          call dynamic_output_open(run%writer, dir, model, run%frame_lines, err, &
                                   resume=resume%mark, sea=run%scene)
-         if (.not. has_error(err)) call restore(resume)
+         if (.not. has_error(err)) call restore(run, prob, resume)
       else
          ! a checkpoint of an earlier run in this folder no longer fits its files
          call remove_file(path_join(dir, checkpoint_file))
@@ -187,35 +163,77 @@ contains
       end if
       call dynamic_output_close(run%writer, summary, werr)
       if (has_error(werr) .and. .not. has_error(err)) call set_error(err, werr%code, werr%message)
-   contains
-      !> The problem and the pending support forces as the checkpoint holds them (the
-      !> problem set up from the start state; a frame waiting recovered again, with the
-      !> water at the last step's force time as then).
-      subroutine restore(ck)
-         type(checkpoint_t), intent(in) :: ck      !< the checkpoint
-         call state_copy(ck%now, prob%s1)
-         prob%r = ck%r
-         prob%dt = ck%dt
-         prob%t0 = ck%t0
-         prob%f_conv = ck%f_conv
-         prob%m_conv = ck%m_conv
-         prob%f_last = ck%f_last
-         prob%m_last = ck%m_last
-         prob%have_conv = ck%have_conv
-         run%pend = ck%pend
-         if (prob%nd%on) then
-            prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
-            prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
-            prob%nd%energy = ck%nd_energy
-         end if
-         if (run%pend%frame_waiting) then
-            if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
-                                                       .true.)
-            call recover_state(run%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
-                               prob%sup%held, run%frame_lines, prob%water, ck%loop%t)
-         end if
-      end subroutine restore
    end subroutine run_dynamic
+
+   !> The run's context before its output is opened (run%model set): the test hook, no
+   !> support forces pending, the start state (with its initial velocities unless the
+   !> run starts from the static state or a checkpoint), the problem set up from it, the
+   !> sea scene, and the start state's results in run%frame_lines.
+   subroutine set_up(run, prob, mesh, state, r0, dir, progress, resuming)
+      type(dynamic_run_t), intent(inout) :: run      !< the run
+      type(dynamic_problem_t), intent(inout) :: prob !< problem, set up
+      type(mesh_t), intent(in), target :: mesh       !< mesh
+      type(state_t), intent(inout), target :: state  !< start state
+      real(wp), intent(in) :: r0(:, :)               !< (6, nn) start support forces
+      character(len=*), intent(in) :: dir            !< output folder
+      logical, intent(in) :: progress                !< show the progress line
+      logical, intent(in) :: resuming                !< continued from a checkpoint
+      character(len=32) :: hook
+      integer :: stat
+      run%dir = dir
+      run%program_id = ''
+      if (run%model%dynamic%checkpoint > 0.0_wp) run%program_id = checkpoint_program_id()
+      run%kill_after = -1
+      call get_environment_variable('RODYN_TEST_KILL_AFTER_STEP', hook, status=stat)
+      if (stat == 0) read (hook, *, iostat=stat) run%kill_after
+      run%r_start = r0
+      run%pend%pending = .false.
+      run%pend%have_back = .false.
+      run%pend%frame_waiting = .false.
+      run%pend%k_pend = 0
+      if (allocated(run%pend%r_pend)) deallocate (run%pend%r_pend, run%pend%r_back, run%r_frame)
+      allocate (run%pend%r_pend(6, mesh%n_nodes), run%pend%r_back(6, mesh%n_nodes), &
+                run%r_frame(6, mesh%n_nodes))
+      run%show_progress = progress
+      if (.not. run%model%dynamic%start_static .and. .not. resuming) &
+         call apply_initial_velocities(run%model, mesh, state)
+      run%start_state = state
+      call dynamics_setup(prob, run%model, mesh, state)
+      call sea_scene_build(run%model, mesh, prob%x_start, run%scene)
+      run%sea_now = sea_values_t()
+      call recover_state(run%model, mesh, state, 1.0_wp, run%r_start, prob%sup%held, &
+                         run%frame_lines, prob%water, 0.0_wp)
+   end subroutine set_up
+
+   !> The problem and the pending support forces as the checkpoint holds them (the
+   !> problem set up from the start state; a frame waiting recovered again, with the
+   !> water at the last step's force time as then).
+   subroutine restore(run, prob, ck)
+      type(dynamic_run_t), intent(inout) :: run      !< the run
+      type(dynamic_problem_t), intent(inout) :: prob !< problem, set up
+      type(checkpoint_t), intent(in) :: ck           !< the checkpoint
+      call state_copy(ck%now, prob%s1)
+      prob%r = ck%r
+      prob%dt = ck%dt
+      prob%t0 = ck%t0
+      prob%f_conv = ck%f_conv
+      prob%m_conv = ck%m_conv
+      prob%f_last = ck%f_last
+      prob%m_last = ck%m_last
+      prob%have_conv = ck%have_conv
+      run%pend = ck%pend
+      if (prob%nd%on) then
+         prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
+         prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
+         prob%nd%energy = ck%nd_energy
+      end if
+      if (run%pend%frame_waiting) then
+         if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
+                                                    .true.)
+         call recover_state(run%model, prob%mesh, prob%s1, 1.0_wp, prob%r, &
+                            prob%sup%held, run%frame_lines, prob%water, ck%loop%t)
+      end if
+   end subroutine restore
 
    !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
    !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).

@@ -136,7 +136,7 @@ contains
       type(error_t), intent(inout) :: err          !< status
       type(hdf5_file_t) :: h5
       type(error_t) :: e
-      character(len=:), allocatable :: path, text
+      character(len=:), allocatable :: path
       real(wp), allocatable :: reals(:), bytes(:)
       integer, allocatable :: ints(:)
       if (has_error(err)) return
@@ -148,27 +148,8 @@ contains
          return
       end if
       call hdf5_open_file(h5, path, e)
-      call hdf5_read_dataset(h5, '/program', text, e)
-      if (has_error(e)) then
-         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': '''//path// &
-                        ''' is not a readable checkpoint: '//e%message)
-         call hdf5_close_file(h5, e)
-         return
-      end if
-      if (text /= checkpoint_program_id()) then
-         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
-                        'checkpoint was written by another build of rodyn ('//text// &
-                        '; this is '//checkpoint_program_id()//'): continue it with that '// &
-                        'program, or run the deck again without --restart')
-         call hdf5_close_file(h5, e)
-         return
-      end if
-      call hdf5_read_dataset(h5, '/deck', text, e)
-      if (.not. has_error(e) .and. text /= deck_identity(model)) then
-         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
-                        'checkpoint belongs to another deck (its text, an included file or'// &
-                        ' a parameter differs from those of the run in '''//dir// &
-                        '''): restart with the same deck and --set values')
+      call check_identity(h5, dir, path, model, e, err)
+      if (has_error(err)) then
          call hdf5_close_file(h5, e)
          return
       end if
@@ -184,8 +165,8 @@ contains
       end if
       ck%start = like
       ck%now = like
-      call read_state('/start_', ck%start)
-      call read_state('/now_', ck%now)
+      call read_state(h5, '/start_', ck%start, e)
+      call read_state(h5, '/now_', ck%now, e)
       call hdf5_close_file(h5, e)
       if (.not. has_error(e)) then
          if (size(reals) /= n_reals .or. size(ints) /= n_ints .or. &
@@ -200,48 +181,85 @@ contains
       call unpack_reals(reals, ck)
       call unpack_ints(ints, ck)
       ck%mark%csv_bytes = int(bytes, i8)
+   end subroutine checkpoint_read
+
+   !> Refuse (err, stat_input) a checkpoint that cannot be read, or that another build of
+   !> rodyn or another deck wrote: /program against checkpoint_program_id(), /deck
+   !> against deck_identity(model).
+   subroutine check_identity(h5, dir, path, model, e, err)
+      type(hdf5_file_t), intent(in) :: h5          !< the checkpoint, open
+      character(len=*), intent(in) :: dir          !< output folder of the run
+      character(len=*), intent(in) :: path         !< the checkpoint's path
+      type(model_t), intent(in) :: model           !< model (deck text, parameters)
+      type(error_t), intent(inout) :: e            !< status of the reads
+      type(error_t), intent(inout) :: err          !< set when refused
+      character(len=:), allocatable :: text
+      call hdf5_read_dataset(h5, '/program', text, e)
+      if (has_error(e)) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': '''//path// &
+                        ''' is not a readable checkpoint: '//e%message)
+         return
+      end if
+      if (text /= checkpoint_program_id()) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
+                        'checkpoint was written by another build of rodyn ('//text// &
+                        '; this is '//checkpoint_program_id()//'): continue it with that '// &
+                        'program, or run the deck again without --restart')
+         return
+      end if
+      call hdf5_read_dataset(h5, '/deck', text, e)
+      if (.not. has_error(e) .and. text /= deck_identity(model)) then
+         call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': the '// &
+                        'checkpoint belongs to another deck (its text, an included file or'// &
+                        ' a parameter differs from those of the run in '''//dir// &
+                        '''): restart with the same deck and --set values')
+      end if
+   end subroutine check_identity
+
+   !> One state from <prefix>x, d, ... of a checkpoint into s (allocated for the run's
+   !> nodes); e says what is missing or of another size.
+   subroutine read_state(h5, prefix, s, e)
+      type(hdf5_file_t), intent(in) :: h5        !< the checkpoint, open
+      character(len=*), intent(in) :: prefix     !< dataset name prefix
+      type(state_t), intent(inout) :: s          !< state read
+      type(error_t), intent(inout) :: e          !< status
+      real(wp), allocatable :: a2(:, :)
+      call get2(prefix//'x', s%x)
+      call get2(prefix//'v', s%v)
+      call hdf5_read_dataset(h5, prefix//'d', a2, e)
+      if (.not. has_error(e)) call fit(a2, size(s%d), s%d)
+      call hdf5_read_dataset(h5, prefix//'dd', a2, e)
+      if (.not. has_error(e)) call fit(a2, size(s%dd), s%dd)
+      if (size(s%a, 2) == 0) return
+      call get2(prefix//'a', s%a)
+      call hdf5_read_dataset(h5, prefix//'ad', a2, e)
+      if (.not. has_error(e)) call fit(a2, size(s%ad), s%ad)
    contains
-      !> One state from <prefix>x, d, ... into s (allocated for the run's nodes).
-      subroutine read_state(prefix, s)
-         character(len=*), intent(in) :: prefix   !< dataset name prefix
-         type(state_t), intent(inout) :: s        !< state read
-         real(wp), allocatable :: a2(:, :)
-         call get2(prefix//'x', s%x)
-         call get2(prefix//'v', s%v)
-         call hdf5_read_dataset(h5, prefix//'d', a2, e)
-         if (.not. has_error(e)) call fit(a2, size(s%d), s%d)
-         call hdf5_read_dataset(h5, prefix//'dd', a2, e)
-         if (.not. has_error(e)) call fit(a2, size(s%dd), s%dd)
-         if (size(s%a, 2) == 0) return
-         call get2(prefix//'a', s%a)
-         call hdf5_read_dataset(h5, prefix//'ad', a2, e)
-         if (.not. has_error(e)) call fit(a2, size(s%ad), s%ad)
-      end subroutine read_state
       !> A (3, nn) array of the same shape as x.
       subroutine get2(name, x)
          character(len=*), intent(in) :: name      !< dataset
          real(wp), intent(inout) :: x(:, :)        !< array read
-         real(wp), allocatable :: a2(:, :)
-         call hdf5_read_dataset(h5, name, a2, e)
+         real(wp), allocatable :: b2(:, :)
+         call hdf5_read_dataset(h5, name, b2, e)
          if (has_error(e)) return
-         if (any(shape(a2) /= shape(x))) then
+         if (any(shape(b2) /= shape(x))) then
             call set_error(e, stat_io, name//' has another size (another mesh)')
             return
          end if
-         x = a2
+         x = b2
       end subroutine get2
       !> A (9, nn) array into a (3, 3, nn) one of n values.
-      subroutine fit(a2, n, x)
-         real(wp), intent(in) :: a2(:, :)          !< values read
+      subroutine fit(b2, n, x)
+         real(wp), intent(in) :: b2(:, :)          !< values read
          integer, intent(in) :: n                  !< size expected
          real(wp), intent(inout) :: x(:, :, :)     !< array set
-         if (size(a2) /= n) then
+         if (size(b2) /= n) then
             call set_error(e, stat_io, 'directors of another size (another mesh)')
             return
          end if
-         x = reshape(a2, shape(x))
+         x = reshape(b2, shape(x))
       end subroutine fit
-   end subroutine checkpoint_read
+   end subroutine read_state
 
    !> The scalars of a checkpoint, in this order: loop t, next_frame, next_checkpoint;
    !> the step log's 17 reals; dt, t0, f_conv, m_conv, f_last, m_last; h_pend, h_back,

@@ -21,11 +21,13 @@ module rodyn_deck
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
                           bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b, &
                           element_names, element_cable, element_rod
-   use rodyn_deck_lexer, only: deck_t, card_t, deck_lex, card_check_params, &
-                               card_find_param, card_error, card_param_error, &
-                               card_data_error, card_get_real, card_get_int, card_get_name, &
-                               card_get_choice, card_get_yesno, card_check_data, &
-                               card_data_count, card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t, deck_lex
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_param_error, card_data_error, card_check_data, card_data_count, &
+                              param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
+                                     card_get_yesno, card_data_reals
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
@@ -34,8 +36,8 @@ module rodyn_deck
                                  location, resolve_line, node_count, node_number, node_label
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
-                                 read_initial_velocity_card, validate_dynamics, &
-                                 dynamic_warnings
+                                 read_initial_velocity_card, validate_dynamics
+   use rodyn_deck_dynamic_warnings, only: dynamic_warnings
    use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
    use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &

@@ -8,10 +8,12 @@ module rodyn_deck_body
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, body_t, body_fixed, body_free, body_kind_names, &
                           point_body, modal_solver_names
-   use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
-                               card_error, card_data_error, card_get_name, card_get_choice, &
-                               card_check_data, card_data_reals, card_get_real, card_get_int, &
-                               real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_data_error, card_check_data, param_len
+   use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, &
+                                     card_get_real, card_get_int
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
                                  location, check_once
    implicit none

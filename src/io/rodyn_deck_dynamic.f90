@@ -4,19 +4,24 @@
 !> the node of a *MOTION is held in position and has one *MOTION at most; one *INITIAL
 !> VELOCITY per line, and only with START=DEFINED). docs/deck.md describes every
 !> keyword, default and check. rodyn_deck hands the cards to these readers and calls
-!> validate_dynamics.
+!> validate_dynamics; the warnings of a time step too long for what the deck prescribes
+!> are rodyn_deck_dynamic_warnings'.
 module rodyn_deck_dynamic
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, amplitude_t, motion_t, initial_velocity_t, scheme_alpha, &
-                          scheme_emc, edmc_rho_min, scheme_names, &
+   use rodyn_model, only: model_t, dynamic_options_t, amplitude_t, motion_t, &
+                          initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
+                          scheme_names, &
                           motion_harmonic, motion_table, motion_vessel, bc_free, end_a
-   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
-                               card_error, card_data_error, card_file_error, card_get_real, &
-                               card_get_name, card_get_choice, card_get_int, &
-                               card_check_data, card_data_count, card_data_reals, &
-                               card_data_real, card_data_table, card_get_table, upper_case, &
-                               real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_data_error, card_file_error, card_check_data, card_data_count, &
+                              param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_name, card_get_choice, card_get_int, &
+                                     card_data_reals, card_data_real
+   use rodyn_deck_table, only: table_t, card_data_table, card_get_table
+   use rodyn_deck_numbers, only: real_str, int_str
+   use rodyn_deck_params, only: upper_case
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -25,14 +30,10 @@ module rodyn_deck_dynamic
    implicit none
    private
    public :: read_dynamic_card, read_damping_card, read_amplitude_card, read_motion_card
-   public :: read_initial_velocity_card, validate_dynamics, dynamic_warnings, record_table
+   public :: read_initial_velocity_card, validate_dynamics, record_table
    public :: check_time_table
 
    integer, parameter :: max_steps = 100000000    !< most time steps TIME/DT of a run
-   ! Time resolution of the prescribed motions and loads (docs/dynamics.md, "Time step
-   ! and output interval warnings"): below these a run may be meaningless
-   real(wp), parameter :: min_steps_per_period = 10.0_wp   !< steps a shortest period
-   real(wp), parameter :: min_frames_per_period = 10.0_wp  !< frames a shortest period
    real(wp), parameter :: rho_inf_alpha = 0.8_wp  !< default RHO INF with SCHEME=ALPHA [-]
    ! Rayleigh coefficients beyond which every mode a line analysis shows is overdamped
    real(wp), parameter :: max_alpha = 1.0e3_wp    !< largest *DAMPING ALPHA [1/s]
@@ -75,79 +76,10 @@ contains
          if (has_error(err)) return
          dy%requested = .true.
 
-         call card_get_real(card, 'DT', dy%dt, err, required=.true.)
+         call get_times(card, dy, err)
          if (has_error(err)) return
-         if (.not. dy%dt > 0.0_wp) then
-            call param_fail(card, 'DT', 'DT must be > 0, got '//real_str(dy%dt), err)
-            return
-         end if
-         call card_get_real(card, 'TIME', dy%duration, err, required=.true.)
+         call get_scheme(card, dy, err)
          if (has_error(err)) return
-         if (.not. dy%duration > 0.0_wp) then
-            call param_fail(card, 'TIME', 'TIME must be > 0, got '//real_str(dy%duration), err)
-            return
-         end if
-         if (dy%duration < dy%dt) then
-            call param_fail(card, 'TIME', 'TIME must be >= DT ('//real_str(dy%dt)// &
-                            '), got '//real_str(dy%duration), err)
-            return
-         end if
-         if (dy%duration/dy%dt > real(max_steps, wp)) then
-            call param_fail(card, 'TIME', 'TIME/DT is '//real_str(dy%duration/dy%dt)// &
-                            ' time steps, more than the '//int_str(max_steps)// &
-                            ' allowed', err)
-            return
-         end if
-         call card_get_real(card, 'OUTPUT INTERVAL', dy%output_interval, err)
-         if (has_error(err)) return
-         if (.not. dy%output_interval >= 0.0_wp) then
-            call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be >= 0, got '// &
-                            real_str(dy%output_interval), err)
-            return
-         end if
-         if (dy%output_interval > 0.0_wp .and. dy%output_interval < dy%dt) then
-            call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be 0 (every'// &
-                            ' step) or >= DT ('//real_str(dy%dt)//'), got '// &
-                            real_str(dy%output_interval), err)
-            return
-         end if
-
-         call card_get_real(card, 'CHECKPOINT', dy%checkpoint, err)
-         if (has_error(err)) return
-         if (.not. (dy%checkpoint == 0.0_wp .or. (dy%checkpoint >= dy%dt .and. &
-                                                  dy%checkpoint <= dy%duration))) then
-            call param_fail(card, 'CHECKPOINT', 'CHECKPOINT must be 0 (none) or between'// &
-                            ' DT ('//real_str(dy%dt)//') and TIME ('// &
-                            real_str(dy%duration)//'), got '//real_str(dy%checkpoint), err)
-            return
-         end if
-
-         call card_get_choice(card, 'SCHEME', scheme_names, dy%scheme, err)
-         if (has_error(err)) return
-         if (dy%scheme == scheme_alpha) dy%rho_inf = rho_inf_alpha
-         if (card_find_param(card, 'RHO INF') > 0) then
-            if (dy%scheme /= scheme_alpha .and. dy%scheme /= scheme_emc) then
-               call param_fail(card, 'RHO INF', 'RHO INF is only allowed with SCHEME=ALPHA'// &
-                               ' or EMC (the scheme is '//trim(scheme_names(dy%scheme))// &
-                               ')', err)
-               return
-            end if
-            call card_get_real(card, 'RHO INF', dy%rho_inf, err)
-            if (has_error(err)) return
-            dy%rho_inf_given = .true.
-            if (.not. (dy%rho_inf >= 0.0_wp .and. dy%rho_inf <= 1.0_wp)) then
-               call param_fail(card, 'RHO INF', 'RHO INF must be between 0 and 1, got '// &
-                               real_str(dy%rho_inf), err)
-               return
-            end if
-            if (dy%scheme == scheme_emc .and. dy%rho_inf < edmc_rho_min) then
-               call param_fail(card, 'RHO INF', 'RHO INF with SCHEME=EMC (the dissipative '// &
-                               'energy-momentum scheme) must be between '// &
-                               real_str(edmc_rho_min)//' and 1, got '// &
-                               real_str(dy%rho_inf)//'; SCHEME=ALPHA reaches 0', err)
-               return
-            end if
-         end if
 
          k = merge(1, 2, dy%start_static)
          call card_get_choice(card, 'START', starts, k, err)
@@ -164,6 +96,95 @@ contains
          call get_tolerance(card, 'DISP TOL', dy%disp_tol, err)
       end associate
    end subroutine read_dynamic_card
+
+   !> DT, TIME, OUTPUT INTERVAL and CHECKPOINT of *DYNAMIC: DT > 0, DT <= TIME, at most
+   !> max_steps steps; OUTPUT INTERVAL 0 (every step) or >= DT; CHECKPOINT 0 (none) or
+   !> between DT and TIME.
+   subroutine get_times(card, dy, err)
+      type(card_t), intent(in) :: card                !< the *DYNAMIC card
+      type(dynamic_options_t), intent(inout) :: dy    !< options: times set
+      type(error_t), intent(inout) :: err             !< status
+      call card_get_real(card, 'DT', dy%dt, err, required=.true.)
+      if (has_error(err)) return
+      if (.not. dy%dt > 0.0_wp) then
+         call param_fail(card, 'DT', 'DT must be > 0, got '//real_str(dy%dt), err)
+         return
+      end if
+      call card_get_real(card, 'TIME', dy%duration, err, required=.true.)
+      if (has_error(err)) return
+      if (.not. dy%duration > 0.0_wp) then
+         call param_fail(card, 'TIME', 'TIME must be > 0, got '//real_str(dy%duration), err)
+         return
+      end if
+      if (dy%duration < dy%dt) then
+         call param_fail(card, 'TIME', 'TIME must be >= DT ('//real_str(dy%dt)// &
+                         '), got '//real_str(dy%duration), err)
+         return
+      end if
+      if (dy%duration/dy%dt > real(max_steps, wp)) then
+         call param_fail(card, 'TIME', 'TIME/DT is '//real_str(dy%duration/dy%dt)// &
+                         ' time steps, more than the '//int_str(max_steps)// &
+                         ' allowed', err)
+         return
+      end if
+      call card_get_real(card, 'OUTPUT INTERVAL', dy%output_interval, err)
+      if (has_error(err)) return
+      if (.not. dy%output_interval >= 0.0_wp) then
+         call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be >= 0, got '// &
+                         real_str(dy%output_interval), err)
+         return
+      end if
+      if (dy%output_interval > 0.0_wp .and. dy%output_interval < dy%dt) then
+         call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be 0 (every'// &
+                         ' step) or >= DT ('//real_str(dy%dt)//'), got '// &
+                         real_str(dy%output_interval), err)
+         return
+      end if
+
+      call card_get_real(card, 'CHECKPOINT', dy%checkpoint, err)
+      if (has_error(err)) return
+      if (.not. (dy%checkpoint == 0.0_wp .or. (dy%checkpoint >= dy%dt .and. &
+                                               dy%checkpoint <= dy%duration))) then
+         call param_fail(card, 'CHECKPOINT', 'CHECKPOINT must be 0 (none) or between'// &
+                         ' DT ('//real_str(dy%dt)//') and TIME ('// &
+                         real_str(dy%duration)//'), got '//real_str(dy%checkpoint), err)
+         return
+      end if
+   end subroutine get_times
+
+   !> SCHEME and RHO INF of *DYNAMIC: RHO INF only with SCHEME=ALPHA (default
+   !> rho_inf_alpha) or EMC (at least edmc_rho_min), between 0 and 1.
+   subroutine get_scheme(card, dy, err)
+      type(card_t), intent(in) :: card                !< the *DYNAMIC card
+      type(dynamic_options_t), intent(inout) :: dy    !< options: scheme set
+      type(error_t), intent(inout) :: err             !< status
+      call card_get_choice(card, 'SCHEME', scheme_names, dy%scheme, err)
+      if (has_error(err)) return
+      if (dy%scheme == scheme_alpha) dy%rho_inf = rho_inf_alpha
+      if (card_find_param(card, 'RHO INF') > 0) then
+         if (dy%scheme /= scheme_alpha .and. dy%scheme /= scheme_emc) then
+            call param_fail(card, 'RHO INF', 'RHO INF is only allowed with SCHEME=ALPHA'// &
+                            ' or EMC (the scheme is '//trim(scheme_names(dy%scheme))// &
+                            ')', err)
+            return
+         end if
+         call card_get_real(card, 'RHO INF', dy%rho_inf, err)
+         if (has_error(err)) return
+         dy%rho_inf_given = .true.
+         if (.not. (dy%rho_inf >= 0.0_wp .and. dy%rho_inf <= 1.0_wp)) then
+            call param_fail(card, 'RHO INF', 'RHO INF must be between 0 and 1, got '// &
+                            real_str(dy%rho_inf), err)
+            return
+         end if
+         if (dy%scheme == scheme_emc .and. dy%rho_inf < edmc_rho_min) then
+            call param_fail(card, 'RHO INF', 'RHO INF with SCHEME=EMC (the dissipative '// &
+                            'energy-momentum scheme) must be between '// &
+                            real_str(edmc_rho_min)//' and 1, got '// &
+                            real_str(dy%rho_inf)//'; SCHEME=ALPHA reaches 0', err)
+            return
+         end if
+      end if
+   end subroutine get_scheme
 
    !> *DAMPING, ALPHA=a, BETA=b: Rayleigh damping C = a M + b K, a [1/s], b [s], both
    !> >= 0, at least one given (the other stays 0). No data lines; at most one.
@@ -508,159 +529,6 @@ contains
    end subroutine get_int_range
 
    ! ================================================================ validation
-
-   !> Warnings 'FILE:LINE: warning: *DYNAMIC: ...' (each ended by a newline; '' if none)
-   !> for a dynamic analysis that cannot resolve what it is given: a DT not well below
-   !> the shortest period of the harmonic *MOTIONs (fewer than min_steps_per_period steps
-   !> a period) or longer than the sampling interval of a *MOTION table or of an
-   !> *AMPLITUDE table used by a *LOAD (the steps skip its points); an OUTPUT INTERVAL
-   !> that writes fewer than min_frames_per_period frames a shortest harmonic period (the
-   !> results miss the extremes of the motion). The run goes on.
-   function dynamic_warnings(deck, model) result(text)
-      type(deck_t), intent(in) :: deck      !< all cards
-      type(model_t), intent(in) :: model    !< the validated model
-      character(len=:), allocatable :: text !< the warning lines
-      real(wp) :: dt, out, period, sampling
-      integer :: ic, idyn, j, im, ia
-      character(len=:), allocatable :: dt_at, out_at, what, shortest
-      text = ''
-      if (.not. model%dynamic%requested) return
-      idyn = 0
-      do ic = 1, deck%n_cards
-         if (deck%cards(ic)%keyword == 'DYNAMIC') idyn = ic
-      end do
-      if (idyn == 0) return
-      dt = model%dynamic%dt
-      out = model%dynamic%output_interval
-      dt_at = param_at(deck%cards(idyn), 'DT')
-      out_at = param_at(deck%cards(idyn), 'OUTPUT INTERVAL')
-      ! the shortest harmonic period, and where
-      period = huge(1.0_wp)
-      shortest = ''
-      im = 0
-      do ic = 1, deck%n_cards
-         if (deck%cards(ic)%keyword /= 'MOTION') cycle
-         im = im + 1
-         if (im > size(model%motions)) exit
-         associate (mo => model%motions(im), card => deck%cards(ic))
-            if (mo%kind == motion_harmonic) then
-               do j = 1, 3
-                  if (.not. (mo%frequency(j) > 0.0_wp .and. mo%amplitude(j) /= 0.0_wp)) cycle
-                  if (1.0_wp/mo%frequency(j) < period) then
-                     period = 1.0_wp/mo%frequency(j)
-                     shortest = 'the motion at '//real_str(mo%frequency(j))//' Hz (*MOTION'// &
-                                ' at '//card%file//':'//int_str(card%line)//')'
-                  end if
-               end do
-            else if (mo%kind == motion_vessel .and. mo%vessel > 0) then
-               associate (ve => model%vessels(mo%vessel))
-                  if (allocated(ve%time)) then
-                     if (size(ve%time) >= 2) then
-                        sampling = minval(ve%time(2:) - ve%time(:size(ve%time) - 1))
-                        what = 'the motion table '//ve%file//' of *VESSEL '// &
-                               trim(ve%name)//' (*MOTION at '//card%file//':'// &
-                               int_str(card%line)//')'
-                        call check_sampling(sampling, what)
-                     end if
-                  end if
-               end associate
-            else if (allocated(mo%time)) then
-               if (size(mo%time) >= 2) then
-                  sampling = minval(mo%time(2:) - mo%time(:size(mo%time) - 1))
-                  what = 'the *MOTION table '//mo%file//' (*MOTION at '//card%file//':'// &
-                         int_str(card%line)//')'
-                  call check_sampling(sampling, what)
-               end if
-            end if
-         end associate
-      end do
-      ia = 0
-      do ic = 1, deck%n_cards
-         if (deck%cards(ic)%keyword /= 'AMPLITUDE') cycle
-         ia = ia + 1
-         if (ia > size(model%amplitudes)) exit
-         if (.not. allocated(model%loads)) exit
-         if (.not. any(model%loads%amplitude == ia)) cycle
-         associate (amp => model%amplitudes(ia), card => deck%cards(ic))
-            if (size(amp%time) < 2) cycle
-            sampling = minval(amp%time(2:) - amp%time(:size(amp%time) - 1))
-            what = 'the *AMPLITUDE '//trim(amp%name)//' (at '//card%file//':'// &
-                   int_str(card%line)//'), used by a *LOAD'
-            call check_sampling(sampling, what)
-         end associate
-      end do
-      if (len(shortest) == 0) return
-      if (dt > period/min_steps_per_period) then
-         text = text//dt_at//': warning: *DYNAMIC: DT='//real_str(dt)//' s is not well '// &
-                'below the period of '//shortest//', '//num3(period)//' s: '// &
-                num3(period/dt)//' steps a period, fewer than '// &
-                num3(min_steps_per_period)//' (at 2 or fewer the motion is aliased '// &
-                'away); take DT <= '//num3_down(period/min_steps_per_period)//' s'//lf
-      else if (out > 0.0_wp .and. out > period/min_frames_per_period) then
-         text = text//out_at//': warning: *DYNAMIC: OUTPUT INTERVAL='//real_str(out)// &
-                ' s writes '//num3(period/out)//' frames a period of '//shortest// &
-                ', fewer than '//num3(min_frames_per_period)//': the results miss '// &
-                'the extremes of the motion; take OUTPUT INTERVAL <= '// &
-                num3_down(period/min_frames_per_period)//' s'//lf
-      end if
-   contains
-      !> Warn when DT is longer than a table's sampling interval.
-      subroutine check_sampling(dtab, name)
-         real(wp), intent(in) :: dtab          !< shortest interval between rows [s]
-         character(len=*), intent(in) :: name  !< the table, for the message
-         if (.not. dt > dtab*(1.0_wp + 1.0e-9_wp)) return
-         text = text//dt_at//': warning: *DYNAMIC: DT='//real_str(dt)//' s is longer '// &
-                'than the sampling interval of '//name//', '//num3(dtab)//' s: the '// &
-                'steps skip its points; take DT <= '//num3_down(dtab*(1.0_wp + 1.0e-9_wp))// &
-                ' s'//lf
-      end subroutine check_sampling
-   end function dynamic_warnings
-
-   !> A positive number with 3 significant digits, for a message: '3.04', '0.152'.
-   pure function num3(x) result(t)
-      real(wp), intent(in) :: x           !< the number
-      character(len=:), allocatable :: t  !< its text
-      character(len=32) :: b, f
-      integer :: d
-      d = 2 - floor(log10(max(abs(x), tiny(x))))
-      if (d < 0 .or. d > 9) then
-         write (b, '(es9.2)') x
-      else
-         write (f, '(a,i0,a)') '(f0.', d, ')'
-         write (b, f) x
-      end if
-      t = trim(adjustl(b))
-      if (index(t, '.') > 0 .and. index(t, 'E') == 0) then
-         do while (t(len(t):len(t)) == '0')
-            t = t(:len(t) - 1)
-         end do
-         if (t(len(t):len(t)) == '.') t = t(:len(t) - 1)
-      end if
-      if (t(1:1) == '.') t = '0'//t
-   end function num3
-
-   !> A positive number rounded down to 3 significant digits (a bound to stay below).
-   pure function num3_down(x) result(t)
-      real(wp), intent(in) :: x           !< the number, > 0
-      character(len=:), allocatable :: t  !< its text
-      real(wp) :: scale
-      scale = 10.0_wp**(floor(log10(x)) - 2)
-      t = num3(floor(x/scale)*scale)
-   end function num3_down
-
-   !> 'FILE:LINE' of parameter `name` of a card (the keyword line's if not given).
-   pure function param_at(card, name) result(at)
-      type(card_t), intent(in) :: card     !< the card
-      character(len=*), intent(in) :: name !< parameter name
-      character(len=:), allocatable :: at  !< location
-      integer :: ip
-      ip = card_find_param(card, name)
-      if (ip > 0) then
-         at = card%file//':'//int_str(card%params(ip)%line)
-      else
-         at = card%file//':'//int_str(card%line)
-      end if
-   end function param_at
 
    !> Whole-deck checks of the dynamic keywords, once the lines and boundaries are
    !> resolved: AMPLITUDE= of *LOAD names an *AMPLITUDE; a *MOTION's line and node exist,

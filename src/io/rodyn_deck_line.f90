@@ -7,10 +7,12 @@ module rodyn_deck_line
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, line_def_t, bc_free, element_names, element_cable, &
                           element_rod, point_body
-   use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
-                               card_error, card_data_error, card_get_real, card_get_int, &
-                               card_get_name, card_get_choice, card_check_data, &
-                               card_data_reals, real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_data_error, card_check_data, param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
+                                     card_data_reals
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, max_distance, param_fail, &
                                  location, node_count, node_number
    use rodyn_deck_system, only: point_junction, point_held

@@ -7,7 +7,9 @@ module rodyn_deck_section_damping
    use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: section_t, element_cable
-   use rodyn_deck_lexer, only: card_t, card_find_param, card_get_real, real_str, int_str
+   use rodyn_deck_card, only: card_t, card_find_param
+   use rodyn_deck_card_values, only: card_get_real
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: param_fail, check_at_most
    implicit none
    private

@@ -8,9 +8,11 @@ module rodyn_deck_support
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, line_def_t, end_a, end_b
-   use rodyn_deck_lexer, only: deck_t, card_t, card_find_param, card_error, &
-                               card_param_error, card_data_error, card_get_real, &
-                               card_get_int, card_get_choice, real_str, int_str
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_find_param, card_error, card_param_error, &
+                              card_data_error
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice
+   use rodyn_deck_numbers, only: real_str, int_str
    implicit none
    private
    public :: ref_t, pending_t, max_cutbacks, max_elements

@@ -11,9 +11,11 @@ module rodyn_deck_system
    use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, failure_t, point_fixed, &
                           point_free, point_body, point_kind_names, bc_pinned, bc_free, &
                           end_a, end_b, body_fixed
-   use rodyn_deck_lexer, only: deck_t, card_t, card_check_params, card_find_param, &
-                               card_error, card_get_name, card_get_choice, card_check_data, &
-                               card_data_reals, card_get_real, real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_check_data, param_len
+   use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
                                  get_bounded, &
                                  location, node_count, node_number

@@ -8,11 +8,12 @@ module rodyn_deck_vessel
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, vessel_t, vessel_from_rao, vessel_from_table, &
                           rao_interp_complex, rao_interp_polar, motion_vessel, bc_hinged
-   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
-                               card_find_param, card_get_real, &
-                               card_file_error, card_get_name, card_get_choice, &
-                               card_check_data, card_data_reals, card_get_table, real_str, &
-                               int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_error, card_find_param, &
+                              card_file_error, card_check_data, param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_name, card_get_choice, card_data_reals
+   use rodyn_deck_table, only: table_t, card_get_table
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
    use rodyn_deck_dynamic, only: record_table, check_time_table

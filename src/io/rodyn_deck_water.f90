@@ -12,10 +12,12 @@ module rodyn_deck_water
    use rodyn_seabed, only: seabed_z
    use rodyn_model, only: model_t, section_t, line_def_t, attachment_t, end_a, bc_position, &
                           scheme_emc, rho_inf_emc_water
-   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_find_param, &
-                               card_error, card_data_error, card_get_real, card_get_int, &
-                               card_get_name, card_check_data, card_data_table, &
-                               card_data_real, real_str, int_str, param_len
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
+                              card_data_error, card_check_data, param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_data_real
+   use rodyn_deck_table, only: table_t, card_data_table
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
                                  get_lumped_body, &
                                  data_check, param_fail, location, resolve_line, &

@@ -8,12 +8,13 @@ module rodyn_deck_waves
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
                           sea_jonswap, sea_table, sea_record
-   use rodyn_deck_lexer, only: deck_t, card_t, table_t, card_check_params, card_error, &
-                               card_get_real, card_get_int, card_get_choice, &
-                               card_check_data, card_data_table, card_data_error, &
-                               card_find_param, card_get_table, card_file_error, &
-                               real_str, int_str, param_len, card_get_name, &
-                               card_data_reals
+   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_card, only: card_t, card_check_params, card_error, card_check_data, &
+                              card_data_error, card_find_param, card_file_error, param_len
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice, card_get_name, &
+                                     card_data_reals
+   use rodyn_deck_table, only: table_t, card_data_table, card_get_table
+   use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components

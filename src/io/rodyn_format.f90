@@ -63,16 +63,10 @@ contains
       character(len=*), intent(inout) :: buf  !< at least 26 characters
       integer, intent(out) :: n               !< characters written (0: not handled)
       real(wp) :: a
-      integer(i16) :: m, d, nn, pw, r, half
-      integer(int64) :: d8, hi, bits
-      integer :: e, k, q, s, tries, ke
+      integer(i16) :: d
+      integer(int64) :: d8, hi
+      integer :: k, ke
       character(len=17) :: dig
-      integer :: jp
-      ! 5^q (q <= 31) and 10^q (q <= 27) as tables: the powers of 128-bit integers are a
-      ! library call each
-      integer(i16), parameter :: pow5(0:31) = [(5_i16**jp, jp=0, 31)]
-      integer(i16), parameter :: pow10(0:27) = [(10_i16**jp, jp=0, 27)]
-      integer(i16), parameter :: e16 = 10_i16**16, e17 = 10_i16**17
       n = 0
       if (len(buf) < 26) return
       if (.not. ieee_is_finite(x)) return
@@ -88,48 +82,8 @@ contains
          return
       end if
       if (a < 1.0e-15_wp .or. a > 1.0e37_wp) return
-      ! a = m 2^e exactly, from the bits of the (normal) binary64: 52 stored bits of m
-      ! below its leading 1, the biased exponent above them; k from 2^(e+52) <= a, at
-      ! most one below floor(log10 a) (the loop corrects it; log10, fraction and scale
-      ! are library calls, which this avoids)
-      bits = transfer(a, bits)
-      m = int(ior(iand(bits, 4503599627370495_int64), 4503599627370496_int64), i16)
-      e = int(shiftr(bits, 52)) - 1075
-      k = floor(real(e + 52, wp)*0.30102999566398120_wp)
-      d = 0
-      do tries = 1, 4
-         q = 16 - k
-         if (q >= 0) then
-            if (q > 31) return
-            nn = m*pow5(q)
-            s = e + q
-            if (s >= 0) then
-               if (s > 10) return
-               d = shiftl(nn, s)
-            else
-               if (-s > 120) return
-               d = shiftr(nn, -s)                      ! nn / 2^-s, remainder r
-               r = nn - shiftl(d, -s)
-               half = shiftl(1_i16, -s - 1)
-               if (r > half .or. (r == half .and. iand(d, 1_i16) == 1)) d = d + 1
-            end if
-         else
-            if (-q > 27 .or. e < 0 .or. e > 73) return
-            nn = shiftl(m, e)
-            pw = pow10(-q)
-            d = nn/pw
-            r = nn - d*pw
-            if (2*r > pw .or. (2*r == pw .and. mod(d, 2_i16) == 1)) d = d + 1
-         end if
-         if (d >= e17) then
-            k = k + 1
-         else if (d < e16) then
-            k = k - 1
-         else
-            exit
-         end if
-      end do
-      if (d < e16 .or. d >= e17) return
+      call decimal_digits(a, d, k)
+      if (d == 0) return
       ! the 17 digits as 1 + 8 + 8, each group of 8 by pairs from a table (two digits a
       ! division by 100 instead of one a division by 10)
       d8 = int(d, int64)
@@ -161,6 +115,66 @@ contains
       buf(n + 2:n + 2) = achar(iachar('0') + mod(ke, 10))
       n = n + 2
    end subroutine format_e17
+
+   !> The 17 significant digits of a (normal, 1e-15 <= a <= 1e37) as the integer d in
+   !> [1e16, 1e17) and its decimal exponent k: a = d 10^(k-16), rounded to nearest with
+   !> ties to even (module header); d = 0 when a is outside the exact 128-bit ranges.
+   pure subroutine decimal_digits(a, d, k)
+      real(wp), intent(in) :: a               !< value, > 0
+      integer(i16), intent(out) :: d          !< the digits (0: not handled)
+      integer, intent(out) :: k               !< floor(log10 a)
+      integer(i16) :: m, nn, pw, r, half
+      integer(int64) :: bits
+      integer :: e, q, s, tries
+      integer :: jp
+      ! 5^q (q <= 31) and 10^q (q <= 27) as tables: the powers of 128-bit integers are a
+      ! library call each
+      integer(i16), parameter :: pow5(0:31) = [(5_i16**jp, jp=0, 31)]
+      integer(i16), parameter :: pow10(0:27) = [(10_i16**jp, jp=0, 27)]
+      integer(i16), parameter :: e16 = 10_i16**16, e17 = 10_i16**17
+      ! a = m 2^e exactly, from the bits of the (normal) binary64: 52 stored bits of m
+      ! below its leading 1, the biased exponent above them; k from 2^(e+52) <= a, at
+      ! most one below floor(log10 a) (the loop corrects it; log10, fraction and scale
+      ! are library calls, which this avoids)
+      bits = transfer(a, bits)
+      m = int(ior(iand(bits, 4503599627370495_int64), 4503599627370496_int64), i16)
+      e = int(shiftr(bits, 52)) - 1075
+      k = floor(real(e + 52, wp)*0.30102999566398120_wp)
+      do tries = 1, 4
+         d = 0                                         ! (0 on every return below)
+         q = 16 - k
+         if (q >= 0) then
+            if (q > 31) return
+            nn = m*pow5(q)
+            s = e + q
+            if (s >= 0) then
+               if (s > 10) return
+               d = shiftl(nn, s)
+            else
+               if (-s > 120) return
+               d = shiftr(nn, -s)                      ! nn / 2^-s, remainder r
+               r = nn - shiftl(d, -s)
+               half = shiftl(1_i16, -s - 1)
+               if (r > half .or. (r == half .and. iand(d, 1_i16) == 1)) d = d + 1
+            end if
+         else
+            if (-q > 27 .or. e < 0 .or. e > 73) return
+            nn = shiftl(m, e)
+            pw = pow10(-q)
+            d = nn/pw
+            r = nn - d*pw
+            if (2*r > pw .or. (2*r == pw .and. mod(d, 2_i16) == 1)) d = d + 1
+         end if
+         if (d >= e17) then
+            k = k + 1
+         else if (d < e16) then
+            k = k - 1
+         else
+            exit
+         end if
+      end do
+      if (d < e16 .or. d >= e17) d = 0
+   end subroutine decimal_digits
 
    !> The 8 decimal digits of v (0 <= v < 10^8, leading zeros kept), two at a time.
    pure subroutine eight_digits(v, s)
