@@ -24,14 +24,14 @@ module rodyn_output_dynamic_sea
 
    ! /dynamic/sea in dynamic.h5 (index into sea_out_t%h5): at the frames, at every step
    integer, parameter :: sh_elevation = 1, sh_motion = 2, sh_load = 3, sh_conn = 4, &
-      sh_step_elevation = 5, sh_step_motion = 6, sh_step_load = 7, sh_step_conn = 8, &
-      sh_step_time = 9, sh_body = 10, sh_step_body = 11, n_sea_h5 = 11
+      sh_body = 5, sh_step_elevation = 6, sh_step_motion = 7, sh_step_load = 8, &
+      sh_step_conn = 9, sh_step_time = 10, sh_step_body = 11, n_sea_h5 = 11
    !> the series before sh_step_elevation, held and cut back as a row per frame
    integer, parameter :: n_sea_frame = sh_step_elevation - 1
    character(len=*), parameter :: sea_h5_name(n_sea_h5) = [character(len=24) :: &
-      'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', &
+      'probe_elevation', 'vessel_motion', 'vessel_load', 'connection_load', 'body_motion', &
       'step_probe_elevation', 'step_vessel_motion', 'step_vessel_load', &
-      'step_connection_load', 'step_time', 'body_motion', 'step_body_motion']
+      'step_connection_load', 'step_time', 'step_body_motion']
 
    !> A string of its own length (rows of an array of texts differ in length).
    type :: text_t

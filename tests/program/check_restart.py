@@ -16,7 +16,9 @@ checkpoint and the next). Decks, from the shipped ones, shortened:
 - the mooring leg surged in water (cable elements, drag, added mass, seabed contact;
   24 elements, dt = 0.05 s, 2 s, frames every 0.1 s, CHECKPOINT=0.5), killed after 27;
 - the same with the dissipative EMC (SCHEME=EMC, RHO INF=0.6: its strain-rate histories
-  in the checkpoint), killed after 27, and case 1 with it (RHO INF=0.7), killed after 37.
+  in the checkpoint), killed after 27, and case 1 with it (RHO INF=0.7), killed after 37;
+- the OC3-Hywind spar system (a FREE body on three chains through points; one chain on
+  16 elements), 6 s, dt = 0.2 s, frames every 1 s, CHECKPOINT=2: killed after step 17.
 
 Refused with exit 1 and a message naming the cause: a checkpoint continued with another
 deck (an amplitude edited), with another --set value, and one written by another build
@@ -142,8 +144,14 @@ def main():
                       "RHO INF=0.6")])
     case1_ed = deck(input_dir, work, "case1_edmc", "paper_case1.inp",
                     [(case1[0][0], case1[0][1] + ", RHO INF=0.7")])
+    # a system: the OC3 spar (a FREE body, points, three lines), frames every 5 steps
+    spar = deck(input_dir, work, "spar", "oc3_spar.inp",
+                [(r"ELEMENTS=60, ORDER=3, ELEMENT=CABLE, POINT A=A1", "ELEMENTS=16, ORDER=3, "
+                  "ELEMENT=CABLE, POINT A=A1"),
+                 (r"TIME=600\.0, OUTPUT INTERVAL=1\.0",
+                  "TIME=6.0, OUTPUT INTERVAL=1.0, CHECKPOINT=2.0")])
     refs = {}
-    for path in (emc, alpha, surge, surge_ed, case1_ed):
+    for path in (emc, alpha, surge, surge_ed, case1_ed, spar):
         ref = os.path.join(work, os.path.basename(path)[:-4] + "_ref")
         shutil.rmtree(ref, ignore_errors=True)
         run(rodyn, [path, "-o", ref])
@@ -155,6 +163,7 @@ def main():
     killed_and_continued(rodyn, surge, refs[surge], work, "surge_kill27", [27])
     killed_and_continued(rodyn, surge_ed, refs[surge_ed], work, "surge_edmc_kill27", [27])
     killed_and_continued(rodyn, case1_ed, refs[case1_ed], work, "case1_edmc_kill37", [37])
+    killed_and_continued(rodyn, spar, refs[spar], work, "spar_kill17", [17])
 
     # killed before the first checkpoint: nothing to continue
     early = os.path.join(work, "emc_kill7")
