@@ -19,10 +19,15 @@ a FREE body and three lines joined through it): the ten longest periods by SOLVE
 (LAPACK) and SOLVER=LANCZOS (ARPACK) within 1e-9 of each other, the longest (surge) in
 the spar (share of the kinetic energy above 0.9).
 
+decay: decks/modal_spar_decay.inp, the same spar without drag released from 20 kN: the
+surge period of R's x fitted over 1800 s (three sinusoids and a constant, least squares)
+within 1 % of *MODAL's longest period about the equilibrium without the force.
+
 Usage: check_modal.py RODYN DECK_DIR OUT_DIR. Exit 0 on success."""
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -132,12 +137,52 @@ def check_spar(rodyn, decks, out, fails):
         fails.append(f"spar: mode 1 in {first['dominant']} ({first['share']}), not the spar")
 
 
+def check_decay(rodyn, decks, out, fails):
+    import numpy as np
+    from scipy.optimize import curve_fit
+    deck = os.path.join(decks, "modal_spar_decay.inp")
+    with open(deck) as f:
+        text = f.read()
+    modal_deck = os.path.join(out, "spar_modal.inp")
+    os.makedirs(out, exist_ok=True)
+    with open(modal_deck, "w") as f:
+        f.write(re.sub(r"^\*DYNAMIC.*$", "*MODAL, MODES=3", text, flags=re.M))
+    modes, _ = run(rodyn, modal_deck, os.path.join(out, "spar_modal"), "F=0.0")
+    decay = os.path.join(out, "spar_decay")
+    proc = subprocess.run([rodyn, deck, "-o", decay, "--quiet"], capture_output=True,
+                          text=True)
+    if proc.returncode != 0:
+        fails.append(f"decay: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
+        return
+    with open(os.path.join(decay, "dynamic_bodies.csv")) as f:
+        rows = list(csv.DictReader(f))
+    t = np.array([float(r["time_s"]) for r in rows])
+    x = np.array([float(r["x_m"]) for r in rows])
+
+    def waves(t, c, *p):
+        return c + sum(p[3 * k] * np.cos(p[3 * k + 2] * t) + p[3 * k + 1] *
+                       np.sin(p[3 * k + 2] * t) for k in range(3))
+
+    start = [float(modes[k]["period_s"]) for k in range(3)]
+    p0 = [0.0]
+    for k, period in enumerate(start):
+        p0 += [0.5 if k == 0 else 0.01, 0.0, 2 * math.pi / period]
+    p, _ = curve_fit(waves, t, x, p0=p0, maxfev=20000)
+    fitted = 2 * math.pi / p[3]
+    err = abs(fitted / start[0] - 1)
+    print(f"decay: surge of R fitted {fitted:.3f} s over {t[-1]:.0f} s; *MODAL "
+          f"{start[0]:.3f} s; difference {err:.1e}")
+    if not err <= 0.01:
+        fails.append(f"decay: surge period {fitted:.3f} s, *MODAL's {start[0]:.3f} s")
+
+
 def main():
     rodyn, decks, out = sys.argv[1:4]
     fails = []
     check_string(rodyn, decks, out, fails)
     check_body(rodyn, decks, out, fails)
     check_spar(rodyn, decks, out, fails)
+    check_decay(rodyn, decks, out, fails)
     for msg in fails:
         print("FAIL:", msg)
     sys.exit(1 if fails else 0)
