@@ -391,7 +391,8 @@ module rodyn_model
    !> the node has at the start of the dynamic analysis, multiplied by the ramp
    !> r(t) = (1 - cos(pi t / ramp))/2 for t < ramp, 1 after (ramp = 0: no ramp).
    type :: motion_t
-      integer :: line = 0                 !< index into model%lines
+      integer :: line = 0                 !< index into model%lines (0: a body's motion)
+      integer :: body = 0                 !< a FIXED body moved (model%bodies; 0: a line's)
       integer :: node = end_a             !< node number along the line, or end_a / end_b
       integer :: kind = motion_harmonic   !< motion_* constant
       real(wp) :: ramp = 3.0_wp           !< ramp-in duration [s]

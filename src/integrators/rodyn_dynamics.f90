@@ -202,7 +202,12 @@ contains
          deallocate (prob%motion_node)
          allocate (prob%motion_node(size(model%motions)))
          do i = 1, size(model%motions)
-            prob%motion_node(i) = mesh_node(mesh, model%motions(i)%line, model%motions(i)%node)
+            if (model%motions(i)%body > 0) then    ! a FIXED body moved: its node (G)
+               prob%motion_node(i) = mesh%body_node(model%motions(i)%body)
+            else
+               prob%motion_node(i) = mesh_node(mesh, model%motions(i)%line, &
+                                               model%motions(i)%node)
+            end if
             prob%sup%moved(prob%motion_node(i)) = .true.
          end do
       end if
@@ -337,6 +342,13 @@ contains
          else
             prob%dx(:, node) = 0.0_wp
          end if
+      end do
+      ! a FIXED body moved (*MOTION, BODY=) starts the step where it is prescribed: its
+      ! rows are held, and no free row couples to them but through its line ends
+      do i = 1, size(prob%motion_node)
+         if (prob%model%motions(i)%body == 0) cycle
+         node = prob%motion_node(i)
+         prob%dx(:, node) = prob%x_held(:, node) - prob%s0%x(:, node)
       end do
       ! a line end on a FREE point or body moves with it (theory.md (131)): its predictor
       do k = 1, prob%jn%ns

@@ -183,6 +183,13 @@ contains
          w_damp = w_damp - dot_product(prob%bl%fd(1:3, i), prob%dx(:, node)) &
                   - dot_product(prob%bl%fd(4:6, i), th)
       end do
+      ! a held body moved (*MOTION, BODY=): the work of its line ends' forces
+      do i = 1, prob%jn%ns
+         if (.not. prob%jn%s_on(i)) cycle
+         if (.not. prob%jn%held(prob%jn%m_j0(prob%jn%s_m(i)) + 1)) cycle
+         node = prob%jn%s_node(i)
+         w_ext = w_ext + dot_product(prob%r(1:3, node), prob%dx(:, node))
+      end do
       do node = 1, prob%mesh%n_nodes
          dx = prob%dx(:, node)
          grav = prob%loads%gravity(:, node)

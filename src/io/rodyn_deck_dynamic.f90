@@ -12,7 +12,8 @@ module rodyn_deck_dynamic
    use rodyn_model, only: model_t, dynamic_options_t, amplitude_t, motion_t, &
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
-                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a
+                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
+                          body_fixed
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -293,15 +294,28 @@ contains
       type(table_t) :: table
       character(len=:), allocatable :: line, vessel
       integer :: it, n
+      logical :: on_body
 
       vessel = ''
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
-                                'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
+         call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'END', &
+                                'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
-         call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
-         call get_node(card, mo%node, err)
+         on_body = card_find_param(card, 'BODY') > 0
+         if (on_body .eqv. card_find_param(card, 'LINE') > 0) then
+            call card_error(card, 'give one of LINE= (a line''s node) and BODY= (a FIXED '// &
+                            'body)', err)
+            return
+         end if
+         if (on_body) then
+            call card_get_name(card, 'BODY', line, err, required=.true.)
+            if (card_find_param(card, 'END') + card_find_param(card, 'NODE') > 0) &
+               call card_error(card, 'END and NODE are a line''s: not with BODY=', err)
+         else
+            call card_get_name(card, 'LINE', line, err, required=.true.)
+            if (has_error(err)) return
+            call get_node(card, mo%node, err)
+         end if
          if (has_error(err)) return
          it = 0
          call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
@@ -309,6 +323,12 @@ contains
          mo%kind = kinds(it)
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
+         if (on_body .and. mo%kind == motion_vessel) then
+            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node: a body '// &
+                            'moved with a vessel is not available (move it by HARMONIC or'// &
+                            ' TABLE, or put the line ends on the vessel)', err)
+            return
+         end if
 
          if (mo%kind /= motion_vessel .and. card_find_param(card, 'VESSEL') > 0) then
             call param_fail(card, 'VESSEL', 'VESSEL is only allowed with TYPE=VESSEL', err)
@@ -360,6 +380,7 @@ contains
       model%motions(pend%n_motions) = mo
       pend%motion_line(pend%n_motions) = ref_t(line, ic)
       pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
+      pend%motion_body(pend%n_motions) = on_body
    end subroutine read_motion_card
 
    !> *INITIAL VELOCITY, LINE=: data lines vx, vy, vz [m/s]; wx, wy, wz [rad/s];
@@ -561,6 +582,11 @@ contains
       ! *MOTION: line and node exist, the node is held in position, one motion per node
       do k = 1, size(model%motions)
          associate (card => deck%cards(pend%motion_line(k)%card))
+            if (pend%motion_body(k)) then
+               call resolve_motion_body(deck, pend, model, k, err)
+               if (has_error(err)) return
+               cycle
+            end if
             call resolve_line(card, pend%motion_line(k)%name, model, iref, &
                               model%motions(k)%node, err)
             if (has_error(err)) return
@@ -618,6 +644,41 @@ contains
       end associate
    end subroutine check_motion_held
 
+   !> The body of motion `im` (BODY=): it exists, is FIXED (held: the motion moves it)
+   !> and has no other *MOTION.
+   subroutine resolve_motion_body(deck, pend, model, im, err)
+      type(deck_t), intent(in) :: deck       !< all cards
+      type(pending_t), intent(in) :: pend    !< card and BODY= of each motion
+      type(model_t), intent(inout) :: model  !< the motion's body set
+      type(error_t), intent(inout) :: err    !< status
+      integer, intent(in) :: im              !< the motion
+      integer :: ib, jm
+      associate (card => deck%cards(pend%motion_line(im)%card), &
+                 name => pend%motion_line(im)%name)
+         do ib = 1, size(model%bodies)
+            if (model%bodies(ib)%name == name) exit
+         end do
+         if (ib > size(model%bodies)) then
+            call param_fail(card, 'BODY', "body '"//name//"' is not defined (no *BODY "// &
+                            'with NAME='//name//' in the deck)', err)
+            return
+         end if
+         if (model%bodies(ib)%kind /= body_fixed) then
+            call param_fail(card, 'BODY', "body '"//name//"' is FREE: a *MOTION moves a"// &
+                            ' FIXED body (its motion prescribed), not a FREE one', err)
+            return
+         end if
+         do jm = 1, im - 1
+            if (model%motions(jm)%body /= ib) cycle
+            call card_error(card, "body '"//name//"' already has a *MOTION (at "// &
+                            location(deck, pend%motion_line(jm)%card)//')', err)
+            return
+         end do
+         model%motions(im)%body = ib
+         model%motions(im)%line = 0
+      end associate
+   end subroutine resolve_motion_body
+
    !> Refuse a second *MOTION at the same node of the same line.
    subroutine check_unique_motion(deck, pend, model, im, err)
       type(deck_t), intent(in) :: deck       !< all cards
@@ -631,7 +692,7 @@ contains
          nn = node_count(model%lines(mo%line))
          node = node_number(mo%node, nn)
          do jm = 1, im - 1
-            if (model%motions(jm)%line /= mo%line) cycle
+            if (model%motions(jm)%line /= mo%line .or. mo%line == 0) cycle
             if (node_number(model%motions(jm)%node, nn) /= node) cycle
             call card_error(deck%cards(pend%motion_line(im)%card), 'line '// &
                             trim(model%lines(mo%line)%name)//' '//node_label(node, nn)// &

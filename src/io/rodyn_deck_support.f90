@@ -44,7 +44,8 @@ module rodyn_deck_support
       type(ref_t), allocatable :: bc_line(:)      !< per constraint: its LINE=
       type(ref_t), allocatable :: load_line(:)    !< per load: its LINE=
       type(ref_t), allocatable :: load_amp(:)     !< per load: its AMPLITUDE= ('' if none)
-      type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE=
+      type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE= (or BODY=)
+      logical, allocatable :: motion_body(:)      !< per motion: BODY= given (not LINE=)
       type(ref_t), allocatable :: motion_vessel(:) !< per motion: its VESSEL= ('' if none)
       integer, allocatable :: vessel_card(:)      !< per vessel: card index
       type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE=
