@@ -302,7 +302,7 @@ contains
                                 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
          on_body = card_find_param(card, 'BODY') > 0
-         if (on_body .eqv. card_find_param(card, 'LINE') > 0) then
+         if (on_body .and. card_find_param(card, 'LINE') > 0) then
             call card_error(card, 'give one of LINE= (a line''s node) and BODY= (a FIXED '// &
                             'body)', err)
             return
