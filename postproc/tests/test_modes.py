@@ -221,6 +221,26 @@ def test_static_modes_png(run_copy, capsys):
             np.testing.assert_array_equal(grey.get_xydata(), line.node_xyz[:, [i, j]])
 
 
+def test_mode_axes():
+    """The plane of a mode: the two axes it moves along most; with one, it and the axis
+    the static line extends along most (the line is not drawn edge on)."""
+    from rodyn_post.modes import LineModes, ModalResults
+    s = np.linspace(0.0, 10.0, 5)
+    xyz = np.column_stack([s, 0.0 * s, -0.2 * s])   # along x, sloping down in z
+    u = np.zeros((4, 5, 3))
+    u[0, :, 1] = np.sin(s)                          # across: y only
+    u[1, :, 2] = np.sin(s)                          # z only
+    u[2, :, 0], u[2, :, 1] = 1.0, 0.3               # x and y
+    u[3, :, 0], u[3, :, 1], u[3, :, 2] = 1e-3, 0.5, 1.0   # z and y; x below 1 %
+    line = LineModes("L", s, xyz, u, np.zeros_like(u))
+    modes = ModalResults(np.ones(4), np.ones(4), ("",) * 4, np.full(4, np.nan), (line,),
+                         (), "", float("nan"), None, None)
+    assert [plot_static.mode_axes(modes, k) for k in (1, 2, 3, 4)] == [
+        (0, 1), (0, 2), (0, 1), (1, 2)]
+    assert plot_static.mode_scale(modes) == pytest.approx(1.0)   # 10 % of 10 m
+    assert plot_static.mode_title(modes, 1) == "mode 1: T = 1 s"
+
+
 def test_no_modes_png_without_modes(tmp_path, capsys):
     write_results(tmp_path / "synthetic")
     assert plot_static.main([str(tmp_path / "synthetic"), "--dpi", "60"]) == 0

@@ -24,9 +24,10 @@ into OUT_DIR (default: the results folder) and prints the paths written:
   static_modes.png    with *MODAL (results.h5's /modes or static_modes.csv): the first
                       modes (up to 6), each as the static shape (grey) and the shape
                       displaced by the mode scaled to 10 % of the system's size, in the
-                      plane of the axis the mode moves along most and the other axis the
-                      lines extend along most (x-z or x-y for lines in an x-z plane);
-                      titled with the mode number, period and dominant object
+                      plane of the two axes the mode moves along most (with one axis of
+                      motion: it and the other axis the lines extend along most; x-z or
+                      x-y for lines in an x-z plane); titled with the mode number,
+                      period and dominant object
 
 A run that did not complete is still plotted (its last converged state), with a
 warning on stderr and in the plot titles.
@@ -59,6 +60,7 @@ MODES_PNG = "static_modes.png"
 MODES_PLOTTED = 6      # modes drawn in static_modes.png (the longest periods)
 MODE_FRACTION = 0.1    # largest displacement drawn, as a fraction of the system's size
 AXES = "xyz"
+MOVING = 0.01          # share of a mode's motion along an axis that counts (mode_axes)
 
 
 def tension_curves(line):
@@ -244,14 +246,17 @@ def mode_scale(modes):
 
 def mode_axes(modes, k):
     """(i, j), i < j: the plane of global axes (0 x, 1 y, 2 z) static_modes.png draws
-    mode k (from 1) in: the axis along which the mode moves the nodes most (the largest
-    sum of squares of a translation component), and of the other two the one along
-    which the static lines extend most."""
+    mode k (from 1) in. An axis moves when it holds at least MOVING of the mode's sum of
+    squares of the node translations: the plane of the two that move most, or of the
+    one that moves and, of the other two, the one the static lines extend along most
+    (so that the static shape is not drawn edge on)."""
     moved = np.concatenate([line.translation[k - 1] for line in modes.lines])
+    motion = np.sum(moved ** 2, axis=0)
     extent = np.ptp(np.concatenate([line.node_xyz for line in modes.lines]), axis=0)
-    a = int(np.argmax(np.sum(moved ** 2, axis=0)))
-    b = max((c for c in range(3) if c != a), key=lambda c: extent[c])
-    return min(a, b), max(a, b)
+    moving = motion >= MOVING * np.sum(motion)
+    rank = sorted(range(3), key=lambda c: (moving[c], motion[c] if moving[c] else extent[c]),
+                  reverse=True)
+    return min(rank[:2]), max(rank[:2])
 
 
 def mode_title(modes, k) -> str:
