@@ -6,7 +6,8 @@ when there is no results.h5) into plain dataclasses; see `rodyn_post.results`.
 the same way; see `rodyn_post.dynamic`. `load_environment(path)` reads the sea (water
 level, depth, current, seabed) of a run with water, None for a dry run; see
 `rodyn_post.environment` (which also gives the seabed's trace and the current profile
-the plots draw).
+the plots draw). `load_modes(path)` reads the natural periods and mode shapes of a run
+with *MODAL (None without); see `rodyn_post.modes`.
 
 The commands (rodyn_post.commands, installed as the console commands rodyn-plot-static,
 rodyn-plot-dynamic, rodyn-plot-history, rodyn-range-graph, rodyn-animate,
@@ -24,8 +25,10 @@ postproc/pyproject.toml) share:
 from .dynamic import DynamicResults, LineDynamic, StepLog, load_dynamic
 from .environment import Environment, load_environment
 from .errors import InputError, RodynResultsError, WriteError
+from .modes import LineModes, ModalResults, ObjectModes, load_modes
 from .results import LineStatic, StaticResults, load_static
 
-__all__ = ["DynamicResults", "Environment", "InputError", "LineDynamic", "LineStatic",
-           "RodynResultsError", "StaticResults", "StepLog", "WriteError", "load_dynamic",
-           "load_environment", "load_static"]
+__all__ = ["DynamicResults", "Environment", "InputError", "LineDynamic", "LineModes",
+           "LineStatic", "ModalResults", "ObjectModes", "RodynResultsError",
+           "StaticResults", "StepLog", "WriteError", "load_dynamic", "load_environment",
+           "load_modes", "load_static"]

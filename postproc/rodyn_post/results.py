@@ -271,7 +271,8 @@ def h5_units_checked(data, path):
     otherwise. A dataset without the attribute (an older rodyn) or not in the schema
     passes."""
     parts = data.name.split("/")
-    file = {"static": "results.h5", "dynamic": "dynamic.h5"}.get(parts[1])
+    file = {"static": "results.h5", "modes": "results.h5",
+            "dynamic": "dynamic.h5"}.get(parts[1])
     if (file is None and parts[1] != "environment") or "units" not in data.attrs:
         return data
     key = data.name

@@ -1,9 +1,9 @@
 """ParaView files written by hand (ASCII VTK XML, no vtk package needed).
 
 `vtp_text` gives a PolyData file (.vtp) with one polyline per line, point data at the
-nodes (the first array is the active scalars) and the line's index (deck order, from
-0) as cell data; `pvd_text` a collection
-file (.pvd) that makes a series of .vtp files a time series in ParaView.
+nodes (the first array is the active scalars, a named one the active vectors) and the
+line's index (deck order, from 0) as cell data; `pvd_text` a collection file (.pvd)
+that makes a series of .vtp files a time series in ParaView.
 """
 from __future__ import annotations
 
@@ -25,10 +25,11 @@ def _array(name, values, components=1, kind="Float64", indent="        "):
             f'format="ascii">{body}</DataArray>')
 
 
-def vtp_text(polylines, point_data, time=None) -> str:
+def vtp_text(polylines, point_data, time=None, vectors=None) -> str:
     """PolyData file text. polylines: [(n_i, 3) node positions] one per line;
     point_data: {name: [(n_i,) values per line]} (a name may carry components as
-    [(n_i, c)]); time: written as the field data TimeValue."""
+    [(n_i, c)]); time: written as the field data TimeValue; vectors: the name of the
+    point data array that is the active vectors (None: no active vectors)."""
     points = np.vstack(polylines)
     sizes = [len(p) for p in polylines]
     offsets = np.cumsum(sizes)
@@ -43,7 +44,9 @@ def vtp_text(polylines, point_data, time=None) -> str:
     out.append(f'    <Piece NumberOfPoints="{len(points)}" NumberOfVerts="0" '
                f'NumberOfLines="{len(polylines)}" NumberOfStrips="0" NumberOfPolys="0">')
     first = next(iter(point_data), None)
-    out.append("      <PointData" + (f" Scalars={quoteattr(first)}>" if first else ">"))
+    active = (f" Scalars={quoteattr(first)}" if first else "") + (
+        f" Vectors={quoteattr(vectors)}" if vectors else "")
+    out.append(f"      <PointData{active}>")
     for name, parts in point_data.items():
         data = np.concatenate([np.asarray(p, float) for p in parts])
         out.append(_array(name, data, 1 if data.ndim == 1 else data.shape[1]))

@@ -21,6 +21,13 @@ into OUT_DIR (default: the results folder) and prints the paths written:
   static_offset_curve.png   with *OFFSET CURVE (static_offset_curve.csv): the body's
                       restoring force and its most loaded fairlead's force against its
                       offset
+  static_modes.png    with *MODAL (results.h5's /modes or static_modes.csv): the first
+                      modes (up to 6), each as the static shape (grey) and the shape
+                      displaced by the mode scaled to 10 % of the system's size, in the
+                      plane of the two axes the mode moves along most (with one axis of
+                      motion: it and the other axis the lines extend along most; x-z or
+                      x-y for lines in an x-z plane); titled with the mode number,
+                      period and dominant object
 
 A run that did not complete is still plotted (its last converged state), with a
 warning on stderr and in the plot titles.
@@ -34,6 +41,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from rodyn_post import cli, load_static  # cli: the Agg backend (never needs a display)
+from rodyn_post.modes import load_modes
 from rodyn_post.results import load_offset_curve
 from rodyn_post.cli import static_title as run_title
 from rodyn_post.environment import (current_inset, draw_sea, elevation_range,
@@ -48,6 +56,11 @@ TENSION_PNG = "static_tension.png"
 WALL_PNG = "static_wall_tension.png"
 SEABED_PNG = "static_seabed.png"
 OFFSET_PNG = "static_offset_curve.png"
+MODES_PNG = "static_modes.png"
+MODES_PLOTTED = 6      # modes drawn in static_modes.png (the longest periods)
+MODE_FRACTION = 0.1    # largest displacement drawn, as a fraction of the system's size
+AXES = "xyz"
+MOVING = 0.01          # share of a mode's motion along an axis that counts (mode_axes)
 
 
 def tension_curves(line):
@@ -224,11 +237,81 @@ def offset_figure(results):
     return fig
 
 
+def mode_scale(modes):
+    """Factor on the mode shapes (largest translation 1 m) in static_modes.png: a
+    MODE_FRACTION of the system's size (1 for a system of no size)."""
+    size = modes.extent()
+    return MODE_FRACTION * size if size > 0.0 else 1.0
+
+
+def mode_axes(modes, k):
+    """(i, j), i < j: the plane of global axes (0 x, 1 y, 2 z) static_modes.png draws
+    mode k (from 1) in. An axis moves when it holds at least MOVING of the mode's sum of
+    squares of the node translations: the plane of the two that move most, or of the
+    one that moves and, of the other two, the one the static lines extend along most
+    (so that the static shape is not drawn edge on)."""
+    moved = np.concatenate([line.translation[k - 1] for line in modes.lines])
+    motion = np.sum(moved ** 2, axis=0)
+    extent = np.ptp(np.concatenate([line.node_xyz for line in modes.lines]), axis=0)
+    moving = motion >= MOVING * np.sum(motion)
+    rank = sorted(range(3), key=lambda c: (moving[c], motion[c] if moving[c] else extent[c]),
+                  reverse=True)
+    return min(rank[:2]), max(rank[:2])
+
+
+def mode_title(modes, k) -> str:
+    """'mode k: T = ... s, dominant (share)' of mode k (from 1)."""
+    text = f"mode {k}: T = {modes.period_s[k - 1]:.4g} s"
+    if modes.dominant[k - 1]:
+        text += f", {modes.dominant[k - 1]}"
+        if np.isfinite(modes.share[k - 1]):
+            text += f" ({modes.share[k - 1]:.0%})"
+    return text
+
+
+def modes_figure(results, modes):
+    """The first MODES_PLOTTED modes, one panel each: every line's static shape (grey)
+    and its shape displaced by the scaled mode (the line's colour)."""
+    count = min(MODES_PLOTTED, modes.n_modes)
+    columns = 1 if count == 1 else 2
+    rows = -(-count // columns)
+    fig = Figure(figsize=(5.0 * columns, 3.6 * rows + 0.6), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(rows, columns, squeeze=False).ravel())
+    scale = mode_scale(modes)
+    for k, ax in enumerate(axes[:count], 1):
+        i, j = mode_axes(modes, k)
+        for n, line in enumerate(modes.lines):
+            moved = line.displaced(k, scale)
+            ax.plot(line.node_xyz[:, i], line.node_xyz[:, j], "-", color="0.65",
+                    linewidth=1.0, label="static" if n == 0 else None, gid="static")
+            ax.plot(moved[:, i], moved[:, j], "-", color=f"C{n}", linewidth=1.5,
+                    label=line.name, gid=f"mode {k}")
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_xlabel(f"{AXES[i]} [m]")
+        ax.set_ylabel(f"{AXES[j]} [m]")
+        ax.set_title(mode_title(modes, k), fontsize=9)
+        ax.grid(True, linewidth=0.5, alpha=0.5)
+        ax.legend(loc="best", fontsize=7)
+    for ax in axes[count:]:
+        ax.set_visible(False)
+    fig.suptitle(run_title(results, f"mode shapes (largest translation drawn "
+                                    f"{scale:.3g} m)"))
+    return fig
+
+
+def results_modes(results):
+    """The modes of these static results (rodyn_post.modes.load_modes), None without."""
+    return load_modes(results.source if results.source.suffix == ".h5" else results.folder)
+
+
 def figures(results):
     """[(PNG name, figure maker)] of the plots that apply to these results."""
     makers = [(SHAPE_PNG, shape_figure), (TENSION_PNG, tension_figure)]
     if load_offset_curve(results.folder):
         makers.append((OFFSET_PNG, offset_figure))
+    modes = results_modes(results)
+    if modes is not None:
+        makers.append((MODES_PNG, lambda r: modes_figure(r, modes)))
     if wants_plan(results):
         makers.insert(1, (PLAN_PNG, plan_figure))
     if wants_wall(results):

@@ -26,6 +26,22 @@ linear in S between the two integration points around it, and at the nodes beyon
 outermost integration points (the ends) that point's value. Colour the lines by
 effective_tension_N, add a Tube filter for thickness.
 
+With *MODAL (the modes of rodyn_post.modes.load_modes), also:
+
+  modes.pvd             the modes as a series (open this one in ParaView): entry k is
+                        mode k, its time step the mode number
+  mode_NNN.vtp          one file per mode (NNN: mode number from 1), the mode number as
+                        the field data TimeValue
+
+Every mode file holds the lines at their static equilibrium, with point data at the
+nodes (the mode shape, scaled as rodyn writes it: the largest translation of the
+system 1 m):
+  displacement_magnitude   |translation| [m] (the active scalars)
+  displacement             translation x, y, z [m] (the active vectors: Warp By Vector
+                           with a scale factor draws the displaced shape)
+  rotation                 rotation about x, y, z [rad] (0 at a cable's nodes)
+  s_m                      unstretched arc length S from end A
+
 Frames: those with T0 <= t <= T1 (default: all), every N-th (--every, default 1).
 """
 import sys
@@ -33,7 +49,7 @@ from pathlib import Path
 
 import numpy as np
 
-from rodyn_post import cli, load_dynamic, load_static
+from rodyn_post import cli, load_dynamic, load_modes, load_static
 from rodyn_post.errors import InputError
 from rodyn_post.quantities import check_window, point_values, resample_matrix, window_mask
 from rodyn_post.vtk import pvd_text, vtp_text
@@ -42,6 +58,7 @@ PROG = "to_paraview"  # prefix of its messages
 COMMAND = "rodyn-paraview"  # its console command (postproc/pyproject.toml)
 STATIC_VTP = "static.vtp"
 PVD = "dynamic.pvd"
+MODES_PVD = "modes.pvd"
 SECTION_ARRAYS = {"effective_tension_N": "tension", "bending_moment_Nm": "moment",
                   "bending_curvature_per_m": "curvature", "torque_Nm": "torque",
                   "wall_tension_N": "wall_tension"}
@@ -82,6 +99,18 @@ def dynamic_files(results, frames):
         yield f"dynamic_{f:06d}.vtp", float(results.time[f]), text
 
 
+def mode_files(modes):
+    """(file name, mode number, text) of each mode's .vtp file, one after the other."""
+    xyz = [line.node_xyz for line in modes.lines]
+    for k in range(1, modes.n_modes + 1):
+        moved = [line.translation[k - 1] for line in modes.lines]
+        data = {"displacement_magnitude": [np.linalg.norm(u, axis=1) for u in moved],
+                "displacement": moved,
+                "rotation": [line.rotation[k - 1] for line in modes.lines],
+                "s_m": [line.node_s for line in modes.lines]}
+        yield f"mode_{k:03d}.vtp", k, vtp_text(xyz, data, k, vectors="displacement")
+
+
 def parse_args(argv):
     parser = cli.make_parser(COMMAND, cli.help_text(__doc__), dpi=None,
                              results_help="results folder, dynamic.h5 or results.h5")
@@ -115,6 +144,14 @@ def main(argv=None):
         out = cli.output_dir(args, folder, None if args.out_dir else "paraview")
         if static is not None:
             print(cli.write_text(out / STATIC_VTP, static_vtp(static)))
+            modes = load_modes(static.source if static.source.suffix == ".h5"
+                               else static.folder)
+            if modes is not None:
+                entries = []
+                for name, k, text in mode_files(modes):
+                    cli.write_text(out / name, text)
+                    entries.append((k, name))
+                print(cli.write_text(out / MODES_PVD, pvd_text(entries)))
         if dynamic is not None:
             frames = np.flatnonzero(window_mask(dynamic.time, args.window))[::args.every]
             entries = []
