@@ -412,7 +412,8 @@ module rodyn_model
    !> Initial velocity of a whole line as a rigid body (*INITIAL VELOCITY): each node
    !> gets v + omega x (x - centre), each director omega x d.
    type :: initial_velocity_t
-      integer :: line = 0                 !< index into model%lines
+      integer :: line = 0                 !< index into model%lines (0: a body's)
+      integer :: body = 0                 !< a FREE body thrown (model%bodies; 0: a line)
       real(wp) :: velocity(3) = 0.0_wp    !< translational velocity [m/s]
       real(wp) :: omega(3) = 0.0_wp       !< angular velocity [rad/s]
       logical :: has_centre = .false.     !< centre given (else the mean of the nodes)

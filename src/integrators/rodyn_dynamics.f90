@@ -234,7 +234,8 @@ contains
    end subroutine dynamics_setup
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
-   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes. A FREE
+   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes (a body:
+   !> its node G, c its reference point R unless given; its ends then move with it). A FREE
    !> point moves with the ends on it: its velocity is the mean of theirs, and they take
    !> it (ends of lines given different velocities meet at the point's).
    subroutine apply_initial_velocities(model, mesh, state)
@@ -246,6 +247,16 @@ contains
       if (.not. allocated(model%initial_velocities)) return
       do k = 1, size(model%initial_velocities)
          associate (iv => model%initial_velocities(k))
+            if (iv%body > 0) then       ! a body's node (its G), about R unless given
+               a = mesh%body_node(iv%body)
+               c = model%bodies(iv%body)%position
+               if (iv%has_centre) c = iv%centre
+               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
+               do i = 1, 3
+                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
+               end do
+               cycle
+            end if
             n0 = mesh%line_first_node(iv%line)
             nn = mesh%line_n_nodes(iv%line)
             if (iv%has_centre) then

@@ -123,7 +123,8 @@ contains
       allocate (pend%motion_line(size(model%motions)))
       allocate (pend%motion_vessel(size(model%motions)), pend%motion_body(size(model%motions)))
       allocate (pend%vessel_card(size(model%vessels)))
-      allocate (pend%iv_line(size(model%initial_velocities)))
+      allocate (pend%iv_line(size(model%initial_velocities)), &
+                pend%iv_body(size(model%initial_velocities)))
       allocate (pend%seg_line(keyword_count(deck, 'SEGMENT')))
       allocate (pend%seg_section(size(pend%seg_line)))
       allocate (pend%seg_length(size(pend%seg_line)))

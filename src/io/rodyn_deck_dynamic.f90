@@ -13,7 +13,7 @@ module rodyn_deck_dynamic
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
                           motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
-                          body_fixed
+                          body_fixed, body_free
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -393,11 +393,17 @@ contains
       type(error_t), intent(inout) :: err     !< status
       type(initial_velocity_t) :: iv
       character(len=:), allocatable :: line
+      logical :: on_body
 
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE'], err)
+         call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY'], err)
          if (has_error(err)) return
-         call card_get_name(card, 'LINE', line, err, required=.true.)
+         on_body = card_find_param(card, 'BODY') > 0
+         if (on_body .and. card_find_param(card, 'LINE') > 0) then
+            call card_error(card, 'give one of LINE= (a line) and BODY= (a FREE body)', err)
+            return
+         end if
+         call card_get_name(card, merge('BODY', 'LINE', on_body), line, err, required=.true.)
          if (has_error(err)) return
          call card_check_data(card, 1, 3, err, 'vx, vy, vz')
          if (has_error(err)) return
@@ -418,6 +424,7 @@ contains
       pend%n_ivs = pend%n_ivs + 1
       model%initial_velocities(pend%n_ivs) = iv
       pend%iv_line(pend%n_ivs) = ref_t(line, ic)
+      pend%iv_body(pend%n_ivs) = on_body
    end subroutine read_initial_velocity_card
 
    ! ============================================================ reader helpers
@@ -601,10 +608,14 @@ contains
       ! *INITIAL VELOCITY: line exists, one per line, only with START=DEFINED
       do k = 1, size(model%initial_velocities)
          associate (card => deck%cards(pend%iv_line(k)%card))
-            call resolve_line(card, pend%iv_line(k)%name, model, iref, end_a, err)
-            if (has_error(err)) return
-            model%initial_velocities(k)%line = iref
-            call check_unique_velocity(deck, pend, model, k, err)
+            if (pend%iv_body(k)) then
+               call resolve_velocity_body(deck, pend, model, k, err)
+            else
+               call resolve_line(card, pend%iv_line(k)%name, model, iref, end_a, err)
+               if (has_error(err)) return
+               model%initial_velocities(k)%line = iref
+               call check_unique_velocity(deck, pend, model, k, err)
+            end if
             if (has_error(err)) return
             if (.not. model%dynamic%requested) then
                call card_error(card, 'an initial velocity only acts with *DYNAMIC,'// &
@@ -703,6 +714,38 @@ contains
       end associate
    end subroutine check_unique_motion
 
+   !> The body of initial velocity `iv` (BODY=): it exists, is FREE and has no other.
+   subroutine resolve_velocity_body(deck, pend, model, iv, err)
+      type(deck_t), intent(in) :: deck       !< all cards
+      type(pending_t), intent(in) :: pend    !< card and BODY= of each initial velocity
+      type(model_t), intent(inout) :: model  !< its body set
+      integer, intent(in) :: iv              !< the initial velocity
+      type(error_t), intent(inout) :: err    !< status
+      integer :: ib, jv
+      associate (card => deck%cards(pend%iv_line(iv)%card), name => pend%iv_line(iv)%name)
+         do ib = 1, size(model%bodies)
+            if (model%bodies(ib)%name == name) exit
+         end do
+         if (ib > size(model%bodies)) then
+            call param_fail(card, 'BODY', "body '"//name//"' is not defined (no *BODY "// &
+                            'with NAME='//name//' in the deck)', err)
+            return
+         end if
+         if (model%bodies(ib)%kind /= body_free) then
+            call param_fail(card, 'BODY', "body '"//name//"' is FIXED: only a FREE body "// &
+                            'has a velocity of its own', err)
+            return
+         end if
+         do jv = 1, iv - 1
+            if (model%initial_velocities(jv)%body /= ib) cycle
+            call card_error(card, "body '"//name//"' already has an *INITIAL VELOCITY (at "// &
+                            location(deck, pend%iv_line(jv)%card)//')', err)
+            return
+         end do
+         model%initial_velocities(iv)%body = ib
+      end associate
+   end subroutine resolve_velocity_body
+
    !> Refuse a second *INITIAL VELOCITY for the same line.
    subroutine check_unique_velocity(deck, pend, model, iv, err)
       type(deck_t), intent(in) :: deck       !< all cards
@@ -714,7 +757,7 @@ contains
 
       associate (il => model%initial_velocities(iv)%line)
          do jv = 1, iv - 1
-            if (model%initial_velocities(jv)%line /= il) cycle
+            if (model%initial_velocities(jv)%line /= il .or. il == 0) cycle
             call card_error(deck%cards(pend%iv_line(iv)%card), 'line '// &
                             trim(model%lines(il)%name)//' already has an *INITIAL VELOCITY'// &
                             ' (at '//location(deck, pend%iv_line(jv)%card)//')', err)

@@ -48,7 +48,8 @@ module rodyn_deck_support
       logical, allocatable :: motion_body(:)      !< per motion: BODY= given (not LINE=)
       type(ref_t), allocatable :: motion_vessel(:) !< per motion: its VESSEL= ('' if none)
       integer, allocatable :: vessel_card(:)      !< per vessel: card index
-      type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE=
+      type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE= (or BODY=)
+      logical, allocatable :: iv_body(:)          !< per initial velocity: BODY= given
       type(ref_t), allocatable :: seg_line(:)     !< per *SEGMENT: its LINE=
       type(ref_t), allocatable :: seg_section(:)  !< per *SEGMENT: its SECTION=
       real(wp), allocatable :: seg_length(:)      !< per *SEGMENT: LENGTH [m]
