@@ -174,6 +174,10 @@ module rodyn_model
       !> added mass (*BODY ADDED MASS): A11, A22, A33 at G [kg] and A44, A55, A66 about G
       !> [kg m2], body axes
       real(wp) :: added_mass(6) = 0.0_wp
+      !> quadratic drag (*BODY DRAG), dynamics only: CdA_1..3 [m2], the force -1/2 rho_w
+      !> CdA_i |u_i| u_i along body axis i at R (u the velocity of R in body axes, still
+      !> water), and C_r1..3 [N m s2], the moment -C_ri |w_i| w_i (w the angular velocity)
+      real(wp) :: drag(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
    end type body_t
 

@@ -134,7 +134,8 @@ contains
       allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
       allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
       allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)), &
-                pend%body_damp(size(model%bodies)), pend%body_added(size(model%bodies)))
+                pend%body_damp(size(model%bodies)), pend%body_added(size(model%bodies)), &
+                pend%body_drag(size(model%bodies)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -230,7 +231,7 @@ contains
             call read_body_card(deck, ic, model, pend, err)
          case ('BODY HYDROSTATICS', 'BODY DAMPING')
             call read_body_hydrostatics_card(deck, ic, model, pend, err)
-         case ('BODY ADDED MASS')
+         case ('BODY ADDED MASS', 'BODY DRAG')
             call read_body_added_mass_card(deck, ic, model, pend, err)
          case ('FAILURE')
             call read_failure_card(deck, ic, model, pend, err)

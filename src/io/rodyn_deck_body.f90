@@ -92,6 +92,7 @@ contains
       pend%body_hydro(pend%n_bodies) = 0
       pend%body_damp(pend%n_bodies) = 0
       pend%body_added(pend%n_bodies) = 0
+      pend%body_drag(pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -172,23 +173,30 @@ contains
    subroutine read_body_added_mass_card(deck, ic, model, pend, err)
       type(deck_t), intent(in) :: deck        !< all cards
       integer, intent(in) :: ic               !< index of the card
-      type(model_t), intent(inout) :: model   !< the body's added mass set
+      type(model_t), intent(inout) :: model   !< the body's added mass or drag set
       type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
-      character(len=*), parameter :: what = 'A11, A22, A33, A44, A55, A66'
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, what, first
       real(wp) :: a(6)
       integer :: ib
+      logical :: drag
       associate (card => deck%cards(ic))
+         drag = card%keyword == 'BODY DRAG'
+         what = merge('CdA1, CdA2, CdA3, Cr1, Cr2, Cr3', 'A11, A22, A33, A44, A55, A66   ', &
+                      drag)
+         what = trim(what)
          call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
          call body_above(card, name, model, pend, ib, err)
          if (has_error(err)) return
-         if (pend%body_added(ib) > 0) then
-            call card_error(card, "body '"//name//"' already has its *BODY ADDED MASS (at "// &
-                            location(deck, pend%body_added(ib))//')', err)
+         if (drag .and. pend%body_drag(ib) > 0) first = location(deck, pend%body_drag(ib))
+         if (.not. drag .and. pend%body_added(ib) > 0) &
+            first = location(deck, pend%body_added(ib))
+         if (allocated(first)) then
+            call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
+                            ' (at '//first//')', err)
             return
          end if
          call card_check_data(card, 1, 1, err, what)
@@ -196,11 +204,19 @@ contains
          call card_data_reals(card, 1, 6, a, err, what)
          if (has_error(err)) return
          if (.not. all(a >= 0.0_wp)) then
-            call card_data_error(card, 1, 'an added mass or inertia is negative', err)
+            call card_data_error(card, 1, merge('a drag coefficient is negative         ', &
+                                                'an added mass or inertia is negative   ', &
+                                                drag), err)
+            err%message = trim(err%message)
             return
          end if
-         model%bodies(ib)%added_mass = a
-         pend%body_added(ib) = ic
+         if (drag) then
+            model%bodies(ib)%drag = a
+            pend%body_drag(ib) = ic
+         else
+            model%bodies(ib)%added_mass = a
+            pend%body_added(ib) = ic
+         end if
       end associate
    end subroutine read_body_added_mass_card
 
@@ -347,15 +363,21 @@ contains
                       ' NAME='//name//' in the deck)', err)
    end subroutine find_body
 
-   !> A body's VOLUME needs *WATER.
+   !> A body's VOLUME and its *BODY DRAG need *WATER.
    subroutine check_bodies(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< card of each body
       type(model_t), intent(in) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       integer :: ib
+      if (model%water%present) return
       do ib = 1, size(model%bodies)
-         if (model%water%present .or. .not. model%bodies(ib)%volume > 0.0_wp) cycle
+         if (pend%body_drag(ib) > 0) then
+            call card_error(deck%cards(pend%body_drag(ib)), 'a body''s drag needs *WATER '// &
+                            '(no *WATER in the deck)', err)
+            return
+         end if
+         if (.not. model%bodies(ib)%volume > 0.0_wp) cycle
          call param_fail(deck%cards(pend%body_card(ib)), 'VOLUME', 'VOLUME > 0 needs'// &
                          ' *WATER (no *WATER in the deck)', err)
          return

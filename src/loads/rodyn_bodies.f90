@@ -37,6 +37,8 @@ module rodyn_bodies
       real(wp), allocatable :: xr0(:, :)       !< (3, nb) R at the start [m]
       real(wp), allocatable :: c(:, :, :)      !< (6, 6, nb) waterplane restoring about R
       real(wp), allocatable :: b(:, :, :)      !< (6, 6, nb) linear damping about R
+      !> (6, nb) quadratic drag in body axes: 1/2 rho_w CdA_i [kg/m], C_ri [N m s2]
+      real(wp), allocatable :: q(:, :)
       real(wp), allocatable :: fd(:, :)        !< (6, nb) last damping force and moment at G
       real(wp), allocatable :: fh(:, :)        !< (6, nb) last water force and moment at G
       real(wp), allocatable :: fe(:, :)        !< (3, nb) last moment of the loads at R about G
@@ -55,7 +57,8 @@ contains
       if (allocated(model%bodies)) bl%nb = count(model%bodies%kind == body_free)
       allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
                 bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), &
-                bl%fh(6, bl%nb), bl%fe(3, bl%nb), bl%b(6, 6, bl%nb), bl%fd(6, bl%nb))
+                bl%fh(6, bl%nb), bl%fe(3, bl%nb), bl%b(6, 6, bl%nb), bl%fd(6, bl%nb), &
+                bl%q(6, bl%nb))
       bl%fh = 0.0_wp
       bl%fd = 0.0_wp
       bl%fe = 0.0_wp
@@ -73,6 +76,8 @@ contains
             bl%xr0(:, k) = b%position
             bl%c(:, :, k) = b%hydrostatic
             bl%b(:, :, k) = b%damping
+            bl%q(1:3, k) = 0.5_wp*model%water%density*b%drag(1:3)
+            bl%q(4:6, k) = b%drag(4:6)
          end associate
       end do
    end subroutine body_loads_build
@@ -122,11 +127,14 @@ contains
       f(4:6) = f(4:6) + fe
    end subroutine body_force
 
-   !> Body k's linear damping over a time step dt (eq. (141)): the velocity of R and the
-   !> angular velocity of the step, v = (x_R^{n+1} - x_R^n)/dt, omega = theta/dt (theta
-   !> the Cayley parameter of the step's turn, given), the force and moment about R
-   !> -B (v, omega) moved to G at the force point (as the waterplane's, (138)); f the
-   !> force on the node and kb its derivative (c_v: d velocity / d increment, 1/dt).
+   !> Body k's linear damping and quadratic drag over a time step dt (eqs. (141), (149)):
+   !> the velocity of R and the angular velocity of the step, v = (x_R^{n+1} - x_R^n)/dt,
+   !> omega = theta/dt (theta the Cayley parameter of the step's turn, given), the force
+   !> and moment about R -B (v, omega) - D_f Q D_f^T (v, omega), Q = diag(q_i |u_i|), u =
+   !> D_f^T (v, omega) in the body axes at the force point, moved to G at the force point
+   !> (as the waterplane's, (138)); f the force on the node and kb its derivative (c_v:
+   !> d velocity / d increment, 1/dt; the drag's 2 q_i |u_i|, the turn of D_f left out).
+   !> The drag's work, f . (dx, theta), is -dt sum_i q_i |u_i| u_i^2 <= 0: it dissipates.
    pure subroutine body_damping(bl, k, xg0, xg1, d0, d1, w, dt, th, f, kb)
       type(body_loads_t), intent(inout) :: bl  !< loads (fd: the force kept)
       integer, intent(in) :: k                 !< body
@@ -137,14 +145,25 @@ contains
       real(wp), intent(in) :: th(3)            !< Cayley parameter of the step's turn [rad]
       real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
       real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
-      real(wp) :: ar(3), ar0(3), ar1(3), v(6), t(6, 6)
-      integer :: i
+      real(wp) :: ar(3), ar0(3), ar1(3), v(6), t(6, 6), bq(6, 6), df(3, 3), u(3)
+      integer :: i, j
       ar0 = matmul(d0, bl%rr(:, k))
       ar1 = matmul(d1, bl%rr(:, k))
       ar = (1.0_wp - w)*ar0 + w*ar1
       v(1:3) = (xg1 + ar1 - xg0 - ar0)/dt
       v(4:6) = th/dt
       f = -matmul(bl%b(:, :, k), v)
+      bq = 0.0_wp
+      if (any(bl%q(:, k) > 0.0_wp)) then
+         df = (1.0_wp - w)*d0 + w*d1
+         do i = 0, 3, 3
+            u = matmul(transpose(df), v(i + 1:i + 3))
+            f(i + 1:i + 3) = f(i + 1:i + 3) - matmul(df, bl%q(i + 1:i + 3, k)*abs(u)*u)
+            do j = 1, 3
+               bq(i + 1:i + 3, i + j) = matmul(df, 2.0_wp*bl%q(i + 1:i + 3, k)*abs(u)*df(j, :))
+            end do
+         end do
+      end if
       f(4:6) = f(4:6) + cross(ar, f(1:3))
       bl%fd(:, k) = f
       t = 0.0_wp
@@ -152,7 +171,7 @@ contains
          t(i, i) = 1.0_wp
       end do
       t(1:3, 4:6) = -skew(ar1)
-      kb = -matmul(transpose(t), matmul(bl%b(:, :, k), t))/dt
+      kb = -matmul(transpose(t), matmul(bl%b(:, :, k) + bq, t))/dt
    end subroutine body_damping
 
    !> d(a x F)/d theta for a vector a = D r turning with the body and a fixed F:

@@ -39,7 +39,7 @@ contains
          fint(:, n) = fint(:, n) - f
          if (want_k) call add_node_block(sup, n, -kb, bm)
          if (.not. present(dt)) cycle
-         if (.not. any(bl%b(:, :, k) /= 0.0_wp)) cycle
+         if (.not. (any(bl%b(:, :, k) /= 0.0_wp) .or. any(bl%q(:, k) > 0.0_wp))) cycle
          th = rotation_cayley_inverse(relative_rotation(d1(:, :, n), d0(:, :, n)))
          call body_damping(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, dt, th, &
                            f, kb)
