@@ -397,6 +397,7 @@ module rodyn_model
    type :: motion_t
       integer :: line = 0                 !< index into model%lines (0: a body's motion)
       integer :: body = 0                 !< a FIXED body moved (model%bodies; 0: a line's)
+      integer :: point = 0                !< a FIXED point moved: its line ends (model%points)
       integer :: node = end_a             !< node number along the line, or end_a / end_b
       integer :: kind = motion_harmonic   !< motion_* constant
       real(wp) :: ramp = 3.0_wp           !< ramp-in duration [s]

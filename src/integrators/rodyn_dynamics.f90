@@ -92,7 +92,9 @@ module rodyn_dynamics
       real(wp) :: beta_n = 0.25_wp, gamma_n = 0.5_wp !< Newmark beta, gamma
       real(wp) :: t0 = 0.0_wp                  !< time t_n [s]
       real(wp) :: dt = 0.0_wp                  !< step [s]
-      integer, allocatable :: motion_node(:)   !< (n motions) global node of each motion
+      integer, allocatable :: motion_node(:)   !< (nm) each node moved by a *MOTION
+      integer, allocatable :: motion_of(:)     !< (nm) its motion (model%motions; a point's
+                                               !< moves the line ends on it)
       real(wp), allocatable :: x_start(:, :)   !< (3, nn) positions at t = 0 [m]
       !> (n motions) the motion's node is clamped on a vessel: its directors follow the
       !> vessel's turn, d_i = Q(t) d_i(0) (rodyn_motion's motion_rotation)
@@ -197,20 +199,8 @@ contains
       end if
       prob%x_start = state%x
       prob%x_held = state%x
-      allocate (prob%motion_node(0))
-      if (allocated(model%motions)) then
-         deallocate (prob%motion_node)
-         allocate (prob%motion_node(size(model%motions)))
-         do i = 1, size(model%motions)
-            if (model%motions(i)%body > 0) then    ! a FIXED body moved: its node (G)
-               prob%motion_node(i) = mesh%body_node(model%motions(i)%body)
-            else
-               prob%motion_node(i) = mesh_node(mesh, model%motions(i)%line, &
-                                               model%motions(i)%node)
-            end if
-            prob%sup%moved(prob%motion_node(i)) = .true.
-         end do
-      end if
+      call motion_nodes(model, mesh, prob%motion_node, prob%motion_of)
+      prob%sup%moved(prob%motion_node) = .true.
       ! the static solution has the vessels at their offsets (rodyn_statics'
       ! vessel_offsets): the offset is their rest pose, not ramped in again
       if (allocated(model%vessels)) then
@@ -226,12 +216,46 @@ contains
                 prob%d_start(3, 3, size(prob%motion_node)))
       do i = 1, size(prob%motion_node)
          associate (node => prob%motion_node(i))
-            prob%motion_turns(i) = model%motions(i)%kind == motion_vessel .and. &
+            prob%motion_turns(i) = model%motions(prob%motion_of(i))%kind == motion_vessel .and. &
                                    prob%sup%ndof(node) == 6 .and. all(prob%sup%held(4:6, node))
             prob%d_start(:, :, i) = state%d(:, :, node)
          end associate
       end do
    end subroutine dynamics_setup
+
+   !> The nodes the *MOTIONs move and the motion of each: a line's node, a FIXED body's
+   !> node (its G), or each line end on a FIXED point.
+   subroutine motion_nodes(model, mesh, node, of)
+      type(model_t), intent(in) :: model             !< model
+      type(mesh_t), intent(in) :: mesh               !< mesh
+      integer, allocatable, intent(out) :: node(:)   !< nodes moved
+      integer, allocatable, intent(out) :: of(:)     !< the motion of each
+      integer :: i, l
+      allocate (node(0), of(0))
+      if (.not. allocated(model%motions)) return
+      do i = 1, size(model%motions)
+         associate (mo => model%motions(i))
+            if (mo%body > 0) then
+               node = [node, mesh%body_node(mo%body)]
+               of = [of, i]
+            else if (mo%point > 0) then
+               do l = 1, mesh%n_lines
+                  if (model%lines(l)%point_a == mo%point) then
+                     node = [node, mesh_node(mesh, l, end_a)]
+                     of = [of, i]
+                  end if
+                  if (model%lines(l)%point_b == mo%point) then
+                     node = [node, mesh_node(mesh, l, end_b)]
+                     of = [of, i]
+                  end if
+               end do
+            else
+               node = [node, mesh_node(mesh, mo%line, mo%node)]
+               of = [of, i]
+            end if
+         end associate
+      end do
+   end subroutine motion_nodes
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
    !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes (a body:
@@ -337,7 +361,7 @@ contains
          ! (vessels unallocated, as in a model built without a deck, is an absent
          ! optional argument)
          prob%x_held(:, node) = prob%x_start(:, node) + motion_displacement( &
-                                prob%model%motions(i), t0 + dt, prob%vessels, &
+                                prob%model%motions(prob%motion_of(i)), t0 + dt, prob%vessels, &
                                 prob%x_start(:, node))
       end do
       prob%ref_pending = .not. prob%have_conv
@@ -357,7 +381,7 @@ contains
       ! a FIXED body moved (*MOTION, BODY=) starts the step where it is prescribed: its
       ! rows are held, and no free row couples to them but through its line ends
       do i = 1, size(prob%motion_node)
-         if (prob%model%motions(i)%body == 0) cycle
+         if (prob%model%motions(prob%motion_of(i))%body == 0) cycle
          node = prob%motion_node(i)
          prob%dx(:, node) = prob%x_held(:, node) - prob%s0%x(:, node)
       end do
@@ -373,7 +397,7 @@ contains
       do i = 1, size(prob%motion_node)
          if (.not. prob%motion_turns(i)) cycle
          prob%s1%d(:, :, prob%motion_node(i)) = matmul(motion_rotation( &
-                                                prob%model%motions(i), t0 + dt, &
+                                                prob%model%motions(prob%motion_of(i)), t0 + dt, &
                                                 prob%vessels), prob%d_start(:, :, i))
       end do
    end subroutine dynamics_begin_step

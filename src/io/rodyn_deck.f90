@@ -121,7 +121,8 @@ contains
       allocate (pend%load_amp(size(model%loads)))
       allocate (pend%amplitude_card(size(model%amplitudes)))
       allocate (pend%motion_line(size(model%motions)))
-      allocate (pend%motion_vessel(size(model%motions)), pend%motion_body(size(model%motions)))
+      allocate (pend%motion_vessel(size(model%motions)), pend%motion_body(size(model%motions)), &
+                pend%motion_point(size(model%motions)))
       allocate (pend%vessel_card(size(model%vessels)))
       allocate (pend%iv_line(size(model%initial_velocities)), &
                 pend%iv_body(size(model%initial_velocities)))

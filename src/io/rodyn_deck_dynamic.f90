@@ -13,7 +13,7 @@ module rodyn_deck_dynamic
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
                           motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
-                          body_fixed, body_free
+                          body_fixed, body_free, point_fixed, end_b
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -294,23 +294,26 @@ contains
       type(table_t) :: table
       character(len=:), allocatable :: line, vessel
       integer :: it, n
-      logical :: on_body
+      logical :: on_body, on_point
 
       vessel = ''
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'END', &
-                                'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
+         call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'POINT', &
+                                'END', 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
          on_body = card_find_param(card, 'BODY') > 0
-         if (on_body .and. card_find_param(card, 'LINE') > 0) then
-            call card_error(card, 'give one of LINE= (a line''s node) and BODY= (a FIXED '// &
-                            'body)', err)
+         on_point = card_find_param(card, 'POINT') > 0
+         if (count([on_body, on_point, card_find_param(card, 'LINE') > 0]) > 1) then
+            call card_error(card, 'give one of LINE= (a line''s node), BODY= (a FIXED '// &
+                            'body) and POINT= (a FIXED point)', err)
             return
          end if
-         if (on_body) then
-            call card_get_name(card, 'BODY', line, err, required=.true.)
+         if (on_body .or. on_point) then
+            call card_get_name(card, merge('BODY ', 'POINT', on_body), line, err, &
+                               required=.true.)
             if (card_find_param(card, 'END') + card_find_param(card, 'NODE') > 0) &
-               call card_error(card, 'END and NODE are a line''s: not with BODY=', err)
+               call card_error(card, 'END and NODE are a line''s: not with BODY= or POINT=', &
+                               err)
          else
             call card_get_name(card, 'LINE', line, err, required=.true.)
             if (has_error(err)) return
@@ -323,10 +326,11 @@ contains
          mo%kind = kinds(it)
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
-         if (on_body .and. mo%kind == motion_vessel) then
-            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node: a body '// &
-                            'moved with a vessel is not available (move it by HARMONIC or'// &
-                            ' TABLE, or put the line ends on the vessel)', err)
+         if ((on_body .or. on_point) .and. mo%kind == motion_vessel) then
+            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node: a '// &
+                            trim(merge('body ', 'point', on_body))//' moved with a vessel'// &
+                            ' is not available (move it by HARMONIC or TABLE, or put the'// &
+                            ' line ends on the vessel)', err)
             return
          end if
 
@@ -381,6 +385,7 @@ contains
       pend%motion_line(pend%n_motions) = ref_t(line, ic)
       pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
       pend%motion_body(pend%n_motions) = on_body
+      pend%motion_point(pend%n_motions) = on_point
    end subroutine read_motion_card
 
    !> *INITIAL VELOCITY, LINE=: data lines vx, vy, vz [m/s]; wx, wy, wz [rad/s];
@@ -594,6 +599,11 @@ contains
                if (has_error(err)) return
                cycle
             end if
+            if (pend%motion_point(k)) then
+               call resolve_motion_point(deck, pend, model, k, err)
+               if (has_error(err)) return
+               cycle
+            end if
             call resolve_line(card, pend%motion_line(k)%name, model, iref, &
                               model%motions(k)%node, err)
             if (has_error(err)) return
@@ -689,6 +699,56 @@ contains
          model%motions(im)%line = 0
       end associate
    end subroutine resolve_motion_body
+
+   !> The point of motion `im` (POINT=): it exists, is FIXED (its line ends held: the
+   !> motion moves them), has no other *MOTION, and no end on it has one of its own.
+   subroutine resolve_motion_point(deck, pend, model, im, err)
+      type(deck_t), intent(in) :: deck       !< all cards
+      type(pending_t), intent(in) :: pend    !< card and POINT= of each motion
+      type(model_t), intent(inout) :: model  !< the motion's point set
+      integer, intent(in) :: im              !< the motion
+      type(error_t), intent(inout) :: err    !< status
+      integer :: ip, jm, l
+      associate (card => deck%cards(pend%motion_line(im)%card), &
+                 name => pend%motion_line(im)%name)
+         do ip = 1, size(model%points)
+            if (model%points(ip)%name == name) exit
+         end do
+         if (ip > size(model%points)) then
+            call param_fail(card, 'POINT', "point '"//name//"' is not defined (no *POINT "// &
+                            'with NAME='//name//' in the deck)', err)
+            return
+         end if
+         if (model%points(ip)%kind /= point_fixed) then
+            call param_fail(card, 'POINT', "point '"//name//"' is not FIXED: a *MOTION "// &
+                            'moves a FIXED point (its line ends held), not a FREE or BODY one', &
+                            err)
+            return
+         end if
+         do jm = 1, size(model%motions)
+            if (jm == im .or. .not. pend%motion_line(jm)%card > 0) cycle
+            if (pend%motion_point(jm) .and. pend%motion_line(jm)%name == name .and. jm < im) &
+               then
+               call card_error(card, "point '"//name//"' already has a *MOTION (at "// &
+                               location(deck, pend%motion_line(jm)%card)//')', err)
+               return
+            end if
+            if (pend%motion_body(jm) .or. pend%motion_point(jm)) cycle
+            do l = 1, size(model%lines)
+               if (model%lines(l)%name /= pend%motion_line(jm)%name) cycle
+               if ((model%lines(l)%point_a == ip .and. model%motions(jm)%node == end_a) .or. &
+                   (model%lines(l)%point_b == ip .and. model%motions(jm)%node == end_b)) then
+                  call card_error(card, "point '"//name//"': line "//trim(model%lines(l)% &
+                                  name)//"'s end on it has a *MOTION of its own (at "// &
+                                  location(deck, pend%motion_line(jm)%card)//')', err)
+                  return
+               end if
+            end do
+         end do
+         model%motions(im)%point = ip
+         model%motions(im)%line = 0
+      end associate
+   end subroutine resolve_motion_point
 
    !> Refuse a second *MOTION at the same node of the same line.
    subroutine check_unique_motion(deck, pend, model, im, err)

@@ -46,6 +46,7 @@ module rodyn_deck_support
       type(ref_t), allocatable :: load_amp(:)     !< per load: its AMPLITUDE= ('' if none)
       type(ref_t), allocatable :: motion_line(:)  !< per motion: its LINE= (or BODY=)
       logical, allocatable :: motion_body(:)      !< per motion: BODY= given (not LINE=)
+      logical, allocatable :: motion_point(:)     !< per motion: POINT= given
       type(ref_t), allocatable :: motion_vessel(:) !< per motion: its VESSEL= ('' if none)
       integer, allocatable :: vessel_card(:)      !< per vessel: card index
       type(ref_t), allocatable :: iv_line(:)      !< per initial velocity: its LINE= (or BODY=)
