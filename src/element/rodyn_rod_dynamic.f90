@@ -83,7 +83,7 @@ module rodyn_rod_dynamic
       real(wp) :: n(max_nen)        !< shape functions
       real(wp) :: dn(max_nen)       !< dN/dS [1/m]
       real(wp) :: wj                !< Gauss weight times Jacobian [m]
-      real(wp) :: mask(6)           !< strains integrated here (1) or not (0)
+      real(wp) :: mask(6)           !< strains integrated here (1) or not (0), with off
       real(wp) :: cg(6)             !< stiffness of the strains integrated here
       real(wp) :: eps0(6)           !< stress-free strains
       real(wp) :: off(6)            !< offset of the numerical stress [N, N m]
@@ -187,17 +187,19 @@ contains
       real(wp), intent(in) :: eps0(6, max_points)   !< stress-free strains
       integer, intent(in) :: nen                    !< nodes of the element
       type(step_point_t), intent(inout) :: pt       !< the point (fields kept)
-      !> offset of the numerical stress at the points (rod_element_dynamic) [N, N m]
+      !> offset of the numerical stress at the points (rod_element_dynamic; with it the
+      !> point's mask) [N, N m]
       real(wp), intent(in), optional :: off(6, max_points)
       pt%g = g
       pt%shear = rule%shear_only(g)
       pt%n(1:nen) = rule%n(1:nen, g)
       pt%dn(1:nen) = rule%dn(1:nen, g)*2.0_wp/le
       pt%wj = rule%w(g)*0.5_wp*le
-      pt%mask = rule%mask(:, g)
-      pt%cg = c*pt%mask
+      pt%cg = c*rule%mask(:, g)
       pt%eps0 = eps0(:, g)
-      if (present(off)) pt%off = off(:, g)
+      if (.not. present(off)) return
+      pt%mask = rule%mask(:, g)
+      pt%off = off(:, g)
    end subroutine point_setup
 
    !> The fields at the point of q^{n+1} and, for EMC and TRAPEZOIDAL, of q^n with its
