@@ -89,6 +89,7 @@ module rodyn_rod_dynamic
       real(wp) :: off(6)            !< offset of the numerical stress [N, N m]
       type(rod_gp_t) :: k0          !< fields of q^n (EMC, TRAPEZOIDAL)
       type(rod_gp_t) :: k1          !< fields of q^{n+1}
+      type(rod_gp_t) :: km          !< fields where B is evaluated (MIDPOINT, ALPHA, EMC)
       real(wp) :: e0(6)             !< strains of q^n (EMC, TRAPEZOIDAL)
    end type step_point_t
 
@@ -213,7 +214,9 @@ contains
       type(step_point_t), intent(inout) :: pt       !< k1, and k0, e0 set
       type(rod_gp_t), intent(in), optional :: gp0(max_points) !< fields of q^n
       real(wp), intent(in), optional :: epsn(6, max_points)   !< strains of q^n
-      call point_kinematics(es%nen, pt, x1, d1, pt%k1)
+      integer :: nen
+      nen = es%nen
+      call point_kinematics(nen, pt%shear, pt%n(1:nen), pt%dn(1:nen), x1, d1, pt%k1)
       if (es%scheme /= scheme_emc .and. es%scheme /= scheme_trapezoidal) return
       if (es%have0) then   ! q^n's fields and strains, given or computed
          pt%k0 = gp0(pt%g)
@@ -223,7 +226,7 @@ contains
             pt%e0 = epsn(:, pt%g)
          end if
       else
-         call point_kinematics(es%nen, pt, x0, d0, pt%k0)
+         call point_kinematics(nen, pt%shear, pt%n(1:nen), pt%dn(1:nen), x0, d0, pt%k0)
          pt%e0 = point_strains(pt, pt%k0)
       end if
    end subroutine point_fields
@@ -232,18 +235,18 @@ contains
    !> midpoint, or q_f). docs/theory.md eqs. (54), (56).
    pure subroutine midpoint_terms(es, pt, d1, sums)
       type(element_step_t), intent(in) :: es        !< the element's step
-      type(step_point_t), intent(in) :: pt          !< the point
+      type(step_point_t), intent(inout) :: pt       !< the point (km set)
       real(wp), intent(in) :: d1(3, 3, es%nen)      !< directors at t_n+1
       type(element_sums_t), intent(inout) :: sums   !< the element's sums
-      type(rod_gp_t) :: km
       real(wp) :: s(6)
       integer :: nen
       nen = es%nen
-      call point_kinematics(nen, pt, es%xm(:, 1:nen), es%dm(:, :, 1:nen), km)
-      s = elastic_stress(pt, point_strains(pt, km))
-      call add_qforce(nen, pt, km, s, pt%wj, sums%fq(:, :, 1:nen))
+      call point_kinematics(nen, pt%shear, pt%n(1:nen), pt%dn(1:nen), es%xm(:, 1:nen), &
+                            es%dm(:, :, 1:nen), pt%km)
+      s = elastic_stress(pt, point_strains(pt, pt%km))
+      call add_qforce(nen, pt, pt%km, s, pt%wj, sums%fq(:, :, 1:nen))
       if (.not. es%want_k) return
-      call add_material(nen, pt, km, es%dm(:, :, 1:nen), km, d1, pt%cg, es%wq*pt%wj, sums)
+      call add_material(nen, pt, pt%km, es%dm(:, :, 1:nen), pt%km, d1, pt%cg, es%wq*pt%wj, sums)
       call add_geometric(nen, pt, s, es%wq*pt%wj, sums)
    end subroutine midpoint_terms
 
@@ -272,51 +275,52 @@ contains
    !> docs/theory.md eqs. (35), (44), (126).
    pure subroutine emc_terms(es, pt, x1, d1, sums, kd)
       type(element_step_t), intent(in) :: es        !< the element's step
-      type(step_point_t), intent(in) :: pt          !< the point (k0, e0 set)
+      type(step_point_t), intent(inout) :: pt       !< the point (k0, e0 set; km set)
       real(wp), intent(in) :: x1(3, es%nen)         !< positions at t_n+1 [m]
       real(wp), intent(in) :: d1(3, 3, es%nen)      !< directors at t_n+1
       type(element_sums_t), intent(inout) :: sums   !< the element's sums
       real(wp), intent(in), optional :: kd(6)       !< numerical stiffness [N, N m2]
-      type(rod_gp_t) :: km
       real(wp) :: s(6), cgt(6), sl(6)
       integer :: nen
       nen = es%nen
       ! the fields are linear in the nodal values: midpoint = mean of the ends
-      km%xp = 0.5_wp*(pt%k0%xp + pt%k1%xp)
+      pt%km%xp = 0.5_wp*(pt%k0%xp + pt%k1%xp)
       if (pt%shear) then
-         km%d(:, 1:2) = 0.5_wp*(pt%k0%d(:, 1:2) + pt%k1%d(:, 1:2))
+         pt%km%d(:, 1:2) = 0.5_wp*(pt%k0%d(:, 1:2) + pt%k1%d(:, 1:2))
       else
-         km%d = 0.5_wp*(pt%k0%d + pt%k1%d)
-         km%dp = 0.5_wp*(pt%k0%dp + pt%k1%dp)
+         pt%km%d = 0.5_wp*(pt%k0%d + pt%k1%d)
+         pt%km%dp = 0.5_wp*(pt%k0%dp + pt%k1%dp)
       end if
       s = emc_stress(pt, point_strains(pt, pt%k1), kd)
       cgt = pt%cg
       if (present(kd)) cgt = pt%cg + 2.0_wp*kd*pt%mask
-      call add_qforce(nen, pt, km, s, pt%wj, sums%fq(:, :, 1:nen))
+      call add_qforce(nen, pt, pt%km, s, pt%wj, sums%fq(:, :, 1:nen))
       if (.not. es%want_k) return
-      call add_material(nen, pt, km, es%dm(:, :, 1:nen), pt%k1, d1, cgt, 0.5_wp*pt%wj, sums)
+      call add_material(nen, pt, pt%km, es%dm(:, :, 1:nen), pt%k1, d1, cgt, 0.5_wp*pt%wj, sums)
       if (es%lin) then
          sl = linearized_strains(nen, pt%n(1:nen), pt%dn(1:nen), x1, es%dl(:, :, 1:nen), &
                                  es%dxl(:, 1:nen), es%ddl(:, :, 1:nen))
          s = emc_stress(pt, sl, kd)
-         call add_qforce(nen, pt, km, s, pt%wj, sums%fql(:, :, 1:nen))
+         call add_qforce(nen, pt, pt%km, s, pt%wj, sums%fql(:, :, 1:nen))
       end if
       call add_geometric(nen, pt, s, 0.5_wp*pt%wj, sums)
    end subroutine emc_terms
 
-   !> The fields at the point of nodal positions x and directors d (rod_gp_kinematics);
-   !> at a shear-only point (Gamma1 and Gamma2 alone: the extra points of order 3) only
-   !> x', d1 and d2, which the shear strains need. docs/theory.md eq. (22).
-   pure subroutine point_kinematics(nen, pt, x, d, kin)
+   !> The fields at a point of nodal positions x and directors d (rod_gp_kinematics); at
+   !> a shear-only point (Gamma1 and Gamma2 alone: the extra points of order 3) only x',
+   !> d1 and d2, which the shear strains need. docs/theory.md eq. (22).
+   pure subroutine point_kinematics(nen, shear, n, dn, x, d, kin)
       integer, intent(in) :: nen                    !< nodes of the element
-      type(step_point_t), intent(in) :: pt          !< the point
+      logical, intent(in) :: shear                  !< a shear-only point
+      real(wp), intent(in) :: n(nen)                !< shape functions
+      real(wp), intent(in) :: dn(nen)               !< dN/dS [1/m]
       real(wp), intent(in) :: x(3, nen)             !< nodal positions [m]
       real(wp), intent(in) :: d(3, 3, nen)          !< nodal directors
       type(rod_gp_t), intent(inout) :: kin          !< fields at the point
-      if (pt%shear) then
-         call rod_gp_kinematics_shear(nen, pt%n(1:nen), pt%dn(1:nen), x, d, kin)
+      if (shear) then
+         call rod_gp_kinematics_shear(nen, n, dn, x, d, kin)
       else
-         call rod_gp_kinematics(nen, pt%n(1:nen), pt%dn(1:nen), x, d, kin)
+         call rod_gp_kinematics(nen, n, dn, x, d, kin)
       end if
    end subroutine point_kinematics
 
