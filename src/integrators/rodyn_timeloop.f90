@@ -44,6 +44,35 @@ module rodyn_timeloop
       type(step_log_t) :: log              !< the last step's energies and works
    end type timeloop_state_t
 
+   !> The controls of a run's steps, fixed over the run (step_controls).
+   type :: step_controls_t
+      type(newton_options_t) :: opts     !< Newton controls of a step
+      real(wp) :: dt = 0.0_wp            !< time step DT [s]
+      real(wp) :: t_end = 0.0_wp         !< end of the run [s]
+      real(wp) :: interval = 0.0_wp      !< time between output frames [s]
+      real(wp) :: tol_t = 0.0_wp         !< tolerance of a time [s]
+      real(wp) :: e_tol = 0.0_wp         !< EMC's energy identity: mismatch / exchange [-]
+      real(wp) :: checkpoint = 0.0_wp    !< time between checkpoints (<= 0: none) [s]
+      integer :: max_cutbacks = 0        !< halvings of DT in a row before giving up
+   end type step_controls_t
+
+   !> The step under way: where it ends, how it is tried, and what its last solve gave
+   !> (solve_step).
+   type :: step_attempt_t
+      real(wp) :: t1 = 0.0_wp            !< end of the step [s]
+      logical :: retried = .false.       !< tried again, with the line search
+      integer :: cuts = 0                !< halvings of DT since the last step taken
+      type(newton_stats_t) :: stats      !< the last Newton solve
+      type(error_t) :: nerr              !< its reason of failure
+      logical :: accepted = .false.      !< converged and, for EMC, keeping eq. (43)
+      type(step_log_t) :: trial          !< energies at the step's end
+      real(wp) :: w_ext = 0.0_wp         !< work of supports and loads in the step [J]
+      real(wp) :: w_damp = 0.0_wp        !< energy taken by damping in the step [J]
+      real(wp) :: w_hydro = 0.0_wp       !< work of the water in the step [J]
+      real(wp) :: w_seabed = 0.0_wp      !< work of the seabed in the step [J]
+      real(wp) :: w_num = 0.0_wp         !< numerical dissipation in the step [J]
+   end type step_attempt_t
+
    !> What a run does at its frames, steps and checkpoints, with the context it needs
    !> as components of an extension (a run's writers and pending outputs live there, not
    !> in module variables). after_step and on_checkpoint are called only when
@@ -260,246 +289,357 @@ contains
       integer, intent(in) :: log_unit                 !< Newton log unit (< 0: silent)
       class(timeloop_observer_t), intent(inout) :: obs !< frames, steps, checkpoints
       type(timeloop_state_t), intent(in), optional :: resume !< continue from a checkpoint
+      type(step_controls_t) :: ctl
       type(timeloop_state_t) :: ls
-      type(newton_options_t) :: opts
-      type(newton_stats_t) :: stats
-      type(error_t) :: nerr
-      type(step_log_t) :: log, trial
-      real(wp) :: t, t1, t_end, dt, h, interval, next_frame, w_ext, w_damp, tol_t, e_tol
-      real(wp) :: w_hydro, w_seabed, next_checkpoint, w_num
-      integer :: level, good, step_cuts
-      logical :: retried, accepted, nonfinite
-      character(len=240) :: msg
-      character(len=:), allocatable :: why
-      opts%max_iterations = model%dynamic%max_iterations
-      opts%force_tol = model%dynamic%force_tol
-      opts%disp_tol = model%dynamic%disp_tol
-      opts%log_unit = log_unit
+      type(step_attempt_t) :: att
+      logical :: halt
+      ctl = step_controls(model, log_unit)
+      summary%dynamic = .true.
+      if (present(resume)) then
+         ls = resume
+         prob%factors_ok = .false.
+         prob%renew_first = .false.
+      else
+         call timeloop_start(prob, ctl, obs, ls, err)
+         if (has_error(err)) return
+      end if
+      do while (ls%t < ctl%t_end - ctl%tol_t)
+         att%t1 = step_end(ctl, ls)
+         ! factors of a tangent formed for another step size no longer fit
+         if (abs((att%t1 - ls%t) - prob%dt) > ctl%tol_t) prob%factors_ok = .false.
+         call solve_step(prob, ctl, ls%log, ls%t, att%t1 - ls%t, att%retried, att)
+         summary%step_iterations = summary%step_iterations + att%stats%iterations
+         summary%step_tangents = summary%step_tangents + att%stats%tangents
+         if (att%accepted) then
+            call take_step(prob, model, ctl, obs, att, ls, summary, err, halt)
+         else
+            call failed_step(prob, model, ctl, att, ls, summary, err, halt)
+         end if
+         if (halt) return
+      end do
+      summary%complete = .true.
+      summary%status = 'complete'
+      if (obs%after_step_used) call look_ahead(prob, ctl, obs, ls, err)
+   end subroutine timeloop_run_observer
+
+   !> The controls of a run's steps from its *DYNAMIC options: Newton's, the output
+   !> interval (DT when not given), the tolerance of a time, and that of EMC's energy
+   !> identity (energy_identity_holds; docs/theory.md eq. (43)).
+   pure function step_controls(model, log_unit) result(ctl)
+      type(model_t), intent(in) :: model   !< model (dynamic options)
+      integer, intent(in) :: log_unit      !< Newton log unit (< 0: silent)
+      type(step_controls_t) :: ctl         !< the controls
+      ctl%opts%max_iterations = model%dynamic%max_iterations
+      ctl%opts%force_tol = model%dynamic%force_tol
+      ctl%opts%disp_tol = model%dynamic%disp_tol
+      ctl%opts%log_unit = log_unit
+      ctl%opts%reuse_tangent = model%dynamic%reuse_tangent
       ! the reused tangent's chord steps Anderson-accelerated (rodyn_anderson); with the
       ! history correcting what the held tangent misses, a tangent is renewed only when
       ! an iteration fails to halve the residual (a looser rule than the plain chord
       ! iteration's 0.25, since the history keeps the iteration contracting)
-      opts%anderson = .true.
-      opts%reuse_ratio = 0.5_wp
-      dt = model%dynamic%dt
-      t_end = model%dynamic%duration
-      interval = model%dynamic%output_interval
-      if (interval <= 0.0_wp) interval = dt
-      tol_t = 1.0e-9_wp*dt
-      ! EMC's energy identity, checked on every converged step (see energy_identity_holds)
-      e_tol = min(0.1_wp, 1.0e4_wp*max(opts%force_tol, opts%disp_tol))
-      summary%dynamic = .true.
-      next_checkpoint = huge(1.0_wp)
-      if (model%dynamic%checkpoint > 0.0_wp) next_checkpoint = model%dynamic%checkpoint
-      if (present(resume)) then
-         t = resume%t
-         next_frame = resume%next_frame
-         next_checkpoint = resume%next_checkpoint
-         level = resume%level
-         good = resume%good
-         log = resume%log
-         prob%factors_ok = .false.
-         prob%renew_first = .false.
-      else
-         t = 0.0_wp
-         next_frame = interval
-         ! an output time less than half a step before the end is replaced by the end
-         ! (no sliver of a step between the two)
-         if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
-         call step_energies(prob, log)
-         log%external_work = 0.0_wp
-         log%damping_work = 0.0_wp
-         log%hydro_work = 0.0_wp
-         log%seabed_work = 0.0_wp
-         log%numerical_work = 0.0_wp
-         log%numerical_energy = prob%nd%energy
-         call obs%on_frame(t, prob, err)
-         if (has_error(err)) return
-         level = 0
-         good = 0
+      ctl%opts%anderson = .true.
+      ctl%opts%reuse_ratio = 0.5_wp
+      ctl%dt = model%dynamic%dt
+      ctl%t_end = model%dynamic%duration
+      ctl%interval = model%dynamic%output_interval
+      if (ctl%interval <= 0.0_wp) ctl%interval = ctl%dt
+      ctl%tol_t = 1.0e-9_wp*ctl%dt
+      ctl%e_tol = min(0.1_wp, 1.0e4_wp*max(ctl%opts%force_tol, ctl%opts%disp_tol))
+      ctl%checkpoint = model%dynamic%checkpoint
+      ctl%max_cutbacks = model%dynamic%max_cutbacks
+   end function step_controls
+
+   !> The loop's state at t = 0: the energies of the start state (docs/theory.md eq.
+   !> (41)), no work done, the first output frame and checkpoint ahead; the frame at
+   !> t = 0 written.
+   subroutine timeloop_start(prob, ctl, obs, ls, err)
+      type(dynamic_problem_t), intent(inout) :: prob   !< set-up problem, start state
+      type(step_controls_t), intent(in) :: ctl         !< controls
+      class(timeloop_observer_t), intent(inout) :: obs !< frames
+      type(timeloop_state_t), intent(inout) :: ls      !< the state at t = 0
+      type(error_t), intent(inout) :: err              !< status
+      ls%next_checkpoint = huge(1.0_wp)
+      if (ctl%checkpoint > 0.0_wp) ls%next_checkpoint = ctl%checkpoint
+      ls%t = 0.0_wp
+      ls%next_frame = ctl%interval
+      ! an output time less than half a step before the end is replaced by the end
+      ! (no sliver of a step between the two)
+      if (ctl%t_end - ls%next_frame < 0.5_wp*ctl%dt) ls%next_frame = ctl%t_end
+      call step_energies(prob, ls%log)
+      ls%log%external_work = 0.0_wp
+      ls%log%damping_work = 0.0_wp
+      ls%log%hydro_work = 0.0_wp
+      ls%log%seabed_work = 0.0_wp
+      ls%log%numerical_work = 0.0_wp
+      ls%log%numerical_energy = prob%nd%energy
+      call obs%on_frame(ls%t, prob, err)
+      if (has_error(err)) return
+      ls%level = 0
+      ls%good = 0
+   end subroutine timeloop_start
+
+   !> End [s] of the step from ls%t: DT halved ls%level times, not beyond the next output
+   !> time or the end. A remainder of less than half a step before either is shared with
+   !> the step before it: no step is cut down to a sliver (over a sliver the inertia of
+   !> the unresolved axial vibration is averaged over too short a time, and the tension
+   !> of that step is far off).
+   pure real(wp) function step_end(ctl, ls) result(t1)
+      type(step_controls_t), intent(in) :: ctl !< controls
+      type(timeloop_state_t), intent(in) :: ls !< time [s], next frame [s], halvings
+      real(wp) :: h, t_next
+      h = ctl%dt*0.5_wp**ls%level
+      t_next = min(ctl%t_end, ls%next_frame)
+      t1 = min(ls%t + h, ctl%t_end, ls%next_frame)
+      if (t_next - ls%t > h + ctl%tol_t .and. t_next - ls%t < 1.5_wp*h) &
+         t1 = ls%t + 0.5_wp*(t_next - ls%t)
+      if (ls%next_frame - t1 < ctl%tol_t) t1 = ls%next_frame
+      if (ctl%t_end - t1 < ctl%tol_t) t1 = ctl%t_end
+   end function step_end
+
+   !> Solve the step from t0 to t0 + h (retry: the second attempt, with the line search
+   !> and a new tangent) into att: the Newton solve, the works of the step and, in
+   !> att%trial, the energies at t0 + h; att%accepted = converged and, for EMC, keeping
+   !> the energy identity. docs/theory.md eqs. (41), (43).
+   subroutine solve_step(prob, ctl, log, t0, h, retry, att)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem, state at t0
+      type(step_controls_t), intent(in) :: ctl       !< controls
+      type(step_log_t), intent(in) :: log            !< energies and works at t0
+      real(wp), intent(in) :: t0                     !< start of the step [s]
+      real(wp), intent(in) :: h                      !< step [s]
+      logical, intent(in) :: retry                   !< the second attempt
+      type(step_attempt_t), intent(inout) :: att     !< the solve's outcome
+      type(newton_options_t) :: opts
+      call dynamics_begin_step(prob, t0, h)
+      call clear_error(att%nerr)
+      opts = ctl%opts
+      opts%line_search = retry
+      opts%reuse_tangent = ctl%opts%reuse_tangent .and. .not. retry
+      call newton_solve(prob, opts, att%stats, att%nerr)
+      att%accepted = att%stats%converged .and. .not. has_error(att%nerr)
+      if (.not. att%accepted) return
+      call dynamics_end_step(prob)
+      call step_work(prob, att%w_ext, att%w_damp, att%w_hydro, att%w_seabed)
+      att%w_num = 0.0_wp
+      ! (the dissipative EMC takes the rods' strain increments from the energy pass)
+      if (prob%nd%on .and. prob%fields0) prob%nd%eps_prev = prob%epsn
+      att%trial = log
+      call converged_energies(prob, att%trial)
+      if (prob%nd%on) then
+         if (prob%fields0) then
+            call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt, &
+                              prob%nd%eps_prev, prob%epsn)
+         else
+            call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt)
+         end if
+         att%w_num = prob%nd%work_new
       end if
-      step_cuts = 0
-      retried = .false.
-      do while (t < t_end - tol_t)
-         h = dt*0.5_wp**level
-         t1 = min(t + h, t_end, next_frame)
-         ! a remainder of less than half a step before the next output time (or the end) is
-         ! shared with the step before it: no step is cut down to a sliver (over a sliver
-         ! the inertia of the unresolved axial vibration is averaged over too short a time,
-         ! and the tension of that step is far off)
-         if (min(t_end, next_frame) - t > h + tol_t .and. &
-             min(t_end, next_frame) - t < 1.5_wp*h) t1 = t + 0.5_wp*(min(t_end, next_frame) - t)
-         if (next_frame - t1 < tol_t) t1 = next_frame
-         if (t_end - t1 < tol_t) t1 = t_end
-         ! factors of a tangent formed for another step size no longer fit
-         if (abs((t1 - t) - prob%dt) > tol_t) prob%factors_ok = .false.
-         call solve_step(t, t1 - t, retried)
-         summary%step_iterations = summary%step_iterations + stats%iterations
-         summary%step_tangents = summary%step_tangents + stats%tangents
-         if (accepted) then
-            call dynamics_accept_step(prob)
-            summary%steps = summary%steps + 1
-            trial%step = summary%steps
-            trial%time = t1
-            trial%dt = t1 - t
-            trial%iterations = stats%iterations
-            trial%tangents = stats%tangents
-            trial%cutbacks = step_cuts
-            trial%external_work = log%external_work + w_ext
-            trial%damping_work = log%damping_work + w_damp
-            trial%hydro_work = log%hydro_work + w_hydro
-            trial%seabed_work = log%seabed_work + w_seabed
-            trial%numerical_work = log%numerical_work + w_num
-            if (prob%nd%on) trial%numerical_energy = prob%nd%energy_new
-            log = trial
-            t = t1
-            summary%time_reached = t
-            step_cuts = 0
-            retried = .false.
-            call obs%on_step(log, err)
-            if (has_error(err)) return
-            if (t >= next_frame - tol_t .or. t >= t_end - tol_t) then
-               ! a cubic rod in the spurious shape of its quadrature (rodyn_mesh) stops
-               ! the run before the frame is written
-               why = mesh_spurious_shape(model, prob%mesh, prob%s1)
-               if (len(why) > 0) then
-                  write (msg, '(a,es12.5,a)') 'dynamics: at t = ', t, ' s,'
-                  why = trim(msg)//' '//why//damping_note(model)//'; the frames before it '// &
-                        'are written (the shape may have formed after the last of them)'
-                  call set_error(err, stat_numerical, why)
-                  summary%status = why
-                  return
-               end if
-               call obs%on_frame(t, prob, err)
-               if (has_error(err)) return
-               next_frame = next_frame + interval
-               if (t_end - next_frame < 0.5_wp*dt) next_frame = t_end
-            end if
-            if (obs%after_step_used) call obs%after_step(t, prob, err)
-            if (level > 0) then
-               good = good + 1
-               if (good >= 2) then
-                  level = level - 1
-                  good = 0
-               end if
-            end if
-            if (t >= next_checkpoint - tol_t .and. t < t_end - tol_t .and. &
-                obs%checkpoints_used .and. .not. has_error(err)) then
-               do while (next_checkpoint <= t + tol_t)
-                  next_checkpoint = next_checkpoint + model%dynamic%checkpoint
-               end do
-               ls = timeloop_state_t(t, next_frame, next_checkpoint, level, good, log)
-               call obs%on_checkpoint(ls, prob, err)
-               if (has_error(err)) return
-               prob%factors_ok = .false.   ! as in a run continued from here
-               prob%renew_first = .false.
-            end if
-            cycle
+      if (prob%scheme /= scheme_emc) return
+      att%accepted = energy_identity_holds(log, att%trial, att%w_ext + att%w_hydro + &
+                                           att%w_seabed, att%w_damp + att%w_num, &
+                                           ctl%e_tol, 0.0_wp)
+      ! (the residual's work, needed only by steps near the bound, computed for them)
+      if (.not. att%accepted) att%accepted = energy_identity_holds(log, att%trial, &
+                                             att%w_ext + att%w_hydro + att%w_seabed, &
+                                             att%w_damp + att%w_num, ctl%e_tol, &
+                                             residual_work(prob))
+      if (.not. att%accepted) call set_error(att%nerr, stat_numerical, 'the converged '// &
+         'step breaks the energy identity of EMC (a spurious root)')
+      if (.not. att%accepted .and. ctl%opts%log_unit >= 0) write (ctl%opts%log_unit, &
+         '(a)') '  step rejected: '//att%nerr%message
+   end subroutine solve_step
+
+   !> Take the step solved in att: book it, hand it to the observer, write the frame
+   !> when one is due, grow DT back after two good sub-steps, and hand over the
+   !> checkpoint when one is due. halt: the run stops (err set).
+   subroutine take_step(prob, model, ctl, obs, att, ls, summary, err, halt)
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem (step converged)
+      type(model_t), intent(in) :: model               !< model
+      type(step_controls_t), intent(in) :: ctl         !< controls
+      class(timeloop_observer_t), intent(inout) :: obs !< frames, steps, checkpoints
+      type(step_attempt_t), intent(inout) :: att       !< the step solved
+      type(timeloop_state_t), intent(inout) :: ls      !< advanced to the step's end
+      type(run_summary_t), intent(inout) :: summary    !< progress
+      type(error_t), intent(inout) :: err              !< status
+      logical, intent(out) :: halt                     !< the run stops
+      call dynamics_accept_step(prob)
+      call book_step(prob, att, ls, summary)
+      halt = .true.
+      call obs%on_step(ls%log, err)
+      if (has_error(err)) return
+      if (ls%t >= ls%next_frame - ctl%tol_t .or. ls%t >= ctl%t_end - ctl%tol_t) then
+         call write_frame(prob, model, ctl, obs, ls, summary, err)
+         if (has_error(err)) return
+      end if
+      halt = .false.
+      if (obs%after_step_used) call obs%after_step(ls%t, prob, err)
+      if (ls%level > 0) then
+         ls%good = ls%good + 1
+         if (ls%good >= 2) then
+            ls%level = ls%level - 1
+            ls%good = 0
          end if
-         ! failed: NaN or Inf stops the run (where, from the failed iterate), otherwise
-         ! back to t_n and halve the step
-         ! (two tests: Fortran does not promise to skip the second when the first fails,
-         ! and nerr%message is unallocated without an error)
-         nonfinite = .false.
-         if (has_error(nerr)) nonfinite = index(nerr%message, 'not finite') > 0
-         if (nonfinite) then
-            write (msg, '(a,es12.5,a)') 'dynamics: NaN or Inf at t = ', t1, &
-               ' s ('//nonfinite_where(prob)//'); results up to t = '
-            write (msg, '(a,es12.5,a)') trim(msg), t, ' s are written'
-            call state_copy(prob%s0, prob%s1)
-            call set_error(err, stat_numerical, trim(msg))
-            summary%status = trim(msg)
-            return
-         end if
-         call state_copy(prob%s0, prob%s1)
-         if (.not. retried) then
-            retried = .true.       ! the same step again, with the line search
-            if (log_unit >= 0) write (log_unit, '(a,es12.5,a)') '  step to t = ', t1, &
-               ' s failed: retry with the line search'
-            cycle
-         end if
-         retried = .false.
-         if (log_unit >= 0) write (log_unit, '(a,es12.5,a)') '  step to t = ', t1, &
-            ' s failed: halving'
-         level = level + 1
-         good = 0
-         step_cuts = step_cuts + 1
-         summary%step_cutbacks = summary%step_cutbacks + 1
-         if (level > model%dynamic%max_cutbacks) then
-            write (msg, '(a,es12.5,a,i0,a)') 'dynamics: no convergence at t = ', t, &
-               ' s after ', model%dynamic%max_cutbacks, ' halvings of the step'
-            ! what diverged: a load beyond the lines' reach, else the solver's reason
-            why = load_divergence_hint(model)
-            if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
-            if (len(why) > 0) why = ' ('//why//')'
-            call set_error(err, stat_numerical, trim(msg)//why)
-            summary%status = trim(msg)//why
-            return
-         end if
+      end if
+      if (ls%t >= ls%next_checkpoint - ctl%tol_t .and. ls%t < ctl%t_end - ctl%tol_t .and. &
+          obs%checkpoints_used .and. .not. has_error(err)) then
+         call take_checkpoint(prob, ctl, obs, ls, err)
+         halt = has_error(err)
+      end if
+   end subroutine take_step
+
+   !> Book the step taken into the run: its log (the works of the step added to the
+   !> run's; docs/theory.md eq. (43)), the time reached, and a new step to try.
+   pure subroutine book_step(prob, att, ls, summary)
+      type(dynamic_problem_t), intent(in) :: prob    !< problem (step accepted)
+      type(step_attempt_t), intent(inout) :: att     !< the step solved
+      type(timeloop_state_t), intent(inout) :: ls    !< advanced to the step's end
+      type(run_summary_t), intent(inout) :: summary  !< progress
+      summary%steps = summary%steps + 1
+      att%trial%step = summary%steps
+      att%trial%time = att%t1
+      att%trial%dt = att%t1 - ls%t
+      att%trial%iterations = att%stats%iterations
+      att%trial%tangents = att%stats%tangents
+      att%trial%cutbacks = att%cuts
+      att%trial%external_work = ls%log%external_work + att%w_ext
+      att%trial%damping_work = ls%log%damping_work + att%w_damp
+      att%trial%hydro_work = ls%log%hydro_work + att%w_hydro
+      att%trial%seabed_work = ls%log%seabed_work + att%w_seabed
+      att%trial%numerical_work = ls%log%numerical_work + att%w_num
+      if (prob%nd%on) att%trial%numerical_energy = prob%nd%energy_new
+      ls%log = att%trial
+      ls%t = att%t1
+      summary%time_reached = ls%t
+      att%cuts = 0
+      att%retried = .false.
+   end subroutine book_step
+
+   !> The frame at ls%t, unless a cubic rod has taken the spurious shape of its
+   !> quadrature (rodyn_mesh): that stops the run before the frame is written. The next
+   !> output time follows (the end, when less than half a step before it).
+   subroutine write_frame(prob, model, ctl, obs, ls, summary, err)
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem (step converged)
+      type(model_t), intent(in) :: model               !< model
+      type(step_controls_t), intent(in) :: ctl         !< controls
+      class(timeloop_observer_t), intent(inout) :: obs !< frames
+      type(timeloop_state_t), intent(inout) :: ls      !< next frame advanced
+      type(run_summary_t), intent(inout) :: summary    !< status of a stop
+      type(error_t), intent(inout) :: err              !< status
+      character(len=240) :: msg
+      character(len=:), allocatable :: why
+      why = mesh_spurious_shape(model, prob%mesh, prob%s1)
+      if (len(why) > 0) then
+         write (msg, '(a,es12.5,a)') 'dynamics: at t = ', ls%t, ' s,'
+         why = trim(msg)//' '//why//damping_note(model)//'; the frames before it '// &
+               'are written (the shape may have formed after the last of them)'
+         call set_error(err, stat_numerical, why)
+         summary%status = why
+         return
+      end if
+      call obs%on_frame(ls%t, prob, err)
+      if (has_error(err)) return
+      ls%next_frame = ls%next_frame + ctl%interval
+      if (ctl%t_end - ls%next_frame < 0.5_wp*ctl%dt) ls%next_frame = ctl%t_end
+   end subroutine write_frame
+
+   !> The checkpoint due at ls%t: the next one set a multiple of CHECKPOINT later, the
+   !> loop's state handed to the observer, and the factorised tangent dropped, as in a
+   !> run continued from here (which holds none).
+   subroutine take_checkpoint(prob, ctl, obs, ls, err)
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem (step converged)
+      type(step_controls_t), intent(in) :: ctl         !< controls
+      class(timeloop_observer_t), intent(inout) :: obs !< checkpoints
+      type(timeloop_state_t), intent(inout) :: ls      !< next checkpoint advanced
+      type(error_t), intent(inout) :: err              !< status
+      do while (ls%next_checkpoint <= ls%t + ctl%tol_t)
+         ls%next_checkpoint = ls%next_checkpoint + ctl%checkpoint
       end do
-      summary%complete = .true.
-      summary%status = 'complete'
-      if (obs%after_step_used) call look_ahead()
-   contains
-      !> Solve the step from t0 to t0 + h (retry: the second attempt, with the line search
-      !> and a new tangent): stats, nerr, and accepted = converged and, for EMC, keeping
-      !> the energy identity, with trial holding the energies at t0 + h.
-      subroutine solve_step(t0, h, retry)
-         real(wp), intent(in) :: t0, h
-         logical, intent(in) :: retry
-         call dynamics_begin_step(prob, t0, h)
-         call clear_error(nerr)
-         opts%line_search = retry
-         opts%reuse_tangent = model%dynamic%reuse_tangent .and. .not. retry
-         call newton_solve(prob, opts, stats, nerr)
-         accepted = stats%converged .and. .not. has_error(nerr)
-         if (.not. accepted) return
-         call dynamics_end_step(prob)
-         call step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
-         w_num = 0.0_wp
-         ! (the dissipative EMC takes the rods' strain increments from the energy pass)
-         if (prob%nd%on .and. prob%fields0) prob%nd%eps_prev = prob%epsn
-         trial = log
-         call converged_energies(prob, trial)
-         if (prob%nd%on) then
-            if (prob%fields0) then
-               call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt, &
-                                 prob%nd%eps_prev, prob%epsn)
-            else
-               call numdiss_step(prob%nd, prob%mesh, prob%s0, prob%s1, prob%dt)
-            end if
-            w_num = prob%nd%work_new
-         end if
-         if (prob%scheme /= scheme_emc) return
-         accepted = energy_identity_holds(log, trial, w_ext + w_hydro + w_seabed, &
-                                          w_damp + w_num, e_tol, 0.0_wp)
-         ! (the residual's work, needed only by steps near the bound, computed for them)
-         if (.not. accepted) accepted = energy_identity_holds(log, trial, w_ext + w_hydro + &
-                                                              w_seabed, w_damp + w_num, &
-                                                              e_tol, residual_work(prob))
-         if (.not. accepted) call set_error(nerr, stat_numerical, 'the converged '// &
-            'step breaks the energy identity of EMC (a spurious root)')
-         if (.not. accepted .and. log_unit >= 0) write (log_unit, '(a)') &
-            '  step rejected: '//nerr%message
-      end subroutine solve_step
-      !> One step past the end, only for the support forces of the last frame: they are
-      !> interpolated between the step forces on both sides of the frame time, like
-      !> every other frame's (extrapolated from the steps before, the last frame's
-      !> support forces would be off by a visible fraction of their range).
-      !> The step is solved like the others (for EMC, its energy identity checked),
-      !> handed to after_step at t_end + h, and then undone: the state returned is the
-      !> one at t_end, and the step is not counted in the summary. The motions are
-      !> constant beyond their tables. Should it fail, the caller extrapolates.
-      subroutine look_ahead()
-         real(wp) :: h_last
-         h_last = prob%dt
-         if (log_unit >= 0) write (log_unit, '(a)') &
-            '  step past the end (support forces of the last frame)'
-         call solve_step(t, h_last, .false.)
-         if (accepted) call obs%after_step(t + h_last, prob, err)
+      call obs%on_checkpoint(ls, prob, err)
+      if (has_error(err)) return
+      prob%factors_ok = .false.   ! as in a run continued from here
+      prob%renew_first = .false.
+   end subroutine take_checkpoint
+
+   !> After a step that failed: NaN or Inf stops the run (where, from the failed
+   !> iterate); otherwise the state goes back to t_n and the step is tried again, first
+   !> with the line search, then halved, at most CUTBACKS times in a row. halt: the run
+   !> stops (err set).
+   subroutine failed_step(prob, model, ctl, att, ls, summary, err, halt)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem (the failed iterate)
+      type(model_t), intent(in) :: model             !< model
+      type(step_controls_t), intent(in) :: ctl       !< controls
+      type(step_attempt_t), intent(inout) :: att     !< the step that failed
+      type(timeloop_state_t), intent(inout) :: ls    !< halvings of DT
+      type(run_summary_t), intent(inout) :: summary  !< progress
+      type(error_t), intent(inout) :: err            !< status
+      logical, intent(out) :: halt                   !< the run stops
+      character(len=240) :: msg
+      character(len=:), allocatable :: why
+      logical :: nonfinite
+      halt = .true.
+      ! (two tests: Fortran does not promise to skip the second when the first fails,
+      ! and nerr%message is unallocated without an error)
+      nonfinite = .false.
+      if (has_error(att%nerr)) nonfinite = index(att%nerr%message, 'not finite') > 0
+      if (nonfinite) then
+         write (msg, '(a,es12.5,a)') 'dynamics: NaN or Inf at t = ', att%t1, &
+            ' s ('//nonfinite_where(prob)//'); results up to t = '
+         write (msg, '(a,es12.5,a)') trim(msg), ls%t, ' s are written'
          call state_copy(prob%s0, prob%s1)
-      end subroutine look_ahead
-   end subroutine timeloop_run_observer
+         call set_error(err, stat_numerical, trim(msg))
+         summary%status = trim(msg)
+         return
+      end if
+      halt = .false.
+      call state_copy(prob%s0, prob%s1)
+      if (.not. att%retried) then
+         att%retried = .true.       ! the same step again, with the line search
+         if (ctl%opts%log_unit >= 0) write (ctl%opts%log_unit, '(a,es12.5,a)') &
+            '  step to t = ', att%t1, ' s failed: retry with the line search'
+         return
+      end if
+      att%retried = .false.
+      if (ctl%opts%log_unit >= 0) write (ctl%opts%log_unit, '(a,es12.5,a)') &
+         '  step to t = ', att%t1, ' s failed: halving'
+      ls%level = ls%level + 1
+      ls%good = 0
+      att%cuts = att%cuts + 1
+      summary%step_cutbacks = summary%step_cutbacks + 1
+      if (ls%level <= ctl%max_cutbacks) return
+      write (msg, '(a,es12.5,a,i0,a)') 'dynamics: no convergence at t = ', ls%t, &
+         ' s after ', ctl%max_cutbacks, ' halvings of the step'
+      ! what diverged: a load beyond the lines' reach, else the solver's reason
+      why = load_divergence_hint(model)
+      if (len(why) == 0 .and. has_error(att%nerr)) why = att%nerr%message
+      if (len(why) > 0) why = ' ('//why//')'
+      call set_error(err, stat_numerical, trim(msg)//why)
+      summary%status = trim(msg)//why
+      halt = .true.
+   end subroutine failed_step
+
+   !> One step past the end, only for the support forces of the last frame: they are
+   !> interpolated between the step forces on both sides of the frame time, like
+   !> every other frame's (extrapolated from the steps before, the last frame's
+   !> support forces would be off by a visible fraction of their range).
+   !> The step is solved like the others (for EMC, its energy identity checked),
+   !> handed to after_step at t_end + h, and then undone: the state returned is the
+   !> one at t_end, and the step is not counted in the summary. The motions are
+   !> constant beyond their tables. Should it fail, the caller extrapolates.
+   subroutine look_ahead(prob, ctl, obs, ls, err)
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem, state at the end
+      type(step_controls_t), intent(in) :: ctl         !< controls
+      class(timeloop_observer_t), intent(inout) :: obs !< after_step
+      type(timeloop_state_t), intent(in) :: ls         !< the state at the end
+      type(error_t), intent(inout) :: err              !< status
+      type(step_attempt_t) :: att
+      real(wp) :: h_last
+      h_last = prob%dt
+      if (ctl%opts%log_unit >= 0) write (ctl%opts%log_unit, '(a)') &
+         '  step past the end (support forces of the last frame)'
+      call solve_step(prob, ctl, ls%log, ls%t, h_last, .false., att)
+      if (att%accepted) call obs%after_step(ls%t + h_last, prob, err)
+      call state_copy(prob%s0, prob%s1)
+   end subroutine look_ahead
 
    !> Bound of the work the residual left by Newton (within its tolerance) does over the
    !> step: 2 sum over nodes of |r_x| |x^n+1 - x^n| + |r_theta| phi, free unknowns

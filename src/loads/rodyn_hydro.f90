@@ -78,6 +78,35 @@ module rodyn_hydro
       logical :: wave = .false.          !< the step has waves: wk of water_point_load used
    end type water_env_t
 
+   !> The line at a point: its motion and direction (line_point).
+   type :: line_point_t
+      real(wp) :: x(3)        !< position [m]
+      real(wp) :: v(3)        !< velocity [m/s]
+      real(wp) :: acc(3)      !< acceleration [m/s2]
+      real(wp) :: lam         !< stretch |x'| [-]
+      real(wp) :: t(3)        !< unit tangent x'/|x'| [-]
+      real(wp) :: tt(3, 3)    !< t t^T (with the derivatives only) [-]
+      real(wp) :: pm(3, 3)    !< P = I - t t^T (with the derivatives only) [-]
+   end type line_point_t
+
+   !> A force per unstretched length at a point and its derivatives with respect to the
+   !> position x, the tangent x', the velocity v and the acceleration a of the line.
+   type :: point_force_t
+      real(wp) :: f(3)        !< force [N/m]
+      real(wp) :: kx(3, 3)    !< df/dx [N/m2]
+      real(wp) :: kxp(3, 3)   !< df/dx' [N/m]
+      real(wp) :: kv(3, 3)    !< df/dv [N s/m2]
+      real(wp) :: ka(3, 3)    !< df/da [kg/m]
+   end type point_force_t
+
+   !> The seabed's normal force at a point in contact (water_point_load).
+   type :: seabed_contact_t
+      real(wp) :: vn          !< velocity along the seabed normal [m/s]
+      real(wp) :: nf          !< normal force N [N/m]
+      real(wp) :: dnx         !< dN/dgap [N/m2]
+      real(wp) :: dnv         !< dN/dvn [N s/m2]
+   end type seabed_contact_t
+
 contains
 
    !> The sea pressure at height z [Pa]: hydrostatic below the still water level z_s
@@ -141,14 +170,10 @@ contains
       integer, intent(in) :: parts              !< part_water, part_seabed or both (sum)
       real(wp), intent(in), optional :: wk(n_wk) !< wave velocity [m/s], acceleration
                                                  !< [m/s2] and elevation eta [m]
+      type(line_point_t) :: lp
+      type(seabed_contact_t) :: sc
       logical :: wave
-      real(wp) :: h
-      real(wp) :: phi, dphi, u(3), dudx(3, 3), aw(3), ur(3), lam, t(3), s, un(3), unm
-      real(wp) :: pm(3, 3), tt(3, 3), g(3, 3), gn(3, 3), ta, gap, vn, nf, m(3, 3)
-      real(wp) :: fd(3), kxd(3, 3), kxpd(3, 3), kvd(3, 3), kad(3, 3)
-      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), gl(3, 3)
-      real(wp) :: dts(3, 3), dnx_s, dnv_s
-      integer :: i
+      real(wp) :: gap
       fh = 0.0_wp
       fs = 0.0_wp
       if (want_k) then
@@ -159,100 +184,182 @@ contains
       end if
       wave = .false.
       if (present(wk)) wave = env%wave
-      lam = norm3(xp)
-      t = xp/lam
-      ! the projections t t^T and P = I - t t^T enter the derivatives only: the forces
-      ! are formed from vectors (a residual without its tangent: 4 iterations in 5 of
-      ! a step with reused tangents)
-      if (want_k) then
-         do i = 1, 3
-            tt(:, i) = t*t(i)
-            pm(:, i) = eye(:, i) - tt(:, i)
-         end do
-      end if
-      if (iand(parts, part_water) /= 0) then
-         ! buoyancy; drag and inertia act on the submerged fraction too
-         h = env%water%surface - x(3)
-         if (wave) h = h + wk(7)
-         call submerged_fraction(h, ws%rb, phi, dphi)
-         if (ws%fb > 0.0_wp) then
-            fh(3) = ws%fb*phi
-            if (want_k) kx(3, 3) = -ws%fb*dphi
-         end if
-         if (phi > 0.0_wp) then
-            fd = 0.0_wp
-            if (want_k) then
-               kxd = 0.0_wp
-               kxpd = 0.0_wp
-               kvd = 0.0_wp
-               kad = 0.0_wp
-            end if
-            if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) then
-               call fluid_kinematics(env%water, env%r_current, x, u, dudx, aw)
-               if (wave) u = u + wk(1:3)
-               ur = u - v
-               s = dot_product(ur, t)
-               un = ur - s*t
-               unm = norm3(un)
-               fd = ws%cn*lam*unm*un + ws%ct*lam*abs(s)*s*t
-               if (want_k) then
-                  ! g = d f_d / d u_r
-                  gn = unm*eye
-                  if (unm > 0.0_wp) gn = gn + outer(un, un)/unm
-                  g = ws%cn*lam*mm3(gn, pm) + 2.0_wp*ws%ct*lam*abs(s)*tt
-                  kvd = -g
-                  kxd = mm3(g, dudx)
-                  ! (named 3 x 3 locals: matmul of array expressions would take heap
-                  ! temporaries at every point)
-                  m = outer(t, ur)
-                  kxpd = ws%cn*(unm*outer(un, t) - mm3(mm3(gn, m + s*eye), pm)) &
-                         + ws%ct*(abs(s)*s*tt + mm3(2.0_wp*abs(s)*m + abs(s)*s*eye, pm))
-               end if
-            end if
-            if (ws%man > 0.0_wp .or. ws%maa > 0.0_wp) then
-               ! [C_an P + C_aa t t] a = C_an a + (C_aa - C_an) (t.a) t
-               ta = dot_product(t, acc)
-               fd = fd - ws%man*acc - (ws%maa - ws%man)*ta*t
-               if (want_k) then
-                  kad = -(ws%man*pm + ws%maa*tt)
-                  m = outer(t, acc) + ta*eye     ! (a local: no heap temporary)
-                  kxpd = kxpd - (ws%maa - ws%man)*mm3(m, pm)/lam
-               end if
-            end if
-            if (wave) then
-               ! rho A [(1 + C_an) P + (1 + C_aa) t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
-               ta = dot_product(t, wk(4:6))
-               fd = fd + (ws%mw + ws%man)*wk(4:6) + (ws%maa - ws%man)*ta*t
-               if (want_k) then
-                  m = outer(t, wk(4:6)) + ta*eye
-                  kxpd = kxpd + (ws%maa - ws%man)*mm3(m, pm)/lam
-               end if
-            end if
-            fh = fh + phi*fd
-            if (want_k) then
-               kx = kx + phi*kxd
-               kx(:, 3) = kx(:, 3) - dphi*fd
-               kxp = kxp + phi*kxpd
-               kv = kv + phi*kvd
-               ka = ka + phi*kad
-            end if
-         end if
-      end if
-      ! seabed
+      call line_point(x, xp, v, acc, want_k, lp)
+      if (iand(parts, part_water) /= 0) &
+         call water_load(env, ws, lp, want_k, wave, fh, kx, kxp, kv, ka, wk)
+      ! seabed: the normal force (docs/theory.md eq. (96))
       if (iand(parts, part_seabed) == 0 .or. .not. env%seabed) return
       gap = dot_product(env%n, x) - env%c0
-      vn = dot_product(v, env%n)
-      call seabed_normal_force(env, ws%dc, gap, vn, nf, dnx_s, dnv_s)
-      if (nf <= 0.0_wp) return
-      fs = nf*env%n
+      sc%vn = dot_product(v, env%n)
+      call seabed_normal_force(env, ws%dc, gap, sc%vn, sc%nf, sc%dnx, sc%dnv)
+      if (sc%nf <= 0.0_wp) return
+      fs = sc%nf*env%n
       if (want_k) then
-         kx = kx + outer(env%n, dnx_s*env%n)
-         kv = kv + outer(env%n, dnv_s*env%n)
+         kx = kx + outer(env%n, sc%dnx*env%n)
+         kv = kv + outer(env%n, sc%dnv*env%n)
       end if
       ! regularised Coulomb friction in the seabed plane (module header), dynamics only
       if (.not. env%dynamic .or. (env%mu_ax <= 0.0_wp .and. env%mu_lat <= 0.0_wp)) return
-      vt = v - vn*env%n
-      ts = t - dot_product(t, env%n)*env%n
+      call seabed_friction(env, lp, sc, want_k, fs, kx, kxp, kv)
+   end subroutine water_point_load
+
+   !> The line at a point: position, velocity and acceleration, stretch, unit tangent,
+   !> and with want_k the projections t t^T and P = I - t t^T. These enter the
+   !> derivatives only: the forces are formed from vectors (a residual without its
+   !> tangent: 4 iterations in 5 of a step with reused tangents). docs/theory.md section
+   !> 9 (notation).
+   pure subroutine line_point(x, xp, v, acc, want_k, lp)
+      real(wp), intent(in) :: x(3)              !< position [m]
+      real(wp), intent(in) :: xp(3)             !< x' = dx/dS [-]
+      real(wp), intent(in) :: v(3)              !< velocity [m/s]
+      real(wp), intent(in) :: acc(3)            !< acceleration [m/s2]
+      logical, intent(in) :: want_k             !< form the projections
+      type(line_point_t), intent(out) :: lp     !< the line there
+      integer :: i
+      lp%x = x
+      lp%v = v
+      lp%acc = acc
+      lp%lam = norm3(xp)
+      lp%t = xp/lp%lam
+      if (want_k) then
+         do i = 1, 3
+            lp%tt(:, i) = lp%t*lp%t(i)
+            lp%pm(:, i) = eye(:, i) - lp%tt(:, i)
+         end do
+      end if
+   end subroutine line_point
+
+   !> The water's part of water_point_load, added to fh and its derivatives: buoyancy
+   !> (docs/theory.md eqs. (68)-(69)), and on the submerged fraction drag (70), added
+   !> mass and Froude-Krylov (71).
+   pure subroutine water_load(env, ws, lp, want_k, wave, fh, kx, kxp, kv, ka, wk)
+      type(water_env_t), intent(in) :: env       !< environment
+      type(water_section_t), intent(in) :: ws    !< section constants
+      type(line_point_t), intent(in) :: lp       !< the line at the point
+      logical, intent(in) :: want_k              !< form the derivatives
+      logical, intent(in) :: wave                !< wk holds the wave's state
+      real(wp), intent(inout) :: fh(3)           !< water force [N/m]
+      real(wp), intent(inout) :: kx(3, 3)        !< dfh/dx [N/m2]
+      real(wp), intent(inout) :: kxp(3, 3)       !< dfh/dx' [N/m]
+      real(wp), intent(inout) :: kv(3, 3)        !< dfh/dv [N s/m2]
+      real(wp), intent(inout) :: ka(3, 3)        !< dfh/da [kg/m]
+      real(wp), intent(in), optional :: wk(n_wk) !< wave velocity [m/s], acceleration
+                                                 !< [m/s2] and elevation eta [m]
+      type(point_force_t) :: fd
+      real(wp) :: h, phi, dphi
+      ! buoyancy; drag and inertia act on the submerged fraction too
+      h = env%water%surface - lp%x(3)
+      if (wave) h = h + wk(7)
+      call submerged_fraction(h, ws%rb, phi, dphi)
+      if (ws%fb > 0.0_wp) then
+         fh(3) = ws%fb*phi
+         if (want_k) kx(3, 3) = -ws%fb*dphi
+      end if
+      if (.not. (phi > 0.0_wp)) return
+      fd%f = 0.0_wp
+      if (want_k) then
+         fd%kx = 0.0_wp
+         fd%kxp = 0.0_wp
+         fd%kv = 0.0_wp
+         fd%ka = 0.0_wp
+      end if
+      if (ws%cn > 0.0_wp .or. ws%ct > 0.0_wp) &
+         call drag_load(env, ws, lp, want_k, wave, fd, wk)
+      if (ws%man > 0.0_wp .or. ws%maa > 0.0_wp) call added_mass_load(ws, lp, want_k, fd)
+      if (wave) call froude_krylov_load(ws, wk(4:6), lp, want_k, fd)
+      fh = fh + phi*fd%f
+      if (want_k) then
+         kx = kx + phi*fd%kx
+         kx(:, 3) = kx(:, 3) - dphi*fd%f
+         kxp = kxp + phi*fd%kxp
+         kv = kv + phi*fd%kv
+         ka = ka + phi*fd%ka
+      end if
+   end subroutine water_load
+
+   !> Morison drag on the stretched length into fd (its force and derivatives set), with
+   !> the wave's velocity added to the current's. docs/theory.md eq. (70).
+   pure subroutine drag_load(env, ws, lp, want_k, wave, fd, wk)
+      type(water_env_t), intent(in) :: env       !< environment
+      type(water_section_t), intent(in) :: ws    !< section constants
+      type(line_point_t), intent(in) :: lp       !< the line at the point
+      logical, intent(in) :: want_k              !< form the derivatives
+      logical, intent(in) :: wave                !< wk holds the wave's state
+      type(point_force_t), intent(inout) :: fd   !< drag [N/m] and its derivatives
+      real(wp), intent(in), optional :: wk(n_wk) !< wave velocity [m/s], acceleration
+                                                 !< [m/s2] and elevation eta [m]
+      real(wp) :: u(3), dudx(3, 3), aw(3), ur(3), s, un(3), unm, g(3, 3), gn(3, 3), m(3, 3)
+      call fluid_kinematics(env%water, env%r_current, lp%x, u, dudx, aw)
+      if (wave) u = u + wk(1:3)
+      ur = u - lp%v
+      s = dot_product(ur, lp%t)
+      un = ur - s*lp%t
+      unm = norm3(un)
+      fd%f = ws%cn*lp%lam*unm*un + ws%ct*lp%lam*abs(s)*s*lp%t
+      if (.not. want_k) return
+      ! g = d f_d / d u_r
+      gn = unm*eye
+      if (unm > 0.0_wp) gn = gn + outer(un, un)/unm
+      g = ws%cn*lp%lam*mm3(gn, lp%pm) + 2.0_wp*ws%ct*lp%lam*abs(s)*lp%tt
+      fd%kv = -g
+      fd%kx = mm3(g, dudx)
+      ! (named 3 x 3 locals: matmul of array expressions would take heap
+      ! temporaries at every point)
+      m = outer(lp%t, ur)
+      fd%kxp = ws%cn*(unm*outer(un, lp%t) - mm3(mm3(gn, m + s*eye), lp%pm)) &
+               + ws%ct*(abs(s)*s*lp%tt + mm3(2.0_wp*abs(s)*m + abs(s)*s*eye, lp%pm))
+   end subroutine drag_load
+
+   !> The added mass's force on the line's acceleration, -rho A [C_an P + C_aa t t] a,
+   !> added to fd. docs/theory.md eq. (71).
+   pure subroutine added_mass_load(ws, lp, want_k, fd)
+      type(water_section_t), intent(in) :: ws    !< section constants
+      type(line_point_t), intent(in) :: lp       !< the line at the point
+      logical, intent(in) :: want_k              !< form the derivatives
+      type(point_force_t), intent(inout) :: fd   !< force [N/m] and its derivatives
+      real(wp) :: ta, m(3, 3)
+      ! [C_an P + C_aa t t] a = C_an a + (C_aa - C_an) (t.a) t
+      ta = dot_product(lp%t, lp%acc)
+      fd%f = fd%f - ws%man*lp%acc - (ws%maa - ws%man)*ta*lp%t
+      if (.not. want_k) return
+      fd%ka = -(ws%man*lp%pm + ws%maa*lp%tt)
+      m = outer(lp%t, lp%acc) + ta*eye     ! (a local: no heap temporary)
+      fd%kxp = fd%kxp - (ws%maa - ws%man)*mm3(m, lp%pm)/lp%lam
+   end subroutine added_mass_load
+
+   !> The wave's Froude-Krylov and added-mass force on the water's acceleration a_w,
+   !> rho A [(1 + C_an) P + (1 + C_aa) t t] a_w, added to fd. docs/theory.md eq. (71).
+   pure subroutine froude_krylov_load(ws, aw, lp, want_k, fd)
+      type(water_section_t), intent(in) :: ws    !< section constants
+      real(wp), intent(in) :: aw(3)              !< water acceleration [m/s2]
+      type(line_point_t), intent(in) :: lp       !< the line at the point
+      logical, intent(in) :: want_k              !< form the derivatives
+      type(point_force_t), intent(inout) :: fd   !< force [N/m] and its derivatives
+      real(wp) :: ta, m(3, 3)
+      ! rho A [(1 + C_an) P + (1 + C_aa) t t] a_w = c1 a_w + (c2 - c1) (t.a_w) t
+      ta = dot_product(lp%t, aw)
+      fd%f = fd%f + (ws%mw + ws%man)*aw + (ws%maa - ws%man)*ta*lp%t
+      if (.not. want_k) return
+      m = outer(lp%t, aw) + ta*eye
+      fd%kxp = fd%kxp + (ws%maa - ws%man)*mm3(m, lp%pm)/lp%lam
+   end subroutine froude_krylov_load
+
+   !> Regularised Coulomb friction in the seabed plane, axial and lateral (module
+   !> header), added to fs, and its derivatives: through N, through the velocity in the
+   !> plane, and through the orientation of the axial direction t_s = P_n t/|P_n t|.
+   !> docs/theory.md eq. (97).
+   pure subroutine seabed_friction(env, lp, sc, want_k, fs, kx, kxp, kv)
+      type(water_env_t), intent(in) :: env       !< environment
+      type(line_point_t), intent(in) :: lp       !< the line at the point
+      type(seabed_contact_t), intent(in) :: sc   !< normal force, in contact
+      logical, intent(in) :: want_k              !< form the derivatives
+      real(wp), intent(inout) :: fs(3)           !< seabed force [N/m]
+      real(wp), intent(inout) :: kx(3, 3)        !< dfs/dx added [N/m2]
+      real(wp), intent(inout) :: kxp(3, 3)       !< dfs/dx' added [N/m]
+      real(wp), intent(inout) :: kv(3, 3)        !< dfs/dv added [N s/m2]
+      real(wp) :: vt(3), ts(3), tsn, va, vl(3), vlm, ff(3), pl(3, 3), gl(3, 3), dts(3, 3)
+      vt = lp%v - sc%vn*env%n
+      ts = lp%t - dot_product(lp%t, env%n)*env%n
       tsn = norm3(ts)
       if (tsn > 0.0_wp) then
          ts = ts/tsn
@@ -262,31 +369,31 @@ contains
       va = dot_product(vt, ts)
       vl = vt - va*ts
       vlm = norm3(vl)
-      ff = -env%mu_ax*nf*va/max(abs(va), env%v_mob)*ts &
-           - env%mu_lat*nf*vl/max(vlm, env%v_mob)
+      ff = -env%mu_ax*sc%nf*va/max(abs(va), env%v_mob)*ts &
+           - env%mu_lat*sc%nf*vl/max(vlm, env%v_mob)
       fs = fs + ff
       if (.not. want_k) return
-      ! through N: dN/dx = dnx_s n, dN/dv = dnv_s n
-      kx = kx + outer(ff/nf, dnx_s*env%n)
-      kv = kv + outer(ff/nf, dnv_s*env%n)
-      if (abs(va) < env%v_mob) kv = kv - env%mu_ax*nf/env%v_mob*outer(ts, ts)
+      ! through N: dN/dx = dnx n, dN/dv = dnv n
+      kx = kx + outer(ff/sc%nf, sc%dnx*env%n)
+      kv = kv + outer(ff/sc%nf, sc%dnv*env%n)
+      if (abs(va) < env%v_mob) kv = kv - env%mu_ax*sc%nf/env%v_mob*outer(ts, ts)
       pl = eye - outer(env%n, env%n) - outer(ts, ts)
       ! dF_lat/dv_lat (gl) and dF_ax/dt_s, dF_lat/dt_s (orientation of the axial direction)
       if (vlm < env%v_mob) then
-         gl = -env%mu_lat*nf/env%v_mob*eye
+         gl = -env%mu_lat*sc%nf/env%v_mob*eye
       else
-         gl = -env%mu_lat*nf/vlm*(eye - outer(vl, vl)/vlm**2)
+         gl = -env%mu_lat*sc%nf/vlm*(eye - outer(vl, vl)/vlm**2)
       end if
       kv = kv + mm3(gl, pl)
       if (tsn <= 0.0_wp) return
       pl = outer(ts, vt)
-      dts = -env%mu_ax*nf*va/max(abs(va), env%v_mob)*eye - mm3(gl, pl + va*eye)
-      if (abs(va) < env%v_mob) dts = dts - env%mu_ax*nf/env%v_mob*pl
+      dts = -env%mu_ax*sc%nf*va/max(abs(va), env%v_mob)*eye - mm3(gl, pl + va*eye)
+      if (abs(va) < env%v_mob) dts = dts - env%mu_ax*sc%nf/env%v_mob*pl
       ! t_s = P_n t/|P_n t|, t = x'/|x'|
       gl = eye - outer(ts, ts)
       pl = eye - outer(env%n, env%n)
-      kxp = kxp + mm3(mm3(dts, gl), mm3(pl, pm))/(tsn*lam)
-   end subroutine water_point_load
+      kxp = kxp + mm3(mm3(dts, gl), mm3(pl, lp%pm))/(tsn*lp%lam)
+   end subroutine seabed_friction
 
    !> Seabed normal force per unstretched length N = D (k pen - c v.n), pen = -gap
    !> (c = 0 in statics), wherever it is positive, and its derivatives in the gap and in

@@ -77,6 +77,27 @@ module rodyn_mesh
       real(wp), allocatable :: end_offset(:, :, :)
    end type mesh_t
 
+   !> The chord of a line and its weight, as its start shape needs them (line_chord).
+   type :: line_chord_t
+      real(wp) :: chord(3)    !< end B - end A [m]
+      real(wp) :: dist        !< |chord| [m]
+      real(wp) :: up(3)       !< unit vector against gravity [-]
+      real(wp) :: eh(3)       !< horizontal part of the chord [m]
+      real(wp) :: span        !< |eh| [m]
+      real(wp) :: rise        !< height of end B above end A [m]
+      real(wp) :: w           !< mean weight per length (in water: submerged) [N/m]
+      real(wp) :: ea          !< mean axial stiffness [N]
+   end type line_chord_t
+
+   !> The catenary a line starts from, in the vertical plane of its chord
+   !> (start_catenary).
+   type :: start_catenary_t
+      type(line_chord_t) :: lc         !< the chord
+      type(catenary_t) :: cat          !< the catenary
+      logical :: grounded = .false.    !< with a grounded length at its lower end
+      logical :: b_low = .false.       !< grounded at end B: arc length L - s from B
+   end type start_catenary_t
+
 contains
 
    !> Global node number of node k (or end_a / end_b) of line l.
@@ -455,157 +476,225 @@ contains
       type(state_t), intent(inout) :: state  !< configuration (line l filled)
       logical, intent(in) :: shape           !< solve the shape (else only check the line)
       type(error_t), intent(inout) :: err    !< status
-      real(wp) :: chord(3), up(3), eh(3), span, rise, w, gmag, xz(2), tg(2), tens, t(3)
-      real(wp) :: hint(3), dist, ea, sk, z_lo, xy(3)
-      type(catenary_t) :: cat
+      type(line_chord_t) :: lc
+      type(start_catenary_t) :: sc
+      real(wp) :: t(3), n2(3)
       integer :: k, node
-      logical :: grounded, b_low
-      character(len=320) :: msg
+      call line_chord(model, mesh, l, lc)
+      call check_slack_line(model, mesh, l, lc, err)
+      if (has_error(err)) return
+      if (.not. shape) return
+      if (mesh%line_catenary(l) .and. lc%w > 0.0_wp .and. &
+          lc%span >= 1.0e-9_wp*model%lines(l)%length) then
+         call start_catenary(model, mesh, l, lc, sc, err)
+         if (has_error(err)) return
+         call place_catenary(model, mesh, l, sc, state)
+         return
+      end if
+      ! the straight line from end A towards end B
+      t = lc%chord/lc%dist
+      n2 = cross(lc%up, t)
+      if (norm2(n2) < 1.0e-6_wp) n2 = [0.0_wp, 1.0_wp, 0.0_wp]
+      do k = 1, mesh%line_n_nodes(l)
+         node = mesh%line_first_node(l) + k - 1
+         state%x(:, node) = model%lines(l)%end_a + mesh%node_s(node)*t
+         state%d(:, :, node) = line_frame(model, l, t, n2)
+      end do
+   end subroutine line_initial_shape
+
+   !> The chord of line l from end A to end B against the vertical (the direction
+   !> opposite to gravity, else z), and the line's mean weight and axial stiffness
+   !> (line_mean_weight).
+   subroutine line_chord(model, mesh, l, lc)
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in) :: mesh            !< mesh
+      integer, intent(in) :: l                    !< line index
+      type(line_chord_t), intent(out) :: lc       !< the chord
+      real(wp) :: gmag
       associate (ld => model%lines(l))
-         chord = ld%end_b - ld%end_a
-         dist = norm2(chord)
+         lc%chord = ld%end_b - ld%end_a
+         lc%dist = norm2(lc%chord)
          gmag = norm2(model%gravity)
          if (gmag > 0.0_wp) then
-            up = -model%gravity/gmag
+            lc%up = -model%gravity/gmag
          else
-            up = [0.0_wp, 0.0_wp, 1.0_wp]
+            lc%up = [0.0_wp, 0.0_wp, 1.0_wp]
          end if
-         eh = chord - dot_product(chord, up)*up
-         span = norm2(eh)
-         rise = dot_product(chord, up)
-         call line_mean_weight(model, mesh, l, w, ea)
-         if (mesh%line_catenary(l) .and. dist < ld%length*(1.0_wp - 1.0e-12_wp)) then
-            ! slack line held at both ends: needs weight and a horizontal span to hang
-            if (w <= 0.0_wp .or. span < 1.0e-9_wp*ld%length) then
-               if (w < 0.0_wp) then
-                  write (msg, '(3a,es10.3,a)') 'line ', trim(ld%name), ' is slack between'// &
-                     ' its held ends but buoyant (mean weight in water ', w, ' N/m < 0:'// &
-                     ' it floats up; check the water DENSITY, the section masses and'// &
-                     ' BUOYANCY DIAMETER): no hanging catenary to start from'
-               else if (w == 0.0_wp) then
-                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
-                     ' held ends but weightless (no mass, no gravity, or a weight balanced'// &
-                     ' exactly by buoyancy): no hanging catenary to start from'
-               else
-                  write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
-                     ' held ends, which are vertically above each other: no catenary'// &
-                     ' to start from'
-               end if
-               call set_error(err, stat_input, line_at(model, l)//': error: *LINE: '// &
-                              trim(msg))
+         lc%eh = lc%chord - dot_product(lc%chord, lc%up)*lc%up
+         lc%span = norm2(lc%eh)
+         lc%rise = dot_product(lc%chord, lc%up)
+      end associate
+      call line_mean_weight(model, mesh, l, lc%w, lc%ea)
+   end subroutine line_chord
+
+   !> A slack line held at both ends needs weight and a horizontal span to hang: the
+   !> error naming what it lacks when it has not.
+   subroutine check_slack_line(model, mesh, l, lc, err)
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in) :: mesh            !< mesh
+      integer, intent(in) :: l                    !< line index
+      type(line_chord_t), intent(in) :: lc        !< its chord
+      type(error_t), intent(inout) :: err         !< status
+      character(len=320) :: msg
+      associate (ld => model%lines(l))
+         if (.not. (mesh%line_catenary(l) .and. &
+                    lc%dist < ld%length*(1.0_wp - 1.0e-12_wp))) return
+         if (.not. (lc%w <= 0.0_wp .or. lc%span < 1.0e-9_wp*ld%length)) return
+         if (lc%w < 0.0_wp) then
+            write (msg, '(3a,es10.3,a)') 'line ', trim(ld%name), ' is slack between'// &
+               ' its held ends but buoyant (mean weight in water ', lc%w, ' N/m < 0:'// &
+               ' it floats up; check the water DENSITY, the section masses and'// &
+               ' BUOYANCY DIAMETER): no hanging catenary to start from'
+         else if (lc%w == 0.0_wp) then
+            write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+               ' held ends but weightless (no mass, no gravity, or a weight balanced'// &
+               ' exactly by buoyancy): no hanging catenary to start from'
+         else
+            write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
+               ' held ends, which are vertically above each other: no catenary'// &
+               ' to start from'
+         end if
+         call set_error(err, stat_input, line_at(model, l)//': error: *LINE: '// &
+                        trim(msg))
+      end associate
+   end subroutine check_slack_line
+
+   !> The elastic catenary line l starts from (docs/theory.md eqs. (112)-(114)); with
+   !> its lower end on the seabed, the catenary with a grounded length if it touches
+   !> (eq. (115)), its touchdown moved to an element boundary (snap_touchdown).
+   subroutine start_catenary(model, mesh, l, lc, sc, err)
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in) :: mesh            !< mesh
+      integer, intent(in) :: l                    !< line index
+      type(line_chord_t), intent(in) :: lc        !< its chord
+      type(start_catenary_t), intent(out) :: sc   !< the catenary
+      type(error_t), intent(inout) :: err         !< status
+      real(wp) :: z_lo, xy(3)
+      sc%lc = lc
+      associate (ld => model%lines(l))
+         sc%grounded = .false.
+         sc%b_low = lc%rise < 0.0_wp
+         if (model%seabed%present .and. abs(lc%rise) > 1.0e-9_wp*ld%length) then
+            xy = merge(ld%end_b, ld%end_a, sc%b_low)
+            z_lo = seabed_z(model, xy(1), xy(2))
+            if (xy(3) - z_lo < 1.0e-6_wp*ld%length + 1.0e-9_wp) &
+               call catenary_grounded(lc%w, lc%ea, ld%length, lc%span, abs(lc%rise), &
+                                      sc%cat, sc%grounded)
+         end if
+         if (sc%grounded) call snap_touchdown(model, mesh, l, sc)
+         if (.not. sc%grounded) then
+            sc%b_low = .false.
+            call catenary_solve(lc%w, lc%ea, ld%length, lc%span, lc%rise, sc%cat, err)
+            if (has_error(err)) then
+               err%message = line_at(model, l)//': error: *LINE: line '//trim(ld%name)// &
+                             ': '//err%message
                return
             end if
          end if
-         if (.not. shape) return
-         if (mesh%line_catenary(l) .and. w > 0.0_wp .and. span >= 1.0e-9_wp*ld%length) then
-            eh = eh/span
-            ! the lower end on the seabed: the catenary with a grounded length if it touches
-            grounded = .false.
-            b_low = rise < 0.0_wp
-            if (model%seabed%present .and. abs(rise) > 1.0e-9_wp*ld%length) then
-               xy = merge(ld%end_b, ld%end_a, b_low)
-               z_lo = seabed_z(model, xy(1), xy(2))
-               if (xy(3) - z_lo < 1.0e-6_wp*ld%length + 1.0e-9_wp) &
-                  call catenary_grounded(w, ea, ld%length, span, abs(rise), cat, grounded)
-            end if
-            if (grounded) call snap_touchdown()
-            if (.not. grounded) then
-               b_low = .false.
-               call catenary_solve(w, ea, ld%length, span, rise, cat, err)
-               if (has_error(err)) then
-                  err%message = line_at(model, l)//': error: *LINE: line '//trim(ld%name)// &
-                                ': '//err%message
-                  return
-               end if
-            end if
-            ! from the lower end when grounded at B: arc length L - s, span reversed
-            do k = 1, mesh%line_n_nodes(l)
-               node = mesh%line_first_node(l) + k - 1
-               sk = mesh%node_s(node)
-               if (b_low) sk = ld%length - sk
-               call catenary_point(cat, sk, xz, tg, tens)
-               if (b_low) then
-                  state%x(:, node) = ld%end_b - xz(1)*eh + xz(2)*up
-                  t = tg(1)*eh - tg(2)*up
-               else
-                  state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
-                  t = tg(1)*eh + tg(2)*up
-               end if
-               ! the grounded part sunk to the penetration that carries its weight,
-               ! w / (k D), so that it starts in contact, in equilibrium
-               if (grounded .and. sk <= cat%lb) state%x(:, node) = state%x(:, node) &
-                  - w/(model%seabed%stiffness*model%sections(ld%section)%db)*up
-               state%d(:, :, node) = line_frame(t, cross(up, eh))
-            end do
-         else
-            t = chord/dist
-            eh = cross(up, t)
-            if (norm2(eh) < 1.0e-6_wp) eh = [0.0_wp, 1.0_wp, 0.0_wp]
-            do k = 1, mesh%line_n_nodes(l)
-               node = mesh%line_first_node(l) + k - 1
-               state%x(:, node) = ld%end_a + mesh%node_s(node)*t
-               state%d(:, :, node) = line_frame(t, eh)
-            end do
-         end if
       end associate
-   contains
-      !> Touchdown moved to the element boundary nearest to it, for the statics: the
-      !> grounded catenary with that grounded length (V_F = w (L - L_B)) and H fitting the
-      !> span, its upper end then off its deck position by a little, where the statics
-      !> moves it
-      !> (supports_build). With the touchdown inside an element the jump of curvature
-      !> there makes the interpolated x' miss the nodal tangents by ~1e-2, which the
-      !> shear and axial stiffness turn into large start forces; the homotopy of the
-      !> statics can then drive the line on the seabed into compression and fail to
-      !> converge on meshes whose nodes fall away from the touchdown.
-      subroutine snap_touchdown()
-         real(wp) :: lbn, sn, vf, h, lo, hi, f
-         integer :: kk, it
-         if (.not. (model%static%requested .or. (model%dynamic%requested .and. &
-                                                  model%dynamic%start_static))) return
+   end subroutine start_catenary
+
+   !> Touchdown moved to the element boundary nearest to it, for the statics: the
+   !> grounded catenary with that grounded length (V_F = w (L - L_B)) and H fitting the
+   !> span, its upper end then off its deck position by a little, where the statics
+   !> moves it
+   !> (supports_build). With the touchdown inside an element the jump of curvature
+   !> there makes the interpolated x' miss the nodal tangents by ~1e-2, which the
+   !> shear and axial stiffness turn into large start forces; the homotopy of the
+   !> statics can then drive the line on the seabed into compression and fail to
+   !> converge on meshes whose nodes fall away from the touchdown.
+   !> docs/theory.md eq. (115).
+   subroutine snap_touchdown(model, mesh, l, sc)
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in) :: mesh            !< mesh
+      integer, intent(in) :: l                    !< line index
+      type(start_catenary_t), intent(inout) :: sc !< the grounded catenary
+      real(wp) :: lbn, sn, vf, h, lo, hi, f
+      integer :: kk, it
+      if (.not. (model%static%requested .or. (model%dynamic%requested .and. &
+                                               model%dynamic%start_static))) return
+      associate (w => sc%lc%w, ea => sc%lc%ea, span => sc%lc%span, &
+                 length => model%lines(l)%length)
          lbn = -1.0_wp
          do kk = 1, mesh%line_n_nodes(l), mesh%line_order(l)
             sn = mesh%node_s(mesh%line_first_node(l) + kk - 1)
-            if (b_low) sn = model%lines(l)%length - sn
-            if (lbn < 0.0_wp .or. abs(sn - cat%lb) < abs(lbn - cat%lb)) lbn = sn
+            if (sc%b_low) sn = length - sn
+            if (lbn < 0.0_wp .or. abs(sn - sc%cat%lb) < abs(lbn - sc%cat%lb)) lbn = sn
          end do
-         if (lbn <= 0.0_wp .or. lbn >= model%lines(l)%length .or. lbn >= span) return
+         if (lbn <= 0.0_wp .or. lbn >= length .or. lbn >= span) return
          ! X(H) = L_B + H/w asinh(V_F/H) + H L/EA grows with H: bisection for X(H) = span
-         vf = w*(model%lines(l)%length - lbn)
-         lo = 1.0e-9_wp*w*model%lines(l)%length
-         hi = max(cat%h, lo)
+         vf = w*(length - lbn)
+         lo = 1.0e-9_wp*w*length
+         hi = max(sc%cat%h, lo)
          do it = 1, 200
-            if (lbn + hi/w*asinh(vf/hi) + hi*model%lines(l)%length/ea > span) exit
+            if (lbn + hi/w*asinh(vf/hi) + hi*length/ea > span) exit
             hi = 2.0_wp*hi
          end do
          do it = 1, 200
             h = 0.5_wp*(lo + hi)
-            f = lbn + h/w*asinh(vf/h) + h*model%lines(l)%length/ea - span
+            f = lbn + h/w*asinh(vf/h) + h*length/ea - span
             if (f > 0.0_wp) then
                hi = h
             else
                lo = h
             end if
          end do
-         cat%h = 0.5_wp*(lo + hi)
-         cat%v0 = 0.0_wp
-         cat%lb = lbn
-      end subroutine snap_touchdown
+         sc%cat%h = 0.5_wp*(lo + hi)
+         sc%cat%v0 = 0.0_wp
+         sc%cat%lb = lbn
+      end associate
+   end subroutine snap_touchdown
 
-      !> Frame with d3 = t; d1 towards the deck's hint if given, else d2 = n2.
-      function line_frame(tt, n2) result(d)
-         real(wp), intent(in) :: tt(3) !< unit tangent
-         real(wp), intent(in) :: n2(3) !< default d2 direction (normal to tt)
-         real(wp) :: d(3, 3)
-         if (model%lines(l)%has_d1_hint) then
-            hint = model%lines(l)%d1_hint
-            if (norm2(cross(hint, tt)) < 1.0e-6_wp) hint = cross(n2, tt)
-         else
-            hint = cross(n2, tt)
-         end if
-         d = rotation_frame(tt, hint)
-      end function line_frame
-   end subroutine line_initial_shape
+   !> The nodes of line l on its catenary (docs/theory.md eqs. (112)-(113)), from the
+   !> lower end when grounded at B (arc length L - s, span reversed); the grounded part
+   !> sunk to the penetration that carries its weight, w / (k D), so that it starts in
+   !> contact, in equilibrium.
+   subroutine place_catenary(model, mesh, l, sc, state)
+      type(model_t), intent(in) :: model          !< model
+      type(mesh_t), intent(in) :: mesh            !< mesh
+      integer, intent(in) :: l                    !< line index
+      type(start_catenary_t), intent(in) :: sc    !< its catenary
+      type(state_t), intent(inout) :: state       !< configuration (line l filled)
+      real(wp) :: eh(3), xz(2), tg(2), tens, t(3), sk
+      integer :: k, node
+      associate (ld => model%lines(l), up => sc%lc%up)
+         eh = sc%lc%eh/sc%lc%span
+         do k = 1, mesh%line_n_nodes(l)
+            node = mesh%line_first_node(l) + k - 1
+            sk = mesh%node_s(node)
+            if (sc%b_low) sk = ld%length - sk
+            call catenary_point(sc%cat, sk, xz, tg, tens)
+            if (sc%b_low) then
+               state%x(:, node) = ld%end_b - xz(1)*eh + xz(2)*up
+               t = tg(1)*eh - tg(2)*up
+            else
+               state%x(:, node) = ld%end_a + xz(1)*eh + xz(2)*up
+               t = tg(1)*eh + tg(2)*up
+            end if
+            if (sc%grounded .and. sk <= sc%cat%lb) state%x(:, node) = state%x(:, node) &
+               - sc%lc%w/(model%seabed%stiffness*model%sections(ld%section)%db)*up
+            state%d(:, :, node) = line_frame(model, l, t, cross(up, eh))
+         end do
+      end associate
+   end subroutine place_catenary
+
+   !> Frame of a node of line l with d3 = tt; d1 towards the deck's hint if given, else
+   !> d2 = n2.
+   pure function line_frame(model, l, tt, n2) result(d)
+      type(model_t), intent(in) :: model !< model
+      integer, intent(in) :: l           !< line index
+      real(wp), intent(in) :: tt(3)      !< unit tangent
+      real(wp), intent(in) :: n2(3)      !< default d2 direction (normal to tt)
+      real(wp) :: d(3, 3)                !< the directors as columns
+      real(wp) :: hint(3)
+      if (model%lines(l)%has_d1_hint) then
+         hint = model%lines(l)%d1_hint
+         if (norm2(cross(hint, tt)) < 1.0e-6_wp) hint = cross(n2, tt)
+      else
+         hint = cross(n2, tt)
+      end if
+      d = rotation_frame(tt, hint)
+   end function line_frame
    !> A configuration refused when an element of order 3 of a rod line has taken the
    !> spurious shape of its selective quadrature (rod_hidden_shear): shear strain above
    !> hidden_max at its extension points and more than ten times the largest at its shear
