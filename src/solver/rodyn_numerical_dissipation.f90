@@ -260,7 +260,7 @@ contains
       real(wp) :: xf(3, max_nen), df(3, 3, max_nen), ux(3, max_nen), ud(3, 3, max_nen)
       real(wp) :: dn(max_nen), xp0(3), xp1(3)
       type(rod_gp_t) :: kf, ku
-      integer :: e, p, nen, a, ig
+      integer :: e, p, nen, ig
       do e = 1, mesh%n_elements
          p = mesh%line_order(mesh%elem_line(e))
          nen = p + 1
