@@ -24,7 +24,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 def deck_text(n, solver):
     text = (ROOT / "input" / "oc3_spar.inp").read_text()
     text = re.sub(r"ELEMENTS=60", f"ELEMENTS={n}", text)
-    text = re.sub(r"^\*DYNAMIC.*$", "", text, flags=re.M)
+    text = re.sub(r"^\*(DYNAMIC|MODAL).*$", "", text, flags=re.M)
     text = re.sub(r"^\*OUTPUT.*$", "*OUTPUT, CSV=YES, HDF5=NO", text, flags=re.M)
     if solver:
         text += f"*MODAL, MODES=10, SOLVER={solver}\n"
