@@ -20,6 +20,7 @@ module rodyn_deck_body
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
    public :: read_offset_curve_card, resolve_offset_curve, read_modal_card, check_modal
+   public :: find_body
    public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 

@@ -12,8 +12,7 @@ module rodyn_deck_dynamic
    use rodyn_model, only: model_t, dynamic_options_t, amplitude_t, motion_t, &
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
-                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
-                          body_fixed, body_free, point_fixed, end_b
+                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -23,6 +22,8 @@ module rodyn_deck_dynamic
    use rodyn_deck_table, only: table_t, card_data_table, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: upper_case
+   use rodyn_deck_targets, only: resolve_motion_body, resolve_motion_point, &
+                                 resolve_velocity_body
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -301,24 +302,7 @@ contains
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'POINT', &
                                 'END', 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
-         on_body = card_find_param(card, 'BODY') > 0
-         on_point = card_find_param(card, 'POINT') > 0
-         if (count([on_body, on_point, card_find_param(card, 'LINE') > 0]) > 1) then
-            call card_error(card, 'give one of LINE= (a line''s node), BODY= (a FIXED '// &
-                            'body) and POINT= (a FIXED point)', err)
-            return
-         end if
-         if (on_body .or. on_point) then
-            call card_get_name(card, merge('BODY ', 'POINT', on_body), line, err, &
-                               required=.true.)
-            if (card_find_param(card, 'END') + card_find_param(card, 'NODE') > 0) &
-               call card_error(card, 'END and NODE are a line''s: not with BODY= or POINT=', &
-                               err)
-         else
-            call card_get_name(card, 'LINE', line, err, required=.true.)
-            if (has_error(err)) return
-            call get_node(card, mo%node, err)
-         end if
+         call motion_target(card, mo, line, on_body, on_point, err)
          if (has_error(err)) return
          it = 0
          call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
@@ -433,6 +417,34 @@ contains
    end subroutine read_initial_velocity_card
 
    ! ============================================================ reader helpers
+
+   !> What a *MOTION moves: one of LINE= (and its END or NODE), BODY= and POINT= (neither
+   !> with END or NODE); `name` the one given.
+   subroutine motion_target(card, mo, name, on_body, on_point, err)
+      type(card_t), intent(in) :: card          !< the *MOTION card
+      type(motion_t), intent(inout) :: mo       !< its node set (LINE=)
+      character(len=:), allocatable, intent(out) :: name !< the line, body or point
+      logical, intent(out) :: on_body           !< BODY= given
+      logical, intent(out) :: on_point          !< POINT= given
+      type(error_t), intent(inout) :: err       !< status
+      on_body = card_find_param(card, 'BODY') > 0
+      on_point = card_find_param(card, 'POINT') > 0
+      if (count([on_body, on_point, card_find_param(card, 'LINE') > 0]) > 1) then
+         call card_error(card, 'give one of LINE= (a line''s node), BODY= (a FIXED '// &
+                         'body) and POINT= (a FIXED point)', err)
+         return
+      end if
+      if (on_body .or. on_point) then
+         call card_get_name(card, trim(merge('BODY ', 'POINT', on_body)), name, err, &
+                            required=.true.)
+         if (card_find_param(card, 'END') + card_find_param(card, 'NODE') > 0) &
+            call card_error(card, 'END and NODE are a line''s: not with BODY= or POINT=', err)
+      else
+         call card_get_name(card, 'LINE', name, err, required=.true.)
+         if (has_error(err)) return
+         call get_node(card, mo%node, err)
+      end if
+   end subroutine motion_target
 
    !> The data lines of a TYPE=HARMONIC *MOTION: u_j(t) = A sin(2 pi f t + phase) for
    !> each direction j given (X|Y|Z or 1|2|3, each at most once).
@@ -665,91 +677,6 @@ contains
       end associate
    end subroutine check_motion_held
 
-   !> The body of motion `im` (BODY=): it exists, is FIXED (held: the motion moves it)
-   !> and has no other *MOTION.
-   subroutine resolve_motion_body(deck, pend, model, im, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card and BODY= of each motion
-      type(model_t), intent(inout) :: model  !< the motion's body set
-      type(error_t), intent(inout) :: err    !< status
-      integer, intent(in) :: im              !< the motion
-      integer :: ib, jm
-      associate (card => deck%cards(pend%motion_line(im)%card), &
-                 name => pend%motion_line(im)%name)
-         do ib = 1, size(model%bodies)
-            if (model%bodies(ib)%name == name) exit
-         end do
-         if (ib > size(model%bodies)) then
-            call param_fail(card, 'BODY', "body '"//name//"' is not defined (no *BODY "// &
-                            'with NAME='//name//' in the deck)', err)
-            return
-         end if
-         if (model%bodies(ib)%kind /= body_fixed) then
-            call param_fail(card, 'BODY', "body '"//name//"' is FREE: a *MOTION moves a"// &
-                            ' FIXED body (its motion prescribed), not a FREE one', err)
-            return
-         end if
-         do jm = 1, im - 1
-            if (model%motions(jm)%body /= ib) cycle
-            call card_error(card, "body '"//name//"' already has a *MOTION (at "// &
-                            location(deck, pend%motion_line(jm)%card)//')', err)
-            return
-         end do
-         model%motions(im)%body = ib
-         model%motions(im)%line = 0
-      end associate
-   end subroutine resolve_motion_body
-
-   !> The point of motion `im` (POINT=): it exists, is FIXED (its line ends held: the
-   !> motion moves them), has no other *MOTION, and no end on it has one of its own.
-   subroutine resolve_motion_point(deck, pend, model, im, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card and POINT= of each motion
-      type(model_t), intent(inout) :: model  !< the motion's point set
-      integer, intent(in) :: im              !< the motion
-      type(error_t), intent(inout) :: err    !< status
-      integer :: ip, jm, l
-      associate (card => deck%cards(pend%motion_line(im)%card), &
-                 name => pend%motion_line(im)%name)
-         do ip = 1, size(model%points)
-            if (model%points(ip)%name == name) exit
-         end do
-         if (ip > size(model%points)) then
-            call param_fail(card, 'POINT', "point '"//name//"' is not defined (no *POINT "// &
-                            'with NAME='//name//' in the deck)', err)
-            return
-         end if
-         if (model%points(ip)%kind /= point_fixed) then
-            call param_fail(card, 'POINT', "point '"//name//"' is not FIXED: a *MOTION "// &
-                            'moves a FIXED point (its line ends held), not a FREE or BODY one', &
-                            err)
-            return
-         end if
-         do jm = 1, size(model%motions)
-            if (jm == im .or. .not. pend%motion_line(jm)%card > 0) cycle
-            if (pend%motion_point(jm) .and. pend%motion_line(jm)%name == name .and. jm < im) &
-               then
-               call card_error(card, "point '"//name//"' already has a *MOTION (at "// &
-                               location(deck, pend%motion_line(jm)%card)//')', err)
-               return
-            end if
-            if (pend%motion_body(jm) .or. pend%motion_point(jm)) cycle
-            do l = 1, size(model%lines)
-               if (model%lines(l)%name /= pend%motion_line(jm)%name) cycle
-               if ((model%lines(l)%point_a == ip .and. model%motions(jm)%node == end_a) .or. &
-                   (model%lines(l)%point_b == ip .and. model%motions(jm)%node == end_b)) then
-                  call card_error(card, "point '"//name//"': line "//trim(model%lines(l)% &
-                                  name)//"'s end on it has a *MOTION of its own (at "// &
-                                  location(deck, pend%motion_line(jm)%card)//')', err)
-                  return
-               end if
-            end do
-         end do
-         model%motions(im)%point = ip
-         model%motions(im)%line = 0
-      end associate
-   end subroutine resolve_motion_point
-
    !> Refuse a second *MOTION at the same node of the same line.
    subroutine check_unique_motion(deck, pend, model, im, err)
       type(deck_t), intent(in) :: deck       !< all cards
@@ -773,38 +700,6 @@ contains
          end do
       end associate
    end subroutine check_unique_motion
-
-   !> The body of initial velocity `iv` (BODY=): it exists, is FREE and has no other.
-   subroutine resolve_velocity_body(deck, pend, model, iv, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card and BODY= of each initial velocity
-      type(model_t), intent(inout) :: model  !< its body set
-      integer, intent(in) :: iv              !< the initial velocity
-      type(error_t), intent(inout) :: err    !< status
-      integer :: ib, jv
-      associate (card => deck%cards(pend%iv_line(iv)%card), name => pend%iv_line(iv)%name)
-         do ib = 1, size(model%bodies)
-            if (model%bodies(ib)%name == name) exit
-         end do
-         if (ib > size(model%bodies)) then
-            call param_fail(card, 'BODY', "body '"//name//"' is not defined (no *BODY "// &
-                            'with NAME='//name//' in the deck)', err)
-            return
-         end if
-         if (model%bodies(ib)%kind /= body_free) then
-            call param_fail(card, 'BODY', "body '"//name//"' is FIXED: only a FREE body "// &
-                            'has a velocity of its own', err)
-            return
-         end if
-         do jv = 1, iv - 1
-            if (model%initial_velocities(jv)%body /= ib) cycle
-            call card_error(card, "body '"//name//"' already has an *INITIAL VELOCITY (at "// &
-                            location(deck, pend%iv_line(jv)%card)//')', err)
-            return
-         end do
-         model%initial_velocities(iv)%body = ib
-      end associate
-   end subroutine resolve_velocity_body
 
    !> Refuse a second *INITIAL VELOCITY for the same line.
    subroutine check_unique_velocity(deck, pend, model, iv, err)

@@ -22,6 +22,7 @@ module rodyn_deck_system
    implicit none
    private
    public :: read_point_card, resolve_line_points, resolve_load_points, check_point_ends
+   public :: find_point
    public :: system_complete, point_held, point_junction, read_failure_card, check_failures
 
 contains
