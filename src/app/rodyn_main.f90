@@ -12,7 +12,8 @@ program rodyn
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names, scheme_emc, scheme_alpha
    use rodyn_deck, only: deck_read
-   use rodyn_mesh, only: mesh_t, mesh_build, fix_leading_dots
+   use rodyn_mesh, only: mesh_t, mesh_build
+   use rodyn_mesh_checks, only: fix_leading_dots
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_assembly, only: dof_map

@@ -25,7 +25,7 @@ module rodyn_timeloop
    use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_state, only: state_copy
-   use rodyn_mesh, only: mesh_spurious_shape
+   use rodyn_mesh_checks, only: mesh_spurious_shape
    use rodyn_numerical_dissipation, only: numdiss_step
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none

@@ -40,7 +40,8 @@ module rodyn_statics
    use rodyn_model, only: model_t, motion_vessel
    use rodyn_motion, only: vessel_offset_point, rotation_z
    use rodyn_load_check, only: load_divergence_hint
-   use rodyn_mesh, only: mesh_t, mesh_node, mesh_spurious_shape, mesh_cable_like_rods
+   use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_mesh_checks, only: mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
    use rodyn_junctions, only: junctions_condense, junctions_place
    use rodyn_assembly_bodies, only: assemble_bodies
