@@ -41,8 +41,8 @@ module rodyn_dynamics
    use rodyn_shape, only: max_nen
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_dynamic, apply_supports, add_node_block, &
-                             external_force, assemble_water, assemble_dynamic_cables, &
-                             roll_gauges, add_roll_gauges
+                             external_force, assemble_water, assemble_dynamic_cables
+   use rodyn_roll_gauges, only: roll_gauges, add_roll_gauges
    use rodyn_assembly_damping, only: section_damping_rates, assemble_section_damping
    use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_offsets, &
                                           numdiss_accept

@@ -47,7 +47,8 @@ module rodyn_statics
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
-                             add_node_block, roll_gauges, add_roll_gauges
+                             add_node_block
+   use rodyn_roll_gauges, only: roll_gauges, add_roll_gauges
    use rodyn_water, only: water_loads_t, water_loads_build
    use rodyn_environment, only: current_factor
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
