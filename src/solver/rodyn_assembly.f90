@@ -494,9 +494,8 @@ contains
       real(wp), pointer :: kde(:), offe(:, :)   ! (no initialiser: it would imply save)
       real(wp) :: xb(3, max_nen), db(3, 3, max_nen)
       real(wp) :: fe(6, max_nen), ke(6*max_nen, 6*max_nen), x0(3, max_nen), x1(3, max_nen)
-      real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen), xm(3, max_nen), dm(3, 3, max_nen)
-      real(wp) :: ks(6*max_nen, 6*max_nen), fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
-      integer :: e, l, p, nen, a, j, nd
+      real(wp) :: d0(3, 3, max_nen), d1(3, 3, max_nen)
+      integer :: e, l, p, nen, a, nd
       fint = 0.0_wp
       fdamp = 0.0_wp
       nullify (kde, offe)
@@ -547,30 +546,49 @@ contains
                                         mesh%rules(p), kd=kde, off=offe)
             end if
             nd = 6*nen
-            if (beta > 0.0_wp) then
-               do a = 1, nen
-                  xm(:, a) = 0.5_wp*(x0(:, a) + x1(:, a))
-                  dm(:, :, a) = 0.5_wp*(d0(:, :, a) + d1(:, :, a))
-                  du(6*a - 5:6*a - 3) = x1(:, a) - x0(:, a)
-                  du(6*a - 2:6*a) = rotation_cayley_inverse(relative_rotation(d1(:, :, a), &
-                                                                              d0(:, :, a)))
-               end do
-               call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), &
-                                       mesh%eps0(:, :, e), xm(:, 1:nen), dm(:, :, 1:nen), &
-                                       fs(:, 1:nen), ks(1:nd, 1:nd), .true., mesh%rules(p))
-               do j = 1, nd
-                  fd(j) = beta/dt*dot_product(ks(j, 1:nd), du(1:nd))
-               end do
-               do a = 1, nen
-                  fint(:, nodes(a)) = fint(:, nodes(a)) + fd(6*a - 5:6*a)
-                  fdamp(:, nodes(a)) = fdamp(:, nodes(a)) + fd(6*a - 5:6*a)
-               end do
-               if (want_k) ke(1:nd, 1:nd) = ke(1:nd, 1:nd) + beta/dt*ks(1:nd, 1:nd)
-            end if
+            if (beta > 0.0_wp) call rayleigh_rod(mesh, e, p, nen, beta/dt, x0, x1, d0, d1, &
+                                                 nodes, fint, fdamp, ke(1:nd, 1:nd), want_k)
             call scatter_element(sup, nodes, fe(:, 1:nen), ke(1:nd, 1:nd), fint, bm, want_k)
          end associate
       end do
    end subroutine assemble_dynamic
+
+   !> A rod element's stiffness-proportional damping (docs/theory.md eq. (40)): f_d = c
+   !> K_e(q^{n+1/2}) du_e, c = beta/dt, added to fint and fdamp, and c K_e to ke if want_k
+   !> (assemble_dynamic's header).
+   subroutine rayleigh_rod(mesh, e, p, nen, c, x0, x1, d0, d1, nodes, fint, fdamp, ke, want_k)
+      type(mesh_t), intent(in) :: mesh             !< mesh
+      integer, intent(in) :: e, p, nen             !< element, its order and nodes
+      real(wp), intent(in) :: c                    !< beta/dt [-]
+      real(wp), intent(in) :: x0(:, :), x1(:, :)   !< (3, >= nen) positions at t_n, t_n+1
+      real(wp), intent(in) :: d0(:, :, :), d1(:, :, :) !< (3, 3, >= nen) directors
+      integer, intent(in) :: nodes(:)              !< (nen) its global nodes
+      real(wp), intent(inout) :: fint(:, :)        !< (6, nn) internal forces
+      real(wp), intent(inout) :: fdamp(:, :)       !< (6, nn) damping forces
+      real(wp), intent(inout) :: ke(:, :)          !< (6 nen, 6 nen) element tangent
+      logical, intent(in) :: want_k                !< add to the tangent
+      real(wp) :: xm(3, max_nen), dm(3, 3, max_nen), ks(6*max_nen, 6*max_nen)
+      real(wp) :: fs(6, max_nen), du(6*max_nen), fd(6*max_nen)
+      integer :: a, j, nd
+      nd = 6*nen
+      do a = 1, nen
+         xm(:, a) = 0.5_wp*(x0(:, a) + x1(:, a))
+         dm(:, :, a) = 0.5_wp*(d0(:, :, a) + d1(:, :, a))
+         du(6*a - 5:6*a - 3) = x1(:, a) - x0(:, a)
+         du(6*a - 2:6*a) = rotation_cayley_inverse(relative_rotation(d1(:, :, a), d0(:, :, a)))
+      end do
+      call rod_element_static(p, mesh%elem_le(e), mesh%elem_c(:, e), mesh%eps0(:, :, e), &
+                              xm(:, 1:nen), dm(:, :, 1:nen), fs(:, 1:nen), ks(1:nd, 1:nd), &
+                              .true., mesh%rules(p))
+      do j = 1, nd
+         fd(j) = c*dot_product(ks(j, 1:nd), du(1:nd))
+      end do
+      do a = 1, nen
+         fint(:, nodes(a)) = fint(:, nodes(a)) + fd(6*a - 5:6*a)
+         fdamp(:, nodes(a)) = fdamp(:, nodes(a)) + fd(6*a - 5:6*a)
+      end do
+      if (want_k) ke = ke + c*ks(1:nd, 1:nd)
+   end subroutine rayleigh_rod
 
    !> The cable elements' part of assemble_dynamic (same arguments; fint, fdamp and bm
    !> added to, after assemble_dynamic): a separate pass, so that the rod's element keeps
