@@ -302,13 +302,8 @@ contains
       real(wp) :: lam, dlam, dlam0, lam_try
       integer :: level, stage, n_stages
       logical :: retried, staged
-      character(len=200) :: msg
-      character(len=:), allocatable :: why, hint
-      opts%max_iterations = model%static%max_iterations
-      opts%force_tol = model%static%force_tol
-      opts%disp_tol = model%static%disp_tol
-      opts%line_search = model%static%line_search
-      opts%log_unit = log_unit
+      character(len=:), allocatable :: why
+      opts = static_newton_options(model, log_unit)
       dlam0 = 1.0_wp/real(model%static%increments, wp)
       staged = .false.
       if (prob%water%active .and. allocated(model%water%cur_z)) &
@@ -362,16 +357,9 @@ contains
          end if
          retried = .false.
          if (level >= model%static%max_cutbacks) then
-            write (msg, '(3a,f9.6,a,i0,a)') 'statics: no convergence beyond ', &
-               factor_name(stage), ' ', lam, ' after ', level, ' halvings of the increment'
-            ! what diverged: a load beyond the lines' reach, else the solver's reason
-            why = load_divergence_hint(model)
-            if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
-            if (len(why) > 0) why = ' ('//why//')'
-            hint = mesh_cable_like_rods(model, prob%mesh)
-            if (len(hint) > 0) why = why//'; '//hint
-            call set_error(err, stat_numerical, trim(msg)//why)
-            summary%status = trim(msg)//why
+            why = no_convergence(model, prob%mesh, stage, lam, level, nerr)
+            call set_error(err, stat_numerical, why)
+            summary%status = why
             summary%complete = .false.
             return
          end if
@@ -400,17 +388,53 @@ contains
             call static_set_load_factor(prob, 1.0_wp, f)
          end if
       end subroutine set_factor
-
-      pure function factor_name(stage) result(name)
-         integer, intent(in) :: stage   !< 1 or 2
-         character(len=:), allocatable :: name
-         if (stage == 1) then
-            name = 'load factor'
-         else
-            name = 'current factor (the weight in full)'
-         end if
-      end function factor_name
    end subroutine statics_solve
+
+   !> Newton's options of the statics (*STATIC).
+   pure function static_newton_options(model, log_unit) result(opts)
+      type(model_t), intent(in) :: model     !< model (static options)
+      integer, intent(in) :: log_unit        !< log unit (< 0: silent)
+      type(newton_options_t) :: opts
+      opts%max_iterations = model%static%max_iterations
+      opts%force_tol = model%static%force_tol
+      opts%disp_tol = model%static%disp_tol
+      opts%line_search = model%static%line_search
+      opts%log_unit = log_unit
+   end function static_newton_options
+
+   !> The name of the factor stage 1 (the loads) or 2 (the current) raises.
+   pure function factor_name(stage) result(name)
+      integer, intent(in) :: stage   !< 1 or 2
+      character(len=:), allocatable :: name
+      if (stage == 1) then
+         name = 'load factor'
+      else
+         name = 'current factor (the weight in full)'
+      end if
+   end function factor_name
+
+   !> The message of statics that stopped at factor lam after `level` halvings: what
+   !> diverged (a load beyond the lines' reach, else the solver's reason) and, for rods
+   !> that are cables in all but name, that advice.
+   function no_convergence(model, mesh, stage, lam, level, nerr) result(text)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      integer, intent(in) :: stage           !< 1 or 2 (factor_name)
+      real(wp), intent(in) :: lam            !< the factor reached [-]
+      integer, intent(in) :: level           !< halvings of the increment
+      type(error_t), intent(in) :: nerr      !< the last Newton's error, if any
+      character(len=:), allocatable :: text
+      character(len=200) :: msg
+      character(len=:), allocatable :: why, hint
+      write (msg, '(3a,f9.6,a,i0,a)') 'statics: no convergence beyond ', &
+         factor_name(stage), ' ', lam, ' after ', level, ' halvings of the increment'
+      why = load_divergence_hint(model)
+      if (len(why) == 0 .and. has_error(nerr)) why = nerr%message
+      if (len(why) > 0) why = ' ('//why//')'
+      hint = mesh_cable_like_rods(model, mesh)
+      if (len(hint) > 0) why = why//'; '//hint
+      text = trim(msg)//why
+   end function no_convergence
    !> Set up and solve the static problem of a built mesh; wall time into summary.
    subroutine statics_run(prob, model, mesh, state, summary, err, log_unit)
       type(static_problem_t), intent(inout) :: prob  !< problem (workspace allocated here)
