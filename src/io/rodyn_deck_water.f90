@@ -22,6 +22,7 @@ module rodyn_deck_water
                                  get_lumped_body, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most
+   use rodyn_sort, only: sorted_order
    implicit none
    private
 
@@ -317,26 +318,6 @@ contains
                          ' diameter the pressure acts on)', err)
       end if
    end subroutine read_section_hydro
-
-   ! ============================================================ reader helpers
-
-   !> The permutation that sorts x increasingly (insertion sort: a few levels).
-   pure function sorted_order(x) result(order)
-      real(wp), intent(in) :: x(:)     !< values
-      integer :: order(size(x))        !< x(order) is increasing
-      integer :: i, j, k
-      order = [(i, i = 1, size(x))]
-      do i = 2, size(x)
-         k = order(i)
-         j = i - 1
-         do while (j >= 1)
-            if (x(order(j)) <= x(k)) exit
-            order(j + 1) = order(j)
-            j = j - 1
-         end do
-         order(j + 1) = k
-      end do
-   end function sorted_order
 
    ! ================================================================ validation
 

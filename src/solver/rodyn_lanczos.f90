@@ -11,6 +11,7 @@
 module rodyn_lanczos
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, stat_numerical
+   use rodyn_sort, only: sorted_order
    implicit none
    private
    public :: eigen_operator_t, lanczos_modes
@@ -127,28 +128,10 @@ contains
          return
       end if
       ! d: omega^2 of the original problem; longest period first
-      order = sort_ascending(d)
+      order = sorted_order(d)
       mu = 1.0_wp/d(order)
       v(:, 1:nev) = v(:, order)
       if (any(d <= 0.0_wp)) call set_error(err, stat_numerical, 'lanczos_modes: an '// &
          'eigenvalue omega^2 <= 0 (the stiffness is not positive definite)')
    end subroutine lanczos_modes
-
-   !> The permutation that sorts a (few values) ascending.
-   pure function sort_ascending(a) result(p)
-      real(wp), intent(in) :: a(:)     !< values
-      integer :: p(size(a))
-      integer :: i, j, t
-      p = [(i, i=1, size(a))]
-      do i = 2, size(a)
-         t = p(i)
-         j = i - 1
-         do while (j >= 1)
-            if (a(p(j)) <= a(t)) exit
-            p(j + 1) = p(j)
-            j = j - 1
-         end do
-         p(j + 1) = t
-      end do
-   end function sort_ascending
 end module rodyn_lanczos
