@@ -150,6 +150,17 @@ module rodyn_model
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
    end type point_t
 
+   !> An RAO table (rodyn_vessel): 6 complex values per wave period and heading relative
+   !> to the vessel or body, H = R exp(-i eps) for a phase lag eps. A vessel's gives its
+   !> motion per metre of wave amplitude [m/m, rad/m]; a body's (*BODY WAVE LOAD) the
+   !> force and moment at its reference point [N/m, N m/m].
+   type :: vessel_rao_t
+      real(wp), allocatable :: period(:)      !< (np) increasing wave periods [s]
+      real(wp), allocatable :: heading(:)     !< (nh) increasing relative headings [rad], [0, 2 pi)
+      complex(wp), allocatable :: h(:, :, :)  !< (6, np, nh) per metre of wave amplitude
+      integer :: interp = rao_interp_complex  !< rao_interp_* constant
+   end type vessel_rao_t
+
    !> A rigid body (*BODY): a floating platform, a buoy, a vessel. Six degrees of freedom
    !> (FREE) or held (FIXED); its points (*POINT, TYPE=BODY) carry line ends. Its loads:
    !> the weight MASS g at G, the buoyancy rho_w g VOLUME at B, a linear waterplane
@@ -179,6 +190,11 @@ module rodyn_model
       !> water), and C_r1..3 [N m s2], the moment -C_ri |w_i| w_i (w the angular velocity)
       real(wp) :: drag(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
+      !> first-order wave load (*BODY WAVE LOAD), dynamics only: force and moment at R
+      !> per metre of wave amplitude, by wave period and heading relative to the body's x
+      !> axis (period unallocated: none)
+      type(vessel_rao_t) :: wave_load
+      character(len=:), allocatable :: wave_load_at !< 'FILE:LINE' of its *BODY WAVE LOAD
    end type body_t
 
    !> The offset-restoring-force curve of a body (*OFFSET CURVE): after the statics, a
@@ -350,15 +366,6 @@ module rodyn_model
       real(wp), allocatable :: time(:)   !< (n) increasing times [s]
       real(wp), allocatable :: value(:)  !< (n) values [-]
    end type amplitude_t
-
-   !> A displacement RAO table (rodyn_vessel): 6 complex values per wave period and
-   !> heading relative to the vessel, H = R exp(-i eps) for a phase lag eps.
-   type :: vessel_rao_t
-      real(wp), allocatable :: period(:)      !< (np) increasing wave periods [s]
-      real(wp), allocatable :: heading(:)     !< (nh) increasing relative headings [rad], [0, 2 pi)
-      complex(wp), allocatable :: h(:, :, :)  !< (6, np, nh) [m/m, rad/m]
-      integer :: interp = rao_interp_complex  !< rao_interp_* constant
-   end type vessel_rao_t
 
    !> A vessel (*VESSEL): its reference point at rest, heading, and motion xi = (surge,
    !> sway, heave, roll, pitch, yaw) of the reference point in vessel axes (rodyn_vessel).

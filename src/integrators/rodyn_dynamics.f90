@@ -47,12 +47,13 @@ module rodyn_dynamics
    use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_offsets, &
                                           numdiss_accept
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
+   use rodyn_bodies, only: body_waves_at
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
    use rodyn_junctions, only: junctions_condense, junctions_place
    use rodyn_system_dynamics, only: point_velocities, added_mass_force, failures_t, &
-                                    failures_build, failures_step
+                                    failures_build, failures_step, body_waves_start
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
@@ -160,6 +161,7 @@ contains
       prob%sup%moved = .false.     ! POSITION targets were reached in statics
       call loads_build(model, mesh, prob%loads)
       call water_loads_build(model, mesh, prob%water)
+      if (prob%water%active) call body_waves_start(model, prob%water%field, state, prob%bl)
       allocate (prob%gfac(0:mesh%n_lines))
       prob%gfac = 1.0_wp
       if (prob%water%active) then
@@ -355,6 +357,7 @@ contains
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
       if (prob%water%active) call water_set_time(prob%water, tm, .true., prob%s0%x, &
                                                  prob%s0%v, prob%wf*dt)
+      if (prob%bl%nb > 0) call body_waves_at(prob%bl, tm)
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)

@@ -2,7 +2,8 @@
 !> of FREE points and of the ends on points and bodies at the start, a body's added mass
 !> in its axes (docs/theory.md eq. (142)), and line failure: a line end released from its
 !> support, point or body at a given time or when its force first reaches a break load
-!> (*FAILURE; eq. (143)), after which the run goes on with the system that remains.
+!> (*FAILURE; eq. (143)), after which the run goes on with the system that remains; and
+!> the bodies' wave loads set up in the sea (eq. (150)).
 module rodyn_system_dynamics
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, end_a, end_b
@@ -11,9 +12,12 @@ module rodyn_system_dynamics
    use rodyn_rotation, only: cross
    use rodyn_assembly, only: supports_t, supports_held_lists
    use rodyn_junctions, only: junctions_t, junctions_release
+   use rodyn_bodies, only: body_loads_t, body_waves_build
+   use rodyn_waves, only: wave_field_t
    implicit none
    private
    public :: point_velocities, added_mass_force, failures_t, failures_build, failures_step
+   public :: body_waves_start
 
    !> The line ends that fail (*FAILURE) and whether they have.
    type :: failures_t
@@ -137,4 +141,20 @@ contains
       kb = 0.0_wp
       kb(1:3, 1:3) = c2*ma_g
    end subroutine added_mass_force
+
+   !> The bodies' wave loads in the sea (rodyn_bodies' body_waves_build, eq. (150)), each
+   !> at its reference point's position in the start state.
+   pure subroutine body_waves_start(model, field, state, bl)
+      type(model_t), intent(in) :: model       !< model
+      type(wave_field_t), intent(in) :: field  !< the sea
+      type(state_t), intent(in) :: state       !< start state
+      type(body_loads_t), intent(inout) :: bl  !< bodies' loads (their wave factors set)
+      real(wp) :: xr(3, bl%nb)
+      integer :: k, node
+      do k = 1, bl%nb
+         node = bl%node(k)
+         xr(:, k) = state%x(:, node) + matmul(state%d(:, :, node), bl%rr(:, k))
+      end do
+      call body_waves_build(model, field, xr, bl)
+   end subroutine body_waves_start
 end module rodyn_system_dynamics

@@ -38,6 +38,8 @@ module rodyn_deck
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics
    use rodyn_deck_dynamic_warnings, only: dynamic_warnings
+   use rodyn_deck_body_waves, only: read_body_wave_load_card, check_body_wave_loads, &
+                                    body_wave_warnings
    use rodyn_deck_vessel, only: read_vessel_card, validate_vessels
    use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
@@ -136,7 +138,7 @@ contains
       allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
       allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)), &
                 pend%body_damp(size(model%bodies)), pend%body_added(size(model%bodies)), &
-                pend%body_drag(size(model%bodies)))
+                pend%body_drag(size(model%bodies)), pend%body_wave(size(model%bodies)))
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -148,7 +150,8 @@ contains
       end do
       call validate_model(deck, pend, model, err)
       if (present(warnings) .and. .not. has_error(err)) &
-         warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)
+         warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)// &
+                    body_wave_warnings(model)
    end subroutine deck_read
 
    !> Number of cards with the given keyword.
@@ -234,6 +237,8 @@ contains
             call read_body_hydrostatics_card(deck, ic, model, pend, err)
          case ('BODY ADDED MASS', 'BODY DRAG')
             call read_body_added_mass_card(deck, ic, model, pend, err)
+         case ('BODY WAVE LOAD')
+            call read_body_wave_load_card(deck, ic, model, pend, err)
          case ('FAILURE')
             call read_failure_card(deck, ic, model, pend, err)
          case ('OFFSET CURVE')
@@ -693,6 +698,8 @@ contains
       call system_complete(deck, pend, model, err)
       if (has_error(err)) return
       call check_bodies(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_body_wave_loads(deck, pend, model, err)
       if (has_error(err)) return
       call check_failures(deck, pend, model, err)
       if (has_error(err)) return

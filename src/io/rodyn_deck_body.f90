@@ -20,7 +20,7 @@ module rodyn_deck_body
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
    public :: read_offset_curve_card, resolve_offset_curve, read_modal_card, check_modal
-   public :: find_body
+   public :: find_body, body_above
    public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 
@@ -94,6 +94,7 @@ contains
       pend%body_damp(pend%n_bodies) = 0
       pend%body_added(pend%n_bodies) = 0
       pend%body_drag(pend%n_bodies) = 0
+      pend%body_wave(pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -280,7 +281,7 @@ contains
    end subroutine resolve_offset_curve
 
    !> Body ib named `name` among those read so far (a card that refers to the body above
-   !> it: *BODY HYDROSTATICS, *BODY DAMPING, *BODY ADDED MASS).
+   !> it: *BODY HYDROSTATICS, *BODY DAMPING, *BODY ADDED MASS, *BODY WAVE LOAD).
    subroutine body_above(card, name, model, pend, ib, err)
       type(card_t), intent(in) :: card      !< the referring card
       character(len=*), intent(in) :: name  !< body name

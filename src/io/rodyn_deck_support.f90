@@ -67,6 +67,7 @@ module rodyn_deck_support
       integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
       integer, allocatable :: body_added(:)       !< per body: its *BODY ADDED MASS card
       integer, allocatable :: body_drag(:)        !< per body: its *BODY DRAG card
+      integer, allocatable :: body_wave(:)        !< per body: its *BODY WAVE LOAD card
       type(ref_t), allocatable :: failure_line(:) !< per *FAILURE: its LINE=
       type(ref_t) :: offset_body                  !< *OFFSET CURVE's BODY=
       integer, allocatable :: section_card(:)     !< per section: card index

@@ -6,7 +6,7 @@
 module rodyn_deck_vessel
    use rodyn_kinds, only: wp, pi, two_pi
    use rodyn_error, only: error_t, has_error
-   use rodyn_model, only: model_t, vessel_t, vessel_from_rao, vessel_from_table, &
+   use rodyn_model, only: model_t, vessel_t, vessel_rao_t, vessel_from_rao, vessel_from_table, &
                           rao_interp_complex, rao_interp_polar, motion_vessel, bc_hinged
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_error, card_find_param, &
@@ -21,7 +21,7 @@ module rodyn_deck_vessel
    use rodyn_vessel, only: vessel_coefficients
    implicit none
    private
-   public :: read_vessel_card, validate_vessels
+   public :: read_vessel_card, validate_vessels, rao_grid, rao_options
 
    character(len=*), parameter :: what_rao = 'period, heading, surge, sway, heave, roll,'// &
                                   ' pitch, yaw amplitudes, the same 6 phases'
@@ -68,12 +68,7 @@ contains
                               iunit, err)
          if (has_error(err)) return
          rot = merge(deg, 1.0_wp, iunit == 1)
-         iphase = 1
-         call card_get_choice(card, 'PHASE', [character(len=8) :: 'LAG', 'LEAD'], iphase, err)
-         if (has_error(err)) return
-         interp = 1
-         call card_get_choice(card, 'INTERPOLATION', [character(len=8) :: 'COMPLEX', &
-                              'POLAR'], interp, err)
+         call rao_options(card, iphase, interp, err)
          if (has_error(err)) return
          if (ve%kind == vessel_from_table) then
             if (card_find_param(card, 'PHASE') > 0) then
@@ -110,7 +105,7 @@ contains
             if (has_error(err)) return
             ve%file = table%path
             ve%rao%interp = merge(rao_interp_complex, rao_interp_polar, interp == 1)
-            call rao_grid(card, table, rot, iphase == 1, ve, err)
+            call rao_grid(card, table, rot, iphase == 1, what_rao, ve%rao, err)
             if (has_error(err)) return
          end if
          call record_table(table, model)
@@ -221,15 +216,31 @@ contains
       end do
    end subroutine check_motion_table
 
+   !> An RAO table's PHASE=LAG|LEAD (iphase 1 or 2) and INTERPOLATION=COMPLEX|POLAR
+   !> (interp 1 or 2), both 1 by default.
+   subroutine rao_options(card, iphase, interp, err)
+      type(card_t), intent(in) :: card      !< the *VESSEL or *BODY WAVE LOAD card
+      integer, intent(out) :: iphase        !< 1: lags, 2: leads
+      integer, intent(out) :: interp        !< 1: complex values, 2: amplitude and phase
+      type(error_t), intent(inout) :: err   !< status
+      iphase = 1
+      call card_get_choice(card, 'PHASE', [character(len=8) :: 'LAG', 'LEAD'], iphase, err)
+      if (has_error(err)) return
+      interp = 1
+      call card_get_choice(card, 'INTERPOLATION', [character(len=8) :: 'COMPLEX', &
+                           'POLAR'], interp, err)
+   end subroutine rao_options
+
    !> The RAO rows as a full grid of periods (increasing) and headings (in [0, 360) deg):
    !> every heading has every period once; amplitudes not negative, periods positive.
    !> H = R exp(-i eps) for a lag eps, R exp(+i eps) for a lead.
-   subroutine rao_grid(card, table, rot, lag, ve, err)
-      type(card_t), intent(in) :: card      !< the *VESSEL card
+   subroutine rao_grid(card, table, rot, lag, what, rao, err)
+      type(card_t), intent(in) :: card      !< the *VESSEL or *BODY WAVE LOAD card
       type(table_t), intent(in) :: table    !< rows of 14 values
-      real(wp), intent(in) :: rot           !< radians per rotation unit
+      real(wp), intent(in) :: rot           !< scale of the rotation (moment) amplitudes
       logical, intent(in) :: lag            !< phases are lags (else leads)
-      type(vessel_t), intent(inout) :: ve   !< rao set
+      character(len=*), intent(in) :: what  !< names of the columns
+      type(vessel_rao_t), intent(inout) :: rao !< period, heading, h set
       type(error_t), intent(inout) :: err   !< status
       real(wp), allocatable :: periods(:), headings(:)
       logical, allocatable :: seen(:, :)
@@ -237,8 +248,7 @@ contains
       integer :: k, ip, ih, np, nh, row
 
       if (table%n_rows < 1) then
-         call param_fail(card, 'INPUT', "'"//table%path//"' has no rows ("//what_rao//')', &
-                         err)
+         call param_fail(card, 'INPUT', "'"//table%path//"' has no rows ("//what//')', err)
          return
       end if
       allocate (periods(0), headings(0))
@@ -263,10 +273,10 @@ contains
       call sort(headings)
       np = size(periods)
       nh = size(headings)
-      allocate (seen(np, nh), ve%rao%h(6, np, nh))
+      allocate (seen(np, nh), rao%h(6, np, nh))
       seen = .false.
-      ve%rao%period = periods
-      ve%rao%heading = headings*pi/180.0_wp
+      rao%period = periods
+      rao%heading = headings*pi/180.0_wp
       sgn = merge(-1.0_wp, 1.0_wp, lag)
       do k = 1, table%n_rows
          associate (r => table%values(:, k))
@@ -281,7 +291,7 @@ contains
             seen(ip, ih) = .true.
             amp = r(3:8)
             amp(4:6) = rot*amp(4:6)
-            ve%rao%h(:, ip, ih) = amp*exp(cmplx(0.0_wp, sgn*r(9:14)*pi/180.0_wp, wp))
+            rao%h(:, ip, ih) = amp*exp(cmplx(0.0_wp, sgn*r(9:14)*pi/180.0_wp, wp))
          end associate
       end do
       do ih = 1, nh

@@ -17,14 +17,28 @@
 !>
 !> (the rotation's log linearised as theta: exact at small rotations, which is what a
 !> linear C describes).
+!>
+!> The first-order wave load of *BODY WAVE LOAD (eq. (150)): for the sea's components j,
+!> of amplitude a_j, frequency omega_j, heading beta_j and elevation a_j cos(omega_j t +
+!> phi_j) at R's position R_s at the start of the dynamics (phi_j = -k_j . R_s - phase_j,
+!> rodyn_waves), the force and moment at R
+!>   F_k(t) = r(t) Re sum_j a_j X_k(T_j, beta_j) exp(i (omega_j t + phi_j)),     (150)
+!> X_k the table's complex value per metre of amplitude (rodyn_vessel's interpolation, the
+!> body's heading at rest 0: its axes are the global ones at the start) and r(t) the
+!> sea's ramp. It acts in global axes at R's position at the start (the linear theory's
+!> mean position), its moment moved to G as the waterplane's; it is booked with the
+!> water's work.
 module rodyn_bodies
-   use rodyn_kinds, only: wp
+   use rodyn_kinds, only: wp, two_pi
    use rodyn_model, only: model_t, body_free
    use rodyn_mesh, only: mesh_t
    use rodyn_rotation, only: cross, skew, rotation_log
+   use rodyn_waves, only: wave_field_t, wave_ramp
+   use rodyn_vessel, only: vessel_coefficients, vessel_harmonic_motion
    implicit none
    private
    public :: body_loads_t, body_loads_build, body_force, body_damping
+   public :: body_waves_build, body_waves_at
 
    !> The bodies' loads, fixed for the run (and the last forces, for the work's books).
    type :: body_loads_t
@@ -43,6 +57,13 @@ module rodyn_bodies
       real(wp), allocatable :: fh(:, :)        !< (6, nb) last water force and moment at G
       real(wp), allocatable :: fe(:, :)        !< (3, nb) last moment of the loads at R about G
       logical :: off = .false.                 !< none of these loads (the lines' stiffness)
+      !> first-order wave loads (eq. (150); body_waves_build): the sea's frequencies, the
+      !> complex factors a_j X_k exp(i phi_j) of each body with a table, the sea's ramp
+      real(wp), allocatable :: womega(:)       !< (nw) angular frequencies [rad/s]
+      complex(wp), allocatable :: wc(:, :, :)  !< (6, nw, nb) [N, N m]
+      logical, allocatable :: waved(:)         !< (nb) the body has a wave load
+      real(wp) :: wramp = 0.0_wp               !< ramp-in of the sea [s]
+      real(wp), allocatable :: fx(:, :)        !< (6, nb) wave force and moment at R now
    end type body_loads_t
 
 contains
@@ -58,7 +79,9 @@ contains
       allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
                 bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), &
                 bl%fh(6, bl%nb), bl%fe(3, bl%nb), bl%b(6, 6, bl%nb), bl%fd(6, bl%nb), &
-                bl%q(6, bl%nb))
+                bl%q(6, bl%nb), bl%fx(6, bl%nb), bl%waved(bl%nb))
+      bl%fx = 0.0_wp
+      bl%waved = .false.
       bl%fh = 0.0_wp
       bl%fd = 0.0_wp
       bl%fe = 0.0_wp
@@ -82,6 +105,45 @@ contains
       end do
    end subroutine body_loads_build
 
+   !> The factors of each body's wave load in the sea `field` (eq. (150)), with R at
+   !> xr (its position at the start of the dynamics).
+   pure subroutine body_waves_build(model, field, xr, bl)
+      type(model_t), intent(in) :: model       !< model with the bodies' tables
+      type(wave_field_t), intent(in) :: field  !< the sea
+      real(wp), intent(in) :: xr(:, :)         !< (3, nb) R of each FREE body [m]
+      type(body_loads_t), intent(inout) :: bl  !< womega, wc, waved, wramp set
+      real(wp), allocatable :: phi(:), beta(:)
+      integer :: k
+      allocate (bl%wc(6, field%n, bl%nb))
+      bl%womega = field%omega
+      bl%wramp = field%ramp
+      bl%wc = (0.0_wp, 0.0_wp)
+      beta = atan2(field%sb, field%cb)
+      do k = 1, bl%nb
+         associate (rao => model%bodies(bl%body(k))%wave_load)
+            bl%waved(k) = allocated(rao%period) .and. field%n > 0
+            if (.not. bl%waved(k)) cycle
+            phi = -(field%kx*xr(1, k) + field%ky*xr(2, k)) - field%phase
+            call vessel_coefficients(rao, 0.0_wp, field%amp, field%omega, beta, phi, &
+                                     bl%wc(:, :, k))
+         end associate
+      end do
+   end subroutine body_waves_build
+
+   !> Each body's wave force and moment at R at time t (eq. (150)), kept in bl%fx for
+   !> body_force.
+   pure subroutine body_waves_at(bl, t)
+      type(body_loads_t), intent(inout) :: bl  !< loads (fx set)
+      real(wp), intent(in) :: t                !< time [s]
+      real(wp) :: r, dr
+      integer :: k
+      call wave_ramp(bl%wramp, t, r, dr)
+      do k = 1, bl%nb
+         bl%fx(:, k) = 0.0_wp
+         if (bl%waved(k)) bl%fx(:, k) = r*vessel_harmonic_motion(bl%wc(:, :, k), bl%womega, t)
+      end do
+   end subroutine body_waves_at
+
    !> Body k's turning loads at the force point (eqs. (137)-(139)): force and moment f
    !> on its node, and their derivative kb with respect to its translation and rotation
    !> at t_n+1 (the residual's is -kb). xg0, xg1: G at t_n and now; d0, d1 its directors;
@@ -102,13 +164,14 @@ contains
       ab = matmul(dm, bl%rb(:, k))
       ar = matmul(dm, bl%rr(:, k))
       ar1 = matmul(d1, bl%rr(:, k))
-      ! buoyancy at B, the loads' force at R (its moment about R is a point load)
-      f(1:3) = bl%fb(:, k)
+      ! buoyancy at B and the wave load at R, the loads' force at R (its moment about R
+      ! is a point load)
+      f(1:3) = bl%fb(:, k) + bl%fx(1:3, k)
       fe = cross(ar, fr)
-      f(4:6) = cross(ab, bl%fb(:, k))
+      f(4:6) = cross(ab, bl%fb(:, k)) + bl%fx(4:6, k) + cross(ar, bl%fx(1:3, k))
       kb = 0.0_wp
       kb(4:6, 4:6) = w*(moment_tangent(matmul(d1, bl%rb(:, k)), bl%fb(:, k)) &
-                        + moment_tangent(ar1, fr))
+                        + moment_tangent(ar1, fr + bl%fx(1:3, k)))
       ! waterplane about R, at the force point
       q(1:3) = (1.0_wp - w)*xg0 + w*xg1 + ar - bl%xr0(:, k)
       q(4:6) = rotation_log(dm)
