@@ -213,7 +213,8 @@ contains
          end do
       end if
       ! a clamped end on a vessel (its rotations held, a node with rotation unknowns)
-      ! turns with it: its directors are prescribed like its position
+      ! and a FIXED body moved with a vessel turn with it: their directors are
+      ! prescribed like their position
       allocate (prob%motion_turns(size(prob%motion_node)), &
                 prob%d_start(3, 3, size(prob%motion_node)))
       do i = 1, size(prob%motion_node)

@@ -310,11 +310,11 @@ contains
          mo%kind = kinds(it)
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
-         if ((on_body .or. on_point) .and. mo%kind == motion_vessel) then
-            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node: a '// &
-                            trim(merge('body ', 'point', on_body))//' moved with a vessel'// &
-                            ' is not available (move it by HARMONIC or TABLE, or put the'// &
-                            ' line ends on the vessel)', err)
+         if (on_point .and. mo%kind == motion_vessel) then
+            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node or a body: a'// &
+                            ' point moved with a vessel is not available (put it on a'// &
+                            ' FIXED *BODY moved with the vessel, or put the line ends on'// &
+                            ' the vessel)', err)
             return
          end if
 

@@ -364,6 +364,18 @@ contains
                return
             end if
             mo%vessel = i
+            if (mo%body > 0) then
+               ! a body on the vessel: fixed to it where it is at rest in the statics
+               associate (ve => model%vessels(i))
+                  if (ve%offset_static .and. any(ve%offset /= 0.0_wp)) &
+                     call card_error(card, 'body '//trim(model%bodies(mo%body)%name)// &
+                                     ' is moved with vessel '//trim(ve%name)//', whose'// &
+                                     ' static offset the statics does not give a body:'// &
+                                     ' ramp the offset in with OFFSET START=DYNAMIC', err)
+               end associate
+               if (has_error(err)) return
+               cycle
+            end if
             nn = node_count(model%lines(mo%line))
             node = node_number(mo%node, nn)
             do ib = 1, size(model%constraints)

@@ -86,7 +86,8 @@ contains
       if (scene%n_probes > 0) scene%probe_xy = model%waves%probe_xy
       scene%ramp = -1.0_wp
       c = 0
-      if (allocated(model%motions)) c = count(model%motions%kind == motion_vessel)
+      if (allocated(model%motions)) c = count(model%motions%kind == motion_vessel .and. &
+                                              model%motions%line > 0)
       scene%n_conn = c
       allocate (scene%conn_vessel(c), scene%conn_line(c), scene%conn_node(c), &
                 scene%conn_end(c), scene%conn_p(3, c))
@@ -94,7 +95,7 @@ contains
       if (allocated(model%motions)) then
          do k = 1, size(model%motions)
             associate (mo => model%motions(k))
-               if (mo%kind /= motion_vessel) cycle
+               if (mo%kind /= motion_vessel .or. mo%line == 0) cycle  ! (a body's)
                c = c + 1
                v = mo%vessel
                scene%conn_vessel(c) = v

@@ -130,7 +130,7 @@ contains
       if (.not. allocated(model%motions)) return
       do i = 1, size(model%motions)
          associate (mo => model%motions(i))
-            if (mo%kind /= motion_vessel) cycle
+            if (mo%kind /= motion_vessel .or. mo%line == 0) cycle  ! (a body: no offset)
             associate (ve => model%vessels(mo%vessel))
                if (.not. ve%offset_static .or. all(ve%offset == 0.0_wp)) cycle
                node = mesh_node(mesh, mo%line, mo%node)
