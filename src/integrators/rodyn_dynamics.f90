@@ -7,12 +7,12 @@
 !>             + alpha M_ia (d_i^{n+1} - d_i^n)/dt] + f_theta - m_ext(t_{n+1/2})
 !> vanishes (eqs. (37)-(39); f: the step internal force of the scheme, rodyn_rod_dynamic;
 !> alpha: Rayleigh mass-proportional damping; f also holds the sections' structural
-!> damping, rodyn_assembly_damping, eqs. (116)-(121)). Held nodes follow their prescribed position
-!> at t_{n+1}; a clamped end on a vessel also its prescribed directors d_i^{n+1} =
-!> Q(t_{n+1}) d_i(0), Q the vessel's turn since rest (rodyn_motion's motion_rotation), set
-!> in the predictor and kept by its held rotation unknowns. The rotation rows are projected
-!> with the midpoint directors, so Lagrange multipliers of the orthonormality constraints
-!> never appear (discrete null-space method).
+!> damping, rodyn_assembly_damping, eqs. (116)-(121)). Held nodes follow their prescribed
+!> position at t_{n+1}; a clamped end on a vessel and a body moved with one also their
+!> directors d_i^{n+1} = Q(t_{n+1}) d_i(0), Q the vessel's turn since rest (rodyn_motion's
+!> motion_rotation), set in the predictor and kept by the held rotation unknowns. The
+!> rotation rows are projected with the midpoint directors: no Lagrange multipliers of
+!> the orthonormality constraints appear (discrete null-space method).
 !>
 !> SCHEME=ALPHA is the generalized-alpha method (Chung & Hulbert, J. Appl. Mech. 60, 1993;
 !> docs/theory.md eqs. (56)-(60))
@@ -47,7 +47,7 @@ module rodyn_dynamics
    use rodyn_numerical_dissipation, only: numdiss_t, numdiss_setup, numdiss_offsets, &
                                           numdiss_accept
    use rodyn_water, only: water_loads_t, water_loads_build, water_set_time
-   use rodyn_bodies, only: body_waves_at
+   use rodyn_bodies, only: body_water_set
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
@@ -152,8 +152,7 @@ contains
       call rod_problem_init(prob, model, mesh)
       call failures_build(model, mesh, prob%fl)
       call anderson_init(prob%aa, prob%sup%n_dof, anderson_depth)
-      ! the step tangent is factorised without pivoting (rodyn_banded's header: cheaper,
-      ! and stable for the mass-dominated step tangent)
+      ! the step tangent is factorised without pivoting (cheaper; stable when mass-led)
       call banded_set_pivoting(prob%bm, .false.)
       prob%model => model
       prob%s1 => state
@@ -212,9 +211,8 @@ contains
                prob%vessels(i) = vessel_offset_rest(model%vessels(i))
          end do
       end if
-      ! a clamped end on a vessel (its rotations held, a node with rotation unknowns)
-      ! and a FIXED body moved with a vessel turn with it: their directors are
-      ! prescribed like their position
+      ! a clamped end on a vessel (its rotations held) and a FIXED body moved with a
+      ! vessel turn with it: their directors are prescribed like their position
       allocate (prob%motion_turns(size(prob%motion_node)), &
                 prob%d_start(3, 3, size(prob%motion_node)))
       do i = 1, size(prob%motion_node)
@@ -358,7 +356,9 @@ contains
       call external_force(prob%mesh, prob%loads, prob%gfac, 1.0_wp, tm, prob%fext)
       if (prob%water%active) call water_set_time(prob%water, tm, .true., prob%s0%x, &
                                                  prob%s0%v, prob%wf*dt)
-      if (prob%bl%nb > 0) call body_waves_at(prob%bl, tm)
+      if (prob%bl%nb > 0 .and. prob%water%active) call body_water_set(prob%bl, &
+         prob%water%env%water, prob%water%env%r_current, prob%water%field, &
+         prob%water%wave_on, tm, prob%s0%x, prob%s0%d, prob%s0%v, prob%wf*dt)
       ! prescribed positions at the end of the step
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
@@ -382,8 +382,8 @@ contains
             prob%dx(:, node) = 0.0_wp
          end if
       end do
-      ! a FIXED body moved (*MOTION, BODY=) starts the step where it is prescribed: its
-      ! rows are held, and no free row couples to them but through its line ends
+      ! a FIXED body moved (*MOTION, BODY=) starts the step where it is prescribed (its
+      ! rows held; no free row couples to them but through its line ends)
       do i = 1, size(prob%motion_node)
          if (prob%model%motions(prob%motion_of(i))%body == 0) cycle
          node = prob%motion_node(i)

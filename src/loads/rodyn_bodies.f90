@@ -33,12 +33,14 @@ module rodyn_bodies
    use rodyn_model, only: model_t, body_free
    use rodyn_mesh, only: mesh_t
    use rodyn_rotation, only: cross, skew, rotation_log
-   use rodyn_waves, only: wave_field_t, wave_ramp
+   use rodyn_waves, only: wave_field_t, wave_ramp, wave_kinematics
    use rodyn_vessel, only: vessel_coefficients, vessel_harmonic_motion
+   use rodyn_model, only: water_t
+   use rodyn_environment, only: fluid_kinematics
    implicit none
    private
-   public :: body_loads_t, body_loads_build, body_force, body_damping
-   public :: body_waves_build, body_waves_at
+   public :: body_loads_t, body_loads_build, body_force, body_damping, body_current_drag
+   public :: body_waves_build, body_waves_at, body_water_set
 
    !> The bodies' loads, fixed for the run (and the last forces, for the work's books).
    type :: body_loads_t
@@ -64,6 +66,8 @@ module rodyn_bodies
       logical, allocatable :: waved(:)         !< (nb) the body has a wave load
       real(wp) :: wramp = 0.0_wp               !< ramp-in of the sea [s]
       real(wp), allocatable :: fx(:, :)        !< (6, nb) wave force and moment at R now
+      !> (3, nb) the water's velocity at R for the drag (current and waves; body_water_set)
+      real(wp), allocatable :: uw(:, :)
    end type body_loads_t
 
 contains
@@ -79,8 +83,9 @@ contains
       allocate (bl%node(bl%nb), bl%body(bl%nb), bl%fb(3, bl%nb), bl%rb(3, bl%nb), &
                 bl%rr(3, bl%nb), bl%xr0(3, bl%nb), bl%c(6, 6, bl%nb), &
                 bl%fh(6, bl%nb), bl%fe(3, bl%nb), bl%b(6, 6, bl%nb), bl%fd(6, bl%nb), &
-                bl%q(6, bl%nb), bl%fx(6, bl%nb), bl%waved(bl%nb))
+                bl%q(6, bl%nb), bl%fx(6, bl%nb), bl%waved(bl%nb), bl%uw(3, bl%nb))
       bl%fx = 0.0_wp
+      bl%uw = 0.0_wp
       bl%waved = .false.
       bl%fh = 0.0_wp
       bl%fd = 0.0_wp
@@ -144,6 +149,55 @@ contains
       end do
    end subroutine body_waves_at
 
+   !> The water at the bodies at the force time t: the wave loads (body_waves_at) and,
+   !> for a body with a drag, the water's velocity at R (eq. (149)): the current's, times
+   !> its ramp r_cur, and with waves the wave's at R's predicted force point x + h v (the
+   !> body's node's x, d and v at the start of the step; statics: x and d now, no v).
+   pure subroutine body_water_set(bl, water, r_cur, field, waves, t, x, d, v, h)
+      type(body_loads_t), intent(inout) :: bl  !< loads (fx, uw set)
+      type(water_t), intent(in) :: water       !< water and current profile
+      real(wp), intent(in) :: r_cur            !< current ramp factor [-]
+      type(wave_field_t), intent(in) :: field  !< the sea
+      logical, intent(in) :: waves             !< the step has waves
+      real(wp), intent(in) :: t                !< force time [s]
+      real(wp), intent(in) :: x(:, :)          !< (3, nn) positions [m]
+      real(wp), intent(in) :: d(:, :, :)       !< (3, 3, nn) directors
+      real(wp), intent(in), optional :: v(:, :) !< (3, nn) velocities [m/s]
+      real(wp), intent(in), optional :: h      !< time to the force point [s]
+      real(wp) :: xr(3), u(3), dudx(3, 3), a(3), eta
+      integer :: k
+      if (allocated(bl%womega)) call body_waves_at(bl, t)
+      do k = 1, bl%nb
+         bl%uw(:, k) = 0.0_wp
+         if (.not. any(bl%q(1:3, k) > 0.0_wp)) cycle
+         xr = x(:, bl%node(k)) + matmul(d(:, :, bl%node(k)), bl%rr(:, k))
+         if (present(v) .and. present(h)) xr = xr + h*v(:, bl%node(k))
+         call fluid_kinematics(water, r_cur, xr, bl%uw(:, k), dudx, a)
+         if (.not. waves) cycle
+         call wave_kinematics(field, xr, t, eta, u, a)
+         bl%uw(:, k) = bl%uw(:, k) + u
+      end do
+   end subroutine body_water_set
+
+   !> The steady drag of the current on body k in the statics (eq. (149) with the body at
+   !> rest): the force -D q |u| u, u = D^T (0 - u_w) in the body's axes, at R, moved to G,
+   !> and its tangent with respect to the body's rotation (the turn of D left out, as in
+   !> the dynamics).
+   pure subroutine body_current_drag(bl, k, d, f, kb)
+      type(body_loads_t), intent(in) :: bl     !< loads (uw set)
+      integer, intent(in) :: k                 !< body
+      real(wp), intent(in) :: d(3, 3)          !< its directors
+      real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
+      real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
+      real(wp) :: u(3), ar(3)
+      u = -matmul(transpose(d), bl%uw(:, k))
+      ar = matmul(d, bl%rr(:, k))
+      f(1:3) = -matmul(d, bl%q(1:3, k)*abs(u)*u)
+      f(4:6) = cross(ar, f(1:3))
+      kb = 0.0_wp
+      kb(4:6, 4:6) = moment_tangent(ar, f(1:3))
+   end subroutine body_current_drag
+
    !> Body k's turning loads at the force point (eqs. (137)-(139)): force and moment f
    !> on its node, and their derivative kb with respect to its translation and rotation
    !> at t_n+1 (the residual's is -kb). xg0, xg1: G at t_n and now; d0, d1 its directors;
@@ -193,11 +247,13 @@ contains
    !> Body k's linear damping and quadratic drag over a time step dt (eqs. (141), (149)):
    !> the velocity of R and the angular velocity of the step, v = (x_R^{n+1} - x_R^n)/dt,
    !> omega = theta/dt (theta the Cayley parameter of the step's turn, given), the force
-   !> and moment about R -B (v, omega) - D_f Q D_f^T (v, omega), Q = diag(q_i |u_i|), u =
-   !> D_f^T (v, omega) in the body axes at the force point, moved to G at the force point
-   !> (as the waterplane's, (138)); f the force on the node and kb its derivative (c_v:
-   !> d velocity / d increment, 1/dt; the drag's 2 q_i |u_i|, the turn of D_f left out).
-   !> The drag's work, f . (dx, theta), is -dt sum_i q_i |u_i| u_i^2 <= 0: it dissipates.
+   !> and moment about R -B (v, omega) - D_f Q D_f^T (v - u_w, omega), Q = diag(q_i |u_i|),
+   !> u the relative velocity in the body axes at the force point (u_w the water's velocity
+   !> at R, body_water_set), moved to G at the force point (as the waterplane's, (138)); f
+   !> the force on the node and kb its derivative (c_v: d velocity / d increment, 1/dt; the
+   !> drag's 2 q_i |u_i|, the turn of D_f left out). In still water the drag's work,
+   !> f . (dx, theta) = -dt sum_i q_i |u_i| u_i^2 <= 0, dissipates (fd); in moving water
+   !> the translation's drag is booked with the water's (fh).
    pure subroutine body_damping(bl, k, xg0, xg1, d0, d1, w, dt, th, f, kb)
       type(body_loads_t), intent(inout) :: bl  !< loads (fd: the force kept)
       integer, intent(in) :: k                 !< body
@@ -208,7 +264,8 @@ contains
       real(wp), intent(in) :: th(3)            !< Cayley parameter of the step's turn [rad]
       real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
       real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
-      real(wp) :: ar(3), ar0(3), ar1(3), v(6), t(6, 6), bq(6, 6), df(3, 3), u(3)
+      real(wp) :: ar(3), ar0(3), ar1(3), v(6), t(6, 6), bq(6, 6), df(3, 3), u(3), vr(3)
+      real(wp) :: fq(6)
       integer :: i, j
       ar0 = matmul(d0, bl%rr(:, k))
       ar1 = matmul(d1, bl%rr(:, k))
@@ -216,19 +273,34 @@ contains
       v(1:3) = (xg1 + ar1 - xg0 - ar0)/dt
       v(4:6) = th/dt
       f = -matmul(bl%b(:, :, k), v)
+      fq = 0.0_wp
       bq = 0.0_wp
       if (any(bl%q(:, k) > 0.0_wp)) then
          df = (1.0_wp - w)*d0 + w*d1
          do i = 0, 3, 3
-            u = matmul(transpose(df), v(i + 1:i + 3))
-            f(i + 1:i + 3) = f(i + 1:i + 3) - matmul(df, bl%q(i + 1:i + 3, k)*abs(u)*u)
+            ! the translation's drag on the velocity relative to the water at R
+            vr = v(i + 1:i + 3)
+            if (i == 0) vr = vr - bl%uw(:, k)
+            u = matmul(transpose(df), vr)
+            fq(i + 1:i + 3) = -matmul(df, bl%q(i + 1:i + 3, k)*abs(u)*u)
             do j = 1, 3
                bq(i + 1:i + 3, i + j) = matmul(df, 2.0_wp*bl%q(i + 1:i + 3, k)*abs(u)*df(j, :))
             end do
          end do
       end if
       f(4:6) = f(4:6) + cross(ar, f(1:3))
-      bl%fd(:, k) = f
+      f(4:6) = f(4:6) + fq(4:6)                 ! the turn's drag: damping
+      ! the translation's drag: damping in still water; in moving water it can do work on
+      ! the body, and is booked with the water's (fh)
+      fq(4:6) = cross(ar, fq(1:3))
+      if (any(bl%uw(:, k) /= 0.0_wp)) then
+         bl%fh(:, k) = bl%fh(:, k) + fq(1:6)
+         bl%fd(:, k) = f
+         f = f + fq
+      else
+         f = f + fq
+         bl%fd(:, k) = f
+      end if
       t = 0.0_wp
       do i = 1, 6
          t(i, i) = 1.0_wp

@@ -1,9 +1,10 @@
 !> The turning loads of the FREE bodies (rodyn_bodies: buoyancy at B, waterplane
-!> restoring, the moment of a load given at R) added to the internal forces and the
-!> tangent, as the water's are (docs/theory.md eqs. (137)-(139)).
+!> restoring, the moment of a load given at R, the wave load; in dynamics the damping and
+!> drag, in statics the current's drag) added to the internal forces and the tangent, as
+!> the water's are (docs/theory.md eqs. (137)-(139), (141), (149)-(150)).
 module rodyn_assembly_bodies
    use rodyn_kinds, only: wp
-   use rodyn_bodies, only: body_loads_t, body_force, body_damping
+   use rodyn_bodies, only: body_loads_t, body_force, body_damping, body_current_drag
    use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
    use rodyn_assembly, only: supports_t, add_node_block
    use rodyn_banded, only: banded_t
@@ -38,7 +39,14 @@ contains
                          fext(1:3, n) - grav(:, n), f, kb)
          fint(:, n) = fint(:, n) - f
          if (want_k) call add_node_block(sup, n, -kb, bm)
-         if (.not. present(dt)) cycle
+         if (.not. present(dt)) then
+            ! statics: the current's steady drag on a body with a drag (eq. (149))
+            if (.not. any(bl%uw(:, k) /= 0.0_wp)) cycle
+            call body_current_drag(bl, k, d1(:, :, n), f, kb)
+            fint(:, n) = fint(:, n) - f
+            if (want_k) call add_node_block(sup, n, -kb, bm)
+            cycle
+         end if
          if (.not. (any(bl%b(:, :, k) /= 0.0_wp) .or. any(bl%q(:, k) > 0.0_wp))) cycle
          th = rotation_cayley_inverse(relative_rotation(d1(:, :, n), d0(:, :, n)))
          call body_damping(bl, k, x0(:, n), x1(:, n), d0(:, :, n), d1(:, :, n), w, dt, th, &

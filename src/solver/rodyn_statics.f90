@@ -45,6 +45,7 @@ module rodyn_statics
    use rodyn_state, only: state_t
    use rodyn_junctions, only: junctions_condense, junctions_place
    use rodyn_assembly_bodies, only: assemble_bodies
+   use rodyn_bodies, only: body_water_set
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
                              assemble_static, apply_supports, external_force, assemble_water, &
                              add_node_block
@@ -193,6 +194,9 @@ contains
                                                  this%state%x, this%zero3, this%zero3, &
                                                  1.0_wp, 0.0_wp, 0.0_wp, this%fint, &
                                                  this%bm, want_k)
+      if (this%bl%nb > 0 .and. this%water%active) call body_water_set(this%bl, &
+         this%water%env%water, this%water%env%r_current, this%water%field, .false., 0.0_wp, &
+         this%state%x, this%state%d)
       if (this%bl%nb > 0) call assemble_bodies(this%bl, this%sup, this%state%x, this%state%x, &
                                                this%state%d, this%state%d, 1.0_wp, &
                                                this%fext, this%loads%gravity, this%fint, &
