@@ -179,6 +179,10 @@ module rodyn_model
       !> water), and C_r1..3 [N m s2], the moment -C_ri |w_i| w_i (w the angular velocity)
       real(wp) :: drag(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
+
+      !> added mass about R in body axes (*BODY ADDED MASS, FORM=MATRIX), rows and columns
+      !> x, y, z, rx, ry, rz [kg, kg m, kg m2]; symmetric, positive semi-definite
+      real(wp) :: added_matrix(6, 6) = 0.0_wp
    end type body_t
 
    !> The offset-restoring-force curve of a body (*OFFSET CURVE): after the statics, a

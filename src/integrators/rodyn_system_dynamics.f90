@@ -1,6 +1,6 @@
 !> What the dynamics of a mooring system adds to a line's (docs/systems.md): the velocities
 !> of FREE points and of the ends on points and bodies at the start, a body's added mass
-!> in its axes (docs/theory.md eq. (142)), and line failure: a line end released from its
+!> (docs/theory.md eqs. (142), (155)), and line failure: a line end released from its
 !> support, point or body at a given time or when its force first reaches a break load
 !> (*FAILURE; eq. (143)), after which the run goes on with the system that remains.
 module rodyn_system_dynamics
@@ -11,6 +11,7 @@ module rodyn_system_dynamics
    use rodyn_rotation, only: cross
    use rodyn_assembly, only: supports_t, supports_held_lists
    use rodyn_junctions, only: junctions_t, junctions_release
+   use rodyn_body_mass, only: added_mass_global
    implicit none
    private
    public :: point_velocities, added_mass_force, failures_t, failures_build, failures_step
@@ -115,26 +116,22 @@ contains
       end do
    end subroutine point_velocities
 
-   !> A body's added mass in its axes (docs/theory.md eq. (142)): the force
-   !> D A D^T (c2 dx - g0) on its node, D its directors at the force point, and its
-   !> derivative c2 D A D^T (the turn of D left out).
-   pure subroutine added_mass_force(ma, d, c2, dx, rest0, f, kb, want_k)
-      real(wp), intent(in) :: ma(3)        !< A11, A22, A33 [kg]
+   !> A body's added mass (docs/theory.md eqs. (142), (155)): the force and moment on G,
+   !> A (acc), A = blkdiag(D, D) A_G blkdiag(D, D)^T with D its directors at the force
+   !> point and acc the step's accelerations of G and of the rotation (node_inertia with
+   !> unit mass and director inertias 1/2), and its derivative A d(acc)/dq (the turn of D
+   !> left out).
+   pure subroutine added_mass_force(ag, d, acc, dacc, f, kb, want_k)
+      real(wp), intent(in) :: ag(6, 6)     !< added mass at G, body axes [kg, kg m, kg m2]
       real(wp), intent(in) :: d(3, 3)      !< directors at the force point
-      real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
-      real(wp), intent(in) :: dx(3)        !< position increment [m]
-      real(wp), intent(in) :: rest0(3)     !< the step's constant part (inertia_rest)
+      real(wp), intent(in) :: acc(6)       !< accelerations [m/s2, 1/s2]
+      real(wp), intent(in) :: dacc(6, 6)   !< their derivative (if want_k) [1/s2]
       real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
       real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
       logical, intent(in) :: want_k        !< form kb
-      real(wp) :: ma_g(3, 3)
-      integer :: j
-      do j = 1, 3
-         ma_g(:, j) = matmul(d, ma*d(j, :))
-      end do
-      f(1:3) = f(1:3) + matmul(ma_g, c2*dx - rest0)
-      if (.not. want_k) return
-      kb = 0.0_wp
-      kb(1:3, 1:3) = c2*ma_g
+      real(wp) :: a(6, 6)
+      a = added_mass_global(ag, d)
+      f = f + matmul(a, acc)
+      if (want_k) kb = matmul(a, dacc)
    end subroutine added_mass_force
 end module rodyn_system_dynamics

@@ -19,6 +19,7 @@ module rodyn_recovery
    use rodyn_water, only: water_loads_t
    use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
    use rodyn_waves, only: wave_kinematics
+   use rodyn_body_mass, only: body_added_mass_g, added_mass_global
    implicit none
    private
    public :: recover_static, recover_state, touchdown_root, recover_system
@@ -107,10 +108,9 @@ contains
             do i = 1, 3
                mg(i, i) = bd%mass
             end do
-            mg(1:3, 1:3) = mg(1:3, 1:3) + matmul(d, matmul(diagonal(bd%added_mass(1:3)), &
-                                                           transpose(d)))
             mg(4:6, 4:6) = matmul(d, matmul(diagonal(bd%inertia + bd%added_mass(4:6)), &
                                             transpose(d)))
+            mg = mg + added_mass_global(body_added_mass_g(bd), d)
          end associate
          t = 0.0_wp
          do i = 1, 6
