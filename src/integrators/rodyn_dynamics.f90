@@ -573,9 +573,9 @@ contains
          call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
                            this%rest(:, :, node), this%s0%d(:, :, node), &
                            this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
-         call added_mass_force(this%inert%ma(:, :, i), (1.0_wp - wp_)*this%s0%d(:, :, node) &
-                               + wp_*this%s1%d(:, :, node), acc, dacc, this%fint(:, node), &
-                               kb, want_k)
+         call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
+                               this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
+                               dacc, this%fint(:, node), kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged

@@ -8,7 +8,7 @@ module rodyn_system_dynamics
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_rotation, only: cross
+   use rodyn_rotation, only: cross, rotation_cayley_inverse, relative_rotation
    use rodyn_assembly, only: supports_t, supports_held_lists
    use rodyn_junctions, only: junctions_t, junctions_release
    use rodyn_body_mass, only: added_mass_global
@@ -117,21 +117,34 @@ contains
    end subroutine point_velocities
 
    !> A body's added mass (docs/theory.md eqs. (142), (155)): the force and moment on G,
-   !> A (acc), A = blkdiag(D, D) A_G blkdiag(D, D)^T with D its directors at the force
-   !> point and acc the step's accelerations of G and of the rotation (node_inertia with
-   !> unit mass and director inertias 1/2), and its derivative A d(acc)/dq (the turn of D
-   !> left out).
-   pure subroutine added_mass_force(ag, d, acc, dacc, f, kb, want_k)
+   !> R_f A_G (R_f^T acc + (R_1 - R_0)^T (dx, theta)/dt^2), R = blkdiag(D, D) of its
+   !> directors at t_n, t_n+1 and the force point, acc the step's accelerations of G and
+   !> of the rotation (node_inertia with unit mass and director inertias 1/2), theta the
+   !> step's turn: the change of the body-axes velocities over the step, so that with the
+   !> midpoint its work is the change of 1/2 nu^T A_G nu to second order in the step; its
+   !> derivative R_f A_G R_f^T d(acc)/dq (the turn of D left out).
+   pure subroutine added_mass_force(ag, d0, d1, wf, dt, dx, acc, dacc, f, kb, want_k)
       real(wp), intent(in) :: ag(6, 6)     !< added mass at G, body axes [kg, kg m, kg m2]
-      real(wp), intent(in) :: d(3, 3)      !< directors at the force point
+      real(wp), intent(in) :: d0(3, 3)     !< directors at t_n
+      real(wp), intent(in) :: d1(3, 3)     !< directors at t_n+1
+      real(wp), intent(in) :: wf           !< weight of t_n+1 at the force point [-]
+      real(wp), intent(in) :: dt           !< step [s]
+      real(wp), intent(in) :: dx(3)        !< the step's move of G [m]
       real(wp), intent(in) :: acc(6)       !< accelerations [m/s2, 1/s2]
       real(wp), intent(in) :: dacc(6, 6)   !< their derivative (if want_k) [1/s2]
       real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
       real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
       logical, intent(in) :: want_k        !< form kb
-      real(wp) :: a(6, 6)
-      a = added_mass_global(ag, d)
-      f = f + matmul(a, acc)
-      if (want_k) kb = matmul(a, dacc)
+      real(wp) :: df(3, 3), dd(3, 3), ab(6), q(6)
+      df = (1.0_wp - wf)*d0 + wf*d1
+      dd = d1 - d0
+      q(1:3) = dx
+      q(4:6) = rotation_cayley_inverse(relative_rotation(d1, d0))
+      ab(1:3) = matmul(transpose(df), acc(1:3)) + matmul(transpose(dd), q(1:3))/dt**2
+      ab(4:6) = matmul(transpose(df), acc(4:6)) + matmul(transpose(dd), q(4:6))/dt**2
+      ab = matmul(ag, ab)
+      f(1:3) = f(1:3) + matmul(df, ab(1:3))
+      f(4:6) = f(4:6) + matmul(df, ab(4:6))
+      if (want_k) kb = matmul(added_mass_global(ag, df), dacc)
    end subroutine added_mass_force
 end module rodyn_system_dynamics
