@@ -195,6 +195,10 @@ module rodyn_model
       !> axis (period unallocated: none)
       type(vessel_rao_t) :: wave_load
       character(len=:), allocatable :: wave_load_at !< 'FILE:LINE' of its *BODY WAVE LOAD
+
+      !> added mass about R in body axes (*BODY ADDED MASS, FORM=MATRIX), rows and columns
+      !> x, y, z, rx, ry, rz [kg, kg m, kg m2]; symmetric, positive semi-definite
+      real(wp) :: added_matrix(6, 6) = 0.0_wp
    end type body_t
 
    !> The offset-restoring-force curve of a body (*OFFSET CURVE): after the statics, a

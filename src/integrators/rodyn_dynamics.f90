@@ -336,7 +336,8 @@ contains
       do node = 1, prob%mesh%n_nodes
          prob%rest(:, 0, node) = inertia_rest(prob, prob%s0%v(:, node), node, 0)
          do i = 1, 3
-            if (prob%inert%md(i, node) == 0.0_wp) cycle
+            if (prob%inert%md(i, node) == 0.0_wp .and. &
+                findloc(prob%inert%ma_node, node, dim=1) == 0) cycle
             prob%rest(:, i, node) = inertia_rest(prob, prob%s0%dd(:, i, node), node, i)
          end do
       end do
@@ -512,7 +513,7 @@ contains
       class(dynamic_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                   !< form the tangent
       type(error_t), intent(inout) :: err             !< status (cannot fail)
-      real(wp) :: c2, kb(6, 6), bdt2, wp_
+      real(wp) :: c2, kb(6, 6), bdt2, wp_, acc(6), dacc(6, 6), fx_acc
       real(wp) :: fx, mx
       integer :: node, i
       if (has_error(err)) return
@@ -567,12 +568,18 @@ contains
                            this%s1%d(:, :, node), this%fint(:, node), fx, kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
-      ! the bodies' added mass in their axes, D A D^T at the force point (theory.md (142))
+      ! the bodies' added mass on their accelerations, at the force point (theory.md (142),
+      ! (155)): the accelerations those of a unit mass and director inertias 1/2
       do i = 1, size(this%inert%ma_node)
          node = this%inert%ma_node(i)
-         call added_mass_force(this%inert%ma(:, i), (1.0_wp - wp_)*this%s0%d(:, :, node) + &
-                               wp_*this%s1%d(:, :, node), c2, this%dx(:, node), &
-                               this%rest(:, 0, node), this%fint(:, node), kb, want_k)
+         acc = 0.0_wp
+         fx_acc = 0.0_wp
+         call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
+                           this%rest(:, :, node), this%s0%d(:, :, node), &
+                           this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
+         call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
+                               this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
+                               dacc, this%fint(:, node), kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged

@@ -10,20 +10,21 @@ module rodyn_inertia
    use rodyn_rod_element, only: rod_element_lumped_mass
    use rodyn_rotation, only: cross
    use rodyn_shape, only: max_nen
+   use rodyn_body_mass, only: body_added_mass_g
    implicit none
    private
    public :: inertia_t, inertia_build, kinetic_energy, linear_momentum, angular_momentum
-   public :: added_momentum
+   public :: added_momentum, body_velocity6
 
    !> Nodal lumped inertia.
    type :: inertia_t
       real(wp), allocatable :: m(:)       !< (nn) translational mass [kg]
       real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0 but
                                           !< at a body's node: its Euler tensor)
-      !> bodies with a translational added mass in their axes (theory.md (142)): node and
-      !> A11, A22, A33 [kg]
+      !> bodies with an added mass acting on their accelerations (theory.md (142), (153)):
+      !> node and the added mass at G in body axes [kg, kg m, kg m2]
       integer, allocatable :: ma_node(:)  !< (nma)
-      real(wp), allocatable :: ma(:, :)   !< (3, nma)
+      real(wp), allocatable :: ma(:, :, :) !< (6, 6, nma)
    end type inertia_t
 
 contains
@@ -34,7 +35,7 @@ contains
       type(model_t), intent(in) :: model     !< model (sections)
       type(mesh_t), intent(in) :: mesh       !< mesh
       type(inertia_t), intent(out) :: inert  !< lumped inertia
-      real(wp) :: ma(max_nen), m1(max_nen), m2(max_nen)
+      real(wp) :: ma(max_nen), m1(max_nen), m2(max_nen), ag(6, 6)
       integer :: e, l, p, a, node
       allocate (inert%m(mesh%n_nodes), inert%md(3, mesh%n_nodes))
       inert%m = 0.0_wp
@@ -66,13 +67,13 @@ contains
             inert%md(:, node) = inert%md(:, node) + 0.5_wp*(sum(j) - 2.0_wp*j)
          end associate
       end do
-      allocate (inert%ma_node(0), inert%ma(3, 0))
+      allocate (inert%ma_node(0), inert%ma(6, 6, 0))
       do e = 1, size(mesh%body_node)
          if (model%bodies(e)%kind /= body_free) cycle
-         if (all(model%bodies(e)%added_mass(1:3) == 0.0_wp)) cycle
+         ag = body_added_mass_g(model%bodies(e))
+         if (all(ag == 0.0_wp)) cycle
          inert%ma_node = [inert%ma_node, mesh%body_node(e)]
-         inert%ma = reshape([inert%ma, model%bodies(e)%added_mass(1:3)], &
-                            [3, size(inert%ma_node)])
+         inert%ma = reshape([inert%ma, ag], [6, 6, size(inert%ma_node)])
       end do
       ! attachments: their mass and the isotropic added mass Ca rho_w V at their node
       if (.not. allocated(model%attachments)) return
@@ -89,7 +90,7 @@ contains
    pure function kinetic_energy(inert, state) result(t)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< velocities
-      real(wp) :: t
+      real(wp) :: t, nu(6)
       integer :: a, i
       t = 0.0_wp
       do a = 1, size(inert%m)
@@ -100,7 +101,8 @@ contains
       end do
       do i = 1, size(inert%ma_node)          ! a body's added mass, in its axes
          a = inert%ma_node(i)
-         t = t + sum(inert%ma(:, i)*matmul(transpose(state%d(:, :, a)), state%v(:, a))**2)
+         nu = body_velocity6(state%d(:, :, a), state%v(:, a), state%dd(:, :, a))
+         t = t + dot_product(nu, matmul(inert%ma(:, :, i), nu))
       end do
       t = 0.5_wp*t
    end function kinetic_energy
@@ -118,7 +120,8 @@ contains
       end do
       do i = 1, size(inert%ma_node)
          a = inert%ma_node(i)
-         p = p + added_momentum(inert%ma(:, i), state%d(:, :, a), state%v(:, a))
+         p = p + added_momentum(inert%ma(:, :, i), state%d(:, :, a), state%v(:, a), &
+                                state%dd(:, :, a), 1)
       end do
    end function linear_momentum
 
@@ -127,7 +130,7 @@ contains
    pure function angular_momentum(inert, state) result(j)
       type(inertia_t), intent(in) :: inert !< lumped inertia
       type(state_t), intent(in) :: state   !< configuration and velocities
-      real(wp) :: j(3)
+      real(wp) :: j(3), pa(3)
       integer :: a, i
       j = 0.0_wp
       do a = 1, size(inert%m)
@@ -138,17 +141,39 @@ contains
       end do
       do i = 1, size(inert%ma_node)
          a = inert%ma_node(i)
-         j = j + cross(state%x(:, a), added_momentum(inert%ma(:, i), state%d(:, :, a), &
-                                                     state%v(:, a)))
+         pa = added_momentum(inert%ma(:, :, i), state%d(:, :, a), state%v(:, a), &
+                             state%dd(:, :, a), 1)
+         j = j + cross(state%x(:, a), pa) + added_momentum(inert%ma(:, :, i), &
+                                                           state%d(:, :, a), state%v(:, a), &
+                                                           state%dd(:, :, a), 2)
       end do
    end function angular_momentum
 
-   !> D diag(ma) D^T v: the momentum of a body's added mass in its axes.
-   pure function added_momentum(ma, d, v) result(p)
-      real(wp), intent(in) :: ma(3)      !< A11, A22, A33 [kg]
+   !> The momentum of a body's added mass A_G (at G, body axes): part 1, D (A_G nu)(1:3)
+   !> [kg m/s]; part 2, its moment about G, D (A_G nu)(4:6) [kg m2/s] (nu: body_velocity6).
+   pure function added_momentum(ma, d, v, dd, part) result(p)
+      real(wp), intent(in) :: ma(6, 6)   !< added mass at G, body axes
       real(wp), intent(in) :: d(3, 3)    !< the body's directors
-      real(wp), intent(in) :: v(3)       !< velocity [m/s]
+      real(wp), intent(in) :: v(3)       !< velocity of G [m/s]
+      real(wp), intent(in) :: dd(3, 3)   !< the directors' velocities [1/s]
+      integer, intent(in) :: part        !< 1: momentum, 2: its moment about G
       real(wp) :: p(3)
-      p = matmul(d, ma*matmul(transpose(d), v))
+      real(wp) :: q(6)
+      q = matmul(ma, body_velocity6(d, v, dd))
+      p = matmul(d, q(3*part - 2:3*part))
    end function added_momentum
+
+   !> A body's velocity in its axes, (D^T v, D^T omega), omega = 1/2 sum_i d_i x d_i_dot
+   !> its angular velocity (docs/theory.md eq. (154)).
+   pure function body_velocity6(d, v, dd) result(nu)
+      real(wp), intent(in) :: d(3, 3)    !< directors
+      real(wp), intent(in) :: v(3)       !< velocity of G [m/s]
+      real(wp), intent(in) :: dd(3, 3)   !< the directors' velocities [1/s]
+      real(wp) :: nu(6)
+      real(wp) :: om(3)
+      om = 0.5_wp*(cross(d(:, 1), dd(:, 1)) + cross(d(:, 2), dd(:, 2)) + &
+                   cross(d(:, 3), dd(:, 3)))
+      nu(1:3) = matmul(transpose(d), v)
+      nu(4:6) = matmul(transpose(d), om)
+   end function body_velocity6
 end module rodyn_inertia

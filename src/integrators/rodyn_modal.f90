@@ -39,6 +39,7 @@ module rodyn_modal
    use rodyn_arrowhead, only: arrowhead_matvec
    use rodyn_water, only: water_loads_t
    use rodyn_rotation, only: cross
+   use rodyn_body_mass, only: added_mass_global
    implicit none
    private
    public :: modal_analysis, modal_max_unknowns, modal_dense_limit
@@ -295,7 +296,7 @@ contains
    end subroutine reduced_build
 
    !> The mass (146) in the statics' band and junction layout: the lumped inertia of
-   !> every node, the water's added mass, the bodies' translational added mass, condensed
+   !> every node, the water's added mass, the bodies' added mass at G (154), condensed
    !> onto the masters as the tangent is.
    subroutine mass_build(model, prob, mass)
       type(model_t), intent(in) :: model              !< model
@@ -318,11 +319,7 @@ contains
                kb(3 + i, 3 + i) = kb(3 + i, 3 + i) + sum(inert%md(:, node))
             end do
             k = findloc(inert%ma_node, node, dim=1)
-            if (k > 0) then
-               do i = 1, 3
-                  kb(1:3, 1:3) = kb(1:3, 1:3) + inert%ma(i, k)*outer(d(:, i), d(:, i))
-               end do
-            end if
+            if (k > 0) kb = kb + added_mass_global(inert%ma(:, :, k), d)
             call add_node_block(sup, node, kb, mass%bm)
          end do
          if (prob%water%active) then

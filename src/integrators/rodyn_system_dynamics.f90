@@ -1,6 +1,6 @@
 !> What the dynamics of a mooring system adds to a line's (docs/systems.md): the velocities
 !> of FREE points and of the ends on points and bodies at the start, a body's added mass
-!> in its axes (docs/theory.md eq. (142)), and line failure: a line end released from its
+!> (docs/theory.md eqs. (142), (155)), and line failure: a line end released from its
 !> support, point or body at a given time or when its force first reaches a break load
 !> (*FAILURE; eq. (143)), after which the run goes on with the system that remains; and
 !> the bodies' wave loads set up in the sea (eq. (150)).
@@ -9,11 +9,12 @@ module rodyn_system_dynamics
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_rotation, only: cross
+   use rodyn_rotation, only: cross, rotation_cayley_inverse, relative_rotation
    use rodyn_assembly, only: supports_t, supports_held_lists
    use rodyn_junctions, only: junctions_t, junctions_release
    use rodyn_bodies, only: body_loads_t, body_waves_build
    use rodyn_waves, only: wave_field_t
+   use rodyn_body_mass, only: added_mass_global
    implicit none
    private
    public :: point_velocities, added_mass_force, failures_t, failures_build, failures_step
@@ -119,27 +120,36 @@ contains
       end do
    end subroutine point_velocities
 
-   !> A body's added mass in its axes (docs/theory.md eq. (142)): the force
-   !> D A D^T (c2 dx - g0) on its node, D its directors at the force point, and its
-   !> derivative c2 D A D^T (the turn of D left out).
-   pure subroutine added_mass_force(ma, d, c2, dx, rest0, f, kb, want_k)
-      real(wp), intent(in) :: ma(3)        !< A11, A22, A33 [kg]
-      real(wp), intent(in) :: d(3, 3)      !< directors at the force point
-      real(wp), intent(in) :: c2           !< d(acceleration)/d(increment) [1/s2]
-      real(wp), intent(in) :: dx(3)        !< position increment [m]
-      real(wp), intent(in) :: rest0(3)     !< the step's constant part (inertia_rest)
+   !> A body's added mass (docs/theory.md eqs. (142), (155)): the force and moment on G,
+   !> R_f A_G (R_f^T acc + (R_1 - R_0)^T (dx, theta)/dt^2), R = blkdiag(D, D) of its
+   !> directors at t_n, t_n+1 and the force point, acc the step's accelerations of G and
+   !> of the rotation (node_inertia with unit mass and director inertias 1/2), theta the
+   !> step's turn: the change of the body-axes velocities over the step, so that with the
+   !> midpoint its work is the change of 1/2 nu^T A_G nu to second order in the step; its
+   !> derivative R_f A_G R_f^T d(acc)/dq (the turn of D left out).
+   pure subroutine added_mass_force(ag, d0, d1, wf, dt, dx, acc, dacc, f, kb, want_k)
+      real(wp), intent(in) :: ag(6, 6)     !< added mass at G, body axes [kg, kg m, kg m2]
+      real(wp), intent(in) :: d0(3, 3)     !< directors at t_n
+      real(wp), intent(in) :: d1(3, 3)     !< directors at t_n+1
+      real(wp), intent(in) :: wf           !< weight of t_n+1 at the force point [-]
+      real(wp), intent(in) :: dt           !< step [s]
+      real(wp), intent(in) :: dx(3)        !< the step's move of G [m]
+      real(wp), intent(in) :: acc(6)       !< accelerations [m/s2, 1/s2]
+      real(wp), intent(in) :: dacc(6, 6)   !< their derivative (if want_k) [1/s2]
       real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
       real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
       logical, intent(in) :: want_k        !< form kb
-      real(wp) :: ma_g(3, 3)
-      integer :: j
-      do j = 1, 3
-         ma_g(:, j) = matmul(d, ma*d(j, :))
-      end do
-      f(1:3) = f(1:3) + matmul(ma_g, c2*dx - rest0)
-      if (.not. want_k) return
-      kb = 0.0_wp
-      kb(1:3, 1:3) = c2*ma_g
+      real(wp) :: df(3, 3), dd(3, 3), ab(6), q(6)
+      df = (1.0_wp - wf)*d0 + wf*d1
+      dd = d1 - d0
+      q(1:3) = dx
+      q(4:6) = rotation_cayley_inverse(relative_rotation(d1, d0))
+      ab(1:3) = matmul(transpose(df), acc(1:3)) + matmul(transpose(dd), q(1:3))/dt**2
+      ab(4:6) = matmul(transpose(df), acc(4:6)) + matmul(transpose(dd), q(4:6))/dt**2
+      ab = matmul(ag, ab)
+      f(1:3) = f(1:3) + matmul(df, ab(1:3))
+      f(4:6) = f(4:6) + matmul(df, ab(4:6))
+      if (want_k) kb = matmul(added_mass_global(ag, df), dacc)
    end subroutine added_mass_force
 
    !> The bodies' wave loads in the sea (rodyn_bodies' body_waves_build, eq. (150)), each

@@ -14,6 +14,7 @@ module rodyn_deck_body
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, &
                                      card_get_real, card_get_int
    use rodyn_deck_numbers, only: real_str, int_str
+   use rodyn_banded, only: dense_sym_eigen
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
                                  location, check_once
    implicit none
@@ -180,18 +181,23 @@ contains
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name, what, first
       real(wp) :: a(6)
-      integer :: ib
+      integer :: ib, form
       logical :: drag
       associate (card => deck%cards(ic))
          drag = card%keyword == 'BODY DRAG'
          what = merge('CdA1, CdA2, CdA3, Cr1, Cr2, Cr3', 'A11, A22, A33, A44, A55, A66   ', &
                       drag)
          what = trim(what)
-         call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
+         call card_check_params(card, [character(len=param_len) :: 'BODY', &
+                                merge('BODY', 'FORM', drag)], err)
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
          call body_above(card, name, model, pend, ib, err)
+         if (has_error(err)) return
+         form = 1
+         if (.not. drag) call card_get_choice(card, 'FORM', [character(len=8) :: &
+                                              'DIAGONAL', 'MATRIX'], form, err)
          if (has_error(err)) return
          if (drag .and. pend%body_drag(ib) > 0) first = location(deck, pend%body_drag(ib))
          if (.not. drag .and. pend%body_added(ib) > 0) &
@@ -199,6 +205,11 @@ contains
          if (allocated(first)) then
             call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
                             ' (at '//first//')', err)
+            return
+         end if
+         if (form == 2) then
+            call read_added_matrix(card, model%bodies(ib)%added_matrix, err)
+            if (.not. has_error(err)) pend%body_added(ib) = ic
             return
          end if
          call card_check_data(card, 1, 1, err, what)
@@ -221,6 +232,47 @@ contains
          end if
       end associate
    end subroutine read_body_added_mass_card
+
+   !> *BODY ADDED MASS, FORM=MATRIX: 6 data lines of 6 values, the added mass about R in
+   !> body axes (docs/theory.md eq. (153)); symmetric to 1e-9 of its largest entry and
+   !> positive semi-definite (its eigenvalues above -1e-9 of the largest, dense_sym_eigen).
+   subroutine read_added_matrix(card, a, err)
+      type(card_t), intent(in) :: card        !< the card
+      real(wp), intent(out) :: a(6, 6)        !< the matrix [kg, kg m, kg m2]
+      type(error_t), intent(inout) :: err     !< status
+      real(wp) :: row(6), k(6, 6), m(6, 6), lam(6), big
+      integer :: i, j
+      a = 0.0_wp
+      call card_check_data(card, 6, 6, err, 'row of 6 values')
+      if (has_error(err)) return
+      do i = 1, 6
+         call card_data_reals(card, i, 6, row, err, 'A(i,1), ..., A(i,6)')
+         if (has_error(err)) return
+         a(i, :) = row
+      end do
+      big = maxval(abs(a))
+      do i = 2, 6
+         do j = 1, i - 1
+            if (abs(a(i, j) - a(j, i)) <= 1.0e-9_wp*big) cycle
+            call card_data_error(card, i, 'the added mass is not symmetric: A('// &
+                                 int_str(i)//','//int_str(j)//') = '//real_str(a(i, j))// &
+                                 ', A('//int_str(j)//','//int_str(i)//') = '// &
+                                 real_str(a(j, i)), err)
+            return
+         end do
+      end do
+      k = 0.5_wp*(a + transpose(a))
+      m = 0.0_wp
+      do i = 1, 6
+         m(i, i) = 1.0_wp
+      end do
+      call dense_sym_eigen(k, m, lam, err)
+      if (has_error(err)) return
+      if (minval(lam) < -1.0e-9_wp*max(maxval(abs(lam)), tiny(1.0_wp))) &
+         call card_error(card, 'the added mass is not positive semi-definite (an '// &
+                         'eigenvalue '//real_str(minval(lam))//'): a motion would lower '// &
+                         'the kinetic energy', err)
+   end subroutine read_added_matrix
 
    !> *OFFSET CURVE, BODY=name, FORCE=F [, HEADING=deg] [, STEPS=n]: after the statics, a
    !> horizontal force at the body's R towards HEADING raised to F in n steps (1 to 1000,

@@ -19,6 +19,7 @@ module rodyn_recovery
    use rodyn_water, only: water_loads_t
    use rodyn_hydro, only: water_point_load, part_seabed, sea_pressure
    use rodyn_waves, only: wave_kinematics
+   use rodyn_body_mass, only: body_added_mass_g, added_mass_global
    implicit none
    private
    public :: recover_static, recover_state, touchdown_root, recover_system
@@ -78,8 +79,9 @@ contains
 
    !> Each FREE body's natural periods and modes as a rigid body on its moorings (docs/
    !> theory.md eq. (144)): K_b the stiffness of everything at R condensed onto the body
-   !> (every other FREE point and body relaxed), made symmetric; M_R = T^T diag(m I + D
-   !> A_t D^T, D (J + A_r) D^T) T the mass about R (T = [I, -skew(g); 0, I], g = G - R);
+   !> (every other FREE point and body relaxed), made symmetric; M_R = T^T (diag(m I,
+   !> D (J + A_r) D^T) + A^) T the mass about R (T = [I, -skew(g); 0, I], g = G - R; A_r
+   !> the diagonal form's rotational added mass, A^ the added mass at G, eq. (154));
    !> K_b v = omega^2 M_R v (dense_sym_eigen).
    subroutine body_periods(model, prob, sys, err)
       type(model_t), intent(in) :: model                 !< model
@@ -107,10 +109,9 @@ contains
             do i = 1, 3
                mg(i, i) = bd%mass
             end do
-            mg(1:3, 1:3) = mg(1:3, 1:3) + matmul(d, matmul(diagonal(bd%added_mass(1:3)), &
-                                                           transpose(d)))
             mg(4:6, 4:6) = matmul(d, matmul(diagonal(bd%inertia + bd%added_mass(4:6)), &
                                             transpose(d)))
+            mg = mg + added_mass_global(body_added_mass_g(bd), d)
          end associate
          t = 0.0_wp
          do i = 1, 6
