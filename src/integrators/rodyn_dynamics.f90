@@ -52,8 +52,9 @@ module rodyn_dynamics
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
    use rodyn_junctions, only: junctions_condense, junctions_place
-   use rodyn_system_dynamics, only: point_velocities, added_mass_force, failures_t, &
-                                    failures_build, failures_step, body_waves_start
+   use rodyn_system_dynamics, only: point_velocities, added_mass_force, added_mass_emc, &
+                                    failures_t, failures_build, failures_step, &
+                                    body_waves_start, motion_nodes
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
@@ -223,40 +224,6 @@ contains
          end associate
       end do
    end subroutine dynamics_setup
-
-   !> The nodes the *MOTIONs move and the motion of each: a line's node, a FIXED body's
-   !> node (its G), or each line end on a FIXED point.
-   subroutine motion_nodes(model, mesh, node, of)
-      type(model_t), intent(in) :: model             !< model
-      type(mesh_t), intent(in) :: mesh               !< mesh
-      integer, allocatable, intent(out) :: node(:)   !< nodes moved
-      integer, allocatable, intent(out) :: of(:)     !< the motion of each
-      integer :: i, l
-      allocate (node(0), of(0))
-      if (.not. allocated(model%motions)) return
-      do i = 1, size(model%motions)
-         associate (mo => model%motions(i))
-            if (mo%body > 0) then
-               node = [node, mesh%body_node(mo%body)]
-               of = [of, i]
-            else if (mo%point > 0) then
-               do l = 1, mesh%n_lines
-                  if (model%lines(l)%point_a == mo%point) then
-                     node = [node, mesh_node(mesh, l, end_a)]
-                     of = [of, i]
-                  end if
-                  if (model%lines(l)%point_b == mo%point) then
-                     node = [node, mesh_node(mesh, l, end_b)]
-                     of = [of, i]
-                  end if
-               end do
-            else
-               node = [node, mesh_node(mesh, mo%line, mo%node)]
-               of = [of, i]
-            end if
-         end associate
-      end do
-   end subroutine motion_nodes
 
    !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
    !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes (a body:
@@ -568,31 +535,35 @@ contains
                            this%s1%d(:, :, node), this%fint(:, node), fx, kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
-      ! the bodies' added mass on their accelerations, at the force point (theory.md (142),
-      ! (155)): the accelerations those of a unit mass and director inertias 1/2
+      ! the bodies' added mass on their accelerations (theory.md (142), (154)): the
+      ! accelerations those of a unit mass and director inertias 1/2; in EMC a
+      ! translational added mass with its discrete Munk moment, (151)
       do i = 1, size(this%inert%ma_node)
          node = this%inert%ma_node(i)
-         acc = 0.0_wp
-         fx_acc = 0.0_wp
-         call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
-                           this%rest(:, :, node), this%s0%d(:, :, node), &
-                           this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
-         call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
-                               this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
-                               dacc, this%fint(:, node), kb, want_k)
+         if (this%scheme == scheme_emc .and. this%inert%ma_trans(i)) then
+            call added_mass_emc(this%inert%ma(1:3, 1:3, i), this%s0%d(:, :, node), &
+                                this%s1%d(:, :, node), this%s0%v(:, node), this%dx(:, node), &
+                                this%dt, this%fint(:, node), kb, want_k)
+         else
+            acc = 0.0_wp
+            fx_acc = 0.0_wp
+            call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
+                              this%rest(:, :, node), this%s0%d(:, :, node), &
+                              this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
+            call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
+                                  this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
+                                  dacc, this%fint(:, node), kb, want_k)
+         end if
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged
       if (want_k) call add_roll_gauges(this%sup, this%gauge_node, this%gauge_k, this%s1%d, &
                                        this%bm)
       ! The residual's reference force and moment stay fixed while Newton iterates: those
-      ! of the last converged step (for the first step, of its first evaluation). Taken
-      ! from each iterate they grow with a diverging iterate's own forces, its scaled
-      ! residual then stays near 1 whatever happens, and an iterate far from the solution
-      ! could pass as converged (as on the paper's cable heaved 2 m at 2 Hz,
-      ! bench/decks/violent_2m_2hz.inp). Those
-      ! of the predictor would not do either: its inertia term 2 m v^n / dt is no force
-      ! of the motion, and the tolerance it sets is loose.
+      ! of the last converged step (the first step: of its first evaluation). An iterate's
+      ! own would grow with a diverging iterate, which could then pass as converged (the
+      ! paper's cable heaved 2 m at 2 Hz, bench/decks/violent_2m_2hz.inp); the predictor's
+      ! inertia term 2 m v^n / dt is no force of the motion, and sets a loose tolerance.
       this%f_last = fx
       this%m_last = mx
       if (this%ref_pending) then

@@ -21,10 +21,12 @@ module rodyn_inertia
       real(wp), allocatable :: m(:)       !< (nn) translational mass [kg]
       real(wp), allocatable :: md(:, :)   !< (3, nn) inertia of d1, d2, d3 [kg m2] (d3: 0 but
                                           !< at a body's node: its Euler tensor)
-      !> bodies with an added mass acting on their accelerations (theory.md (142), (153)):
+      !> bodies with an added mass acting on their accelerations (theory.md (142), (152)):
       !> node and the added mass at G in body axes [kg, kg m, kg m2]
       integer, allocatable :: ma_node(:)  !< (nma)
       real(wp), allocatable :: ma(:, :, :) !< (6, 6, nma)
+      !> (nma) translational only: no rotational or coupling terms (EMC's exact form, (151))
+      logical, allocatable :: ma_trans(:)
    end type inertia_t
 
 contains
@@ -67,13 +69,14 @@ contains
             inert%md(:, node) = inert%md(:, node) + 0.5_wp*(sum(j) - 2.0_wp*j)
          end associate
       end do
-      allocate (inert%ma_node(0), inert%ma(6, 6, 0))
+      allocate (inert%ma_node(0), inert%ma(6, 6, 0), inert%ma_trans(0))
       do e = 1, size(mesh%body_node)
          if (model%bodies(e)%kind /= body_free) cycle
          ag = body_added_mass_g(model%bodies(e))
          if (all(ag == 0.0_wp)) cycle
          inert%ma_node = [inert%ma_node, mesh%body_node(e)]
          inert%ma = reshape([inert%ma, ag], [6, 6, size(inert%ma_node)])
+         inert%ma_trans = [inert%ma_trans, all(ag(:, 4:6) == 0.0_wp)]
       end do
       ! attachments: their mass and the isotropic added mass Ca rho_w V at their node
       if (.not. allocated(model%attachments)) return
@@ -164,7 +167,7 @@ contains
    end function added_momentum
 
    !> A body's velocity in its axes, (D^T v, D^T omega), omega = 1/2 sum_i d_i x d_i_dot
-   !> its angular velocity (docs/theory.md eq. (154)).
+   !> its angular velocity (docs/theory.md eq. (153)).
    pure function body_velocity6(d, v, dd) result(nu)
       real(wp), intent(in) :: d(3, 3)    !< directors
       real(wp), intent(in) :: v(3)       !< velocity of G [m/s]

@@ -296,7 +296,7 @@ contains
    end subroutine reduced_build
 
    !> The mass (146) in the statics' band and junction layout: the lumped inertia of
-   !> every node, the water's added mass, the bodies' added mass at G (154), condensed
+   !> every node, the water's added mass, the bodies' added mass at G (153), condensed
    !> onto the masters as the tangent is.
    subroutine mass_build(model, prob, mass)
       type(model_t), intent(in) :: model              !< model

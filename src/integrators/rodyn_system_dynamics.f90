@@ -1,15 +1,16 @@
 !> What the dynamics of a mooring system adds to a line's (docs/systems.md): the velocities
 !> of FREE points and of the ends on points and bodies at the start, a body's added mass
-!> (docs/theory.md eqs. (142), (155)), and line failure: a line end released from its
-!> support, point or body at a given time or when its force first reaches a break load
-!> (*FAILURE; eq. (143)), after which the run goes on with the system that remains; and
-!> the bodies' wave loads set up in the sea (eq. (150)).
+!> (docs/theory.md eqs. (142), (154); in EMC a translational one with its discrete Munk
+!> moment, (151)), and line failure: a line end released from its support, point or body
+!> at a given time or when its force first reaches a break load (*FAILURE; eq. (143)),
+!> after which the run goes on with the system that remains; the bodies' wave loads set
+!> up in the sea (eq. (150)); and the nodes the *MOTIONs move (motion_nodes).
 module rodyn_system_dynamics
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_rotation, only: cross, rotation_cayley_inverse, relative_rotation
+   use rodyn_rotation, only: cross, skew, rotation_cayley_inverse, relative_rotation
    use rodyn_assembly, only: supports_t, supports_held_lists
    use rodyn_junctions, only: junctions_t, junctions_release
    use rodyn_bodies, only: body_loads_t, body_waves_build
@@ -17,7 +18,8 @@ module rodyn_system_dynamics
    use rodyn_body_mass, only: added_mass_global
    implicit none
    private
-   public :: point_velocities, added_mass_force, failures_t, failures_build, failures_step
+   public :: point_velocities, added_mass_force, added_mass_emc, failures_t, failures_build
+   public :: failures_step, motion_nodes
    public :: body_waves_start
 
    !> The line ends that fail (*FAILURE) and whether they have.
@@ -120,7 +122,7 @@ contains
       end do
    end subroutine point_velocities
 
-   !> A body's added mass (docs/theory.md eqs. (142), (155)): the force and moment on G,
+   !> A body's added mass (docs/theory.md eqs. (142), (154)): the force and moment on G,
    !> R_f A_G (R_f^T acc + (R_1 - R_0)^T (dx, theta)/dt^2), R = blkdiag(D, D) of its
    !> directors at t_n, t_n+1 and the force point, acc the step's accelerations of G and
    !> of the rotation (node_inertia with unit mass and director inertias 1/2), theta the
@@ -152,6 +154,45 @@ contains
       if (want_k) kb = matmul(added_mass_global(ag, df), dacc)
    end subroutine added_mass_force
 
+   !> A body's translational added mass in its axes in the EMC step (docs/theory.md eq.
+   !> (151)): with S = D A D^T at each end of the step, v1 = 2 dx/dt - v0 and Q = D1 D0^T,
+   !> the force (S1 v1 - S0 v0)/dt and the moment -(1/2) [(X v1) x v0 + (Y^T v0) x v1],
+   !> X = (I + Q^T) S1/2, Y = S0 (I + Q^T)/2 (the discrete Munk moment). Over the step
+   !> their work on (dx, theta), theta the Cayley parameter of Q, is the change of
+   !> 1/2 v^T S v exactly, however the body turns. Tangent: the force's with respect to dx
+   !> and the rotation, the moment's with respect to dx (with respect to the rotation, of
+   !> the order of A v^2, left out).
+   pure subroutine added_mass_emc(at, d0, d1, v0, dx, dt, f, kb, want_k)
+      real(wp), intent(in) :: at(3, 3)     !< added mass of G's translation, body axes [kg]
+      real(wp), intent(in) :: d0(3, 3)     !< directors at t_n
+      real(wp), intent(in) :: d1(3, 3)     !< directors at t_n+1
+      real(wp), intent(in) :: v0(3)        !< velocity at t_n [m/s]
+      real(wp), intent(in) :: dx(3)        !< position increment [m]
+      real(wp), intent(in) :: dt           !< time step [s]
+      real(wp), intent(inout) :: f(6)      !< nodal force [N, N m]
+      real(wp), intent(out) :: kb(6, 6)    !< derivative (if want_k)
+      logical, intent(in) :: want_k        !< form kb
+      real(wp) :: s0(3, 3), s1(3, 3), iq(3, 3), v1(3), p1(3)
+      integer :: j
+      s0 = matmul(d0, matmul(at, transpose(d0)))
+      s1 = matmul(d1, matmul(at, transpose(d1)))
+      v1 = 2.0_wp*dx/dt - v0
+      p1 = matmul(s1, v1)
+      f(1:3) = f(1:3) + (p1 - matmul(s0, v0))/dt
+      iq = transpose(relative_rotation(d1, d0))
+      do j = 1, 3
+         iq(j, j) = iq(j, j) + 1.0_wp
+      end do
+      f(4:6) = f(4:6) - 0.25_wp*(cross(matmul(iq, p1), v0) + &
+                                 cross(matmul(transpose(iq), matmul(s0, v0)), v1))
+      if (.not. want_k) return
+      kb = 0.0_wp
+      kb(1:3, 1:3) = 2.0_wp/dt**2*s1
+      kb(1:3, 4:6) = (matmul(s1, skew(v1)) - skew(p1))/dt
+      kb(4:6, 1:3) = (matmul(skew(v0), matmul(iq, s1)) - &
+                      skew(matmul(transpose(iq), matmul(s0, v0))))/(2.0_wp*dt)
+   end subroutine added_mass_emc
+
    !> The bodies' wave loads in the sea (rodyn_bodies' body_waves_build, eq. (150)), each
    !> at its reference point's position in the start state.
    pure subroutine body_waves_start(model, field, state, bl)
@@ -167,4 +208,38 @@ contains
       end do
       call body_waves_build(model, field, xr, bl)
    end subroutine body_waves_start
+
+   !> The nodes the *MOTIONs move and the motion of each: a line's node, a FIXED body's
+   !> node (its G), or each line end on a FIXED point.
+   subroutine motion_nodes(model, mesh, node, of)
+      type(model_t), intent(in) :: model             !< model
+      type(mesh_t), intent(in) :: mesh               !< mesh
+      integer, allocatable, intent(out) :: node(:)   !< nodes moved
+      integer, allocatable, intent(out) :: of(:)     !< the motion of each
+      integer :: i, l
+      allocate (node(0), of(0))
+      if (.not. allocated(model%motions)) return
+      do i = 1, size(model%motions)
+         associate (mo => model%motions(i))
+            if (mo%body > 0) then
+               node = [node, mesh%body_node(mo%body)]
+               of = [of, i]
+            else if (mo%point > 0) then
+               do l = 1, mesh%n_lines
+                  if (model%lines(l)%point_a == mo%point) then
+                     node = [node, mesh_node(mesh, l, end_a)]
+                     of = [of, i]
+                  end if
+                  if (model%lines(l)%point_b == mo%point) then
+                     node = [node, mesh_node(mesh, l, end_b)]
+                     of = [of, i]
+                  end if
+               end do
+            else
+               node = [node, mesh_node(mesh, mo%line, mo%node)]
+               of = [of, i]
+            end if
+         end associate
+      end do
+   end subroutine motion_nodes
 end module rodyn_system_dynamics

@@ -234,7 +234,7 @@ contains
    end subroutine read_body_added_mass_card
 
    !> *BODY ADDED MASS, FORM=MATRIX: 6 data lines of 6 values, the added mass about R in
-   !> body axes (docs/theory.md eq. (153)); symmetric to 1e-9 of its largest entry and
+   !> body axes (docs/theory.md eq. (152)); symmetric to 1e-9 of its largest entry and
    !> positive semi-definite (its eigenvalues above -1e-9 of the largest, dense_sym_eigen).
    subroutine read_added_matrix(card, a, err)
       type(card_t), intent(in) :: card        !< the card

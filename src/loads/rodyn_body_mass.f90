@@ -1,5 +1,5 @@
 !> A body's added mass as one 6 x 6 matrix at its centre of gravity G in its axes (docs/
-!> theory.md eqs. (142), (153)-(154)): the matrix form of *BODY ADDED MASS moved from R to
+!> theory.md eqs. (142), (152)-(153)): the matrix form of *BODY ADDED MASS moved from R to
 !> G, or the translational part of the diagonal form (whose rotational part adds to the
 !> body's principal moments instead), and the same turned to the global axes.
 module rodyn_body_mass
@@ -13,7 +13,7 @@ module rodyn_body_mass
 contains
 
    !> The added mass at G in body axes, A_G = T_R^T A_R T_R with T_R = [I, -skew(a_R);
-   !> 0, I], a_R = R - G = -cog (the velocity of R is v_G + omega x a_R), eq. (153); for
+   !> 0, I], a_R = R - G = -cog (the velocity of R is v_G + omega x a_R), eq. (152); for
    !> the diagonal form diag(A11, A22, A33, 0, 0, 0) (eq. (142)).
    pure function body_added_mass_g(bd) result(a)
       type(body_t), intent(in) :: bd   !< the body
@@ -36,7 +36,7 @@ contains
    end function body_added_mass_g
 
    !> The added mass at G in the global axes, blkdiag(D, D) A_G blkdiag(D, D)^T, with the
-   !> body's directors D (eq. (154)).
+   !> body's directors D (eq. (153)).
    pure function added_mass_global(ag, d) result(a)
       real(wp), intent(in) :: ag(6, 6)  !< at G, body axes
       real(wp), intent(in) :: d(3, 3)   !< directors (columns)

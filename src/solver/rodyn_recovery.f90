@@ -81,7 +81,7 @@ contains
    !> theory.md eq. (144)): K_b the stiffness of everything at R condensed onto the body
    !> (every other FREE point and body relaxed), made symmetric; M_R = T^T (diag(m I,
    !> D (J + A_r) D^T) + A^) T the mass about R (T = [I, -skew(g); 0, I], g = G - R; A_r
-   !> the diagonal form's rotational added mass, A^ the added mass at G, eq. (154));
+   !> the diagonal form's rotational added mass, A^ the added mass at G, eq. (153));
    !> K_b v = omega^2 M_R v (dense_sym_eigen).
    subroutine body_periods(model, prob, sys, err)
       type(model_t), intent(in) :: model                 !< model

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A body's 6 x 6 added mass about R (*BODY ADDED MASS, FORM=MATRIX; docs/theory.md eqs.
-(153)-(155)) on decks/body_added_matrix.inp: 1000 kg, inertias 120, 150, 200 kg m2 about
+(152)-(154)) on decks/body_added_matrix.inp: 1000 kg, inertias 120, 150, 200 kg m2 about
 G = R + (0.3, -0.2, -0.4) m, on coupled springs K_R = C about R (no gravity, no line on
 the body), a coupled added mass A_R about R. One run:
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The rigid-body natural periods of the OC3-Hywind spar on its three chains (*MODAL,
-docs/theory.md eqs. (145)-(148), (153)-(154)) against the published ones, on
+docs/theory.md eqs. (145)-(148), (152)-(153)) against the published ones, on
 decks/oc3_periods.inp (its sources in its comments: the spar's mass and inertia with the
 turbine's, its WAMIT added mass about the waterline as a 6 x 6 matrix, *BODY ADDED MASS,
 FORM=MATRIX, and the report's additional yaw spring).
