@@ -8,7 +8,8 @@
 # riser_lazy_wave_heave.inp), the chain - wire - chain leg of the README
 # (input/chain_wire_chain.inp), and two mooring systems: a tethered subsea buoy
 # (input/tethered_buoy.inp), the OC3-Hywind spar on its three chains
-# (input/oc3_spar.inp) and a semi-submersible losing a chain (input/semisub_failure.inp),
+# (input/oc3_spar.inp, and in a regular wave input/oc3_spar_waves.inp) and a
+# semi-submersible losing a chain (input/semisub_failure.inp),
 # each into ./<deck name>/ with every plot of
 # rodyn-plot-all (the post-processing package of postproc/, installed by tools/setup.sh).
 set -euo pipefail
@@ -20,7 +21,7 @@ else
          input/paper_case3.inp input/paper_case4.inp input/mooring_catenary.inp
          input/mooring_surge.inp input/mooring_current.inp input/riser_lazy_wave.inp
          input/riser_lazy_wave_heave.inp input/chain_wire_chain.inp input/tethered_buoy.inp
-         input/oc3_spar.inp input/semisub_failure.inp)
+         input/oc3_spar.inp input/oc3_spar_waves.inp input/semisub_failure.inp)
 fi
 bash tools/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
