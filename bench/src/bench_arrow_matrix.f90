@@ -1,0 +1,69 @@
+!> The test matrix of the solver benchmarks (bench/arrowhead_scaling.py,
+!> bench/sparse_direct.py): m lines of n unknowns each, concatenated in one band of
+!> half-bandwidth hb (no line coupled to another), their first and last 6 unknowns
+!> coupled to a point's 3 junction unknowns (one point per three lines) and to a shared
+!> body's 6, the entries from a formula and the band diagonally dominant (factorised
+!> without pivoting); and a right-hand side from a known solution.
+module bench_arrow_matrix
+   use rodyn_kinds, only: wp
+   use rodyn_banded, only: banded_t, banded_init, banded_set_pivoting
+   use rodyn_arrowhead, only: arrowhead_t, arrowhead_init, arrowhead_block_init, &
+                              arrowhead_matvec
+   implicit none
+   private
+   public :: arrow_problem
+
+contains
+
+   !> The matrix (band and arrowhead) and the right-hand side (bx, by) of the solution xt.
+   subroutine arrow_problem(m, n, hb, ah, band, bx, by, xt)
+      integer, intent(in) :: m                 !< lines
+      integer, intent(in) :: n                 !< unknowns a line
+      integer, intent(in) :: hb                !< half-bandwidth
+      type(arrowhead_t), intent(out) :: ah     !< couplings
+      type(banded_t), intent(out) :: band      !< band of all lines
+      real(wp), allocatable, intent(out) :: bx(:), by(:), xt(:) !< right-hand side, solution
+      integer :: np, nj, nb, i, o, c, r, k
+      np = max(1, m/3)
+      nj = 3*np + 6
+      nb = m*n
+      call banded_init(band, nb, hb)
+      call banded_set_pivoting(band, .false.)
+      call arrowhead_init(ah, m, nj)
+      do i = 1, m
+         o = (i - 1)*n
+         call arrowhead_block_init(ah, i, o + 1, o + n, [3*mod(i - 1, np) + [1, 2, 3], &
+                                   3*np + [1, 2, 3, 4, 5, 6]])
+         do c = 1, n
+            do r = max(1, c - hb), min(n, c + hb)
+               band%ab(band%kv + r - c, o + c) = val(r, c, i)
+            end do
+            band%ab(band%kv, o + c) = 4.0_wp*real(hb, wp)
+         end do
+         associate (bl => ah%blocks(i))
+            do k = 1, size(bl%junctions)
+               do r = 1, n
+                  if (r > 6 .and. r <= n - 6) cycle
+                  bl%e(r, k) = val(r, k, i + 7)
+                  bl%f(k, r) = val(k, r, i + 11)
+               end do
+            end do
+         end associate
+      end do
+      do c = 1, nj
+         ah%c(c, c) = 8.0_wp*real(m, wp)
+      end do
+      allocate (bx(nb), by(nj), xt(nb + nj))
+      do r = 1, nb + nj
+         xt(r) = val(r, 5, 3)
+      end do
+      call arrowhead_matvec(ah, band, xt(:nb), xt(nb + 1:), bx, by)
+   end subroutine arrow_problem
+
+   !> The entries' formula.
+   pure real(wp) function val(i, j, k)
+      integer, intent(in) :: i, j, k
+      val = sin(1.7_wp*real(i, wp) + 3.1_wp*real(j, wp) + 0.37_wp*real(k, wp)) &
+            *cos(0.41_wp*real(i*j + k, wp))
+   end function val
+end module bench_arrow_matrix
