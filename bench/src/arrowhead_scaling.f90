@@ -11,7 +11,7 @@ program arrowhead_scaling
    use rodyn_banded, only: banded_t
    use rodyn_arrowhead, only: arrowhead_t, arrowhead_factor, arrowhead_solve, &
                               arrowhead_matvec
-   use bench_arrow_matrix, only: arrow_problem
+   use bench_arrow_matrix, only: arrow_problem, bench_args
    implicit none
    type(arrowhead_t) :: ah
    type(banded_t) :: bm, fresh
@@ -19,15 +19,7 @@ program arrowhead_scaling
    integer :: m, n, hb, reps, rep, nb, nj
    integer(kind=8) :: t0, t1, t2, rate
    real(wp), allocatable :: bx(:), by(:), x(:), y(:), xt(:), rx(:), ry(:), tf(:), ts(:)
-   character(len=32) :: arg
-   call get_command_argument(1, arg)
-   read (arg, *) m
-   call get_command_argument(2, arg)
-   read (arg, *) n
-   call get_command_argument(3, arg)
-   read (arg, *) hb
-   call get_command_argument(4, arg)
-   read (arg, *) reps
+   call bench_args(m, n, hb, reps)
    call arrow_problem(m, n, hb, ah, fresh, bx, by, xt)
    nb = size(bx)
    nj = size(by)

@@ -11,7 +11,7 @@ module bench_arrow_matrix
                               arrowhead_matvec
    implicit none
    private
-   public :: arrow_problem
+   public :: arrow_problem, bench_args
 
 contains
 
@@ -59,6 +59,20 @@ contains
       end do
       call arrowhead_matvec(ah, band, xt(:nb), xt(nb + 1:), bx, by)
    end subroutine arrow_problem
+
+   !> The drivers' arguments M N HB REPS.
+   subroutine bench_args(m, n, hb, reps)
+      integer, intent(out) :: m, n, hb, reps !< lines, unknowns a line, half-bandwidth, runs
+      character(len=32) :: arg
+      call get_command_argument(1, arg)
+      read (arg, *) m
+      call get_command_argument(2, arg)
+      read (arg, *) n
+      call get_command_argument(3, arg)
+      read (arg, *) hb
+      call get_command_argument(4, arg)
+      read (arg, *) reps
+   end subroutine bench_args
 
    !> The entries' formula.
    pure real(wp) function val(i, j, k)

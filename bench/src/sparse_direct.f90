@@ -13,7 +13,7 @@ program sparse_direct
    use rodyn_banded, only: banded_t
    use rodyn_arrowhead, only: arrowhead_t, arrowhead_factor, arrowhead_solve, &
                               arrowhead_matvec
-   use bench_arrow_matrix, only: arrow_problem
+   use bench_arrow_matrix, only: arrow_problem, bench_args
    implicit none
    interface
       integer(c_int) function bench_umfpack(n, ap, ai, ax, b, x, reps, times) &
@@ -43,15 +43,7 @@ program sparse_direct
    integer(kind=8) :: t0, t1, t2, rate
    real(wp), allocatable :: bx(:), by(:), xt(:), xa(:), ya(:), rx(:), ry(:)
    real(wp) :: tf, ts
-   character(len=32) :: arg
-   call get_command_argument(1, arg)
-   read (arg, *) m
-   call get_command_argument(2, arg)
-   read (arg, *) n
-   call get_command_argument(3, arg)
-   read (arg, *) hb
-   call get_command_argument(4, arg)
-   read (arg, *) reps
+   call bench_args(m, n, hb, reps)
    call arrow_problem(m, n, hb, ah, band, bx, by, xt)
    nb = size(bx)
    nj = size(by)
