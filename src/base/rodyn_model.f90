@@ -147,6 +147,9 @@ module rodyn_model
       real(wp) :: volume = 0.0_wp       !< displaced volume [m3]
       real(wp) :: cda_area = 0.0_wp     !< drag coefficient times area, Cd A [m2]
       real(wp) :: ca = 0.0_wp           !< added-mass coefficient on rho_w volume [-]
+      !> a BODY point's rod ends clamped to the body (CONNECTION=CLAMPED): they turn with
+      !> it; pinned otherwise
+      logical :: clamped = .false.
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
    end type point_t
 

@@ -51,7 +51,7 @@ module rodyn_dynamics
    use rodyn_rod_problem, only: rod_problem_t, rod_problem_init
    use rodyn_banded, only: banded_set_pivoting
    use rodyn_anderson, only: anderson_init
-   use rodyn_junctions, only: junctions_condense, junctions_place
+   use rodyn_junctions, only: junctions_condense, junctions_place, junctions_clamp
    use rodyn_system_dynamics, only: point_velocities, added_mass_force, added_mass_emc, &
                                     failures_t, failures_build, failures_step, &
                                     body_waves_start, motion_nodes
@@ -151,6 +151,7 @@ contains
       integer :: nn, i
       call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
+      call junctions_clamp(prob%jn, state%d)
       call failures_build(model, mesh, prob%fl)
       call anderson_init(prob%aa, prob%sup%n_dof, anderson_depth)
       ! the step tangent is factorised without pivoting (cheaper; stable when mass-led)

@@ -282,7 +282,7 @@ contains
       do s = 1, jn%ns
          if (.not. jn%s_on(s)) cycle
          i = sup%first(jn%s_node(s))
-         fixed(i:i + 2) = .true.
+         fixed(i:i + jn%s_ne(s) - 1) = .true.
       end do
       if (jn%nj > 0) fixed(jn%jdof) = .true.
       red%band = pack([(i, i=1, sup%n_dof)], .not. fixed)
@@ -471,7 +471,8 @@ contains
             m = jn%s_m(s)
             j0 = jn%m_j0(m)
             nmj = jn%m_n(m)
-            u(1:3, jn%s_node(s)) = matmul(jn%tk(:, 1:nmj, s), y(j0 + 1:j0 + nmj))
+            u(1:jn%s_ne(s), jn%s_node(s)) = matmul(jn%tk(1:jn%s_ne(s), 1:nmj, s), &
+                                                   y(j0 + 1:j0 + nmj))
          end do
       end associate
    end subroutine node_motion

@@ -92,7 +92,7 @@ contains
    pure subroutine point_velocities(mesh, state)
       type(mesh_t), intent(in) :: mesh       !< mesh with its point and body nodes
       type(state_t), intent(inout) :: state  !< velocities
-      integer :: q, l, k, n, ne, m
+      integer :: q, l, k, n, ne, m, i
       real(wp) :: v(3), om(3), a(3)
       do q = 1, size(mesh%point_node)
          if (mesh%point_node(q) == 0) cycle
@@ -118,6 +118,10 @@ contains
                          cross(state%d(:, 3, m), state%dd(:, 3, m)))
             a = matmul(state%d(:, :, m), mesh%end_offset(:, k, l))
             state%v(:, n) = state%v(:, m) + cross(om, a)
+            if (.not. mesh%end_clamped(k, l)) cycle
+            do i = 1, 3                  ! a clamped end turns with its body
+               state%dd(:, i, n) = cross(om, state%d(:, i, n))
+            end do
          end do
       end do
    end subroutine point_velocities

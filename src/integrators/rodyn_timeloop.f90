@@ -218,6 +218,9 @@ contains
          if (.not. prob%jn%held(prob%jn%m_j0(prob%jn%s_m(i)) + 1)) cycle
          node = prob%jn%s_node(i)
          w_ext = w_ext + dot_product(prob%r(1:3, node), prob%dx(:, node))
+         if (prob%jn%s_ne(i) == 6) w_ext = w_ext + dot_product(prob%r(4:6, node), &
+            rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
+                                                      prob%s0%d(:, :, node))))
       end do
       do node = 1, prob%mesh%n_nodes
          dx = prob%dx(:, node)

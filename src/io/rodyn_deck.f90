@@ -56,7 +56,7 @@ module rodyn_deck
                               resolve_point_bodies, resolve_load_bodies, check_bodies
    use rodyn_deck_system, only: read_failure_card, check_failures, &
                                 read_point_card, resolve_line_points, resolve_load_points, &
-                                check_point_ends, system_complete
+                                check_clamped_ends, check_point_ends, system_complete
    implicit none
    private
    public :: deck_read
@@ -650,6 +650,8 @@ contains
          call check_line_element(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
       end do
+      call check_clamped_ends(deck, pend, model, err)
+      if (has_error(err)) return
 
       ib = 0
       iload = 0

@@ -10,7 +10,7 @@ module rodyn_deck_system
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, point_t, constraint_t, attachment_t, failure_t, point_fixed, &
                           point_free, point_body, point_kind_names, bc_pinned, bc_free, &
-                          end_a, end_b, body_fixed
+                          end_a, end_b, body_fixed, element_rod, element_cable
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_check_data, param_len
@@ -22,6 +22,7 @@ module rodyn_deck_system
    implicit none
    private
    public :: read_point_card, resolve_line_points, resolve_load_points, check_point_ends
+   public :: check_clamped_ends
    public :: find_point
    public :: system_complete, point_held, point_junction, read_failure_card, check_failures
 
@@ -46,7 +47,7 @@ contains
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
-                                'VOLUME', 'CDA', 'CA', 'BODY'], err)
+                                'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
          if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
@@ -78,6 +79,17 @@ contains
          if (has_error(err)) return
          if (pt%kind /= point_body .and. len(body) > 0) then
             call param_fail(card, 'BODY', 'BODY= is for TYPE=BODY', err)
+            return
+         end if
+         k = 1
+         call card_get_choice(card, 'CONNECTION', [character(len=8) :: 'PINNED', 'CLAMPED'], &
+                              k, err)
+         if (has_error(err)) return
+         pt%clamped = k == 2
+         if (pt%clamped .and. pt%kind /= point_body) then
+            call param_fail(card, 'CONNECTION', 'CONNECTION=CLAMPED is for TYPE=BODY: a '// &
+                            trim(point_kind_names(pt%kind))//' point has no rotation to'// &
+                            ' clamp an end to', err)
             return
          end if
          call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
@@ -121,6 +133,36 @@ contains
          end associate
       end do
    end subroutine resolve_line_points
+
+   !> A line end on a CONNECTION=CLAMPED point is a rod's (a cable's end has no rotation
+   !> to clamp). After the lines' segments are resolved.
+   subroutine check_clamped_ends(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< the lines' cards
+      type(model_t), intent(in) :: model      !< model
+      type(error_t), intent(inout) :: err     !< status
+      integer :: il, k, ip, is
+      do il = 1, size(model%lines)
+         associate (line => model%lines(il))
+            do k = 1, 2
+               ip = merge(line%point_a, line%point_b, k == 1)
+               if (ip == 0) cycle
+               if (.not. model%points(ip)%clamped) cycle
+               is = line%section
+               if (allocated(line%seg_section)) is = line%seg_section(merge(1, &
+                                                      size(line%seg_section), k == 1))
+               if (line%element == element_rod) cycle
+               if (line%element == 0 .and. model%sections(is)%element /= element_cable) cycle
+               call card_error(deck%cards(pend%line_section(il)%card), 'line '// &
+                               trim(line%name)//"'s end "//merge('A', 'B', k == 1)// &
+                               ' is on point '//trim(model%points(ip)%name)//', CONNECTION'// &
+                               '=CLAMPED, but is a cable element''s: it has no rotation to'// &
+                               ' clamp (make the line, or its end segment, a rod)', err)
+               return
+            end do
+         end associate
+      end do
+   end subroutine check_clamped_ends
 
    !> The point of a *LOAD given with POINT= (instead of LINE=): it exists and is FREE
    !> (a FIXED point's load would act on nothing).

@@ -71,6 +71,8 @@ module rodyn_mesh
       integer, allocatable :: end_point_node(:, :)
       !> (3, 2, nl) where the end is on its body: body axes, from G [m] (0 on a point)
       real(wp), allocatable :: end_offset(:, :, :)
+      !> (2, nl) the end is clamped to its body (a rod's end: it turns with the body)
+      logical, allocatable :: end_clamped(:, :)
    end type mesh_t
 
    !> The chord of a line and its weight, as its start shape needs them (line_chord).
@@ -232,7 +234,7 @@ contains
       if (allocated(model%points)) np = size(model%points)
       if (allocated(model%bodies)) nb = size(model%bodies)
       allocate (mesh%point_node(np), mesh%body_node(nb), mesh%end_point_node(2, mesh%n_lines), &
-                mesh%end_offset(3, 2, mesh%n_lines))
+                mesh%end_offset(3, 2, mesh%n_lines), mesh%end_clamped(2, mesh%n_lines))
       mesh%point_node = 0
       mesh%body_node = 0
       do k = 1, np
@@ -246,6 +248,7 @@ contains
       end do
       mesh%end_point_node = 0
       mesh%end_offset = 0.0_wp
+      mesh%end_clamped = .false.
       do l = 1, mesh%n_lines
          do k = 1, 2
             ip = merge(model%lines(l)%point_a, model%lines(l)%point_b, k == 1)
@@ -256,6 +259,7 @@ contains
                mesh%end_point_node(k, l) = mesh%body_node(model%points(ip)%body)
                mesh%end_offset(:, k, l) = model%points(ip)%position - &
                                           model%bodies(model%points(ip)%body)%cog
+               mesh%end_clamped(k, l) = model%points(ip)%clamped
             end if
          end do
       end do

@@ -5,10 +5,14 @@
 !> A line end e on a FREE point p is pinned to it, x_e = x_p; on a FREE body b at the
 !> body-axes offset r from its node (its centre of gravity G, directors d_i), x_e = x_b +
 !> a, a = sum_i r_i d_i. A virtual move of the end is T q_m of its master's (point or
-!> body) unknowns: T = I for a point, T = [I, -skew(a)] for a body (135).
+!> body) unknowns: T = I for a point, T = [I, -skew(a)] for a body (135). A rod's end
+!> clamped to a body (CONNECTION=CLAMPED) also turns with it, its directors d_e = D R_e
+!> (R_e their body-axes components at the start): its rotation unknowns are eliminated
+!> too, T = [I, -skew(a); 0, I], and its moment goes to the body's rotation rows.
 !> The global band (rodyn_banded) is assembled as for separate lines, every node with
 !> its own unknowns, a master's node (no element) with its own loads and inertia only.
-!> Then the ends' translations are eliminated, with T_f = T at the scheme's force point
+!> Then the ends' translations (and a clamped end's rotations) are eliminated, with T_f =
+!> T at the scheme's force point
 !> (a_f of its directors; a at t_n+1 for the kinematics):
 !>
 !>   r_m <- r_m + sum_e T_f^T r_e,   r_e <- 0                                     (131)
@@ -35,7 +39,8 @@ module rodyn_junctions
    implicit none
    private
    public :: junctions_t, junctions_build, junctions_condense, junctions_factor, &
-             junctions_solve, junctions_stiffness, junctions_place, junctions_release
+             junctions_solve, junctions_stiffness, junctions_place, junctions_release, &
+             junctions_clamp
 
    !> The junction unknowns, the ends on them and the arrowhead matrix.
    type :: junctions_t
@@ -56,8 +61,10 @@ module rodyn_junctions
       integer, allocatable :: s_col(:)       !< (ns) its master's first column - 1 in E_line
       real(wp), allocatable :: s_r(:, :)     !< (3, ns) its offset, body axes from G [m]
       logical, allocatable :: s_on(:)        !< (ns) still on its master (not released)
-      real(wp), allocatable :: tk(:, :, :)   !< (3, 6, ns) T of the kinematics (scratch)
-      real(wp), allocatable :: tf(:, :, :)   !< (3, 6, ns) T at the force point (scratch)
+      integer, allocatable :: s_ne(:)        !< (ns) its unknowns eliminated: 3, 6 clamped
+      real(wp), allocatable :: s_rd(:, :, :) !< (3, 3, ns) a clamped end's R_e (junctions_clamp)
+      real(wp), allocatable :: tk(:, :, :)   !< (6, 6, ns) T of the kinematics (scratch)
+      real(wp), allocatable :: tf(:, :, :)   !< (6, 6, ns) T at the force point (scratch)
       type(arrowhead_t) :: ah                !< E, F, C and the factors
       real(wp), allocatable :: y(:)          !< (nj) scratch
    end type junctions_t
@@ -93,8 +100,11 @@ contains
       end do
       jn%ns = count(mesh%end_point_node > 0)
       allocate (jn%s_node(jn%ns), jn%s_m(jn%ns), jn%s_line(jn%ns), jn%s_col(jn%ns), &
-                jn%s_r(3, jn%ns), jn%tk(3, 6, jn%ns), jn%tf(3, 6, jn%ns), jn%s_on(jn%ns))
+                jn%s_r(3, jn%ns), jn%tk(6, 6, jn%ns), jn%tf(6, 6, jn%ns), jn%s_on(jn%ns), &
+                jn%s_ne(jn%ns), jn%s_rd(3, 3, jn%ns))
       jn%s_on = .true.
+      jn%s_ne = 3
+      jn%s_rd = 0.0_wp
       if (jn%nj == 0) return
       call arrowhead_init(jn%ah, mesh%n_lines, jn%nj)
       k = 0
@@ -110,6 +120,8 @@ contains
             jn%s_line(k) = l
             jn%s_col(k) = nc
             jn%s_r(:, k) = mesh%end_offset(:, c, l)
+            if (mesh%end_clamped(c, l) .and. jn%m_n(m) == 6 .and. &
+                sup%ndof(jn%s_node(k)) == 6) jn%s_ne(k) = 6
             cols(nc + 1:nc + jn%m_n(m)) = [(jn%m_j0(m) + n, n=1, jn%m_n(m))]
             nc = nc + jn%m_n(m)
          end do
@@ -130,7 +142,7 @@ contains
       integer :: s, c, n
       do s = 1, jn%ns
          jn%tk(:, :, s) = 0.0_wp
-         do c = 1, 3
+         do c = 1, 6
             jn%tk(c, c, s) = 1.0_wp
          end do
          jn%tf(:, :, s) = jn%tk(:, :, s)
@@ -138,8 +150,8 @@ contains
          n = jn%m_node(jn%s_m(s))
          a1 = matmul(d1(:, :, n), jn%s_r(:, s))
          af = (1.0_wp - w)*matmul(d0(:, :, n), jn%s_r(:, s)) + w*a1
-         jn%tk(:, 4:6, s) = -skew(a1)
-         jn%tf(:, 4:6, s) = -skew(af)
+         jn%tk(1:3, 4:6, s) = -skew(a1)
+         jn%tf(1:3, 4:6, s) = -skew(af)
       end do
    end subroutine transfer_matrices
 
@@ -158,8 +170,8 @@ contains
       real(wp), intent(in) :: d0(:, :, :)    !< (3, 3, nn) directors at t_n
       real(wp), intent(in) :: d1(:, :, :)    !< (3, 3, nn) directors now
       real(wp), intent(in) :: w              !< weight of d1 at the force point
-      real(wp) :: re(3), a1(3)
-      integer :: s, c, k, j0, nm
+      real(wp) :: re(6), a1(3)
+      integer :: s, c, k, j0, nm, ne
       logical :: hold
       if (jn%nj == 0) return
       hold = .not. jn%free_all
@@ -177,13 +189,15 @@ contains
          k = sup%first(jn%s_node(s)) - 1
          j0 = jn%m_j0(jn%s_m(s))
          nm = jn%m_n(jn%s_m(s))
-         re = rhs(k + 1:k + 3)
+         ne = jn%s_ne(s)
+         re(1:ne) = rhs(k + 1:k + ne)
          do c = 1, nm
-            rhs(jn%jdof(j0 + c)) = rhs(jn%jdof(j0 + c)) + dot_product(jn%tf(:, c, s), re)
+            rhs(jn%jdof(j0 + c)) = rhs(jn%jdof(j0 + c)) + &
+                                   dot_product(jn%tf(1:ne, c, s), re(1:ne))
          end do
-         rhs(k + 1:k + 3) = 0.0_wp
+         rhs(k + 1:k + ne) = 0.0_wp
          if (.not. want_k) cycle
-         do c = 1, 3
+         do c = 1, ne
             call banded_fix_dof(bm, k + c)
          end do
          if (nm == 3) cycle
@@ -193,7 +207,7 @@ contains
             jn%ah%c(j0 + 4:j0 + 6, j0 + 3 + c) = jn%ah%c(j0 + 4:j0 + 6, j0 + 3 + c) &
                                                  + w*a1*re(c)
             jn%ah%c(j0 + 3 + c, j0 + 3 + c) = jn%ah%c(j0 + 3 + c, j0 + 3 + c) &
-                                              - w*dot_product(a1, re)
+                                              - w*dot_product(a1, re(1:3))
          end do
       end do
       if (hold) then
@@ -260,7 +274,7 @@ contains
       associate (blk => jn%ah%blocks(jn%s_line(s)))
          lo = blk%lo
          hi = blk%hi
-         do c = 1, 3
+         do c = 1, jn%s_ne(s)
             col = sup%first(jn%s_node(s)) + c - 1
             do row = max(lo, col - bm%kl), min(hi, col + bm%kl)
                kv = band_entry(bm, row, col)      ! K(row, end)
@@ -296,11 +310,11 @@ contains
       integer, intent(in) :: s            !< an end
       integer, intent(in) :: row          !< band dof
       integer, intent(out) :: t           !< the end, or 0
-      integer, intent(out) :: c           !< its translation 1..3
+      integer, intent(out) :: c           !< its unknown 1..3 (a clamped end's 1..6)
       do t = max(1, s - 1), min(jn%ns, s + 1)     ! a line's two ends are neighbours
          if (jn%s_line(t) /= jn%s_line(s) .or. .not. jn%s_on(t)) cycle
          c = row - sup%first(jn%s_node(t)) + 1
-         if (c >= 1 .and. c <= 3) return
+         if (c >= 1 .and. c <= jn%s_ne(t)) return
       end do
       t = 0
       c = 0
@@ -341,26 +355,40 @@ contains
          k = sup%first(jn%s_node(s)) - 1
          j0 = jn%m_j0(jn%s_m(s))
          nm = jn%m_n(jn%s_m(s))
-         do c = 1, 3
+         do c = 1, jn%s_ne(s)
             du(k + c) = dot_product(jn%tk(c, 1:nm, s), du(jn%jdof(j0 + 1:j0 + nm)))
          end do
       end do
    end subroutine junctions_solve
 
    !> Place every end on its master exactly: x_e = x_m + sum_i r_i d_i (a body's turn
-   !> is not linear in its correction).
+   !> is not linear in its correction), and a clamped end's directors d_e = D R_e.
    pure subroutine junctions_place(jn, x, d)
       type(junctions_t), intent(in) :: jn   !< junctions
       real(wp), intent(inout) :: x(:, :)    !< (3, nn) positions: the ends' set
-      real(wp), intent(in) :: d(:, :, :)    !< (3, 3, nn) directors
+      real(wp), intent(inout) :: d(:, :, :) !< (3, 3, nn) directors: clamped ends' set
       integer :: s, n
       do s = 1, jn%ns
          if (.not. jn%s_on(s)) cycle
          n = jn%m_node(jn%s_m(s))
          x(:, jn%s_node(s)) = x(:, n) + d(:, 1, n)*jn%s_r(1, s) + d(:, 2, n)*jn%s_r(2, s) &
                               + d(:, 3, n)*jn%s_r(3, s)
+         if (jn%s_ne(s) == 6) d(:, :, jn%s_node(s)) = matmul(d(:, :, n), jn%s_rd(:, :, s))
       end do
    end subroutine junctions_place
+
+   !> A clamped end's directors in its body's axes, R_e = D^T d_e, from the directors d of
+   !> the start state (the end keeps that attitude on the body).
+   pure subroutine junctions_clamp(jn, d)
+      type(junctions_t), intent(inout) :: jn !< junctions (s_rd set)
+      real(wp), intent(in) :: d(:, :, :)     !< (3, 3, nn) directors at the start
+      integer :: s
+      do s = 1, jn%ns
+         if (jn%s_ne(s) /= 6) cycle
+         jn%s_rd(:, :, s) = matmul(transpose(d(:, :, jn%m_node(jn%s_m(s)))), &
+                                   d(:, :, jn%s_node(s)))
+      end do
+   end subroutine junctions_clamp
 
    !> The stiffness of the system at its FREE points and bodies (about each body's G),
    !> every other unknown in equilibrium: the Schur

@@ -43,7 +43,7 @@ module rodyn_statics
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_mesh_checks, only: mesh_spurious_shape, mesh_cable_like_rods
    use rodyn_state, only: state_t
-   use rodyn_junctions, only: junctions_condense, junctions_place
+   use rodyn_junctions, only: junctions_condense, junctions_place, junctions_clamp
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_bodies, only: body_water_set
    use rodyn_assembly, only: supports_t, loads_t, supports_build, loads_build, &
@@ -96,6 +96,7 @@ contains
       integer :: nn
       call supports_build(model, mesh, state, prob%sup)
       call rod_problem_init(prob, model, mesh)
+      call junctions_clamp(prob%jn, state%d)
       prob%state => state
       nn = mesh%n_nodes
       call loads_build(model, mesh, prob%loads)

@@ -38,9 +38,12 @@ FAILURES = []
 
 
 def deck(input_dir, work, name, source, subs):
-    """Write a shortened copy of a shipped deck (regex substitutions) into work."""
+    """Write a shortened copy of a shipped deck (regex substitutions, its *INCLUDE files
+    read in place) into work."""
     with open(os.path.join(input_dir, source)) as f:
         text = f.read()
+    text = re.sub(r"(?m)^\*INCLUDE, INPUT=(\S+)\n",
+                  lambda m: open(os.path.join(input_dir, m.group(1))).read(), text)
     for old, new in subs:
         text, n = re.subn(old, new, text)
         if n != 1:

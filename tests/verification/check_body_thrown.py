@@ -7,7 +7,11 @@ body of 100 kg, a rod of 200 kg and two cables of 50 kg each) in vacuum.
   energy and the six momenta stay within 1e-9 of their scale over 400 steps, and the
   lines deform (check_system_free_flight.py).
 
-Usage: check_body_thrown.py RODYN DECK OUT_DIR. Exit 0 on success."""
+With CONN=CLAMPED (the deck's parameter): the rod's end clamped to the body, turning with
+it (*POINT, CONNECTION=CLAMPED), the same checks.
+
+Usage: check_body_thrown.py RODYN DECK OUT_DIR [NAME=VALUE ...] (the deck's parameters).
+Exit 0 on success."""
 import csv
 import os
 import subprocess
@@ -18,9 +22,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 def main():
     rodyn, deck, out = sys.argv[1:4]
+    extra = sys.argv[4:]
+    sets = [a for v in extra for a in ("--set", v)]
     fails = []
     still = os.path.join(out, "translation")
-    proc = subprocess.run([rodyn, deck, "-o", still, "--quiet", "--set", "WX=0.0",
+    proc = subprocess.run([rodyn, deck, "-o", still, "--quiet", *sets, "--set", "WX=0.0",
                            "--set", "WY=0.0", "--set", "WZ=0.0"], capture_output=True,
                           text=True)
     if proc.returncode != 0:
@@ -39,7 +45,8 @@ def main():
     if not drift <= 1e-9:
         fails.append(f"momenta drift by {drift:.2e}")
     spin = subprocess.run([sys.executable, os.path.join(HERE, "check_system_free_flight.py"),
-                           rodyn, deck, os.path.join(out, "spin")], capture_output=True,
+                           rodyn, deck, os.path.join(out, "spin"), *extra],
+                          capture_output=True,
                           text=True)
     print(spin.stdout.strip())
     if spin.returncode != 0:

@@ -14,6 +14,10 @@ degrees of heading) against the same chain's end fixed to the vessel directly
 (decks/coupled_vessel_end.inp): the same comparisons, and the body's R and its rotation
 vector on the vessel's rigid motion X = O + R0 (xi + Rv p), Q = R0 Rv R0^T (1e-12).
 
+A rod clamped to that body (*POINT, CONNECTION=CLAMPED; decks/clamped_vessel_body.inp)
+against the rod's top clamped to the vessel directly (decks/clamped_vessel_end.inp): its
+top's force and moment within 1e-6 of their largest values, its nodes within 1e-6 m.
+
 Usage: check_coupled_body.py RODYN DECK_DIR OUT_DIR. Exit 0 on success."""
 import csv
 import math
@@ -41,13 +45,22 @@ def ramp(t, r=5.0):
     return 1.0 if t >= r else 0.5 * (1.0 - math.cos(math.pi * t / r))
 
 
-def compare(body, end, fails):
-    """End B's force and the nodes of a run through a body against the direct one's."""
+def compare(body, end, fails, moments=False):
+    """End B's force (and moment) and the nodes of a run through a body against the
+    direct one's."""
     fb = [r for r in rows(body, "dynamic_ends_step.csv") if r["end"] == "B"]
     fe = [r for r in rows(end, "dynamic_ends_step.csv") if r["end"] == "B"]
     keys = ("Fx_N", "Fy_N", "Fz_N")
     scale = max(abs(float(r[k])) for r in fe for k in keys)
     dforce = max(abs(float(a[k]) - float(b[k])) for a, b in zip(fb, fe) for k in keys)
+    if moments:
+        mk = ("Mx_Nm", "My_Nm", "Mz_Nm")
+        mscale = max(abs(float(r[k])) for r in fe for k in mk)
+        dmom = max(abs(float(a[k]) - float(b[k])) for a, b in zip(fb, fe) for k in mk)
+        print(f"{os.path.basename(body)}: end moment: largest difference "
+              f"{dmom / mscale:.1e} of {mscale:.4g} N m")
+        if not dmom <= 1e-6 * mscale:
+            fails.append(f"end moment differs by {dmom / mscale:.2e}")
     nb, ne = rows(body, "dynamic_nodes.csv"), rows(end, "dynamic_nodes.csv")
     dnode = max(abs(float(a[k]) - float(b[k])) for a, b in zip(nb, ne)
                 for k in ("x_m", "y_m", "z_m"))
@@ -143,6 +156,11 @@ def main():
     compare(vbody, vend, fails)
     vessel_path(decks, vbody, fails)
     no_cutbacks(vbody, fails)
+    cbody, cend = os.path.join(out, "clamped_body"), os.path.join(out, "clamped_end")
+    run(rodyn, os.path.join(decks, "clamped_vessel_body.inp"), cbody)
+    run(rodyn, os.path.join(decks, "clamped_vessel_end.inp"), cend)
+    compare(cbody, cend, fails, moments=True)
+    no_cutbacks(cbody, fails)
     for msg in fails:
         print("FAIL:", msg)
     return 1 if fails else 0

@@ -18,7 +18,9 @@ TOL = 1.0e-9
 
 def main():
     rodyn, deck, out = sys.argv[1:4]
-    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet"], capture_output=True, text=True)
+    sets = [a for v in sys.argv[4:] for a in ("--set", v)]
+    proc = subprocess.run([rodyn, deck, "-o", out, "--quiet", *sets], capture_output=True,
+                          text=True)
     if proc.returncode != 0:
         sys.exit(f"FAIL: rodyn exit {proc.returncode}: {proc.stderr.strip()}")
     with open(os.path.join(out, "dynamic_log.csv")) as f:
