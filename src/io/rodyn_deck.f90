@@ -33,7 +33,8 @@ module rodyn_deck
                                  max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
-                                 location, resolve_line, node_count, node_number, node_label
+                                 location, resolve_line, node_count, node_number, node_label, &
+                                 get_int_range
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics
@@ -531,28 +532,12 @@ contains
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
          st%requested = .true.
-         call card_get_int(card, 'INCREMENTS', st%increments, err)
+         call get_int_range(card, 'INCREMENTS', 1, max_increments, st%increments, err)
          if (has_error(err)) return
-         if (st%increments < 1 .or. st%increments > max_increments) then
-            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be between 1 and '// &
-                            int_str(max_increments)//', got '//int_str(st%increments), err)
-            return
-         end if
-         call card_get_int(card, 'MAX ITERATIONS', st%max_iterations, err)
+         call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, st%max_iterations, err)
          if (has_error(err)) return
-         if (st%max_iterations < 1 .or. st%max_iterations > max_iterations) then
-            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be between 1 '// &
-                            'and '//int_str(max_iterations)//', got '// &
-                            int_str(st%max_iterations), err)
-            return
-         end if
-         call card_get_int(card, 'CUTBACKS', st%max_cutbacks, err)
+         call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, st%max_cutbacks, err)
          if (has_error(err)) return
-         if (st%max_cutbacks < 0 .or. st%max_cutbacks > max_cutbacks) then
-            call param_fail(card, 'CUTBACKS', 'CUTBACKS must be between 0 and '// &
-                            int_str(max_cutbacks)//', got '//int_str(st%max_cutbacks), err)
-            return
-         end if
          call get_tolerance(card, 'FORCE TOL', st%force_tol, err)
          call get_tolerance(card, 'DISP TOL', st%disp_tol, err)
          if (has_error(err)) return

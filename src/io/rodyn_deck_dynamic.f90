@@ -27,6 +27,7 @@ module rodyn_deck_dynamic
    use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
+                                 get_int_range, &
                                  location, resolve_line, node_count, node_number, node_label, &
                                  check_at_most
    implicit none
@@ -106,18 +107,10 @@ contains
       type(card_t), intent(in) :: card                !< the *DYNAMIC card
       type(dynamic_options_t), intent(inout) :: dy    !< options: times set
       type(error_t), intent(inout) :: err             !< status
-      call card_get_real(card, 'DT', dy%dt, err, required=.true.)
+      call get_bounded(card, 'DT', dy%dt, .true., err, required=.true.)
       if (has_error(err)) return
-      if (.not. dy%dt > 0.0_wp) then
-         call param_fail(card, 'DT', 'DT must be > 0, got '//real_str(dy%dt), err)
-         return
-      end if
-      call card_get_real(card, 'TIME', dy%duration, err, required=.true.)
+      call get_bounded(card, 'TIME', dy%duration, .true., err, required=.true.)
       if (has_error(err)) return
-      if (.not. dy%duration > 0.0_wp) then
-         call param_fail(card, 'TIME', 'TIME must be > 0, got '//real_str(dy%duration), err)
-         return
-      end if
       if (dy%duration < dy%dt) then
          call param_fail(card, 'TIME', 'TIME must be >= DT ('//real_str(dy%dt)// &
                          '), got '//real_str(dy%duration), err)
@@ -550,28 +543,6 @@ contains
       if (index(model%deck_text, head) > 0) return
       model%deck_text = model%deck_text//head//table%text
    end subroutine record_table
-
-   !> Optional integer parameter with lo <= value <= hi (hi = huge: no upper bound).
-   subroutine get_int_range(card, name, lo, hi, value, err)
-      type(card_t), intent(in) :: card     !< the card
-      character(len=*), intent(in) :: name !< parameter name
-      integer, intent(in) :: lo            !< smallest value allowed
-      integer, intent(in) :: hi            !< largest value allowed
-      integer, intent(inout) :: value      !< the value (unchanged if absent)
-      type(error_t), intent(inout) :: err  !< status
-
-      if (has_error(err)) return
-      call card_get_int(card, name, value, err)
-      if (has_error(err)) return
-      if (value >= lo .and. value <= hi) return
-      if (hi == huge(hi)) then
-         call param_fail(card, name, name//' must be >= '//int_str(lo)//', got '// &
-                         int_str(value), err)
-      else
-         call param_fail(card, name, name//' must be between '//int_str(lo)//' and '// &
-                         int_str(hi)//', got '//int_str(value), err)
-      end if
-   end subroutine get_int_range
 
    ! ================================================================ validation
 

@@ -19,7 +19,7 @@ module rodyn_deck_support
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: get_lumped_body
    public :: check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
-   public :: param_fail
+   public :: get_int_range, param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
@@ -143,17 +143,19 @@ contains
       end if
    end subroutine get_node
 
-   !> Optional real parameter that must be >= 0 (or > 0 when `strict`).
-   subroutine get_bounded(card, name, value, strict, err)
+   !> A real parameter, optional unless `required`, that must be >= 0 (or > 0 when
+   !> `strict`).
+   subroutine get_bounded(card, name, value, strict, err, required)
       type(card_t), intent(in) :: card     !< the card
       character(len=*), intent(in) :: name !< parameter name
       real(wp), intent(inout) :: value     !< the value (unchanged if absent)
       logical, intent(in) :: strict        !< require > 0 rather than >= 0
       type(error_t), intent(inout) :: err  !< status
+      logical, intent(in), optional :: required !< absence is an error
       logical :: found
 
       if (has_error(err)) return
-      call card_get_real(card, name, value, err, found)
+      call card_get_real(card, name, value, err, found, required)
       if (has_error(err) .or. .not. found) return
       if (strict .and. .not. value > 0.0_wp) then
          call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
@@ -161,6 +163,30 @@ contains
          call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
       end if
    end subroutine get_bounded
+
+   !> An integer parameter, optional unless `required`, with lo <= value <= hi (hi = huge:
+   !> no upper bound); a value left unchanged is checked too.
+   subroutine get_int_range(card, name, lo, hi, value, err, required)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      integer, intent(in) :: lo            !< smallest value allowed
+      integer, intent(in) :: hi            !< largest value allowed
+      integer, intent(inout) :: value      !< the value (unchanged if absent)
+      type(error_t), intent(inout) :: err  !< status
+      logical, intent(in), optional :: required !< absence is an error
+
+      if (has_error(err)) return
+      call card_get_int(card, name, value, err, required=required)
+      if (has_error(err)) return
+      if (value >= lo .and. value <= hi) return
+      if (hi == huge(hi)) then
+         call param_fail(card, name, name//' must be >= '//int_str(lo)//', got '// &
+                         int_str(value), err)
+      else
+         call param_fail(card, name, name//' must be between '//int_str(lo)//' and '// &
+                         int_str(hi)//', got '//int_str(value), err)
+      end if
+   end subroutine get_int_range
 
    !> MASS=, VOLUME=, CDA=, CA= of a lumped body (*ATTACHMENT, a FREE *POINT): each >= 0
    !> (unchanged if absent), and CA > 0 only with VOLUME > 0 (the added mass is
