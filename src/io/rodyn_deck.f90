@@ -29,7 +29,7 @@ module rodyn_deck
                                      card_get_yesno, card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_card, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -274,11 +274,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%heading, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) ::], err)
-         if (has_error(err)) return
-         call card_check_data(card, 1, -1, err, 'the title')
+         call check_card(deck, ic, [character(len=param_len) ::], 1, -1, err, first=pend%heading, &
+                         what='the title')
          if (has_error(err)) return
          model%title = card%data(1)%text
       end associate
@@ -295,11 +292,8 @@ contains
       real(wp) :: g(3)
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%gravity, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) ::], err)
-         if (has_error(err)) return
-         call card_check_data(card, 1, 1, err, what)
+         call check_card(deck, ic, [character(len=param_len) ::], 1, 1, err, first=pend%gravity, &
+                         what=what)
          if (has_error(err)) return
          call card_data_reals(card, 1, 3, g, err, what)
          if (has_error(err)) return
@@ -523,13 +517,9 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic), st => model%static)
-         call check_once(deck, ic, pend%static, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'INCREMENTS', &
-                                'MAX ITERATIONS', 'CUTBACKS', 'FORCE TOL', 'DISP TOL', &
-                                'LINE SEARCH'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'INCREMENTS', 'MAX ITERATIONS', &
+                         'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'LINE SEARCH'], 0, 0, err, &
+                         first=pend%static)
          if (has_error(err)) return
          st%requested = .true.
          call get_int_range(card, 'INCREMENTS', 1, max_increments, st%increments, err)
@@ -554,11 +544,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%output, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'CSV', 'HDF5'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'CSV', 'HDF5'], 0, 0, err, &
+                         first=pend%output)
          if (has_error(err)) return
          call card_get_yesno(card, 'CSV', model%output%csv, err)
          if (has_error(err)) return

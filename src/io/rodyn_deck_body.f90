@@ -16,7 +16,7 @@ module rodyn_deck_body
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_banded, only: dense_sym_eigen
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
-                                 location, check_once, get_int_range
+                                 location, check_card, get_int_range
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
@@ -286,12 +286,8 @@ contains
       character(len=:), allocatable :: name
       real(wp) :: deg
       associate (card => deck%cards(ic), oc => model%offset_curve)
-         call check_once(deck, ic, pend%offset_card, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'BODY', 'FORCE', &
-                                'HEADING', 'STEPS'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'BODY', 'FORCE', 'HEADING', &
+                         'STEPS'], 0, 0, err, first=pend%offset_card)
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
@@ -440,11 +436,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
       integer :: k
       associate (card => deck%cards(ic), mo => model%modal)
-         call check_once(deck, ic, pend%modal_card, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'MODES', 'SOLVER'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'MODES', 'SOLVER'], 0, 0, err, &
+                         first=pend%modal_card)
          if (has_error(err)) return
          call get_int_range(card, 'MODES', 1, 1000, mo%modes, err)
          if (has_error(err)) return

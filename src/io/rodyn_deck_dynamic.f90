@@ -24,7 +24,7 @@ module rodyn_deck_dynamic
    use rodyn_deck_params, only: upper_case
    use rodyn_deck_targets, only: resolve_motion_body, resolve_motion_point, &
                                  resolve_velocity_body
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  get_int_range, &
@@ -68,14 +68,10 @@ contains
       integer :: k
 
       associate (card => deck%cards(ic), dy => model%dynamic)
-         call check_once(deck, ic, pend%dynamic, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
-                                'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
-                                'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', &
-                                'CHECKPOINT'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
+                         'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
+                         'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', 'CHECKPOINT'], 0, 0, err, &
+                         first=pend%dynamic)
          if (has_error(err)) return
          dy%requested = .true.
 
@@ -190,11 +186,8 @@ contains
       type(pending_t), intent(inout) :: pend  !< remembers the first *DAMPING
       type(error_t), intent(inout) :: err     !< status
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%damping, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'ALPHA', 'BETA'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'ALPHA', 'BETA'], 0, 0, err, &
+                         first=pend%damping)
          if (has_error(err)) return
          if (card_find_param(card, 'ALPHA') == 0 .and. card_find_param(card, 'BETA') == 0) then
             call card_error(card, 'give ALPHA or BETA, or both (C = ALPHA M + BETA K)', err)

@@ -10,7 +10,7 @@ module rodyn_deck_support
    use rodyn_model, only: model_t, line_def_t, end_a, end_b
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_find_param, card_error, card_param_error, &
-                              card_data_error
+                              card_data_error, card_check_params, card_check_data
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice
    use rodyn_deck_numbers, only: real_str, int_str
    implicit none
@@ -18,7 +18,7 @@ module rodyn_deck_support
    public :: ref_t, pending_t, max_cutbacks, max_elements
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: get_lumped_body
-   public :: check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
+   public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: get_int_range, param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
@@ -99,6 +99,25 @@ module rodyn_deck_support
    end type pending_t
 
 contains
+
+   !> The form of card ic: only the parameters `allowed`, between nmin and nmax data lines
+   !> (card_check_data, `what` naming a line's values), and, given `first`, the only card
+   !> of its keyword (check_once, checked first). Stops at the first error.
+   subroutine check_card(deck, ic, allowed, nmin, nmax, err, first, what)
+      type(deck_t), intent(in) :: deck               !< all cards
+      integer, intent(in) :: ic                      !< index of the card
+      character(len=*), intent(in) :: allowed(:)     !< allowed parameters, upper case
+      integer, intent(in) :: nmin                    !< fewest data lines needed
+      integer, intent(in) :: nmax                    !< most data lines allowed, < 0: any
+      type(error_t), intent(inout) :: err            !< status
+      integer, intent(inout), optional :: first      !< first card of the keyword (0: none)
+      character(len=*), intent(in), optional :: what !< names of a data line's values
+      if (present(first)) call check_once(deck, ic, first, err)
+      if (has_error(err)) return
+      call card_check_params(deck%cards(ic), allowed, err)
+      if (has_error(err)) return
+      call card_check_data(deck%cards(ic), nmin, nmax, err, what)
+   end subroutine check_card
 
    !> Refuse a second card of a keyword allowed once; `first` remembers the first.
    subroutine check_once(deck, ic, first, err)

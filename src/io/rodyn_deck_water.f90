@@ -19,7 +19,7 @@ module rodyn_deck_water
    use rodyn_deck_table, only: table_t, card_data_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
-                                 get_lumped_body, &
+                                 get_lumped_body, check_card, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most, get_int_range
    use rodyn_sort, only: sorted_order
@@ -60,12 +60,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic), w => model%water)
-         call check_once(deck, ic, pend%water, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
-                                'DENSITY'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
+                         'DENSITY'], 0, 0, err, first=pend%water)
          if (has_error(err)) return
          call get_bounded(card, 'DEPTH', w%depth, .true., err, required=.true.)
          if (has_error(err)) return
@@ -137,14 +133,10 @@ contains
       real(wp) :: slope, dir, mu
 
       associate (card => deck%cards(ic), sb => model%seabed)
-         call check_once(deck, ic, pend%seabed, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'SLOPE', &
-                                'SLOPE DIRECTION', 'STIFFNESS', 'DAMPING', 'FRICTION', &
-                                'AXIAL FRICTION', 'LATERAL FRICTION', &
-                                'MOBILISATION VELOCITY'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'SLOPE', 'SLOPE DIRECTION', &
+                         'STIFFNESS', 'DAMPING', 'FRICTION', 'AXIAL FRICTION', &
+                         'LATERAL FRICTION', 'MOBILISATION VELOCITY'], 0, 0, err, &
+                         first=pend%seabed)
          if (has_error(err)) return
 
          slope = sb%slope/deg
@@ -232,10 +224,8 @@ contains
       character(len=:), allocatable :: line
 
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
-                                'VOLUME', 'CDA', 'CA'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
+                         'VOLUME', 'CDA', 'CA'], 0, 0, err)
          if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return
