@@ -1,5 +1,5 @@
 """The readers driven by the one description of the output:
-rodyn_post.schema is generated from rodyn's own table (src/io/rodyn_output_schema.f90)
+rodyn_post.schema is generated from rodyn's own table (src/io/rodyn_output_schema.txt)
 and up to date; the readers take the columns of every table from it, and check the
 `units` attribute each HDF5 dataset carries against it instead of assuming them."""
 import shutil

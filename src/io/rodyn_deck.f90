@@ -29,11 +29,12 @@ module rodyn_deck
                                      card_get_yesno, card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_once, &
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_card, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
-                                 location, resolve_line, node_count, node_number, node_label
+                                 location, resolve_line, node_count, node_number, node_label, &
+                                 get_int_range
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
                                  read_initial_velocity_card, validate_dynamics
@@ -273,11 +274,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%heading, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) ::], err)
-         if (has_error(err)) return
-         call card_check_data(card, 1, -1, err, 'the title')
+         call check_card(deck, ic, [character(len=param_len) ::], 1, -1, err, first=pend%heading, &
+                         what='the title')
          if (has_error(err)) return
          model%title = card%data(1)%text
       end associate
@@ -294,11 +292,8 @@ contains
       real(wp) :: g(3)
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%gravity, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) ::], err)
-         if (has_error(err)) return
-         call card_check_data(card, 1, 1, err, what)
+         call check_card(deck, ic, [character(len=param_len) ::], 1, 1, err, first=pend%gravity, &
+                         what=what)
          if (has_error(err)) return
          call card_data_reals(card, 1, 3, g, err, what)
          if (has_error(err)) return
@@ -522,37 +517,17 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic), st => model%static)
-         call check_once(deck, ic, pend%static, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'INCREMENTS', &
-                                'MAX ITERATIONS', 'CUTBACKS', 'FORCE TOL', 'DISP TOL', &
-                                'LINE SEARCH'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'INCREMENTS', 'MAX ITERATIONS', &
+                         'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'LINE SEARCH'], 0, 0, err, &
+                         first=pend%static)
          if (has_error(err)) return
          st%requested = .true.
-         call card_get_int(card, 'INCREMENTS', st%increments, err)
+         call get_int_range(card, 'INCREMENTS', 1, max_increments, st%increments, err)
          if (has_error(err)) return
-         if (st%increments < 1 .or. st%increments > max_increments) then
-            call param_fail(card, 'INCREMENTS', 'INCREMENTS must be between 1 and '// &
-                            int_str(max_increments)//', got '//int_str(st%increments), err)
-            return
-         end if
-         call card_get_int(card, 'MAX ITERATIONS', st%max_iterations, err)
+         call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, st%max_iterations, err)
          if (has_error(err)) return
-         if (st%max_iterations < 1 .or. st%max_iterations > max_iterations) then
-            call param_fail(card, 'MAX ITERATIONS', 'MAX ITERATIONS must be between 1 '// &
-                            'and '//int_str(max_iterations)//', got '// &
-                            int_str(st%max_iterations), err)
-            return
-         end if
-         call card_get_int(card, 'CUTBACKS', st%max_cutbacks, err)
+         call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, st%max_cutbacks, err)
          if (has_error(err)) return
-         if (st%max_cutbacks < 0 .or. st%max_cutbacks > max_cutbacks) then
-            call param_fail(card, 'CUTBACKS', 'CUTBACKS must be between 0 and '// &
-                            int_str(max_cutbacks)//', got '//int_str(st%max_cutbacks), err)
-            return
-         end if
          call get_tolerance(card, 'FORCE TOL', st%force_tol, err)
          call get_tolerance(card, 'DISP TOL', st%disp_tol, err)
          if (has_error(err)) return
@@ -569,11 +544,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%output, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'CSV', 'HDF5'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'CSV', 'HDF5'], 0, 0, err, &
+                         first=pend%output)
          if (has_error(err)) return
          call card_get_yesno(card, 'CSV', model%output%csv, err)
          if (has_error(err)) return

@@ -16,7 +16,7 @@ module rodyn_deck_body
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_banded, only: dense_sym_eigen
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
-                                 location, check_once
+                                 location, check_card, get_int_range
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
@@ -286,31 +286,18 @@ contains
       character(len=:), allocatable :: name
       real(wp) :: deg
       associate (card => deck%cards(ic), oc => model%offset_curve)
-         call check_once(deck, ic, pend%offset_card, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'BODY', 'FORCE', &
-                                'HEADING', 'STEPS'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'BODY', 'FORCE', 'HEADING', &
+                         'STEPS'], 0, 0, err, first=pend%offset_card)
          if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
          if (has_error(err)) return
-         call card_get_real(card, 'FORCE', oc%force, err, required=.true.)
+         call get_bounded(card, 'FORCE', oc%force, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. oc%force > 0.0_wp) then
-            call param_fail(card, 'FORCE', 'FORCE must be > 0, got '//real_str(oc%force), err)
-            return
-         end if
          deg = 0.0_wp
          call card_get_real(card, 'HEADING', deg, err)
          oc%heading = deg*acos(-1.0_wp)/180.0_wp
-         call card_get_int(card, 'STEPS', oc%steps, err)
+         call get_int_range(card, 'STEPS', 1, 1000, oc%steps, err)
          if (has_error(err)) return
-         if (oc%steps < 1 .or. oc%steps > 1000) then
-            call param_fail(card, 'STEPS', 'STEPS must be between 1 and 1000, got '// &
-                            int_str(oc%steps), err)
-            return
-         end if
       end associate
       pend%offset_body = ref_t(name, ic)
    end subroutine read_offset_curve_card
@@ -449,19 +436,11 @@ contains
       type(error_t), intent(inout) :: err     !< status
       integer :: k
       associate (card => deck%cards(ic), mo => model%modal)
-         call check_once(deck, ic, pend%modal_card, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'MODES', 'SOLVER'], 0, 0, err, &
+                         first=pend%modal_card)
          if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'MODES', 'SOLVER'], err)
+         call get_int_range(card, 'MODES', 1, 1000, mo%modes, err)
          if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
-         call card_get_int(card, 'MODES', mo%modes, err)
-         if (has_error(err)) return
-         if (mo%modes < 1 .or. mo%modes > 1000) then
-            call param_fail(card, 'MODES', 'MODES must be between 1 and 1000, got '// &
-                            int_str(mo%modes), err)
-            return
-         end if
          k = mo%solver + 1              ! (choices from 1; the names from 0)
          call card_get_choice(card, 'SOLVER', modal_solver_names, k, err)
          if (has_error(err)) return

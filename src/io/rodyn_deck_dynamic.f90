@@ -24,9 +24,10 @@ module rodyn_deck_dynamic
    use rodyn_deck_params, only: upper_case
    use rodyn_deck_targets, only: resolve_motion_body, resolve_motion_point, &
                                  resolve_velocity_body
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_once, get_node, &
+   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
+                                 get_int_range, &
                                  location, resolve_line, node_count, node_number, node_label, &
                                  check_at_most
    implicit none
@@ -67,14 +68,10 @@ contains
       integer :: k
 
       associate (card => deck%cards(ic), dy => model%dynamic)
-         call check_once(deck, ic, pend%dynamic, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
-                                'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
-                                'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', &
-                                'CHECKPOINT'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
+                         'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
+                         'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', 'CHECKPOINT'], 0, 0, err, &
+                         first=pend%dynamic)
          if (has_error(err)) return
          dy%requested = .true.
 
@@ -106,18 +103,10 @@ contains
       type(card_t), intent(in) :: card                !< the *DYNAMIC card
       type(dynamic_options_t), intent(inout) :: dy    !< options: times set
       type(error_t), intent(inout) :: err             !< status
-      call card_get_real(card, 'DT', dy%dt, err, required=.true.)
+      call get_bounded(card, 'DT', dy%dt, .true., err, required=.true.)
       if (has_error(err)) return
-      if (.not. dy%dt > 0.0_wp) then
-         call param_fail(card, 'DT', 'DT must be > 0, got '//real_str(dy%dt), err)
-         return
-      end if
-      call card_get_real(card, 'TIME', dy%duration, err, required=.true.)
+      call get_bounded(card, 'TIME', dy%duration, .true., err, required=.true.)
       if (has_error(err)) return
-      if (.not. dy%duration > 0.0_wp) then
-         call param_fail(card, 'TIME', 'TIME must be > 0, got '//real_str(dy%duration), err)
-         return
-      end if
       if (dy%duration < dy%dt) then
          call param_fail(card, 'TIME', 'TIME must be >= DT ('//real_str(dy%dt)// &
                          '), got '//real_str(dy%duration), err)
@@ -197,11 +186,8 @@ contains
       type(pending_t), intent(inout) :: pend  !< remembers the first *DAMPING
       type(error_t), intent(inout) :: err     !< status
       associate (card => deck%cards(ic))
-         call check_once(deck, ic, pend%damping, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'ALPHA', 'BETA'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'ALPHA', 'BETA'], 0, 0, err, &
+                         first=pend%damping)
          if (has_error(err)) return
          if (card_find_param(card, 'ALPHA') == 0 .and. card_find_param(card, 'BETA') == 0) then
             call card_error(card, 'give ALPHA or BETA, or both (C = ALPHA M + BETA K)', err)
@@ -550,28 +536,6 @@ contains
       if (index(model%deck_text, head) > 0) return
       model%deck_text = model%deck_text//head//table%text
    end subroutine record_table
-
-   !> Optional integer parameter with lo <= value <= hi (hi = huge: no upper bound).
-   subroutine get_int_range(card, name, lo, hi, value, err)
-      type(card_t), intent(in) :: card     !< the card
-      character(len=*), intent(in) :: name !< parameter name
-      integer, intent(in) :: lo            !< smallest value allowed
-      integer, intent(in) :: hi            !< largest value allowed
-      integer, intent(inout) :: value      !< the value (unchanged if absent)
-      type(error_t), intent(inout) :: err  !< status
-
-      if (has_error(err)) return
-      call card_get_int(card, name, value, err)
-      if (has_error(err)) return
-      if (value >= lo .and. value <= hi) return
-      if (hi == huge(hi)) then
-         call param_fail(card, name, name//' must be >= '//int_str(lo)//', got '// &
-                         int_str(value), err)
-      else
-         call param_fail(card, name, name//' must be between '//int_str(lo)//' and '// &
-                         int_str(hi)//', got '//int_str(value), err)
-      end if
-   end subroutine get_int_range
 
    ! ================================================================ validation
 

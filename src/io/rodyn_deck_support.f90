@@ -10,7 +10,7 @@ module rodyn_deck_support
    use rodyn_model, only: model_t, line_def_t, end_a, end_b
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_find_param, card_error, card_param_error, &
-                              card_data_error
+                              card_data_error, card_check_params, card_check_data
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice
    use rodyn_deck_numbers, only: real_str, int_str
    implicit none
@@ -18,8 +18,8 @@ module rodyn_deck_support
    public :: ref_t, pending_t, max_cutbacks, max_elements
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: get_lumped_body
-   public :: check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
-   public :: param_fail
+   public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
+   public :: get_int_range, param_fail
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
@@ -100,6 +100,25 @@ module rodyn_deck_support
 
 contains
 
+   !> The form of card ic: only the parameters `allowed`, between nmin and nmax data lines
+   !> (card_check_data, `what` naming a line's values), and, given `first`, the only card
+   !> of its keyword (check_once, checked first). Stops at the first error.
+   subroutine check_card(deck, ic, allowed, nmin, nmax, err, first, what)
+      type(deck_t), intent(in) :: deck               !< all cards
+      integer, intent(in) :: ic                      !< index of the card
+      character(len=*), intent(in) :: allowed(:)     !< allowed parameters, upper case
+      integer, intent(in) :: nmin                    !< fewest data lines needed
+      integer, intent(in) :: nmax                    !< most data lines allowed, < 0: any
+      type(error_t), intent(inout) :: err            !< status
+      integer, intent(inout), optional :: first      !< first card of the keyword (0: none)
+      character(len=*), intent(in), optional :: what !< names of a data line's values
+      if (present(first)) call check_once(deck, ic, first, err)
+      if (has_error(err)) return
+      call card_check_params(deck%cards(ic), allowed, err)
+      if (has_error(err)) return
+      call card_check_data(deck%cards(ic), nmin, nmax, err, what)
+   end subroutine check_card
+
    !> Refuse a second card of a keyword allowed once; `first` remembers the first.
    subroutine check_once(deck, ic, first, err)
       type(deck_t), intent(in) :: deck     !< all cards
@@ -143,17 +162,19 @@ contains
       end if
    end subroutine get_node
 
-   !> Optional real parameter that must be >= 0 (or > 0 when `strict`).
-   subroutine get_bounded(card, name, value, strict, err)
+   !> A real parameter, optional unless `required`, that must be >= 0 (or > 0 when
+   !> `strict`).
+   subroutine get_bounded(card, name, value, strict, err, required)
       type(card_t), intent(in) :: card     !< the card
       character(len=*), intent(in) :: name !< parameter name
       real(wp), intent(inout) :: value     !< the value (unchanged if absent)
       logical, intent(in) :: strict        !< require > 0 rather than >= 0
       type(error_t), intent(inout) :: err  !< status
+      logical, intent(in), optional :: required !< absence is an error
       logical :: found
 
       if (has_error(err)) return
-      call card_get_real(card, name, value, err, found)
+      call card_get_real(card, name, value, err, found, required)
       if (has_error(err) .or. .not. found) return
       if (strict .and. .not. value > 0.0_wp) then
          call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
@@ -161,6 +182,30 @@ contains
          call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
       end if
    end subroutine get_bounded
+
+   !> An integer parameter, optional unless `required`, with lo <= value <= hi (hi = huge:
+   !> no upper bound); a value left unchanged is checked too.
+   subroutine get_int_range(card, name, lo, hi, value, err, required)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< parameter name
+      integer, intent(in) :: lo            !< smallest value allowed
+      integer, intent(in) :: hi            !< largest value allowed
+      integer, intent(inout) :: value      !< the value (unchanged if absent)
+      type(error_t), intent(inout) :: err  !< status
+      logical, intent(in), optional :: required !< absence is an error
+
+      if (has_error(err)) return
+      call card_get_int(card, name, value, err, required=required)
+      if (has_error(err)) return
+      if (value >= lo .and. value <= hi) return
+      if (hi == huge(hi)) then
+         call param_fail(card, name, name//' must be >= '//int_str(lo)//', got '// &
+                         int_str(value), err)
+      else
+         call param_fail(card, name, name//' must be between '//int_str(lo)//' and '// &
+                         int_str(hi)//', got '//int_str(value), err)
+      end if
+   end subroutine get_int_range
 
    !> MASS=, VOLUME=, CDA=, CA= of a lumped body (*ATTACHMENT, a FREE *POINT): each >= 0
    !> (unchanged if absent), and CA > 0 only with VOLUME > 0 (the added mass is

@@ -17,7 +17,7 @@ module rodyn_deck_system
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
-                                 get_bounded, &
+                                 get_bounded, check_card, &
                                  location, node_count, node_number
    implicit none
    private
@@ -317,10 +317,8 @@ contains
       type(failure_t) :: f
       character(len=:), allocatable :: line
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
-                                'BREAK LOAD'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
+                         'BREAK LOAD'], 0, 0, err)
          if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return

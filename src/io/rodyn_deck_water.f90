@@ -19,9 +19,9 @@ module rodyn_deck_water
    use rodyn_deck_table, only: table_t, card_data_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
-                                 get_lumped_body, &
+                                 get_lumped_body, check_card, &
                                  data_check, param_fail, location, resolve_line, &
-                                 resolve_section, check_at_most
+                                 resolve_section, check_at_most, get_int_range
    use rodyn_sort, only: sorted_order
    implicit none
    private
@@ -60,19 +60,11 @@ contains
       type(error_t), intent(inout) :: err     !< status
 
       associate (card => deck%cards(ic), w => model%water)
-         call check_once(deck, ic, pend%water, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
+                         'DENSITY'], 0, 0, err, first=pend%water)
          if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
-                                'DENSITY'], err)
+         call get_bounded(card, 'DEPTH', w%depth, .true., err, required=.true.)
          if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
-         call card_get_real(card, 'DEPTH', w%depth, err, required=.true.)
-         if (has_error(err)) return
-         if (.not. w%depth > 0.0_wp) then
-            call param_fail(card, 'DEPTH', 'DEPTH must be > 0, got '//real_str(w%depth), err)
-            return
-         end if
          call card_get_real(card, 'SURFACE', w%surface, err)
          call get_bounded(card, 'DENSITY', w%density, .true., err)
          call check_at_most(card, 'DENSITY', w%density, max_water_density, ' kg/m3', &
@@ -141,14 +133,10 @@ contains
       real(wp) :: slope, dir, mu
 
       associate (card => deck%cards(ic), sb => model%seabed)
-         call check_once(deck, ic, pend%seabed, err)
-         if (has_error(err)) return
-         call card_check_params(card, [character(len=param_len) :: 'SLOPE', &
-                                'SLOPE DIRECTION', 'STIFFNESS', 'DAMPING', 'FRICTION', &
-                                'AXIAL FRICTION', 'LATERAL FRICTION', &
-                                'MOBILISATION VELOCITY'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'SLOPE', 'SLOPE DIRECTION', &
+                         'STIFFNESS', 'DAMPING', 'FRICTION', 'AXIAL FRICTION', &
+                         'LATERAL FRICTION', 'MOBILISATION VELOCITY'], 0, 0, err, &
+                         first=pend%seabed)
          if (has_error(err)) return
 
          slope = sb%slope/deg
@@ -210,20 +198,11 @@ contains
          call card_get_name(card, 'SECTION', section, err, required=.true.)
          if (has_error(err)) return
          length = 0.0_wp
-         call card_get_real(card, 'LENGTH', length, err, required=.true.)
+         call get_bounded(card, 'LENGTH', length, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. length > 0.0_wp) then
-            call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '//real_str(length), err)
-            return
-         end if
          n = 0
-         call card_get_int(card, 'ELEMENTS', n, err, required=.true.)
+         call get_int_range(card, 'ELEMENTS', 1, max_elements, n, err, required=.true.)
          if (has_error(err)) return
-         if (n < 1 .or. n > max_elements) then
-            call param_fail(card, 'ELEMENTS', 'ELEMENTS must be between 1 and '// &
-                            int_str(max_elements)//', got '//int_str(n), err)
-            return
-         end if
       end block
       pend%n_segments = pend%n_segments + 1
       pend%seg_line(pend%n_segments) = ref_t(line, ic)
@@ -245,19 +224,13 @@ contains
       character(len=:), allocatable :: line
 
       associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
-                                'VOLUME', 'CDA', 'CA'], err)
-         if (has_error(err)) return
-         call card_check_data(card, 0, 0, err)
+         call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
+                         'VOLUME', 'CDA', 'CA'], 0, 0, err)
          if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return
-         call card_get_real(card, 'S', att%s, err, required=.true.)
+         call get_bounded(card, 'S', att%s, .false., err, required=.true.)
          if (has_error(err)) return
-         if (.not. att%s >= 0.0_wp) then
-            call param_fail(card, 'S', 'S must be >= 0, got '//real_str(att%s), err)
-            return
-         end if
          if (card_find_param(card, 'MASS') == 0 .and. card_find_param(card, 'VOLUME') == 0 &
              .and. card_find_param(card, 'CDA') == 0 .and. card_find_param(card, 'CA') == 0) &
             then

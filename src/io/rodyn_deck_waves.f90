@@ -105,19 +105,11 @@ contains
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
          h = 0.0_wp
-         call card_get_real(card, 'HEIGHT', h, err, required=.true.)
+         call get_bounded(card, 'HEIGHT', h, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. h > 0.0_wp) then
-            call param_fail(card, 'HEIGHT', 'HEIGHT must be > 0, got '//real_str(h), err)
-            return
-         end if
          t = 0.0_wp
-         call card_get_real(card, 'PERIOD', t, err, required=.true.)
+         call get_bounded(card, 'PERIOD', t, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. t > 0.0_wp) then
-            call param_fail(card, 'PERIOD', 'PERIOD must be > 0, got '//real_str(t), err)
-            return
-         end if
          phase = 0.0_wp
          call card_get_real(card, 'PHASE', phase, err)
          if (has_error(err)) return
@@ -181,18 +173,10 @@ contains
       else
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
-         call card_get_real(card, 'HS', wv%hs, err, required=.true.)
+         call get_bounded(card, 'HS', wv%hs, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. wv%hs > 0.0_wp) then
-            call param_fail(card, 'HS', 'HS must be > 0, got '//real_str(wv%hs), err)
-            return
-         end if
-         call card_get_real(card, 'TP', wv%tp, err, required=.true.)
+         call get_bounded(card, 'TP', wv%tp, .true., err, required=.true.)
          if (has_error(err)) return
-         if (.not. wv%tp > 0.0_wp) then
-            call param_fail(card, 'TP', 'TP must be > 0, got '//real_str(wv%tp), err)
-            return
-         end if
          wv%gamma = 1.0_wp
          if (wv%kind == sea_jonswap) wv%gamma = jonswap_gamma(wv%hs, wv%tp)
          call card_get_real(card, 'GAMMA', wv%gamma, err, found)
