@@ -19,7 +19,8 @@ OPENBLAS_NUM_THREADS=OMP_NUM_THREADS=1; CPU time user + sys (os.wait4) and wall 
 the 1-minute load average at each run's start; the medians. CPU per step = (CPU of the
 dynamic run - CPU of the statics alone) / steps; per Newton iteration likewise. A
 least-squares line CPU/step = a + b (n E) over all points of one E, and each point's
-deviation from it; the exponent of CPU/step ~ (n E)^p on log-log axes.
+deviation from it (over the largest CPU/step); the exponent of CPU/step ~ (n E)^p on log-log
+axes; the CPU per step and element, and per iteration and element, of 48 legs over 3.
 
   python3 bench/systems/legs_scaling.py [--elements 10 20] [--legs 3 6 12 24 48]
       [--repeats 3] [--time 100] [--rodyn build/rodyn]
@@ -136,6 +137,8 @@ def main():
                     "static_wall_s": s["wall"],
                     "static_iterations": int(ss_["iterations"]),
                     "cpu_per_step_s": dyn / steps, "cpu_per_iteration_s": dyn / its,
+                    "cpu_per_step_element_us": 1e6 * dyn / steps / (n * e),
+                    "cpu_per_iteration_element_us": 1e6 * dyn / its / (n * e),
                     "cpu_all_s": " ".join(f"{c:.3f}" for c in d["cpu_all"]),
                     "static_cpu_all_s": " ".join(f"{c:.3f}" for c in s["cpu_all"]),
                     "load1_all": " ".join(f"{x:.2f}" for x in d["load_all"] + s["load_all"]),
@@ -153,13 +156,20 @@ def main():
                           ("static_cpu_s", "statics")):
             y = np.array([r[key] for r in sel])
             c0, c1 = linear_fit(x, y)
-            dev = (y - (c0 + c1 * x)) / (c0 + c1 * x)
+            dev = (y - (c0 + c1 * x)) / np.max(y)
             p = np.polyfit(np.log(x), np.log(y), 1)[0]
             for r, dv in zip(sel, dev):
                 r[f"{key}_fit_deviation"] = float(dv)
             notes.append(f"E = {e}: CPU/{name} = {c0:.4g} s + {c1:.4g} s x elements; largest "
-                         f"deviation from the line {100 * np.max(np.abs(dev)):.1f} %; "
-                         f"exponent {p:.3f}")
+                         f"deviation from the line {100 * np.max(np.abs(dev)):.1f} % of the "
+                         f"largest value; exponent {p:.3f}")
+        for key in ("cpu_per_step_element_us", "cpu_per_iteration_element_us"):
+            v = [r[key] for r in sel]
+            notes.append(f"E = {e}: {key} from {v[0]:.3f} ({sel[0]['legs']} legs) to "
+                         f"{v[-1]:.3f} ({sel[-1]['legs']} legs), ratio {v[-1] / v[0]:.3f}")
+        notes.append(f"E = {e}: Newton iterations a step from "
+                     f"{sel[0]['newton_iterations'] / sel[0]['steps']:.2f} to "
+                     f"{sel[-1]['newton_iterations'] / sel[-1]['steps']:.2f}")
     print()
     for n_ in notes:
         print(n_)
@@ -169,6 +179,7 @@ def main():
             "tangents", "cutbacks", "cpu_s", "wall_s", "static_cpu_s", "static_wall_s",
             "static_iterations", "cpu_per_step_s", "cpu_per_step_s_fit_deviation",
             "cpu_per_iteration_s", "cpu_per_iteration_s_fit_deviation",
+            "cpu_per_step_element_us", "cpu_per_iteration_element_us",
             "static_cpu_s_fit_deviation", "cpu_all_s", "static_cpu_all_s", "load1_all"]
     benchlib.write_csv(a.csv, facts, cols, rows,
                        [f"DT {DT} s, TIME {a.time} s; medians of {a.repeats} runs; CPU per "

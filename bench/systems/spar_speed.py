@@ -563,6 +563,7 @@ REF_RODYN = [(20, 3, 0.1), (40, 3, 0.05), (80, 3, 0.025)]
 SWEEP_RODYN = ([(e, 3, dt) for e in (3, 4, 5, 6, 8, 10, 15, 20)
                 for dt in (0.05, 0.1, 0.15, 0.2)]
                + [(e, 3, dt) for e in (6, 8, 10) for dt in (0.25, 0.3, 0.4)]
+               + [(e, 3, dt) for e in (6, 8) for dt in (0.5, 0.6)]
                + [(e, 2, dt) for e in (6, 8, 10, 15, 20) for dt in (0.1, 0.2)]
                + [(e, 3, dt, "ALPHA") for e in (5, 6, 8, 10) for dt in (0.1, 0.15, 0.2)])
 # MoorDyn: dtM at Courant numbers 0.3, 0.25 and 0.125 of a segment (duplicates dropped)
@@ -598,7 +599,8 @@ def row(info, err=None, per=None, phase=""):
          "wall_s": info["wall_s"], "cpu_step_s": info.get("cpu_step_s"),
          "wall_step_s": info.get("wall_step_s"), "cpu_setup_s": info.get("cpu_setup_s"),
          "ic_cpu_s": info.get("ic_cpu_s"), "load1": info["load1"],
-         "steps": info.get("steps"), "newton_iterations": info.get("newton_iterations")}
+         "steps": info.get("steps"), "newton_iterations": info.get("newton_iterations"),
+         "tangents": info.get("tangents")}
     return r
 
 
@@ -669,11 +671,10 @@ def final_timing(runner, sweep_rows, repeats):
 
 
 COLUMNS = ["phase", "tool", "tag", "elements_or_segments", "order", "scheme", "dt_s",
-           "rho_inf",
-           "status", "error", "error_F1", "error_F2", "error_F3", "cpu_s", "wall_s",
-           "cpu_step_s", "wall_step_s", "cpu_setup_s", "ic_cpu_s", "load1", "steps",
-           "newton_iterations", "repeats", "cpu_all_s", "cpu_step_all_s", "load1_all",
-           "settings"]
+           "rho_inf", "status", "error", "error_F1", "error_F2", "error_F3", "cpu_s",
+           "wall_s", "cpu_step_s", "wall_step_s", "cpu_setup_s", "ic_cpu_s", "load1", "steps",
+           "newton_iterations", "tangents", "repeats", "cpu_all_s", "cpu_step_all_s",
+           "load1_all", "settings"]
 
 
 def read_csv_rows():
@@ -682,7 +683,7 @@ def read_csv_rows():
         rows = list(csv.DictReader(ln for ln in f if not ln.startswith("#")))
     for r in rows:
         for k in ("error", "error_F1", "error_F2", "error_F3", "cpu_s", "wall_s",
-                  "cpu_step_s", "dt_s", "rho_inf", "load1"):
+                  "cpu_step_s", "rho_inf", "load1"):
             r[k] = float(r[k]) if r.get(k) not in (None, "") else None
         for k in ("elements_or_segments", "order"):
             r[k] = int(r[k])
@@ -737,7 +738,7 @@ def main():
     rows += evaluate(rod_ref, ref, "reference")
     for i in range(1, len(rod_ref)):
         e, _ = error(rod_ref[i - 1], rod_ref[i])
-        notes.append(f"rodyn {REF_RODYN[i - 1][:1]} -> {REF_RODYN[i][:1]} cubic elements: "
+        notes.append(f"rodyn {REF_RODYN[i - 1][0]} -> {REF_RODYN[i][0]} cubic elements: "
                      f"{100 * e:.3f} %")
     notes.append("rodyn static fairlead tension F1 at 20/40/80 cubic elements: "
                  + ", ".join(f"{r['T'][0][0]:.1f}" for r in rod_ref) + " N")
