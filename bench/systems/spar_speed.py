@@ -62,12 +62,12 @@ run (the finest of the reference ladder).
 Cost: each run is a process of its own (rodyn's binary; the peers' a Python process with
 the venv's interpreter), run with OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1; its CPU time
 (user + sys, os.wait4) and wall time, with the 1-minute load average at its start. rodyn's
-process does everything: deck, statics, 600 s of dynamics, the CSV files. The peers'
-processes exclude the static start (MoorDyn's initial condition is computed once per
-segment count by its stationary solver, threshIC 1e-6 (1e-4 above 80 segments), and
-restored with moordyn.Deserialize; CableDyn's Newton statics run in the process and its
-time is recorded apart); the peers' stepping alone (CPU inside the process around the
-time loop, the Python loop included) is recorded too. The ratios divide the peer's
+process does everything: deck, statics, 600 s of dynamics, the CSV files. MoorDyn's
+process leaves out its static start (its initial condition is computed once per segment
+count by its stationary solver, threshIC 1e-6 (1e-4 above 80 segments), in a process of
+its own, and restored with moordyn.Deserialize); CableDyn's Newton statics run in its
+process (cpu_setup_s). The peers' stepping alone (CPU inside the process around the time
+loop, the Python loop included) is recorded too. The ratios divide the peer's
 stepping CPU by rodyn's whole-process CPU (rodyn's statics and output counted against it),
 and are also given process by process.
 
