@@ -81,7 +81,8 @@ reuses them unless --fresh. Phases:
              CableDyn: segments, dt); every run's error.
   final      per tool the three cheapest sweep runs with error <= 1 %, each timed
              --repeats times (default 3): the median CPU picks the tool's cheapest run;
-             the ratios. --final does only this (the sweep's stored results pick the
+             the ratios; MoorDyn's time loop without moordyn.Step (the Python share of its
+             stepping CPU). --final does only this (the sweep's stored results pick the
              candidates), to re-time on an idle machine.
 
   python3 bench/systems/spar_speed.py                 # everything (~25 min of CPU)
@@ -360,6 +361,38 @@ def worker_moordyn(a):
     info = {"status": status, "cpu_setup_s": c1 - c0, "wall_setup_s": w1 - w0,
             "cpu_step_s": c2 - c1, "wall_step_s": w2 - w1}
     np.savez(a.out, t=np.array(out_t), T=np.array(out_T).T, info=json.dumps(info))
+
+
+def worker_moordyn_loop(a):
+    """The MoorDyn worker's time loop without moordyn.Step (the coupling arrays, the force
+    read-outs): the Python share of its stepping CPU. Prints the CPU [s]."""
+    import moordyn
+    base, _ = ic_path(a.n)
+    with open(base + ".bin", "rb") as f:
+        data = f.read()
+    deck = a.out
+    with open(deck, "w") as f:
+        f.write(md_deck(a.n, "MoorDyn", moordyn_options(a.dt)))
+    ts, u = samples()
+    x0 = fairleads()
+    with _Quiet():
+        s = moordyn.Create(deck)
+        moordyn.Init_NoIC(s, x0.ravel().tolist(), [0.0] * 3 * NLEG)
+        moordyn.Deserialize(s, data)
+        pts = [moordyn.GetPoint(s, k + 4) for k in range(NLEG)]
+        force = moordyn.GetPointForce
+        out = []
+        c0 = time.process_time()
+        for k in range(int(round(T_END / H))):
+            x = x0.copy()
+            x[:, 0] += u[k]
+            v = np.zeros_like(x0)
+            v[:, 0] = (u[k + 1] - u[k]) / H
+            x.ravel().tolist(), v.ravel().tolist()
+            out.append([math.sqrt(sum(c * c for c in force(p))) for p in pts])
+        c1 = time.process_time()
+        moordyn.Close(s)
+    print(f"{c1 - c0!r}")
 
 
 def worker_cabledyn(a):
@@ -697,7 +730,7 @@ def main():
     ap.add_argument("--final", action="store_true",
                     help="only re-time the sweep's cheapest runs (stored sweep)")
     ap.add_argument("--repeats", type=int, default=3)
-    ap.add_argument("--worker", choices=("moordyn", "moordyn-ic", "cabledyn"),
+    ap.add_argument("--worker", choices=("moordyn", "moordyn-ic", "moordyn-loop", "cabledyn"),
                     help=argparse.SUPPRESS)
     ap.add_argument("--n", type=int, help=argparse.SUPPRESS)
     ap.add_argument("--dt", type=float, help=argparse.SUPPRESS)
@@ -706,7 +739,7 @@ def main():
     a = ap.parse_args()
     if a.worker:
         {"moordyn": worker_moordyn, "moordyn-ic": worker_moordyn_ic,
-         "cabledyn": worker_cabledyn}[a.worker](a)
+         "moordyn-loop": worker_moordyn_loop, "cabledyn": worker_cabledyn}[a.worker](a)
         return 0
     rodyn = benchlib.check_rodyn(a.rodyn)
     ensure_venv()
@@ -774,6 +807,20 @@ def main():
                 summary.append(f"{tool}: no run at <= 1 %")
                 continue
             pc, pr = best[tool]
+            if tool == "MoorDyn":
+                loop = []
+                for _ in range(a.repeats):
+                    p = subprocess.run([VENV_PY, __file__, "--worker", "moordyn-loop", "--n",
+                                        str(pr["elements_or_segments"]), "--dt", pr["dt_s"],
+                                        "--out", os.path.join(WORK, "moordyn_loop.dat")],
+                                       env=ENV, capture_output=True, text=True, check=True)
+                    loop.append(float(p.stdout.split()[-1]))
+                loop = statistics.median(loop)
+                summary.append(
+                    f"MoorDyn's time loop without moordyn.Step (Python, coupling arrays, "
+                    f"force read-outs): CPU {loop:.3f} s, median of {a.repeats}; MoorDyn "
+                    f"stepping less it / rodyn process CPU = "
+                    f"{(pr['cpu_step_s'] - loop) / rr['cpu_s']:.2f}")
             summary.append(
                 f"{tool}'s cheapest at <= 1 %: {pr['settings']}, error "
                 f"{100 * pr['error']:.3f} %, stepping CPU {pr['cpu_step_s']:.3f} s "
