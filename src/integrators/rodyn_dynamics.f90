@@ -32,7 +32,7 @@ module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, end_a, end_b, scheme_alpha, scheme_emc, scheme_trapezoidal, &
-                          motion_vessel, vessel_t
+                          motion_vessel, motion_table, vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather, copy_values
    use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields, &
@@ -282,9 +282,9 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: tm, w0, scale0
+      real(wp) :: tm, w0, scale0, u(3)
       integer :: node, i, k
-      logical :: released
+      logical :: released, past
       ! a line end whose failure is due is released (rodyn_system_dynamics)
       if (prob%fl%n > 0) then
          call failures_step(prob%fl, prob%sup, prob%jn, prob%r, t0, released)
@@ -328,14 +328,23 @@ contains
       if (prob%bl%nb > 0 .and. prob%water%active) call body_water_set(prob%bl, &
          prob%water%env%water, prob%water%env%r_current, prob%water%field, &
          prob%water%wave_on, tm, prob%s0%x, prob%s0%d, prob%s0%v, prob%wf*dt)
-      ! prescribed positions at the end of the step
+      ! prescribed positions at the end of the step; the step past the run's end (the
+      ! last frame's support forces, rodyn_timeloop's look_ahead) continues a *MOTION
+      ! table that ends before it on the straight line of its last step (held constant,
+      ! it would stop the path there)
+      past = t0 >= prob%model%dynamic%duration - 1.0e-9_wp*dt
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
          ! (vessels unallocated, as in a model built without a deck, is an absent
          ! optional argument)
-         prob%x_held(:, node) = prob%x_start(:, node) + motion_displacement( &
-                                prob%model%motions(prob%motion_of(i)), t0 + dt, prob%vessels, &
-                                prob%x_start(:, node))
+         associate (mo => prob%model%motions(prob%motion_of(i)), x0 => prob%x_start(:, node))
+            u = motion_displacement(mo, t0 + dt, prob%vessels, x0)
+            if (past .and. mo%kind == motion_table) then
+               if (mo%time(size(mo%time)) < t0 + dt) u = 2.0_wp*motion_displacement(mo, &
+                  t0, prob%vessels, x0) - motion_displacement(mo, t0 - dt, prob%vessels, x0)
+            end if
+         end associate
+         prob%x_held(:, node) = prob%x_start(:, node) + u
       end do
       prob%ref_pending = .not. prob%have_conv
       if (prob%have_conv) then

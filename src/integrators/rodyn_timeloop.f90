@@ -638,8 +638,9 @@ contains
    !> support forces would be off by a visible fraction of their range).
    !> The step is solved like the others (for EMC, its energy identity checked),
    !> handed to after_step at t_end + h, and then undone: the state returned is the
-   !> one at t_end, and the step is not counted in the summary. The motions are
-   !> constant beyond their tables. Should it fail, the caller extrapolates.
+   !> one at t_end, and the step is not counted in the summary. A *MOTION table that ends
+   !> before it continues on the straight line of its last step (dynamics_begin_step);
+   !> the other motions as they are defined. Should it fail, the caller extrapolates.
    subroutine look_ahead(prob, ctl, obs, ls, err)
       type(dynamic_problem_t), intent(inout) :: prob   !< problem, state at the end
       type(step_controls_t), intent(in) :: ctl         !< controls
