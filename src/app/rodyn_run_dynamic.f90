@@ -12,7 +12,8 @@ module rodyn_run_dynamic
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_copy
    use rodyn_results, only: line_result_t, run_summary_t, step_log_t
-   use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup, apply_initial_velocities
+   use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup
+   use rodyn_system_dynamics, only: apply_initial_velocities
    use rodyn_timeloop, only: timeloop_run, timeloop_state_t, timeloop_observer_t
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
                                checkpoint_program_id, pending_forces_t

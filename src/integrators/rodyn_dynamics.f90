@@ -62,7 +62,7 @@ module rodyn_dynamics
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
-   public :: apply_initial_velocities, dynamics_accept_step, dynamics_strain_energy
+   public :: dynamics_accept_step, dynamics_strain_energy
    public :: mesh_strain_energy
 
    !> Columns of the Anderson history of the step's chord iterations (rodyn_anderson;
@@ -226,49 +226,6 @@ contains
       end do
    end subroutine dynamics_setup
 
-   !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
-   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes (a body:
-   !> its node G, c its reference point R unless given; its ends then move with it). A FREE
-   !> point moves with the ends on it: its velocity is the mean of theirs, and they take
-   !> it (ends of lines given different velocities meet at the point's).
-   subroutine apply_initial_velocities(model, mesh, state)
-      type(model_t), intent(in) :: model     !< model
-      type(mesh_t), intent(in) :: mesh       !< mesh
-      type(state_t), intent(inout) :: state  !< velocities set
-      real(wp) :: c(3)
-      integer :: k, n0, nn, a, i
-      if (.not. allocated(model%initial_velocities)) return
-      do k = 1, size(model%initial_velocities)
-         associate (iv => model%initial_velocities(k))
-            if (iv%body > 0) then       ! a body's node (its G), about R unless given
-               a = mesh%body_node(iv%body)
-               c = model%bodies(iv%body)%position
-               if (iv%has_centre) c = iv%centre
-               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
-               do i = 1, 3
-                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
-               end do
-               cycle
-            end if
-            n0 = mesh%line_first_node(iv%line)
-            nn = mesh%line_n_nodes(iv%line)
-            if (iv%has_centre) then
-               c = iv%centre
-            else
-               c = sum(state%x(:, n0:n0 + nn - 1), dim=2)/real(nn, wp)
-            end if
-            do a = n0, n0 + nn - 1
-               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
-               do i = 1, 3
-                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
-               end do
-            end do
-         end associate
-      end do
-      call point_velocities(mesh, state)
-   end subroutine apply_initial_velocities
-
-
    !> Start a step from t0 to t0 + dt: remember the state at t_n, set the loads at the
    !> midpoint and the prescribed positions at t_n+1, and predict the iterate by the state
    !> at t_n (the paper's predictor), but at the nodes of cable elements alone (three
@@ -282,9 +239,9 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: tm, w0, scale0, u(3)
+      real(wp) :: tm, w0, scale0
       integer :: node, i, k
-      logical :: released, past
+      logical :: released
       ! a line end whose failure is due is released (rodyn_system_dynamics)
       if (prob%fl%n > 0) then
          call failures_step(prob%fl, prob%sup, prob%jn, prob%r, t0, released)
@@ -328,24 +285,7 @@ contains
       if (prob%bl%nb > 0 .and. prob%water%active) call body_water_set(prob%bl, &
          prob%water%env%water, prob%water%env%r_current, prob%water%field, &
          prob%water%wave_on, tm, prob%s0%x, prob%s0%d, prob%s0%v, prob%wf*dt)
-      ! prescribed positions at the end of the step; the step past the run's end (the
-      ! last frame's support forces, rodyn_timeloop's look_ahead) continues a *MOTION
-      ! table that ends before it on the straight line of its last step (held constant,
-      ! it would stop the path there)
-      past = t0 >= prob%model%dynamic%duration - 1.0e-9_wp*dt
-      do i = 1, size(prob%motion_node)
-         node = prob%motion_node(i)
-         ! (vessels unallocated, as in a model built without a deck, is an absent
-         ! optional argument)
-         associate (mo => prob%model%motions(prob%motion_of(i)), x0 => prob%x_start(:, node))
-            u = motion_displacement(mo, t0 + dt, prob%vessels, x0)
-            if (past .and. mo%kind == motion_table) then
-               if (mo%time(size(mo%time)) < t0 + dt) u = 2.0_wp*motion_displacement(mo, &
-                  t0, prob%vessels, x0) - motion_displacement(mo, t0 - dt, prob%vessels, x0)
-            end if
-         end associate
-         prob%x_held(:, node) = prob%x_start(:, node) + u
-      end do
+      call held_positions(prob, t0, dt)
       prob%ref_pending = .not. prob%have_conv
       if (prob%have_conv) then
          prob%f_extra = prob%f_conv
@@ -383,6 +323,33 @@ contains
                                                 prob%vessels), prob%d_start(:, :, i))
       end do
    end subroutine dynamics_begin_step
+
+   !> The prescribed positions at the end of the step, x_held. The step past the run's
+   !> end (the last frame's support forces, rodyn_timeloop's look_ahead) continues a
+   !> *MOTION table that ends before it on the straight line of its last step (held
+   !> constant, it would stop the path there).
+   subroutine held_positions(prob, t0, dt)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem (x_held set)
+      real(wp), intent(in) :: t0                     !< time at the start of the step [s]
+      real(wp), intent(in) :: dt                     !< step [s]
+      real(wp) :: u(3)
+      integer :: node, i
+      logical :: past
+      past = t0 >= prob%model%dynamic%duration - 1.0e-9_wp*dt
+      do i = 1, size(prob%motion_node)
+         node = prob%motion_node(i)
+         ! (vessels unallocated, as in a model built without a deck, is an absent
+         ! optional argument)
+         associate (mo => prob%model%motions(prob%motion_of(i)), x0 => prob%x_start(:, node))
+            u = motion_displacement(mo, t0 + dt, prob%vessels, x0)
+            if (past .and. mo%kind == motion_table) then
+               if (mo%time(size(mo%time)) < t0 + dt) u = 2.0_wp*motion_displacement(mo, &
+                  t0, prob%vessels, x0) - motion_displacement(mo, t0 - dt, prob%vessels, x0)
+            end if
+         end associate
+         prob%x_held(:, node) = prob%x_start(:, node) + u
+      end do
+   end subroutine held_positions
 
    !> A step is accepted: its forces become the residual's reference of the next step.
    subroutine dynamics_accept_step(prob)
@@ -490,7 +457,7 @@ contains
       class(dynamic_problem_t), intent(inout) :: this !< problem
       logical, intent(in) :: want_k                   !< form the tangent
       type(error_t), intent(inout) :: err             !< status (cannot fail)
-      real(wp) :: c2, kb(6, 6), bdt2, wp_, acc(6), dacc(6, 6), fx_acc
+      real(wp) :: c2, kb(6, 6), bdt2, wp_
       real(wp) :: fx, mx
       integer :: node, i
       if (has_error(err)) return
@@ -545,27 +512,7 @@ contains
                            this%s1%d(:, :, node), this%fint(:, node), fx, kb, want_k)
          if (want_k) call add_node_block(this%sup, node, kb, this%bm)
       end do
-      ! the bodies' added mass on their accelerations (theory.md (142), (154)): the
-      ! accelerations those of a unit mass and director inertias 1/2; in EMC a
-      ! translational added mass with its discrete Munk moment, (151)
-      do i = 1, size(this%inert%ma_node)
-         node = this%inert%ma_node(i)
-         if (this%scheme == scheme_emc .and. this%inert%ma_trans(i)) then
-            call added_mass_emc(this%inert%ma(1:3, 1:3, i), this%s0%d(:, :, node), &
-                                this%s1%d(:, :, node), this%s0%v(:, node), this%dx(:, node), &
-                                this%dt, this%fint(:, node), kb, want_k)
-         else
-            acc = 0.0_wp
-            fx_acc = 0.0_wp
-            call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
-                              this%rest(:, :, node), this%s0%d(:, :, node), &
-                              this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
-            call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
-                                  this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
-                                  dacc, this%fint(:, node), kb, want_k)
-         end if
-         if (want_k) call add_node_block(this%sup, node, kb, this%bm)
-      end do
+      call added_mass_step(this, c2, wp_, want_k)
       ! the roll gauges: k_g d3 d3^T in the iteration matrix, the residual unchanged
       if (want_k) call add_roll_gauges(this%sup, this%gauge_node, this%gauge_k, this%s1%d, &
                                        this%bm)
@@ -590,6 +537,36 @@ contains
       call junctions_condense(this%jn, this%sup, this%rhs, this%bm, want_k, this%s0%d, &
                               this%s1%d, this%wf)
    end subroutine dyn_evaluate
+
+   !> The bodies' added mass on their accelerations (theory.md (142), (154)): the
+   !> accelerations those of a unit mass and director inertias 1/2; in EMC a
+   !> translational added mass with its discrete Munk moment, (151).
+   subroutine added_mass_step(this, c2, wp_, want_k)
+      class(dynamic_problem_t), intent(inout) :: this !< problem
+      real(wp), intent(in) :: c2                      !< d(acceleration)/d(increment) [1/s2]
+      real(wp), intent(in) :: wp_                     !< weight of t_n+1 at the force point
+      logical, intent(in) :: want_k                   !< form the tangent
+      real(wp) :: kb(6, 6), acc(6), dacc(6, 6), fx_acc
+      integer :: node, i
+      do i = 1, size(this%inert%ma_node)
+         node = this%inert%ma_node(i)
+         if (this%scheme == scheme_emc .and. this%inert%ma_trans(i)) then
+            call added_mass_emc(this%inert%ma(1:3, 1:3, i), this%s0%d(:, :, node), &
+                                this%s1%d(:, :, node), this%s0%v(:, node), this%dx(:, node), &
+                                this%dt, this%fint(:, node), kb, want_k)
+         else
+            acc = 0.0_wp
+            fx_acc = 0.0_wp
+            call node_inertia(1.0_wp, [0.5_wp, 0.5_wp, 0.5_wp], c2, wp_, this%dx(:, node), &
+                              this%rest(:, :, node), this%s0%d(:, :, node), &
+                              this%s1%d(:, :, node), acc, fx_acc, dacc, want_k)
+            call added_mass_force(this%inert%ma(:, :, i), this%s0%d(:, :, node), &
+                                  this%s1%d(:, :, node), wp_, this%dt, this%dx(:, node), acc, &
+                                  dacc, this%fint(:, node), kb, want_k)
+         end if
+         if (want_k) call add_node_block(this%sup, node, kb, this%bm)
+      end do
+   end subroutine added_mass_step
 
    !> The water's and seabed's loads of the step (rodyn_water) at the force point of the
    !> scheme (docs/theory.md eq. (72)): x_f = x^n + w dx, with the scheme's velocity and

@@ -4,7 +4,8 @@
 !> moment, (151)), and line failure: a line end released from its support, point or body
 !> at a given time or when its force first reaches a break load (*FAILURE; eq. (143)),
 !> after which the run goes on with the system that remains; the bodies' wave loads set
-!> up in the sea (eq. (150)); and the nodes the *MOTIONs move (motion_nodes).
+!> up in the sea (eq. (150)); the nodes the *MOTIONs move (motion_nodes); and the
+!> initial velocities of lines and bodies (*INITIAL VELOCITY).
 module rodyn_system_dynamics
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, end_a, end_b
@@ -19,7 +20,7 @@ module rodyn_system_dynamics
    implicit none
    private
    public :: point_velocities, added_mass_force, added_mass_emc, failures_t, failures_build
-   public :: failures_step, motion_nodes
+   public :: failures_step, motion_nodes, apply_initial_velocities
    public :: body_waves_start
 
    !> The line ends that fail (*FAILURE) and whether they have.
@@ -246,4 +247,46 @@ contains
          end associate
       end do
    end subroutine motion_nodes
+
+   !> Rigid-body initial velocities (*INITIAL VELOCITY): v_a = v + omega x (x_a - c),
+   !> ddot_ia = omega x d_ia, c the given centre or the mean of the line's nodes (a body:
+   !> its node G, c its reference point R unless given; its ends then move with it). A FREE
+   !> point moves with the ends on it: its velocity is the mean of theirs, and they take
+   !> it (ends of lines given different velocities meet at the point's).
+   subroutine apply_initial_velocities(model, mesh, state)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(state_t), intent(inout) :: state  !< velocities set
+      real(wp) :: c(3)
+      integer :: k, n0, nn, a, i
+      if (.not. allocated(model%initial_velocities)) return
+      do k = 1, size(model%initial_velocities)
+         associate (iv => model%initial_velocities(k))
+            if (iv%body > 0) then       ! a body's node (its G), about R unless given
+               a = mesh%body_node(iv%body)
+               c = model%bodies(iv%body)%position
+               if (iv%has_centre) c = iv%centre
+               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
+               do i = 1, 3
+                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
+               end do
+               cycle
+            end if
+            n0 = mesh%line_first_node(iv%line)
+            nn = mesh%line_n_nodes(iv%line)
+            if (iv%has_centre) then
+               c = iv%centre
+            else
+               c = sum(state%x(:, n0:n0 + nn - 1), dim=2)/real(nn, wp)
+            end if
+            do a = n0, n0 + nn - 1
+               state%v(:, a) = iv%velocity + cross(iv%omega, state%x(:, a) - c)
+               do i = 1, 3
+                  state%dd(:, i, a) = cross(iv%omega, state%d(:, i, a))
+               end do
+            end do
+         end associate
+      end do
+      call point_velocities(mesh, state)
+   end subroutine apply_initial_velocities
 end module rodyn_system_dynamics

@@ -669,17 +669,7 @@ contains
       if (has_error(err)) return
       call validate_water(deck, pend, model, err)
       if (has_error(err)) return
-      call system_complete(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_bodies(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_body_wave_loads(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_failures(deck, pend, model, err)
-      if (has_error(err)) return
-      call resolve_offset_curve(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_modal(deck, pend, model, err)
+      call validate_system(deck, pend, model, err)
       if (has_error(err)) return
       call dynamic_scheme_default(model)
       call validate_waves(deck, model, err)
@@ -697,6 +687,26 @@ contains
          if (has_error(err)) return
       end do
    end subroutine validate_model
+
+   !> The whole-deck checks of a mooring system: every group of lines held, the bodies'
+   !> volumes, drag and wave loads, the failures, the offset curve and *MODAL.
+   subroutine validate_system(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< what the cards named
+      type(model_t), intent(inout) :: model   !< model (attachments, failures, the curve set)
+      type(error_t), intent(inout) :: err     !< status
+      call system_complete(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_bodies(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_body_wave_loads(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_failures(deck, pend, model, err)
+      if (has_error(err)) return
+      call resolve_offset_curve(deck, pend, model, err)
+      if (has_error(err)) return
+      call check_modal(deck, pend, model, err)
+   end subroutine validate_system
 
    !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
    !> END=B is the last node).
