@@ -7,11 +7,12 @@
 module bench_arrow_matrix
    use rodyn_kinds, only: wp
    use rodyn_banded, only: banded_t, banded_init, banded_set_pivoting
+   use rodyn_error, only: error_t, has_error
    use rodyn_arrowhead, only: arrowhead_t, arrowhead_init, arrowhead_block_init, &
-                              arrowhead_matvec
+                              arrowhead_matvec, arrowhead_factor, arrowhead_solve
    implicit none
    private
-   public :: arrow_problem, bench_args
+   public :: arrow_problem, bench_args, time_arrowhead
 
 contains
 
@@ -59,6 +60,37 @@ contains
       end do
       call arrowhead_matvec(ah, band, xt(:nb), xt(nb + 1:), bx, by)
    end subroutine arrow_problem
+
+   !> The shortest wall times [s] of `reps` factorisations (tf) and solves (ts) of the
+   !> arrowhead, each from a fresh copy of band, and the solution (x, y) of (bx, by).
+   subroutine time_arrowhead(ah, band, bx, by, reps, tf, ts, x, y)
+      type(arrowhead_t), intent(inout) :: ah   !< couplings (and their factors)
+      type(banded_t), intent(in) :: band       !< band of all lines
+      real(wp), intent(in) :: bx(:), by(:)     !< right-hand side
+      integer, intent(in) :: reps              !< repetitions
+      real(wp), intent(out) :: tf, ts          !< shortest factorisation and solve [s]
+      real(wp), intent(out) :: x(:), y(:)      !< the solution
+      type(banded_t) :: bm
+      type(error_t) :: err
+      integer(kind=8) :: t0, t1, t2, rate
+      integer :: rep
+      call system_clock(count_rate=rate)
+      tf = huge(1.0_wp)
+      ts = huge(1.0_wp)
+      do rep = 1, reps
+         bm = band
+         call system_clock(t0)
+         call arrowhead_factor(ah, bm, err)
+         call system_clock(t1)
+         x = bx
+         y = by
+         call arrowhead_solve(ah, bm, x, y, err)
+         call system_clock(t2)
+         tf = min(tf, real(t1 - t0, wp)/real(rate, wp))
+         ts = min(ts, real(t2 - t1, wp)/real(rate, wp))
+      end do
+      if (has_error(err)) error stop 'bench: the arrowhead factorisation or solve failed'
+   end subroutine time_arrowhead
 
    !> The drivers' arguments M N HB REPS.
    subroutine bench_args(m, n, hb, reps)

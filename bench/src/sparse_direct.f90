@@ -9,11 +9,9 @@
 program sparse_direct
    use, intrinsic :: iso_c_binding, only: c_int, c_double
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t, has_error
    use rodyn_banded, only: banded_t
-   use rodyn_arrowhead, only: arrowhead_t, arrowhead_factor, arrowhead_solve, &
-                              arrowhead_matvec
-   use bench_arrow_matrix, only: arrow_problem, bench_args
+   use rodyn_arrowhead, only: arrowhead_t, arrowhead_matvec
+   use bench_arrow_matrix, only: arrow_problem, bench_args, time_arrowhead
    implicit none
    interface
       integer(c_int) function bench_umfpack(n, ap, ai, ax, b, x, reps, times) &
@@ -34,13 +32,11 @@ program sparse_direct
       end function bench_klu
    end interface
    type(arrowhead_t) :: ah
-   type(banded_t) :: bm, band
-   type(error_t) :: err
-   integer :: m, n, hb, reps, rep, nb, nj, nt
+   type(banded_t) :: band
+   integer :: m, n, hb, reps, nb, nj, nt
    integer(c_int), allocatable :: ap(:), ai(:)
    real(c_double), allocatable :: ax(:), b(:), x(:)
    real(c_double) :: times(3)
-   integer(kind=8) :: t0, t1, t2, rate
    real(wp), allocatable :: bx(:), by(:), xt(:), xa(:), ya(:), rx(:), ry(:)
    real(wp) :: tf, ts
    call bench_args(m, n, hb, reps)
@@ -53,22 +49,7 @@ program sparse_direct
    b(:nb) = bx
    b(nb + 1:) = by
    ! the arrowhead
-   call system_clock(count_rate=rate)
-   tf = huge(1.0_wp)
-   ts = huge(1.0_wp)
-   do rep = 1, reps
-      bm = band
-      call system_clock(t0)
-      call arrowhead_factor(ah, bm, err)
-      call system_clock(t1)
-      xa = bx
-      ya = by
-      call arrowhead_solve(ah, bm, xa, ya, err)
-      call system_clock(t2)
-      tf = min(tf, real(t1 - t0, wp)/real(rate, wp))
-      ts = min(ts, real(t2 - t1, wp)/real(rate, wp))
-   end do
-   if (has_error(err)) error stop 'bench_sparse: the arrowhead failed'
+   call time_arrowhead(ah, band, bx, by, reps, tf, ts, xa, ya)
    call report('arrowhead', [0.0_wp, tf, ts], [xa, ya])
    if (bench_umfpack(nt, ap, ai, ax, b, x, reps, times) /= 0) error stop 'UMFPACK failed'
    call report('umfpack', times, x)

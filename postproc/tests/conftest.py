@@ -3,7 +3,7 @@
 The tests use the installed package rodyn_post (`python3 -m pip install -e postproc`,
 which tools/setup.sh does); pytest puts this folder on the path for designed.py and the
 helpers the test modules share. A rodyn_post installed from another checkout would be
-tested instead of this one: that stops the session.
+tested instead of this one: the tests then stop before any of them runs.
 """
 from pathlib import Path
 
@@ -23,7 +23,7 @@ if INSTALLED != POSTPROC / "rodyn_post":
 @pytest.fixture(scope="session")
 def short_run(tmp_path_factory):
     """Folder of 0.6 s of the paper's case 2 run by RODYN_EXE (skipped without it),
-    made once per test session; tests copy it before writing into it."""
+    made once per pytest run; tests copy it before writing into it."""
     return short_case2(tmp_path_factory.mktemp("rodyn") / "case2_short")
 
 

@@ -135,7 +135,7 @@ contains
       type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
-      real(wp) :: mat(6, 6), row(6)
+      real(wp) :: mat(6, 6)
       logical :: damping
       integer :: ib, k
 
@@ -153,13 +153,8 @@ contains
                             ' (at '//location(deck, k)//')', err)
             return
          end if
-         call card_check_data(card, 6, 6, err, 'row of 6 values')
+         call read_matrix6(card, 'C(k,1), ..., C(k,6)', mat, err)
          if (has_error(err)) return
-         do k = 1, 6
-            call card_data_reals(card, k, 6, row, err, 'C(k,1), ..., C(k,6)')
-            if (has_error(err)) return
-            mat(k, :) = row
-         end do
          if (damping) then
             model%bodies(ib)%damping = mat
             pend%body_damp(ib) = ic
@@ -240,16 +235,10 @@ contains
       type(card_t), intent(in) :: card        !< the card
       real(wp), intent(out) :: a(6, 6)        !< the matrix [kg, kg m, kg m2]
       type(error_t), intent(inout) :: err     !< status
-      real(wp) :: row(6), k(6, 6), m(6, 6), lam(6), big
+      real(wp) :: k(6, 6), m(6, 6), lam(6), big
       integer :: i, j
-      a = 0.0_wp
-      call card_check_data(card, 6, 6, err, 'row of 6 values')
+      call read_matrix6(card, 'A(i,1), ..., A(i,6)', a, err)
       if (has_error(err)) return
-      do i = 1, 6
-         call card_data_reals(card, i, 6, row, err, 'A(i,1), ..., A(i,6)')
-         if (has_error(err)) return
-         a(i, :) = row
-      end do
       big = maxval(abs(a))
       do i = 2, 6
          do j = 1, i - 1
@@ -273,6 +262,24 @@ contains
                          'eigenvalue '//real_str(minval(lam))//'): a motion would lower '// &
                          'the kinetic energy', err)
    end subroutine read_added_matrix
+
+   !> A 6 x 6 matrix as the card's 6 data lines of 6 values (0 on an error).
+   subroutine read_matrix6(card, what, mat, err)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: what    !< names of a row's values
+      real(wp), intent(out) :: mat(6, 6)      !< the matrix, by rows
+      type(error_t), intent(inout) :: err     !< status
+      real(wp) :: row(6)
+      integer :: i
+      mat = 0.0_wp
+      call card_check_data(card, 6, 6, err, 'row of 6 values')
+      if (has_error(err)) return
+      do i = 1, 6
+         call card_data_reals(card, i, 6, row, err, what)
+         if (has_error(err)) return
+         mat(i, :) = row
+      end do
+   end subroutine read_matrix6
 
    !> *OFFSET CURVE, BODY=name, FORCE=F [, HEADING=deg] [, STEPS=n]: after the statics, a
    !> horizontal force at the body's R towards HEADING raised to F in n steps (1 to 1000,
