@@ -38,11 +38,13 @@ module rodyn_cable_element
 contains
 
    !> Internal force fe (3, p+1) and tangent ke (3(p+1), 3(p+1)) of one element. With
-   !> slack_axial (the static Newton iteration matrix) a slack point (lambda <= 1) keeps
-   !> its axial stiffness EA/lambda t t^T, and the geometric stiffness phi I is taken no
-   !> smaller than slack_floor EA, in the matrix only (not in the force): it would
+   !> slack_axial (the static Newton iteration matrix) a slack point (lambda <= 1) takes
+   !> the axial stiffness slack_floor EA/lambda t t^T, and the geometric stiffness phi I
+   !> no smaller than slack_floor EA, in the matrix only (not in the force): it would
    !> otherwise be singular wherever a stretch of line starts slack or unstretched (the
-   !> grounded part of a leg's start); the equilibrium found is the same.
+   !> grounded part of a leg's start); the full EA there would move a slack stretch by
+   !> the residual over EA a correction, and Newton would stall. The equilibrium found
+   !> is the same.
    !> docs/theory.md eqs. (61)-(62).
    pure subroutine cable_element_static(p, le, ea, xe, fe, ke, want_k, rule, slack_axial)
       integer, intent(in) :: p                !< element order
@@ -70,7 +72,7 @@ contains
          call tension_law(ea, lam, phi, dphi)
          call add_force(nen, dn(1:nen), wj*phi*xp, fe)
          if (.not. want_k) cycle
-         if (floor .and. lam <= 1.0_wp) dphi = ea/lam**2
+         if (floor .and. lam <= 1.0_wp) dphi = slack_floor*ea/lam**2
          if (floor) phi = max(phi, slack_floor*ea)
          call law_tangent(xp, lam, phi, dphi, 1.0_wp, dfg)
          call add_tangent(nen, dn(1:nen), wj, dfg, ke)

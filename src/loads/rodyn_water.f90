@@ -34,7 +34,7 @@ module rodyn_water
    implicit none
    private
    public :: water_loads_t, water_loads_build, water_element, water_attachment
-   public :: water_set_time
+   public :: water_set_time, contact_parts
 
    integer, parameter :: max_wp = max_order + 1 !< most load points per element
 
@@ -346,28 +346,32 @@ contains
    end subroutine bernstein_of_nodal
 
    !> The intervals [lo, hi] of xi in [-1, 1] where the polynomial sum N_a(xi) g_a is
-   !> negative: sign changes at 8p + 1 sample points, each root refined by bisection.
-   !> docs/theory.md eq. (98).
+   !> negative. Between its critical points (the roots of its derivative, of degree
+   !> p - 1 <= 2, in closed form) the polynomial is monotone, so each piece holds at most
+   !> one root, found by bisection: a part in contact as narrow as it may be is found,
+   !> and the parts change continuously with the nodal values. docs/theory.md eq. (98).
    pure subroutine contact_parts(p, gn, nparts, lo, hi)
       integer, intent(in) :: p              !< element order
       real(wp), intent(in) :: gn(:)         !< (p+1) nodal values [m]
       integer, intent(out) :: nparts        !< intervals found
       real(wp), intent(out) :: lo(:)        !< (>= p+1) their starts
       real(wp), intent(out) :: hi(:)        !< (>= p+1) their ends
-      real(wp) :: x0, x1, g1, xm, root, xa(max_nen), dd(max_nen)
-      integer :: i, it, j
+      real(wp) :: x0, x1, g1, xm, root, xa(max_nen), dd(max_order + 2), brk(max_order + 1)
+      integer :: i, it, j, nb
       logical :: inside
       ! the polynomial in Newton's form through the nodes (divided differences): each
       ! value then costs p multiplications, not a set of shape functions
       do i = 1, p + 1
          xa(i) = -1.0_wp + 2.0_wp*real(i - 1, wp)/real(p, wp)
       end do
+      dd = 0.0_wp
       dd(1:p + 1) = gn(1:p + 1)
       do j = 1, p
          do i = p + 1, j + 1, -1
             dd(i) = (dd(i) - dd(i - 1))/(xa(i) - xa(i - j))
          end do
       end do
+      call critical_points(p, xa, dd, nb, brk)
       nparts = 0
       x0 = -1.0_wp
       inside = value_at(x0) < 0.0_wp
@@ -375,8 +379,9 @@ contains
          nparts = 1
          lo(1) = -1.0_wp
       end if
-      do i = 1, 8*p
-         x1 = -1.0_wp + 2.0_wp*real(i, wp)/real(8*p, wp)
+      do i = 1, nb + 1
+         x1 = 1.0_wp
+         if (i <= nb) x1 = brk(i)
          g1 = value_at(x1)
          if ((g1 < 0.0_wp) .neqv. inside) then
             xm = x0
@@ -413,6 +418,52 @@ contains
          end do
       end function value_at
    end subroutine contact_parts
+
+   !> The critical points in (-1, 1), ascending, of the polynomial of degree p <= 3 in
+   !> Newton's form dd(1) + dd(2) (xi - x1) + dd(3) (xi - x1)(xi - x2) + dd(4) (xi - x1)
+   !> (xi - x2)(xi - x3): the roots of its derivative a xi^2 + b xi + c.
+   pure subroutine critical_points(p, xa, dd, nb, brk)
+      integer, intent(in) :: p              !< degree
+      real(wp), intent(in) :: xa(:)         !< (p+1) nodes
+      real(wp), intent(in) :: dd(:)         !< (4) divided differences, 0 past p + 1
+      integer, intent(out) :: nb            !< critical points found
+      real(wp), intent(out) :: brk(:)       !< (>= 2) the points
+      real(wp) :: a, b, c, disc, q, r(2), s1, s2
+      integer :: k, nr
+      nb = 0
+      if (p < 2) return
+      s1 = xa(1) + xa(2)
+      s2 = 0.0_wp
+      a = 0.0_wp
+      if (p == 3) then
+         s1 = xa(1) + xa(2) + xa(3)
+         s2 = xa(1)*xa(2) + xa(1)*xa(3) + xa(2)*xa(3)
+         a = 3.0_wp*dd(4)
+      end if
+      b = 2.0_wp*dd(3) - 2.0_wp*dd(4)*s1
+      c = dd(2) - dd(3)*(xa(1) + xa(2)) + dd(4)*s2
+      if (a == 0.0_wp) then
+         if (b == 0.0_wp) return
+         r(1) = -c/b
+         nr = 1
+      else
+         disc = b*b - 4.0_wp*a*c
+         if (disc <= 0.0_wp) return
+         q = -0.5_wp*(b + sign(sqrt(disc), b))   ! (the stable pair of roots)
+         r(1) = q/a
+         r(2) = r(1)
+         if (q /= 0.0_wp) r(2) = c/q
+         nr = 2
+      end if
+      do k = 1, nr
+         if (.not. (abs(r(k)) < 1.0_wp)) cycle
+         nb = nb + 1
+         brk(nb) = r(k)
+      end do
+      if (nb == 2) then
+         if (brk(1) > brk(2)) brk(1:2) = [brk(2), brk(1)]
+      end if
+   end subroutine critical_points
 
    !> Water force on a point attachment (*ATTACHMENT; docs/theory.md eq. (74)): buoyancy
    !> rho_w g V of the
