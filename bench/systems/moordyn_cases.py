@@ -29,8 +29,9 @@ pinned    tests/bodies.cpp TEST_CASE("Pinned body") on tests/Mooring/body_tests/
           moordyn_pinned_body.inp). A massless body pinned at (0, 0, -5) carrying a rigid
           10 m rod (5e3 kg/m, diameter 2 m) fixed to it from 5 m to 15 m below the pin
           (the rod's ends are given in the body's axes), in a vacuum, its pin accelerated
-          along y at a = 0.5 m/s2 from rest. rodyn has no body moved by a prescribed
-          motion: its deck is the same case in the pin's frame (gravity (0, -a, -g), a
+          along y at a = 0.5 m/s2 from rest. rodyn has no body whose translation alone
+          is prescribed (MoorDyn's CoupledPinned): its deck is the same case in the pin's
+          frame (gravity (0, -a, -g), a
           line from a FIXED point: a massless rigid 5 m arm, then the rod; see the
           deck). The test: dt = 0.01 s; after 30 steps it counts the
           extrema of the roll (sign changes of its slope) and stops after the 4th; the mean
@@ -47,6 +48,17 @@ pinned    tests/bodies.cpp TEST_CASE("Pinned body") on tests/Mooring/body_tests/
           I_r_correction on its lumped nodes; rodyn's with the solid section's rotary
           inertia), g' = sqrt(g^2 + a^2), th = atan(a/g) the swing's amplitude, within
           1e-3.
+
+orbital   tests/bodies.cpp TEST_CASE("Excentric body") on tests/Mooring/body_tests/
+          orbitalBody.txt (bench/systems/moordyn/orbitalBody.txt; rodyn: bench/systems/
+          decks/moordyn_orbital_body.inp). Two free bodies with their reference points
+          10 m from their centres of mass, one carrying two point masses, the other a
+          rigid rod, given a spin of 0.2 rad/s about the x axis through the centres, no
+          gravity, no water. The test: every 0.25 s for 10 s each reference point stays
+          10 m from the centre within 1e-6 of the radius and turns at 0.2 rad/s within
+          1e-6 (its angle over the time). rodyn only: the test sets the bodies' velocities
+          through MoorDyn's C++ API, which its Python package lacks; MoorDyn's criteria
+          are closed forms.
 
 Tolerance of 1e-3 on the periods of rodyn against MoorDyn: both integrate the same
 equations; the differences of model (consistent against lumped line mass: the line is
@@ -74,18 +86,17 @@ Measured (Release build, MoorDyn 2.7.2; bench/results/moordyn_cases.csv):
     MoorDyn -0.050852 rad (1324 steps), atan(-a/g) = -0.050942 rad (5.1e-5 and 9.0e-5
     from it, the test's 0.001); period rodyn 6.60835 s, MoorDyn 6.60830 s, compound
     pendulum 6.60830 s (7.8e-6 and 1.3e-7); swing amplitude 0.050942 rad on both.
+  excentric bodies (rodyn, EMC at dt 0.01 s): radius within 1.3e-14 (the body with the
+    point masses) and 2.5e-12 (the body with the clamped rod) of 10 m; turning rate
+    3.33e-7 and 3.39e-7 below 0.2 rad/s, the Cayley rotation's (omega dt)^2/12 = 3.3e-7
+    (the test: 1e-6 each).
 
 Not done (the other point/body cases of MoorDyn's tests/, and why):
   "Rotating body" (rotatingBody.txt): a point coupled to the caller dragged on arcs;
       rodyn moves a line end only by *MOTION (harmonic, a table or a vessel), and its
       settle steps are jumps of the coupled point; needs a prescribed-motion point.
-  "Excentric body" (orbitalBody.txt): bodies given an initial velocity (rodyn: initial
-      velocities of a body not modelled), a body of zero mass with point masses on it
-      (rodyn's body points carry no mass; a FREE body needs MASS > 0 and three inertias
-      > 0 while this one has Izz = 0) and a rod fixed to a body (a rod's end on a point is
-      a ball joint in rodyn).
-  "Body drag" (bodyDrag.txt): the body's drag (CdA), not modelled; the test checks only
-      that MoorDyn runs.
+  "Body drag" (bodyDrag.txt): the test checks only that MoorDyn runs (rodyn's body drag,
+      *BODY DRAG, is verified by ctest -R verify_body_current_drag).
   bodies_and_rods.cpp, rods.cpp, tripod.cpp and the others: MoorDyn rods (rigid, fixed to
       bodies, with end added mass and drag), body added mass, wave kinematics from files.
 
@@ -123,6 +134,8 @@ P_T = 2.0 * math.pi / math.sqrt(G / P_L0)
 P_MASS, P_LUNSTR, P_EA, P_MLINE = 1.0e5, 100.5, 1.0e9, 7.85398
 # pinned body (tests/Mooring/body_tests/pinnedBody.txt, tests/bodies.cpp)
 B_ACCEL, B_DT, B_LEN, B_DIAM, B_ARM = 0.5, 0.01, 10.0, 2.0, 5.0
+# excentric body (tests/Mooring/body_tests/orbitalBody.txt, tests/bodies.cpp)
+O_RADIUS, O_OMEGA, O_CENTRE = 10.0, 0.2, (0.0, 0.0, 20.0)
 
 TOL = {
     "pendulum_length": 0.01,       # MoorDyn's: |x| within 1 % of l0
@@ -132,6 +145,8 @@ TOL = {
     "pendulum_amp_vs_md": 0.01,    # MoorDyn's amplitude tolerance
     "pendulum_period_closed": 0.025,  # MoorDyn's peak-time tolerance, on the period
     "pinned_mean_roll": 0.001,     # MoorDyn's [rad]
+    "orbital_radius": 1e-6,        # MoorDyn's: |R - r0| within 1e-6 of the radius
+    "orbital_rate": 1e-6,          # MoorDyn's: angle / t within 1e-6 of omega
     "pinned_mean_vs_md": 1e-4,     # this script's [rad]
     "pinned_period_vs_md": 1e-3,   # this script's
     "pinned_period_closed": 1e-3,  # this script's
@@ -356,6 +371,27 @@ def pendulum_checks(t, x, z, x0_md_test, xstart):
                 period=period, ncross=ncross, amp=amp)
 
 
+def orbital_errors(out):
+    """MoorDyn's excentric-body checks on rodyn's body frames (dynamic_bodies.csv): per
+    body the largest | |R - r0| - r | / r and | atan2(z, y) / t - w | / w over the frames
+    after t = 0 (the test's samples every 0.25 s)."""
+    res = {}
+    with open(os.path.join(out, "dynamic_bodies.csv")) as f:
+        for r in csv.DictReader(f):
+            t = float(r["time_s"])
+            if t <= 0.0:
+                continue
+            q = [float(r["x_m"]) - O_CENTRE[0], float(r["y_m"]) - O_CENTRE[1],
+                 float(r["z_m"]) - O_CENTRE[2]]
+            e_r = abs(math.sqrt(sum(v * v for v in q)) - O_RADIUS) / O_RADIUS
+            e_w = abs(math.atan2(q[2], q[1]) / t - O_OMEGA) / O_OMEGA
+            a, b, n = res.get(r["body"], (0.0, 0.0, 0))
+            res[r["body"]] = (max(a, e_r), max(b, e_w), n + 1)
+    if not res or any(n != 40 for _, _, n in res.values()):
+        sys.exit(f"orbital: expected 40 frames after t = 0 per body in {out}")
+    return [(b, *v) for b, v in sorted(res.items())]
+
+
 def quick(args):
     rodyn = os.path.abspath(args.rodyn)
     if not os.access(rodyn, os.X_OK):
@@ -443,6 +479,15 @@ def quick(args):
         mamp = (max(mtip) - min(mtip)) / 2.0
         row("pinned", "swing amplitude (max-min)/2 [rad]", f"{ramp:.6f}", f"{mamp:.6f}",
             f"{-theta:.6f}", abs(ramp / mamp - 1.0), 0.01, "this script")
+
+        # ---- excentric body: MoorDyn's own criteria, at its 0.25 s samples
+        out = os.path.join(work, "orbital")
+        run_rodyn(rodyn, os.path.join(DECKS, "moordyn_orbital_body.inp"), out)
+        for body, err_r, err_w, n in orbital_errors(out):
+            row("orbital", f"rodyn {body}: max ||R-r0|-r|/r ({n} samples)", f"{err_r:.3e}",
+                "", "0", err_r, TOL["orbital_radius"], "MoorDyn test")
+            row("orbital", f"rodyn {body}: max |angle/t-w|/w ({n} samples)", f"{err_w:.3e}",
+                "", "0", err_w, TOL["orbital_rate"], "MoorDyn test")
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
