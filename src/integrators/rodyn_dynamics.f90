@@ -32,7 +32,7 @@ module rodyn_dynamics
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, end_a, end_b, scheme_alpha, scheme_emc, scheme_trapezoidal, &
-                          motion_vessel, motion_table, vessel_t
+                          motion_vessel, vessel_t
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t, state_allocate, state_copy, state_gather, copy_values
    use rodyn_rod_element, only: rod_gp_t, max_points, rod_element_fields, &
@@ -54,11 +54,11 @@ module rodyn_dynamics
    use rodyn_junctions, only: junctions_condense, junctions_place, junctions_clamp
    use rodyn_system_dynamics, only: point_velocities, added_mass_force, added_mass_emc, &
                                     failures_t, failures_build, failures_step, &
-                                    body_waves_start, motion_nodes
+                                    body_waves_start, motion_nodes, held_motion
    use rodyn_assembly_bodies, only: assemble_bodies
    use rodyn_rotation, only: cross
    use rodyn_inertia, only: inertia_t, inertia_build
-   use rodyn_motion, only: motion_displacement, motion_rotation, vessel_offset_rest
+   use rodyn_motion, only: vessel_offset_rest
    implicit none
    private
    public :: dynamic_problem_t, dynamics_setup, dynamics_begin_step, dynamics_end_step
@@ -239,7 +239,7 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: tm, w0, scale0
+      real(wp) :: tm, w0, scale0, u(3), q(3, 3)
       integer :: node, i, k
       logical :: released
       ! a line end whose failure is due is released (rodyn_system_dynamics)
@@ -318,38 +318,38 @@ contains
       ! unknowns are held (their Newton corrections are zero), so they stay there
       do i = 1, size(prob%motion_node)
          if (.not. prob%motion_turns(i)) cycle
-         prob%s1%d(:, :, prob%motion_node(i)) = matmul(motion_rotation( &
-                                                prob%model%motions(prob%motion_of(i)), t0 + dt, &
-                                                prob%vessels), prob%d_start(:, :, i))
+         node = prob%motion_node(i)
+         call held_motion(prob%model%motions(prob%motion_of(i)), prob%vessels, &
+                          prob%x_start(:, node), t0, dt, past_end(prob, t0, dt), u, q)
+         prob%s1%d(:, :, node) = matmul(q, prob%d_start(:, :, i))
       end do
    end subroutine dynamics_begin_step
 
-   !> The prescribed positions at the end of the step, x_held. The step past the run's
-   !> end (the last frame's support forces, rodyn_timeloop's look_ahead) continues a
-   !> *MOTION table that ends before it on the straight line of its last step (held
-   !> constant, it would stop the path there).
+   !> The prescribed positions at the end of the step, x_held (held_motion: the step past
+   !> the run's end continues a motion whose data end before it).
    subroutine held_positions(prob, t0, dt)
       type(dynamic_problem_t), intent(inout) :: prob !< problem (x_held set)
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: u(3)
+      real(wp) :: u(3), q(3, 3)
       integer :: node, i
-      logical :: past
-      past = t0 >= prob%model%dynamic%duration - 1.0e-9_wp*dt
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
          ! (vessels unallocated, as in a model built without a deck, is an absent
          ! optional argument)
-         associate (mo => prob%model%motions(prob%motion_of(i)), x0 => prob%x_start(:, node))
-            u = motion_displacement(mo, t0 + dt, prob%vessels, x0)
-            if (past .and. mo%kind == motion_table) then
-               if (mo%time(size(mo%time)) < t0 + dt) u = 2.0_wp*motion_displacement(mo, &
-                  t0, prob%vessels, x0) - motion_displacement(mo, t0 - dt, prob%vessels, x0)
-            end if
-         end associate
+         call held_motion(prob%model%motions(prob%motion_of(i)), prob%vessels, &
+                          prob%x_start(:, node), t0, dt, past_end(prob, t0, dt), u, q)
          prob%x_held(:, node) = prob%x_start(:, node) + u
       end do
    end subroutine held_positions
+
+   !> The step from t0 is the one past the run's end (rodyn_timeloop's look_ahead).
+   pure logical function past_end(prob, t0, dt)
+      type(dynamic_problem_t), intent(in) :: prob !< problem
+      real(wp), intent(in) :: t0                  !< time at the start of the step [s]
+      real(wp), intent(in) :: dt                  !< step [s]
+      past_end = t0 >= prob%model%dynamic%duration - 1.0e-9_wp*dt
+   end function past_end
 
    !> A step is accepted: its forces become the residual's reference of the next step.
    subroutine dynamics_accept_step(prob)

@@ -4,11 +4,15 @@
 !> moment, (151)), and line failure: a line end released from its support, point or body
 !> at a given time or when its force first reaches a break load (*FAILURE; eq. (143)),
 !> after which the run goes on with the system that remains; the bodies' wave loads set
-!> up in the sea (eq. (150)); the nodes the *MOTIONs move (motion_nodes); and the
-!> initial velocities of lines and bodies (*INITIAL VELOCITY).
+!> up in the sea (eq. (150)); the nodes the *MOTIONs move (motion_nodes) and where a
+!> step takes them (held_motion); and the initial velocities of lines and bodies
+!> (*INITIAL VELOCITY).
 module rodyn_system_dynamics
    use rodyn_kinds, only: wp
-   use rodyn_model, only: model_t, end_a, end_b
+   use rodyn_model, only: model_t, end_a, end_b, motion_t, motion_table, motion_vessel, &
+                          vessel_t, vessel_from_rao
+   use rodyn_motion, only: motion_displacement, motion_rotation, vessel_motion, &
+                           vessel_slow_motion
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_state, only: state_t
    use rodyn_rotation, only: cross, skew, rotation_cayley_inverse, relative_rotation
@@ -21,7 +25,7 @@ module rodyn_system_dynamics
    private
    public :: point_velocities, added_mass_force, added_mass_emc, failures_t, failures_build
    public :: failures_step, motion_nodes, apply_initial_velocities
-   public :: body_waves_start
+   public :: body_waves_start, held_motion
 
    !> The line ends that fail (*FAILURE) and whether they have.
    type :: failures_t
@@ -289,4 +293,86 @@ contains
       end do
       call point_velocities(mesh, state)
    end subroutine apply_initial_velocities
+   !> Where a prescribed motion takes a node over the step t0 -> t0 + dt: its
+   !> displacement u from x0 (its position at t = 0) and its rotation q at t0 + dt
+   !> (rodyn_motion; q = I but for a vessel's). The step past the run's end (past:
+   !> rodyn_timeloop's look_ahead, for the last frame's support forces) continues a
+   !> motion whose data end before t0 + dt on the path of its last step: a *MOTION table
+   !> by u(t0 + dt) = 2 u(t0) - u(t0 - dt), a vessel's motion and drift tables by a row
+   !> at t0 + dt continuing them so (extend_vessel), from which every point of the
+   !> vessel, and a body on it, moves as one rigid body. Held constant past their last
+   !> row, the tables would stop the path there.
+   pure subroutine held_motion(mo, vessels, x0, t0, dt, past, u, q)
+      type(motion_t), intent(in) :: mo                   !< the motion
+      type(vessel_t), intent(in), optional :: vessels(:) !< the model's (motion_vessel)
+      real(wp), intent(in) :: x0(3)                      !< the node at t = 0 [m]
+      real(wp), intent(in) :: t0                         !< start of the step [s]
+      real(wp), intent(in) :: dt                         !< step [s]
+      logical, intent(in) :: past                        !< the step past the run's end
+      real(wp), intent(out) :: u(3)                      !< displacement at t0 + dt [m]
+      real(wp), intent(out) :: q(3, 3)                   !< rotation at t0 + dt [-]
+      type(vessel_t), allocatable :: vx(:)
+      if (past .and. motion_data_end(mo, vessels) < t0 + dt) then
+         if (mo%kind == motion_vessel) then
+            vx = vessels
+            call extend_vessel(vx(mo%vessel), t0, dt)
+            u = motion_displacement(mo, t0 + dt, vx, x0)
+            q = motion_rotation(mo, t0 + dt, vx)
+         else
+            u = 2.0_wp*motion_displacement(mo, t0, vessels, x0) - &
+                motion_displacement(mo, t0 - dt, vessels, x0)
+            q = motion_rotation(mo, t0 + dt, vessels)
+         end if
+      else
+         u = motion_displacement(mo, t0 + dt, vessels, x0)
+         q = motion_rotation(mo, t0 + dt, vessels)
+      end if
+   end subroutine held_motion
+
+   !> A vessel's motion and drift tables that end before t0 + dt given a row there that
+   !> continues each on the straight line of the step t0 - dt -> t0.
+   pure subroutine extend_vessel(ve, t0, dt)
+      type(vessel_t), intent(inout) :: ve !< vessel (rows appended)
+      real(wp), intent(in) :: t0          !< start of the step [s]
+      real(wp), intent(in) :: dt          !< step [s]
+      type(vessel_t) :: vt
+      real(wp) :: xi(6), d(4)
+      integer :: n
+      if (ve%kind /= vessel_from_rao .and. allocated(ve%time)) then
+         n = size(ve%time)
+         if (ve%time(n) < t0 + dt) then
+            xi = 2.0_wp*vessel_motion(ve, t0) - vessel_motion(ve, t0 - dt)
+            ve%time = [ve%time, t0 + dt]
+            ve%motion = reshape([ve%motion, xi], [6, n + 1])
+         end if
+      end if
+      if (.not. allocated(ve%drift_time)) return
+      n = size(ve%drift_time)
+      if (ve%drift_time(n) >= t0 + dt) return
+      vt = ve                       ! the drift table's part alone of the slow motion
+      vt%offset = 0.0_wp
+      vt%drift_period = 0.0_wp
+      d = 2.0_wp*vessel_slow_motion(vt, t0) - vessel_slow_motion(vt, t0 - dt)
+      ve%drift_time = [ve%drift_time, t0 + dt]
+      ve%drift_table = reshape([ve%drift_table, d], [4, n + 1])
+   end subroutine extend_vessel
+
+   !> The last time a motion's data define it: a *MOTION table's last row, the earlier
+   !> of the last rows of a vessel's motion and drift tables; huge() for a harmonic
+   !> motion and a vessel moved by its RAOs.
+   pure real(wp) function motion_data_end(mo, vessels) result(te)
+      type(motion_t), intent(in) :: mo                   !< the motion
+      type(vessel_t), intent(in), optional :: vessels(:) !< the model's (motion_vessel)
+      te = huge(1.0_wp)
+      if (mo%kind == motion_table) then
+         te = mo%time(size(mo%time))
+      else if (mo%kind == motion_vessel .and. present(vessels)) then
+         associate (ve => vessels(mo%vessel))
+            if (ve%kind /= vessel_from_rao .and. allocated(ve%time)) &
+               te = ve%time(size(ve%time))
+            if (allocated(ve%drift_time)) te = min(te, ve%drift_time(size(ve%drift_time)))
+         end associate
+      end if
+   end function motion_data_end
+
 end module rodyn_system_dynamics
