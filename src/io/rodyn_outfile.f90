@@ -64,7 +64,6 @@ module rodyn_outfile
          integer(c_size_t), value :: n                 !< how many
          integer(c_long) :: r                          !< bytes written, or -1
       end function c_write
-      !> POSIX close(2).
       !> open(2) without a mode (no O_CREAT).
       function c_open(path, flags) bind(c, name='open') result(fd)
          import :: c_char, c_int
@@ -80,6 +79,7 @@ module rodyn_outfile
          integer(c_int), value :: whence               !< SEEK_SET (0), ...
          integer(c_long) :: r                          !< new offset, or -1
       end function c_lseek
+      !> POSIX close(2).
       function c_close(fd) bind(c, name='close') result(r)
          import :: c_int
          integer(c_int), value :: fd                   !< descriptor

@@ -29,7 +29,7 @@ module rodyn_output
    use rodyn_output_points, only: write_system_table, system_tables
    use rodyn_output_modal, only: write_modes_csv, modes_csv, mode_shapes_csv, write_modes_h5
    use rodyn_output_table, only: write_line_table, write_described, write_h5_root, &
-                                 group_name, line_result_complete, start_line_group
+                                 group_name, check_line_results, start_line_group
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
@@ -88,7 +88,7 @@ contains
          return
       end if
       if (present(system)) sys = system      ! (else none: no system's tables)
-      call check_lines(lines, e)
+      call check_line_results(lines, 'output_write_static', e)
       k = 0
       do while (k < size(order) .and. .not. has_error(e))
          k = k + 1
@@ -324,20 +324,4 @@ contains
       call write_described(h5, results_h5, g//'/seabed_normal', err, g, x1=seabed_force_of(r, 1))
       call write_described(h5, results_h5, g//'/seabed_friction', err, g, x1=seabed_force_of(r, 2))
    end subroutine write_h5_line
-
-   ! ------------------------------------------------------------------ checks, files
-
-   !> Check that every line's arrays are allocated with consistent sizes.
-   subroutine check_lines(lines, err)
-      type(line_result_t), intent(in) :: lines(:) !< results
-      type(error_t), intent(inout) :: err         !< status
-      integer :: i
-      do i = 1, size(lines)
-         if (.not. line_result_complete(lines(i))) then
-            call set_error(err, stat_io, 'output_write_static: results of line '''// &
-               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
-            return
-         end if
-      end do
-   end subroutine check_lines
 end module rodyn_output

@@ -51,7 +51,7 @@ module rodyn_output_dynamic
    use rodyn_output_common, only: text_or, status_of, path_join, one_line, &
                                   write_environment_h5, write_parameters_h5
    use rodyn_output_table, only: line_table_t, write_described, create_described_series, &
-                                 write_h5_root, line_result_complete, line_result_fits
+                                 write_h5_root, check_line_results, line_result_fits
    use rodyn_output_dynamic_files, only: dynamic_files_t, n_tables, tb_log, &
       tb_waves, tb_bodies_step, files_create, files_reopen, files_flush, files_mark, &
       files_close, files_committed, files_pending, files_written
@@ -163,13 +163,7 @@ contains
       w%csv = model%output%csv
       w%hdf5 = model%output%hdf5
       call start_counters(w, static_summary, resume)
-      do i = 1, size(lines)
-         if (.not. line_result_complete(lines(i))) then
-            call set_error(err, stat_io, where//': results of line '''// &
-               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
-            return
-         end if
-      end do
+      call check_line_results(lines, where, err)
       call line_tables(w%table, err)
       if (has_error(err)) return
       call output_write_status(dir, w%progress, e, w%deck_file, w%params)  ! makes the folder

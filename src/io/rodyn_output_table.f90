@@ -46,6 +46,7 @@ module rodyn_output_table
    public :: group_name, write_described, create_described_series, write_h5_root
    public :: start_line_group
    public :: line_result_complete, line_result_fits, bending_curvature_at
+   public :: check_line_results
    public :: row_len, units_si
 
    integer, parameter :: row_len = 1024    !< longest CSV row (19 fields of <= 26 characters)
@@ -339,6 +340,22 @@ contains
    end function bending_curvature_at
 
    ! ------------------------------------------------------------------ line results
+
+   !> Check that every line's arrays are allocated with consistent sizes; err names the
+   !> caller `who` and the first line that is not.
+   subroutine check_line_results(lines, who, err)
+      type(line_result_t), intent(in) :: lines(:) !< results
+      character(len=*), intent(in) :: who         !< the caller, for the message
+      type(error_t), intent(inout) :: err         !< status
+      integer :: i
+      do i = 1, size(lines)
+         if (.not. line_result_complete(lines(i))) then
+            call set_error(err, stat_io, who//': results of line '''// &
+               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
+            return
+         end if
+      end do
+   end subroutine check_line_results
 
    !> Whether every array of a line result is allocated with consistent sizes.
    pure logical function line_result_complete(r)
