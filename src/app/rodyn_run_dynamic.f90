@@ -213,15 +213,11 @@ contains
       type(dynamic_run_t), intent(inout) :: run      !< the run
       type(dynamic_problem_t), intent(inout) :: prob !< problem, set up
       type(checkpoint_t), intent(in) :: ck           !< the checkpoint
+      type(checkpoint_t) :: c
       call state_copy(ck%now, prob%s1)
       prob%r = ck%r
-      prob%dt = ck%dt
-      prob%t0 = ck%t0
-      prob%f_conv = ck%f_conv
-      prob%m_conv = ck%m_conv
-      prob%f_last = ck%f_last
-      prob%m_last = ck%m_last
-      prob%have_conv = ck%have_conv
+      c = ck
+      call carry_step(prob, c, .false.)
       run%pend = ck%pend
       if (prob%nd%on) then
          prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
@@ -236,6 +232,30 @@ contains
       end if
    end subroutine restore
 
+   !> The problem's last step (dt, t0) and Newton reference forces as a checkpoint holds
+   !> them: copied into ck (save) or from it.
+   subroutine carry_step(prob, ck, save)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      type(checkpoint_t), intent(inout) :: ck        !< checkpoint
+      logical, intent(in) :: save                    !< prob into ck (else ck into prob)
+      call r(prob%dt, ck%dt)
+      call r(prob%t0, ck%t0)
+      call r(prob%f_conv, ck%f_conv)
+      call r(prob%m_conv, ck%m_conv)
+      call r(prob%f_last, ck%f_last)
+      call r(prob%m_last, ck%m_last)
+      if (save) ck%have_conv = prob%have_conv
+      if (.not. save) prob%have_conv = ck%have_conv
+   contains
+      !> One value.
+      subroutine r(p, c)
+         real(wp), intent(inout) :: p  !< the problem's
+         real(wp), intent(inout) :: c  !< the checkpoint's
+         if (save) c = p
+         if (.not. save) p = c
+      end subroutine r
+   end subroutine carry_step
+
    !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
    !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).
    subroutine on_checkpoint(this, ls, prob, err)
@@ -249,13 +269,7 @@ contains
       ck%start = this%start_state
       ck%now = prob%s1
       ck%r = prob%r
-      ck%dt = prob%dt
-      ck%t0 = prob%t0
-      ck%f_conv = prob%f_conv
-      ck%m_conv = prob%m_conv
-      ck%f_last = prob%f_last
-      ck%m_last = prob%m_last
-      ck%have_conv = prob%have_conv
+      call carry_step(prob, ck, .true.)
       if (prob%nd%on) then
          ck%nd_rho = reshape(prob%nd%rho, [size(prob%nd%rho, 1)*size(prob%nd%rho, 2), &
                                            size(prob%nd%rho, 3)])

@@ -31,15 +31,15 @@ module rodyn_modal
    use rodyn_results, only: system_result_t
    use rodyn_inertia, only: inertia_t, inertia_build
    use rodyn_assembly, only: supports_t, add_node_block, assemble_water
-   use rodyn_banded, only: banded_t, banded_init, banded_matvec, dense_sym_eigen, &
-                           banded_factor, banded_solve
-   use rodyn_junctions, only: junctions_t, junctions_condense, junctions_factor, &
-                              junctions_solve
+   use rodyn_banded, only: banded_t, banded_init, banded_matvec, dense_sym_eigen
+   use rodyn_junctions, only: junctions_t, junctions_condense
+   use rodyn_rod_problem, only: rod_factor, rod_back_solve
    use rodyn_lanczos, only: eigen_operator_t, lanczos_modes
    use rodyn_arrowhead, only: arrowhead_matvec
    use rodyn_water, only: water_loads_t
    use rodyn_rotation, only: cross
    use rodyn_body_mass, only: added_mass_global
+   use rodyn_hydro, only: outer
    implicit none
    private
    public :: modal_analysis, modal_max_unknowns, modal_dense_limit
@@ -161,11 +161,7 @@ contains
       real(wp), allocatable, intent(out) :: mu(:)          !< (nev) 1/omega^2 [s2]
       type(error_t), intent(inout) :: err                  !< status
       type(system_operator_t) :: op
-      if (prob%jn%nj > 0) then
-         call junctions_factor(prob%jn, prob%bm, err)
-      else
-         call banded_factor(prob%bm, err, prob%sup%first)
-      end if
+      call rod_factor(prob, err)
       if (has_error(err)) then
          err%message = 'the stiffness about the equilibrium is singular: '//err%message
          return
@@ -189,11 +185,7 @@ contains
          this%x = 0.0_wp
          this%x(red%band) = x(1:red%nb)
          if (size(red%junc) > 0) this%x(p%jn%jdof(red%junc)) = x(red%nb + 1:)
-         if (p%jn%nj > 0) then
-            call junctions_solve(p%jn, p%sup, p%bm, this%x, err)
-         else
-            call banded_solve(p%bm, this%x, err)
-         end if
+         call rod_back_solve(p, this%x, err)
          y(1:red%nb) = this%x(red%band)
          if (size(red%junc) > 0) y(red%nb + 1:) = this%x(p%jn%jdof(red%junc))
       end associate
@@ -336,15 +328,6 @@ contains
             call junctions_condense(mass%jn, sup, rhs, mass%bm, .true., st%d, st%d, 1.0_wp)
          end if
       end associate
-   contains
-      pure function outer(a, b) result(c)
-         real(wp), intent(in) :: a(3), b(3)
-         real(wp) :: c(3, 3)
-         integer :: j
-         do j = 1, 3
-            c(:, j) = a*b(j)
-         end do
-      end function outer
    end subroutine mass_build
 
    !> The reduced dense matrix of an operator: column c its product with unit vector c.

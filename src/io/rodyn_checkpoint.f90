@@ -36,8 +36,8 @@ module rodyn_checkpoint
    public :: checkpoint_program_id
 
    character(len=*), parameter :: checkpoint_file = 'checkpoint.h5' !< name in the folder
-   integer, parameter :: n_reals = 36  !< scalars in /reals (see pack_reals)
-   integer, parameter :: n_ints = 24   !< scalars in /integers (see pack_ints)
+   integer, parameter :: n_reals = 36  !< scalars in /reals (see transfer_scalars)
+   integer, parameter :: n_ints = 24   !< scalars in /integers (see transfer_scalars)
 
    !> The support forces of a dynamic run that wait for the step after them (the step
    !> force R, the support force averaged over a step: of the last step converged, r_pend,
@@ -86,14 +86,19 @@ contains
       type(error_t), intent(inout) :: err         !< status
       type(hdf5_file_t) :: h5
       type(error_t) :: e
+      type(checkpoint_t) :: c
+      real(wp) :: reals(n_reals)
+      integer :: ints(n_ints)
       character(len=:), allocatable :: tmp
       if (has_error(err)) return
+      c = ck
+      call transfer_scalars(c, reals, ints, .true.)
       tmp = temp_name(dir, checkpoint_file)
       call hdf5_create_file(h5, tmp, e)
       call hdf5_write_dataset(h5, '/program', program_id, e)
       call hdf5_write_dataset(h5, '/deck', deck_identity(model), e)
-      call hdf5_write_dataset(h5, '/reals', pack_reals(ck), e)
-      call hdf5_write_dataset(h5, '/integers', pack_ints(ck), e)
+      call hdf5_write_dataset(h5, '/reals', reals, e)
+      call hdf5_write_dataset(h5, '/integers', ints, e)
       call hdf5_write_dataset(h5, '/csv_bytes', real(ck%mark%csv_bytes, wp), e)
       call hdf5_write_dataset(h5, '/r', ck%r, e)
       call hdf5_write_dataset(h5, '/r_pend', ck%pend%r_pend, e)
@@ -178,8 +183,7 @@ contains
                         ''' is not a whole checkpoint of this run: '//e%message)
          return
       end if
-      call unpack_reals(reals, ck)
-      call unpack_ints(ints, ck)
+      call transfer_scalars(ck, reals, ints, .false.)
       ck%mark%csv_bytes = int(bytes, i8)
    end subroutine checkpoint_read
 
@@ -263,112 +267,71 @@ contains
 
    !> The scalars of a checkpoint, in this order: loop t, next_frame, next_checkpoint;
    !> the step log's 17 reals; dt, t0, f_conv, m_conv, f_last, m_last; h_pend, h_back,
-   !> t_pend; mark last_time; summary load_factor, wall_time, time_reached.
-   function pack_reals(ck) result(x)
-      type(checkpoint_t), intent(in) :: ck   !< checkpoint
-      real(wp) :: x(n_reals)
-      associate (l => ck%loop%log, s => ck%summary)
-         x = [ck%loop%t, ck%loop%next_frame, ck%loop%next_checkpoint, &
-              l%time, l%dt, l%kinetic, l%strain, l%strain_scale, l%gravity, &
-              l%external_work, l%damping_work, l%hydro_work, l%seabed_work, l%total, &
-              l%momentum, l%angular_momentum, &
-              ck%dt, ck%t0, ck%f_conv, ck%m_conv, ck%f_last, ck%m_last, &
-              ck%pend%h_pend, ck%pend%h_back, ck%pend%t_pend, ck%mark%last_time, &
-              s%load_factor, s%wall_time, s%time_reached, &
-              l%numerical_work, l%numerical_energy, ck%nd_energy]
-      end associate
-   end function pack_reals
-
-   !> The reals of pack_reals back into ck.
-   subroutine unpack_reals(x, ck)
-      real(wp), intent(in) :: x(:)             !< (n_reals) values
-      type(checkpoint_t), intent(inout) :: ck  !< checkpoint
-      associate (l => ck%loop%log, s => ck%summary)
-         ck%loop%t = x(1)
-         ck%loop%next_frame = x(2)
-         ck%loop%next_checkpoint = x(3)
-         l%time = x(4)
-         l%dt = x(5)
-         l%kinetic = x(6)
-         l%strain = x(7)
-         l%strain_scale = x(8)
-         l%gravity = x(9)
-         l%external_work = x(10)
-         l%damping_work = x(11)
-         l%hydro_work = x(12)
-         l%seabed_work = x(13)
-         l%total = x(14)
-         l%momentum = x(15:17)
-         l%angular_momentum = x(18:20)
-         ck%dt = x(21)
-         ck%t0 = x(22)
-         ck%f_conv = x(23)
-         ck%m_conv = x(24)
-         ck%f_last = x(25)
-         ck%m_last = x(26)
-         ck%pend%h_pend = x(27)
-         ck%pend%h_back = x(28)
-         ck%pend%t_pend = x(29)
-         ck%mark%last_time = x(30)
-         s%load_factor = x(31)
-         s%wall_time = x(32)
-         s%time_reached = x(33)
-         l%numerical_work = x(34)
-         l%numerical_energy = x(35)
-         ck%nd_energy = x(36)
-      end associate
-   end subroutine unpack_reals
-
-   !> The integers of a checkpoint, in this order: loop level, good; the step log's
-   !> step, iterations, tangents, cutbacks; have_conv, k_pend, pending, have_back,
+   !> t_pend; mark last_time; summary load_factor, wall_time, time_reached; the log's
+   !> numerical_work, numerical_energy; nd_energy. Integers: loop level, good; the step
+   !> log's step, iterations, tangents, cutbacks; have_conv, k_pend, pending, have_back,
    !> frame_waiting; mark frames, steps, end_rows, step_iterations, step_tangents,
    !> step_cutbacks; summary increments, iterations, cutbacks, steps, step_iterations,
-   !> step_tangents, step_cutbacks (over every attempt, failed ones too).
-   function pack_ints(ck) result(k)
-      type(checkpoint_t), intent(in) :: ck   !< checkpoint
-      integer :: k(n_ints)
-      associate (l => ck%loop%log, m => ck%mark, s => ck%summary)
-         k = [ck%loop%level, ck%loop%good, l%step, l%iterations, l%tangents, l%cutbacks, &
-              merge(1, 0, ck%have_conv), ck%pend%k_pend, merge(1, 0, ck%pend%pending), &
-              merge(1, 0, ck%pend%have_back), merge(1, 0, ck%pend%frame_waiting), &
-              m%frames, m%steps, &
-              m%end_rows, m%step_iterations, m%step_tangents, m%step_cutbacks, &
-              s%increments, s%iterations, s%cutbacks, s%steps, s%step_iterations, &
-              s%step_tangents, s%step_cutbacks]
-      end associate
-   end function pack_ints
-
-   !> The integers of pack_ints back into ck.
-   subroutine unpack_ints(k, ck)
-      integer, intent(in) :: k(:)              !< (n_ints) values
+   !> step_tangents, step_cutbacks (over every attempt, failed ones too). One list for
+   !> both ways: into x and k (store true) or from them into ck.
+   subroutine transfer_scalars(ck, x, k, store)
       type(checkpoint_t), intent(inout) :: ck  !< checkpoint
-      associate (l => ck%loop%log, m => ck%mark, s => ck%summary)
-         ck%loop%level = k(1)
-         ck%loop%good = k(2)
-         l%step = k(3)
-         l%iterations = k(4)
-         l%tangents = k(5)
-         l%cutbacks = k(6)
-         ck%have_conv = k(7) == 1
-         ck%pend%k_pend = k(8)
-         ck%pend%pending = k(9) == 1
-         ck%pend%have_back = k(10) == 1
-         ck%pend%frame_waiting = k(11) == 1
-         m%frames = k(12)
-         m%steps = k(13)
-         m%end_rows = k(14)
-         m%step_iterations = k(15)
-         m%step_tangents = k(16)
-         m%step_cutbacks = k(17)
-         s%increments = k(18)
-         s%iterations = k(19)
-         s%cutbacks = k(20)
-         s%steps = k(21)
-         s%step_iterations = k(22)
-         s%step_tangents = k(23)
-         s%step_cutbacks = k(24)
+      real(wp), intent(inout) :: x(n_reals)    !< the reals
+      integer, intent(inout) :: k(n_ints)      !< the integers (logicals as 0/1)
+      logical, intent(in) :: store             !< ck into x, k (else x, k into ck)
+      integer :: nx, nk
+      nx = 0
+      nk = 0
+      associate (l => ck%loop%log, m => ck%mark, s => ck%summary, p => ck%pend)
+         call f(ck%loop%t, ck%loop%next_frame, ck%loop%next_checkpoint, l%time, l%dt)
+         call f(l%kinetic, l%strain, l%strain_scale, l%gravity, l%external_work)
+         call f(l%damping_work, l%hydro_work, l%seabed_work, l%total)
+         call f(l%momentum(1), l%momentum(2), l%momentum(3), l%angular_momentum(1), &
+                l%angular_momentum(2), l%angular_momentum(3))
+         call f(ck%dt, ck%t0, ck%f_conv, ck%m_conv, ck%f_last, ck%m_last)
+         call f(p%h_pend, p%h_back, p%t_pend, m%last_time)
+         call f(s%load_factor, s%wall_time, s%time_reached, l%numerical_work)
+         call f(l%numerical_energy, ck%nd_energy)
+         call f(ck%loop%level, ck%loop%good, l%step, l%iterations, l%tangents, l%cutbacks)
+         call f(ck%have_conv, p%k_pend, p%pending, p%have_back, p%frame_waiting)
+         call f(m%frames, m%steps, m%end_rows, m%step_iterations, m%step_tangents, &
+                m%step_cutbacks)
+         call f(s%increments, s%iterations, s%cutbacks, s%steps, s%step_iterations, &
+                s%step_tangents)
+         call f(s%step_cutbacks)
       end associate
-   end subroutine unpack_ints
+   contains
+      !> The next fields, in the order given.
+      subroutine f(v1, v2, v3, v4, v5, v6)
+         class(*), intent(inout) :: v1                     !< component of ck
+         class(*), intent(inout), optional :: v2, v3, v4, v5, v6 !< the ones after it
+         call one(v1)
+         if (present(v2)) call one(v2)
+         if (present(v3)) call one(v3)
+         if (present(v4)) call one(v4)
+         if (present(v5)) call one(v5)
+         if (present(v6)) call one(v6)
+      end subroutine f
+      !> The next field: a real the next of x, an integer the next of k, a logical the
+      !> next of k as 1 (true) or 0.
+      subroutine one(v)
+         class(*), intent(inout) :: v   !< component of ck
+         select type (v)
+         type is (real(wp))
+            nx = nx + 1
+            if (store) x(nx) = v
+            if (.not. store) v = x(nx)
+         type is (integer)
+            nk = nk + 1
+            if (store) k(nk) = v
+            if (.not. store) v = k(nk)
+         type is (logical)
+            nk = nk + 1
+            if (store) k(nk) = merge(1, 0, v)
+            if (.not. store) v = k(nk) == 1
+         end select
+      end subroutine one
+   end subroutine transfer_scalars
 
    !> The deck as a checkpoint identifies it: its full text (includes expanded) and the
    !> parameters used (after --set), one 'NAME = text' line each.

@@ -26,7 +26,7 @@ module rodyn_format
    implicit none
    private
    public :: format_e17, format_real, put_text, put_int, put_real, put_reals
-   public :: real_text, int_text
+   public :: real_text, real_fields, int_text
 
    integer, parameter :: i16 = selected_int_kind(38)
 
@@ -241,15 +241,23 @@ contains
       integer, intent(inout) :: n             !< characters used
       integer(i8), intent(in) :: i            !< value
       character(len=20) :: buf
-      integer :: k, j
-      integer(i8) :: v
+      integer :: k
       if (n > 0) call put_text(row, n, ',')
+      call int_digits(i, buf, k)
+      call put_text(row, n, buf(k:))
+   end subroutine put_int8
+
+   !> The digits of i as '(i0)' writes them, at the end of buf: buf(k:).
+   pure subroutine int_digits(i, buf, k)
+      integer(i8), intent(in) :: i               !< value
+      character(len=20), intent(out) :: buf      !< the digits at its end
+      integer, intent(out) :: k                  !< where they start
+      integer(i8) :: v
       k = len(buf) + 1
       v = i
       do                                     ! digits of |i| (negative v: no overflow)
          k = k - 1
-         j = int(abs(mod(v, 10_i8)))
-         buf(k:k) = achar(iachar('0') + j)
+         buf(k:k) = achar(iachar('0') + int(abs(mod(v, 10_i8))))
          v = v/10_i8
          if (v == 0_i8) exit
       end do
@@ -257,8 +265,7 @@ contains
          k = k - 1
          buf(k:k) = '-'
       end if
-      call put_text(row, n, buf(k:))
-   end subroutine put_int8
+   end subroutine int_digits
 
    !> Append a real field (',' first unless the row is empty).
    subroutine put_real(row, n, x)
@@ -285,12 +292,20 @@ contains
    function real_text(x) result(s)
       real(wp), intent(in) :: x             !< value
       character(len=:), allocatable :: s    !< text
-      character(len=32) :: buf
+      s = real_fields([x])
+      s = s(2:)
+   end function real_text
+
+   !> Real fields as text, each preceded by ',' (put_reals).
+   function real_fields(x) result(s)
+      real(wp), intent(in) :: x(:)          !< values
+      character(len=:), allocatable :: s    !< ',x(1),x(2),...'
+      character(len=32*size(x)) :: buf
       integer :: n
       n = 0
-      call format_real(x, buf, n)
+      call put_reals(buf, n, x)
       s = buf(:n)
-   end function real_text
+   end function real_fields
 
    !> An integer as text.
    pure function int_text4(i) result(s)
@@ -303,10 +318,9 @@ contains
    pure function int_text8(i) result(s)
       integer(i8), intent(in) :: i          !< value
       character(len=:), allocatable :: s    !< text
-      character(len=24) :: buf
-      integer :: n
-      n = 0
-      call put_int8(buf, n, i)
-      s = buf(:n)
+      character(len=20) :: buf
+      integer :: k
+      call int_digits(i, buf, k)
+      s = buf(k:)
    end function int_text8
 end module rodyn_format

@@ -36,9 +36,10 @@ module rodyn_hdf5
       H5S_UNLIMITED_F, H5T_IEEE_F64LE, H5T_STD_I32LE, H5T_INTEGER_F
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, has_error, stat_io
-   use rodyn_hdf5_base, only: hdf5_file_t, hdf5_series_t, failed, file_name, &
-      text_or, release, vlen_string_type, c_chars, create_dataset, open_dataset, &
-      open_attribute, open_object, text_attributes, read_string_from
+   use rodyn_outfile, only: text_or, path_prefixes
+   use rodyn_hdf5_base, only: hdf5_file_t, hdf5_series_t, check, failed, file_name, &
+      release, vlen_string_type, c_chars, create_dataset, open_shaped, &
+      open_object, text_attributes, read_string_from
    use rodyn_hdf5_arrays, only: hdf5_write_dataset, hdf5_write_attribute, &
       hdf5_read_dataset, hdf5_read_attribute, write_steps_real, write_steps_int
    implicit none
@@ -127,34 +128,7 @@ contains
       type(hdf5_file_t), intent(out) :: file !< the open file
       character(len=*), intent(in) :: path   !< file name
       type(error_t), intent(inout) :: err    !< status
-      character(len=*), parameter :: where = 'hdf5_create_file'
-      integer(hid_t) :: fapl, fcpl
-      integer :: stat
-      file%path = path
-      if (has_error(err)) return
-      call hdf5_init(err)
-      if (has_error(err)) return
-      fapl = -1
-      fcpl = -1
-      blk: block
-         call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         call h5pcreate_f(H5P_FILE_CREATE_F, fcpl, stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         call h5pset_link_creation_order_f(fcpl, &
-            ior(H5P_CRT_ORDER_TRACKED_F, H5P_CRT_ORDER_INDEXED_F), stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, stat, &
-            creation_prp=fcpl, access_prp=fapl)
-         if (stat < 0) then
-            file%id = -1
-            call set_error(err, stat_io, where//': cannot create file '''//path//'''')
-         end if
-      end block blk
-      call release(fapl)
-      call release(fcpl)
+      call start_file(file, path, .true., H5F_ACC_TRUNC_F, .true., err)
    end subroutine hdf5_create_file
 
    !> Open an existing file, read-only unless `writable` is true. While a process holds
@@ -168,37 +142,74 @@ contains
       type(error_t), intent(inout) :: err        !< status
       logical, intent(in), optional :: writable  !< open for reading and writing
       logical, intent(in), optional :: locking   !< take HDF5's file lock (default true)
-      character(len=*), parameter :: where = 'hdf5_open_file'
-      integer(hid_t) :: fapl
-      integer :: stat, mode
-      file%path = path
-      if (has_error(err)) return
-      call hdf5_init(err)
-      if (has_error(err)) return
+      integer :: mode
+      logical :: lock
       mode = H5F_ACC_RDONLY_F
       if (present(writable)) then
          if (writable) mode = H5F_ACC_RDWR_F
       end if
-      fapl = -1
+      lock = .true.
+      if (present(locking)) lock = locking
+      call start_file(file, path, .false., mode, lock, err)
+   end subroutine hdf5_open_file
+
+   !> Create (create true: truncating, the root group tracking link creation order) or
+   !> open a file in access mode `mode`, with HDF5's file lock or without.
+   subroutine start_file(file, path, create, mode, locking, err)
+      type(hdf5_file_t), intent(out) :: file !< the open file
+      character(len=*), intent(in) :: path   !< file name
+      logical, intent(in) :: create          !< create it (else open it)
+      integer, intent(in) :: mode            !< H5F_ACC_* access flag
+      logical, intent(in) :: locking         !< take HDF5's file lock
+      type(error_t), intent(inout) :: err    !< status
+      character(len=:), allocatable :: where
+      integer(hid_t) :: fapl, fcpl
+      integer :: stat
+      where = trim(merge('hdf5_create_file', 'hdf5_open_file  ', create))
+      file%path = path
+      if (has_error(err)) return
+      call hdf5_init(err)
+      if (has_error(err)) return
+      fcpl = -1
       blk: block
-         call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
-         if (failed(stat, 'set up', where, file, '/', err)) exit blk
-         if (present(locking)) then
-            if (.not. locking) then
-               call h5pset_file_locking_f(fapl, .false., .true., stat)
-               if (failed(stat, 'set up', where, file, '/', err)) exit blk
-            end if
+         call file_access(file, locking, fapl, where, err)
+         if (has_error(err)) exit blk
+         if (create) then
+            call h5pcreate_f(H5P_FILE_CREATE_F, fcpl, stat)
+            if (failed(stat, 'set up', where, file, '/', err)) exit blk
+            call h5pset_link_creation_order_f(fcpl, &
+               ior(H5P_CRT_ORDER_TRACKED_F, H5P_CRT_ORDER_INDEXED_F), stat)
+            if (failed(stat, 'set up', where, file, '/', err)) exit blk
+            call h5fcreate_f(path, mode, file%id, stat, creation_prp=fcpl, access_prp=fapl)
+         else
+            call h5fopen_f(path, mode, file%id, stat, access_prp=fapl)
          end if
-         call h5fopen_f(path, mode, file%id, stat, access_prp=fapl)
          if (stat < 0) then
             file%id = -1
-            call set_error(err, stat_io, where//': cannot open HDF5 file '''//path//'''')
+            call set_error(err, stat_io, where//': cannot '// &
+               trim(merge('create file   ', 'open HDF5 file', create))//' '''//path//'''')
          end if
       end block blk
       call release(fapl)
-   end subroutine hdf5_open_file
+      call release(fcpl)
+   end subroutine start_file
+
+   !> The access property list of the files: closing a file closes everything open in
+   !> it; without `locking`, no HDF5 file lock. fapl < 0 on failure.
+   subroutine file_access(file, locking, fapl, where, err)
+      type(hdf5_file_t), intent(in) :: file  !< the file, for messages
+      logical, intent(in) :: locking         !< take HDF5's file lock
+      integer(hid_t), intent(out) :: fapl    !< the property list
+      character(len=*), intent(in) :: where  !< calling routine
+      type(error_t), intent(inout) :: err    !< status
+      integer :: stat
+      call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
+      if (stat < 0) fapl = -1
+      if (failed(stat, 'set up', where, file, '/', err)) return
+      call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
+      if (stat >= 0 .and. .not. locking) call h5pset_file_locking_f(fapl, .false., .true., stat)
+      call check(stat, 'set up', where, file, '/', err)
+   end subroutine file_access
 
    !> Close a file (everything still open in it is closed too). Acts even when err
    !> already holds an error; does nothing for a file that is not open.
@@ -233,6 +244,7 @@ contains
       type(error_t), intent(inout) :: err   !< status
       character(len=*), parameter :: where = 'hdf5_create_group'
       integer(hid_t) :: gcpl, gid
+      integer, allocatable :: ends(:)
       integer :: stat, k
       logical :: exists
       if (has_error(err)) return
@@ -244,16 +256,13 @@ contains
          call h5pset_link_creation_order_f(gcpl, &
             ior(H5P_CRT_ORDER_TRACKED_F, H5P_CRT_ORDER_INDEXED_F), stat)
          if (failed(stat, 'set up group', where, file, path, err)) exit blk
-         do k = 2, len(path) + 1
-            if (k <= len(path)) then
-               if (path(k:k) /= '/') cycle
-            end if
-            if (path(k - 1:k - 1) == '/') cycle
-            call h5lexists_f(file%id, path(:k - 1), exists, stat)
-            if (failed(stat, 'look up', where, file, path(:k - 1), err)) exit blk
+         ends = path_prefixes(path)
+         do k = 1, size(ends)
+            call h5lexists_f(file%id, path(:ends(k)), exists, stat)
+            if (failed(stat, 'look up', where, file, path(:ends(k)), err)) exit blk
             if (exists) cycle
-            call h5gcreate_f(file%id, path(:k - 1), gid, stat, gcpl_id=gcpl)
-            if (failed(stat, 'create group', where, file, path(:k - 1), err)) exit blk
+            call h5gcreate_f(file%id, path(:ends(k)), gid, stat, gcpl_id=gcpl)
+            if (failed(stat, 'create group', where, file, path(:ends(k)), err)) exit blk
             call release(gid)
          end do
       end block blk
@@ -266,17 +275,15 @@ contains
       character(len=*), intent(in) :: path  !< absolute path
       logical, intent(out) :: exists        !< the object exists
       type(error_t), intent(inout) :: err   !< status
+      integer, allocatable :: ends(:)
       integer :: stat, k
       exists = .false.
       if (has_error(err)) return
       exists = .true.
-      do k = 2, len(path) + 1
-         if (k <= len(path)) then
-            if (path(k:k) /= '/') cycle
-         end if
-         if (path(k - 1:k - 1) == '/') cycle
-         call h5lexists_f(file%id, path(:k - 1), exists, stat)
-         if (failed(stat, 'look up', 'hdf5_exists', file, path(:k - 1), err)) exists = .false.
+      ends = path_prefixes(path)
+      do k = 1, size(ends)
+         call h5lexists_f(file%id, path(:ends(k)), exists, stat)
+         if (failed(stat, 'look up', 'hdf5_exists', file, path(:ends(k)), err)) exists = .false.
          if (.not. exists) return
       end do
    end subroutine hdf5_exists
@@ -360,16 +367,7 @@ contains
       character(len=*), intent(in) :: path                   !< absolute dataset path
       character(len=:), allocatable, intent(out) :: text     !< the text
       type(error_t), intent(inout) :: err                    !< status
-      character(len=*), parameter :: where = 'hdf5_read_string'
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(0)
-      text = ''
-      if (has_error(err)) return
-      call open_dataset(file, path, 0, dset, dims, where, err)
-      if (.not. has_error(err)) then
-         call read_string_from(file, dset, .false., path, text, where, err)
-      end if
-      call release(dset)
+      call read_text(file, path, '', text, 'hdf5_read_string', err)
    end subroutine read_string
 
    !> Read a string attribute (variable or fixed length).
@@ -379,18 +377,31 @@ contains
       character(len=*), intent(in) :: name                !< attribute name
       character(len=:), allocatable, intent(out) :: value !< the text
       type(error_t), intent(inout) :: err                 !< status
-      character(len=*), parameter :: where = 'hdf5_read_attribute_string'
-      integer(hid_t) :: oid, aid
-      integer(hsize_t) :: dims(0)
-      value = ''
-      if (has_error(err)) return
-      call open_attribute(file, obj, name, 0, oid, aid, dims, where, err)
-      if (.not. has_error(err)) then
-         call read_string_from(file, aid, .true., obj//'@'//name, value, where, err)
-      end if
-      call release(aid)
-      call release(oid)
+      call read_text(file, obj, name, value, 'hdf5_read_attribute_string', err)
    end subroutine attr_read_string
+
+   !> Read the string of dataset `obj` (name '') or of attribute `name` of object `obj`.
+   subroutine read_text(file, obj, name, text, where, err)
+      type(hdf5_file_t), intent(in) :: file               !< open file
+      character(len=*), intent(in) :: obj                 !< dataset or object path
+      character(len=*), intent(in) :: name                !< attribute name ('': dataset)
+      character(len=:), allocatable, intent(out) :: text  !< the text ('' on failure)
+      character(len=*), intent(in) :: where               !< calling routine
+      type(error_t), intent(inout) :: err                 !< status
+      integer(hid_t) :: oid, id
+      integer(hsize_t) :: dims(0)
+      text = ''
+      if (has_error(err)) return
+      call open_shaped(file, obj, name, 0, oid, id, dims, where, err)
+      if (has_error(err)) return
+      if (len(name) == 0) then
+         call read_string_from(file, id, .false., obj, text, where, err)
+      else
+         call read_string_from(file, id, .true., obj//'@'//name, text, where, err)
+      end if
+      call release(id)
+      call release(oid)
+   end subroutine read_text
 
    ! ------------------------------------------------------------------ time series
 
@@ -582,7 +593,7 @@ contains
       integer :: stat
       if (has_error(err)) return
       if (series%id < 0 .or. series%n_held > 0) then
-         call set_error(err, stat_io, where//': series '''//text_or(series%path)// &
+         call set_error(err, stat_io, where//': series '''//text_or(series%path, '?')// &
             ''' is not open or holds steps')
          return
       end if
@@ -611,7 +622,7 @@ contains
       call h5dclose_f(series%id, stat)
       series%id = -1
       if (stat < 0) call set_error(err, stat_io, 'hdf5_close_series: cannot close '''// &
-         text_or(series%path)//''' in '''//file_name(series%file)//'''')
+         text_or(series%path, '?')//''' in '''//file_name(series%file)//'''')
    end subroutine hdf5_close_series
 
    !> Append one column (one h5py row) to a dataset made by hdf5_create_series; opens
@@ -664,7 +675,7 @@ contains
       if (has_error(err)) return
       if (size(values, 1, kind=hsize_t) /= series%n_cols) then
          call set_error(err, stat_io, 'hdf5_append_steps: block of wrong size for '''// &
-            text_or(series%path)//''' in '''//file_name(series%file)//'''')
+            text_or(series%path, '?')//''' in '''//file_name(series%file)//'''')
          return
       end if
       call append_real(series, reshape(values, [size(values)]), err)

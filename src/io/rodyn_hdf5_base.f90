@@ -23,11 +23,12 @@ module rodyn_hdf5_base
       H5I_GENPROP_LST_F
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, set_error, has_error, stat_io
+   use rodyn_outfile, only: text_or
    implicit none
    private
    public :: hdf5_file_t, hdf5_series_t
-   public :: check, failed, file_name, text_or, release, vlen_string_type, c_chars
-   public :: create_dataset, open_dataset, create_attribute, open_attribute, open_object
+   public :: check, failed, file_name, release, vlen_string_type, c_chars
+   public :: create_dataset, open_shaped, create_attribute, open_object
    public :: attribute_on, text_attributes, read_string_from
    public :: prepare_append, finish_append
 
@@ -93,23 +94,8 @@ contains
    pure function file_name(file) result(name)
       type(hdf5_file_t), intent(in) :: file  !< file handle
       character(len=:), allocatable :: name  !< its path, or '?' when unknown
-      if (allocated(file%path)) then
-         name = file%path
-      else
-         name = '?'
-      end if
+      name = text_or(file%path, '?')
    end function file_name
-
-   !> A string that may be unallocated, for messages ('?' when unallocated).
-   pure function text_or(text) result(s)
-      character(len=:), allocatable, intent(in) :: text !< string, maybe unallocated
-      character(len=:), allocatable :: s                 !< its value or '?'
-      if (allocated(text)) then
-         s = text
-      else
-         s = '?'
-      end if
-   end function text_or
 
    !> Close any HDF5 identifier by its kind and mark it closed (-1). Ignores id < 0.
    subroutine release(id)
@@ -160,11 +146,7 @@ contains
       space = -1
       lcpl = -1
       blk: block
-         if (size(dims) == 0) then
-            call h5screate_f(H5S_SCALAR_F, space, stat)
-         else
-            call h5screate_simple_f(size(dims), dims, space, stat, maxdims)
-         end if
+         call new_space(dims, space, stat, maxdims)
          if (failed(stat, 'create dataspace for', where, file, path, err)) exit blk
          call h5pcreate_f(H5P_LINK_CREATE_F, lcpl, stat)
          if (failed(stat, 'set up dataset', where, file, path, err)) exit blk
@@ -180,31 +162,6 @@ contains
       call release(space)
       call release(lcpl)
    end subroutine create_dataset
-
-   !> Open a dataset and return its shape; fails unless its rank is `rank`
-   !> (rank 0: a scalar or a single element).
-   subroutine open_dataset(file, path, rank, dset, dims, where, err)
-      type(hdf5_file_t), intent(in) :: file     !< open file
-      character(len=*), intent(in) :: path      !< absolute dataset path
-      integer, intent(in) :: rank               !< expected rank
-      integer(hid_t), intent(out) :: dset       !< open dataset (-1 on failure)
-      integer(hsize_t), intent(out) :: dims(:)  !< shape, size rank
-      character(len=*), intent(in) :: where     !< calling routine
-      type(error_t), intent(inout) :: err       !< status
-      integer(hid_t) :: space
-      integer :: stat
-      space = -1
-      call h5dopen_f(file%id, path, dset, stat)
-      if (stat < 0) dset = -1
-      if (failed(stat, 'open dataset', where, file, path, err)) return
-      call h5dget_space_f(dset, space, stat)
-      if (.not. failed(stat, 'read shape of', where, file, path, err)) then
-         call space_shape(space, rank, dims, stat)
-         call check(stat, 'use (wrong rank)', where, file, path, err)
-      end if
-      call release(space)
-      if (has_error(err)) call release(dset)
-   end subroutine open_dataset
 
    !> Open an object, replace any attribute of that name and create it with file type
    !> ftype and shape dims (size 0: scalar). oid/aid < 0 on failure.
@@ -262,11 +219,7 @@ contains
             if (failed(stat, 'replace attribute', where, file, obj//'@'//name, err)) &
                exit blk
          end if
-         if (size(dims) == 0) then
-            call h5screate_f(H5S_SCALAR_F, space, stat)
-         else
-            call h5screate_simple_f(size(dims), dims, space, stat)
-         end if
+         call new_space(dims, space, stat)
          if (failed(stat, 'create dataspace for', where, file, obj//'@'//name, err)) &
             exit blk
          call h5acreate_f(oid, name, ftype, space, aid, stat)
@@ -276,39 +229,64 @@ contains
       call release(space)
    end subroutine attribute_on
 
-   !> Open an object and an attribute of it; return the attribute's shape; fails unless
-   !> its rank is `rank` (0: scalar or single element).
-   subroutine open_attribute(file, obj, name, rank, oid, aid, dims, where, err)
+   !> Open dataset `obj` (name '') or attribute `name` of object `obj` and return its
+   !> shape; fails unless its rank is `rank` (0: a scalar or a single element). On
+   !> failure everything opened is closed again (ids -1).
+   subroutine open_shaped(file, obj, name, rank, oid, id, dims, where, err)
       type(hdf5_file_t), intent(in) :: file     !< open file
-      character(len=*), intent(in) :: obj       !< object path
-      character(len=*), intent(in) :: name      !< attribute name
+      character(len=*), intent(in) :: obj       !< dataset or object path
+      character(len=*), intent(in) :: name      !< attribute name ('': the dataset obj)
       integer, intent(in) :: rank               !< expected rank
-      integer(hid_t), intent(out) :: oid        !< open object (-1 on failure)
-      integer(hid_t), intent(out) :: aid        !< open attribute (-1 on failure)
+      integer(hid_t), intent(out) :: oid        !< the attribute's open object, else -1
+      integer(hid_t), intent(out) :: id         !< open dataset or attribute
       integer(hsize_t), intent(out) :: dims(:)  !< shape, size rank
       character(len=*), intent(in) :: where     !< calling routine
       type(error_t), intent(inout) :: err       !< status
+      character(len=:), allocatable :: object
       integer(hid_t) :: space
       integer :: stat
-      aid = -1
+      oid = -1
+      id = -1
       space = -1
-      call open_object(file, obj, oid, where, err)
-      if (has_error(err)) return
       blk: block
-         call h5aopen_f(oid, name, aid, stat)
-         if (stat < 0) aid = -1
-         if (failed(stat, 'open attribute', where, file, obj//'@'//name, err)) exit blk
-         call h5aget_space_f(aid, space, stat)
-         if (failed(stat, 'read shape of', where, file, obj//'@'//name, err)) exit blk
+         if (len(name) == 0) then
+            object = obj
+            call h5dopen_f(file%id, obj, id, stat)
+            if (stat < 0) id = -1
+            if (failed(stat, 'open dataset', where, file, object, err)) exit blk
+            call h5dget_space_f(id, space, stat)
+         else
+            object = obj//'@'//name
+            call open_object(file, obj, oid, where, err)
+            if (has_error(err)) exit blk
+            call h5aopen_f(oid, name, id, stat)
+            if (stat < 0) id = -1
+            if (failed(stat, 'open attribute', where, file, object, err)) exit blk
+            call h5aget_space_f(id, space, stat)
+         end if
+         if (failed(stat, 'read shape of', where, file, object, err)) exit blk
          call space_shape(space, rank, dims, stat)
-         if (failed(stat, 'use (wrong rank)', where, file, obj//'@'//name, err)) exit blk
+         call check(stat, 'use (wrong rank)', where, file, object, err)
       end block blk
       call release(space)
       if (has_error(err)) then
-         call release(aid)
+         call release(id)
          call release(oid)
       end if
-   end subroutine open_attribute
+   end subroutine open_shaped
+
+   !> A new dataspace of shape dims (size 0: scalar), at most maxdims.
+   subroutine new_space(dims, space, stat, maxdims)
+      integer(hsize_t), intent(in) :: dims(:)              !< shape (Fortran order)
+      integer(hid_t), intent(out) :: space                 !< the dataspace
+      integer, intent(out) :: stat                         !< HDF5 status
+      integer(hsize_t), intent(in), optional :: maxdims(:) !< maximum shape
+      if (size(dims) == 0) then
+         call h5screate_f(H5S_SCALAR_F, space, stat)
+      else
+         call h5screate_simple_f(size(dims), dims, space, stat, maxdims)
+      end if
+   end subroutine new_space
 
    !> Shape of a dataspace, checked against the expected rank (stat = -1 if wrong).
    subroutine space_shape(space, rank, dims, stat)
@@ -419,11 +397,7 @@ contains
       mtype = -1
       space = -1
       blk: block
-         if (is_attr) then
-            call h5aget_type_f(id, ftype, stat)
-         else
-            call h5dget_type_f(id, ftype, stat)
-         end if
+         call item_type(id, is_attr, ftype, stat)
          if (failed(stat, 'read type of', where, file, object, err)) exit blk
          call h5tget_class_f(ftype, tclass, stat)
          if (stat >= 0 .and. tclass /= H5T_STRING_F) stat = -1
@@ -443,13 +417,7 @@ contains
          if (is_vlen) then
             ptr(1) = c_null_ptr
             bufp = c_loc(ptr)
-            if (is_attr) then
-               call h5aread_f(id, mtype, bufp, stat)
-               if (stat >= 0) call h5aget_space_f(id, space, stat)
-            else
-               call h5dread_f(id, mtype, bufp, stat)
-               if (stat >= 0) call h5dget_space_f(id, space, stat)
-            end if
+            call read_item(id, is_attr, mtype, bufp, stat, space)
             if (failed(stat, 'read', where, file, object, err)) exit blk
             n = 0
             if (c_associated(ptr(1))) n = int(c_strlen(ptr(1)))
@@ -470,11 +438,7 @@ contains
             allocate (fixed(max(nbytes, 1_size_t)))
             fixed = c_null_char
             bufp = c_loc(fixed)
-            if (is_attr) then
-               call h5aread_f(id, mtype, bufp, stat)
-            else
-               call h5dread_f(id, mtype, bufp, stat)
-            end if
+            call read_item(id, is_attr, mtype, bufp, stat)
             if (failed(stat, 'read', where, file, object, err)) exit blk
             n = int(nbytes)
             do i = 1, int(nbytes)
@@ -495,6 +459,37 @@ contains
       call release(ftype)
    end subroutine read_string_from
 
+   !> The datatype of dataset or attribute id (caller releases it).
+   subroutine item_type(id, is_attr, ftype, stat)
+      integer(hid_t), intent(in) :: id      !< dataset or attribute
+      logical, intent(in) :: is_attr       !< id is an attribute
+      integer(hid_t), intent(out) :: ftype  !< its datatype
+      integer, intent(out) :: stat          !< HDF5 status
+      if (is_attr) then
+         call h5aget_type_f(id, ftype, stat)
+      else
+         call h5dget_type_f(id, ftype, stat)
+      end if
+   end subroutine item_type
+
+   !> Read dataset or attribute id whole into bufp as memory type mtype; then its
+   !> dataspace, when asked for.
+   subroutine read_item(id, is_attr, mtype, bufp, stat, space)
+      integer(hid_t), intent(in) :: id                !< dataset or attribute
+      logical, intent(in) :: is_attr                  !< id is an attribute
+      integer(hid_t), intent(in) :: mtype             !< memory datatype
+      type(c_ptr), intent(inout) :: bufp              !< where the values go
+      integer, intent(out) :: stat                    !< HDF5 status
+      integer(hid_t), intent(inout), optional :: space !< its dataspace
+      if (is_attr) then
+         call h5aread_f(id, mtype, bufp, stat)
+         if (stat >= 0 .and. present(space)) call h5aget_space_f(id, space, stat)
+      else
+         call h5dread_f(id, mtype, bufp, stat)
+         if (stat >= 0 .and. present(space)) call h5dget_space_f(id, space, stat)
+      end if
+   end subroutine read_item
+
    ! ------------------------------------------------------------------ series
 
    !> Check an append of n values, grow the dataset and select the new steps: fspace
@@ -512,7 +507,7 @@ contains
       fspace = -1
       mspace = -1
       if (series%id < 0) then
-         call set_error(err, stat_io, where//': series '''//text_or(series%path)// &
+         call set_error(err, stat_io, where//': series '''//text_or(series%path, '?')// &
             ''' is not open')
          return
       end if

@@ -8,10 +8,11 @@
 !> out (rodyn_main's finish).
 module rodyn_outdir
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_ptr, c_null_char, &
-      c_associated, c_f_pointer
+      c_associated
    use rodyn_error, only: error_t, set_error, has_error, stat_io
    use rodyn_outfile, only: path_join, out_file_t, outfile_create, outfile_put, outfile_commit, &
-      temp_name, remove_file
+      temp_name, remove_file, system_errno, path_prefixes
+   use rodyn_format, only: int_text
    implicit none
    private
    public :: outdir_lock_t, outdir_make, outdir_lock, outdir_unlock, lock_name, temp_files
@@ -68,11 +69,6 @@ module rodyn_outdir
          integer(c_size_t), value :: n                  !< room in name
          integer(c_int) :: r                            !< 0, or -1
       end function c_gethostname
-      !> glibc's location of errno.
-      function c_errno_location() bind(c, name='__errno_location') result(p)
-         import :: c_ptr
-         type(c_ptr) :: p                              !< int *
-      end function c_errno_location
    end interface
 
 contains
@@ -88,13 +84,11 @@ contains
       integer(c_int) :: r
       d = trim(dir)
       if (len(d) == 0) d = '.'
-      do k = 2, len(d) + 1
-         if (k <= len(d)) then
-            if (d(k:k) /= '/') cycle
-         end if
-         if (d(k - 1:k - 1) == '/') cycle
-         r = c_mkdir(d(:k - 1)//c_null_char, mode)  ! fails harmlessly when it exists
-      end do
+      associate (ends => path_prefixes(d))
+         do k = 1, size(ends)
+            r = c_mkdir(d(:ends(k))//c_null_char, mode)  ! fails harmlessly when it exists
+         end do
+      end associate
       handle = c_opendir(d//c_null_char)
       if (.not. c_associated(handle)) then
          call set_error(err, stat_io, 'output: cannot create folder '''//d//'''')
@@ -140,7 +134,7 @@ contains
          call read_owner(path, owner_pid, owner_host)
          stale = owner_pid > 0 .and. owner_host == host_name()
          if (stale) stale = c_kill(int(owner_pid, c_int), 0_c_int) /= 0
-         if (stale) stale = errno() == esrch
+         if (stale) stale = system_errno() == esrch
          if (.not. stale) exit
          call remove_file(path)     ! the run that held it is gone: take it over
       end do
@@ -213,21 +207,5 @@ contains
       if (k == 0) k = len(buf) + 1
       s = buf(:k - 1)
    end function host_name
-
-   !> The current errno.
-   integer(c_int) function errno()
-      integer(c_int), pointer :: p
-      call c_f_pointer(c_errno_location(), p)
-      errno = p
-   end function errno
-
-   !> An integer without blanks.
-   pure function int_text(i) result(s)
-      integer, intent(in) :: i              !< value
-      character(len=:), allocatable :: s    !< text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function int_text
 
 end module rodyn_outdir

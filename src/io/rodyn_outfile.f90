@@ -29,7 +29,8 @@ module rodyn_outfile
    public :: out_file_t, outfile_create, outfile_put, outfile_flush, outfile_mark
    public :: outfile_commit, outfile_close, outfile_abort, outfile_pending
    public :: outfile_reopen, outfile_size, outfile_committed
-   public :: temp_name, commit_rename, remove_file, system_error, path_join
+   public :: temp_name, commit_rename, remove_file, system_error, system_errno, path_join
+   public :: text_or, path_prefixes
 
    integer, parameter :: chunk = 65536   !< buffer of a whole file, written when full
 
@@ -63,7 +64,6 @@ module rodyn_outfile
          integer(c_size_t), value :: n                 !< how many
          integer(c_long) :: r                          !< bytes written, or -1
       end function c_write
-      !> POSIX close(2).
       !> open(2) without a mode (no O_CREAT).
       function c_open(path, flags) bind(c, name='open') result(fd)
          import :: c_char, c_int
@@ -79,6 +79,7 @@ module rodyn_outfile
          integer(c_int), value :: whence               !< SEEK_SET (0), ...
          integer(c_long) :: r                          !< new offset, or -1
       end function c_lseek
+      !> POSIX close(2).
       function c_close(fd) bind(c, name='close') result(r)
          import :: c_int
          integer(c_int), value :: fd                   !< descriptor
@@ -309,12 +310,10 @@ contains
    !> The text of the current errno ('No space left on device').
    function system_error() result(s)
       character(len=:), allocatable :: s    !< strerror(errno)
-      integer(c_int), pointer :: errno
       type(c_ptr) :: p
       character(kind=c_char), pointer :: chars(:)
       integer :: k
-      call c_f_pointer(c_errno_location(), errno)
-      p = c_strerror(errno)
+      p = c_strerror(system_errno())
       s = 'error '
       if (.not. c_associated(p)) return
       call c_f_pointer(p, chars, [256])
@@ -324,6 +323,13 @@ contains
          s = s//chars(k)
       end do
    end function system_error
+
+   !> The current errno.
+   integer(c_int) function system_errno()
+      integer(c_int), pointer :: p
+      call c_f_pointer(c_errno_location(), p)
+      system_errno = p
+   end function system_errno
 
    ! ------------------------------------------------------------------ internals
 
@@ -391,6 +397,33 @@ contains
       b(1:f%n) = f%buf(1:f%n)
       call move_alloc(b, f%buf)
    end subroutine grow
+
+   !> A string that may be unallocated: its value, or `default` when unallocated.
+   pure function text_or(text, default) result(s)
+      character(len=:), allocatable, intent(in) :: text !< string, maybe unallocated
+      character(len=*), intent(in) :: default            !< the text when unallocated
+      character(len=:), allocatable :: s                 !< its value or default
+      if (allocated(text)) then
+         s = text
+      else
+         s = default
+      end if
+   end function text_or
+
+   !> Where the leading parts of a path end, the path itself last: path(:ends(j)) is
+   !> the j-th ('/a//b/c': '/a', '/a//b', '/a//b/c').
+   pure function path_prefixes(path) result(ends)
+      character(len=*), intent(in) :: path  !< path
+      integer, allocatable :: ends(:)       !< end of each part
+      integer :: k
+      allocate (ends(0))
+      do k = 2, len(path) + 1
+         if (k <= len(path)) then
+            if (path(k:k) /= '/') cycle
+         end if
+         if (path(k - 1:k - 1) /= '/') ends = [ends, k - 1]
+      end do
+   end function path_prefixes
 
    !> dir/name (no doubled slash).
    pure function path_join(dir, name) result(path)

@@ -23,16 +23,13 @@ module rodyn_output
    use rodyn_format, only: real_text, int_text
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_file, hdf5_close_file, &
       hdf5_create_group, hdf5_write_attribute
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, env_item_t, &
+   use rodyn_output_common, only: text_or, status_of, path_join, one_line, env_item_t, &
                                   environment_items, write_environment_h5, wall_tension_of, &
                                   seabed_force_of, touchdown_of, write_parameters_h5
-   use rodyn_output_points, only: write_points_csv, points_csv, write_stiffness_csv, &
-                                  stiffness_csv, write_bodies_csv, bodies_csv, &
-                                  write_body_modes_csv, body_modes_csv, &
-                                  write_offset_curve_csv, offset_curve_csv
+   use rodyn_output_points, only: write_system_table, system_tables
    use rodyn_output_modal, only: write_modes_csv, modes_csv, mode_shapes_csv, write_modes_h5
    use rodyn_output_table, only: write_line_table, write_described, write_h5_root, &
-                                 group_name, line_result_complete
+                                 group_name, check_line_results, start_line_group
    implicit none
    private
    public :: output_write_static, output_write_status, output_write_environment
@@ -77,11 +74,11 @@ contains
       type(run_summary_t), intent(in) :: summary     !< how the run went
       type(error_t), intent(inout) :: err            !< status
       type(system_result_t), intent(in), optional :: system !< the system's stiffness
-      ! the files in the order written (after environment.csv, results.h5)
+      ! the files in the order written
       character(len=*), parameter :: order(*) = [character(len=24) :: nodes_csv, &
-         elements_csv, reactions_csv, lines_csv, points_csv, bodies_csv, stiffness_csv, &
-         body_modes_csv, offset_curve_csv, modes_csv, mode_shapes_csv, environment_csv, &
-         results_h5]
+         elements_csv, reactions_csv, lines_csv, system_tables, modes_csv, &
+         mode_shapes_csv, environment_csv, results_h5]
+      type(system_result_t) :: sys
       type(error_t) :: e, e_status
       type(run_summary_t) :: s
       integer :: k, j
@@ -90,31 +87,24 @@ contains
          call set_error(err, e%code, e%message)
          return
       end if
-      call check_lines(lines, e)
+      if (present(system)) sys = system      ! (else none: no system's tables)
+      call check_line_results(lines, 'output_write_static', e)
       k = 0
       do while (k < size(order) .and. .not. has_error(e))
          k = k + 1
+         if (k < size(order) .and. .not. model%output%csv) cycle
          select case (k)
          case (1:4)
-            if (model%output%csv) call write_line_table(dir, trim(order(k)), lines, e)
-         case (5)
-            if (model%output%csv) call write_points_csv(dir, model, lines, e)
-         case (6)
-            if (model%output%csv) call write_bodies_csv(dir, model, system, e)
-         case (7)
-            if (model%output%csv) call write_stiffness_csv(dir, model, system, e)
-         case (8)
-            if (model%output%csv) call write_body_modes_csv(dir, model, system, e)
-         case (9)
-            if (model%output%csv) call write_offset_curve_csv(dir, model, system, e)
+            call write_line_table(dir, trim(order(k)), lines, e)
+         case (5:9)
+            call write_system_table(dir, trim(order(k)), model, lines, sys, e)
          case (10)
-            if (model%output%csv) call write_modes_csv(dir, model, lines, system, e)
+            call write_modes_csv(dir, model, lines, sys, e)
          case (11)      ! (written with static_modes.csv)
          case (12)
-            if (model%output%csv) call output_write_environment(dir, model, e)
+            call output_write_environment(dir, model, e)
          case (13)
-            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e, &
-                                                         system)
+            if (model%output%hdf5) call write_results_h5(dir, model, lines, summary, e, sys)
          end select
       end do
       ! status.txt last, and true: not complete when a file could not be written
@@ -133,7 +123,7 @@ contains
          s%complete = .false.
          s%status = status_dynamics_to_run
       end if
-      call output_write_status(dir, s, e_status, deck_file=text_of(model%deck_file), &
+      call output_write_status(dir, s, e_status, deck_file=text_or(model%deck_file, ''), &
                                params=model%parameters)
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (has_error(e_status)) call set_error(err, e_status%code, e_status%message)
@@ -165,38 +155,36 @@ contains
          end if
          call outfile_create(f, dir, status_txt, e)
          if (.not. has_error(e)) then
-            call outfile_put(f, 'complete = '//trim(merge('true ', 'false', summary%complete)))
-            call outfile_put(f, 'status = '//one_line(status_of(summary)))
-            call outfile_put(f, 'load_factor = '//real_text(summary%load_factor))
-            call outfile_put(f, 'increments = '//int_text(summary%increments))
-            call outfile_put(f, 'iterations = '//int_text(summary%iterations))
-            call outfile_put(f, 'cutbacks = '//int_text(summary%cutbacks))
-            call outfile_put(f, 'wall_time_s = '//real_text(summary%wall_time))
+            call put('complete', trim(merge('true ', 'false', summary%complete)))
+            call put('status', one_line(status_of(summary)))
+            call put('load_factor', real_text(summary%load_factor))
+            call put('increments', int_text(summary%increments))
+            call put('iterations', int_text(summary%iterations))
+            call put('cutbacks', int_text(summary%cutbacks))
+            call put('wall_time_s', real_text(summary%wall_time))
             if (summary%dynamic) then
-               call outfile_put(f, 'dynamic = true')
-               call outfile_put(f, 'time_reached_s = '//real_text(summary%time_reached))
-               call outfile_put(f, 'steps = '//int_text(summary%steps))
-               call outfile_put(f, 'step_iterations = '//int_text(summary%step_iterations))
-               call outfile_put(f, 'step_tangents = '//int_text(summary%step_tangents))
-               call outfile_put(f, 'step_cutbacks = '//int_text(summary%step_cutbacks))
-               call outfile_put(f, 'frames = '//int_text(summary%frames))
+               call put('dynamic', 'true')
+               call put('time_reached_s', real_text(summary%time_reached))
+               call put('steps', int_text(summary%steps))
+               call put('step_iterations', int_text(summary%step_iterations))
+               call put('step_tangents', int_text(summary%step_tangents))
+               call put('step_cutbacks', int_text(summary%step_cutbacks))
+               call put('frames', int_text(summary%frames))
                if (present(committed)) then
                   do k = 1, size(committed)
-                     call outfile_put(f, 'committed_bytes.'//committed(k)%name//' = '// &
-                        int_text(committed(k)%bytes))
+                     call put('committed_bytes.'//committed(k)%name, int_text(committed(k)%bytes))
                   end do
                end if
             end if
-            call outfile_put(f, 'rodyn_version = '//rodyn_version)
+            call put('rodyn_version', rodyn_version)
             if (present(deck_file)) then
-               call outfile_put(f, 'deck = '//one_line(deck_file))
+               call put('deck', one_line(deck_file))
             else
-               call outfile_put(f, 'deck = ')
+               call put('deck', '')
             end if
             if (present(params)) then
                do k = 1, size(params)
-                  call outfile_put(f, 'parameter.'//params(k)%name//' = '// &
-                     one_line(params(k)%text))
+                  call put('parameter.'//params(k)%name, one_line(params(k)%text))
                end do
             end if
             call outfile_commit(f, e)
@@ -208,6 +196,13 @@ contains
          call remove_file(path_join(dir, status_txt))
          call set_error(err, e%code, e%message)
       end if
+   contains
+      !> One line 'key = value'.
+      subroutine put(key, value)
+         character(len=*), intent(in) :: key    !< key
+         character(len=*), intent(in) :: value  !< its value
+         call outfile_put(f, key//' = '//value)
+      end subroutine put
    end subroutine output_write_status
 
    !> Whether status.txt in folder `dir` says that the statics of a deck with *DYNAMIC
@@ -273,7 +268,7 @@ contains
       type(line_result_t), intent(in) :: lines(:) !< results
       type(run_summary_t), intent(in) :: summary  !< how the run went
       type(error_t), intent(inout) :: err         !< status
-      type(system_result_t), intent(in), optional :: system !< the modes (*MODAL)
+      type(system_result_t), intent(in) :: system  !< the modes (*MODAL), may be none
       type(hdf5_file_t) :: h5
       character(len=:), allocatable :: tmp
       integer :: i
@@ -281,7 +276,7 @@ contains
       tmp = temp_name(dir, results_h5)
       call hdf5_create_file(h5, tmp, err)
       call write_h5_root(h5, model, summary%complete, one_line(status_of(summary)), err)
-      call write_described(h5, results_h5, '/deck', err, text=text_of(model%deck_text))
+      call write_described(h5, results_h5, '/deck', err, text=text_or(model%deck_text, ''))
       call hdf5_create_group(h5, '/static', err)
       call hdf5_write_attribute(h5, '/static', 'load_factor', summary%load_factor, err)
       call hdf5_write_attribute(h5, '/static', 'increments', summary%increments, err)
@@ -311,9 +306,7 @@ contains
       character(len=*), intent(in) :: g         !< group path
       type(line_result_t), intent(in) :: r      !< results of the line
       type(error_t), intent(inout) :: err       !< status
-      call hdf5_create_group(h5, g, err)
-      call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
-      call write_described(h5, results_h5, g//'/node_s', err, g, x1=r%node_s)
+      call start_line_group(h5, results_h5, g, r, err)
       call write_described(h5, results_h5, g//'/node_xyz', err, g, x2=r%node_x)
       call write_described(h5, results_h5, g//'/gp_element', err, g, i1=r%gp_element)
       call write_described(h5, results_h5, g//'/gp_point', err, g, i1=r%gp_point)
@@ -331,20 +324,4 @@ contains
       call write_described(h5, results_h5, g//'/seabed_normal', err, g, x1=seabed_force_of(r, 1))
       call write_described(h5, results_h5, g//'/seabed_friction', err, g, x1=seabed_force_of(r, 2))
    end subroutine write_h5_line
-
-   ! ------------------------------------------------------------------ checks, files
-
-   !> Check that every line's arrays are allocated with consistent sizes.
-   subroutine check_lines(lines, err)
-      type(line_result_t), intent(in) :: lines(:) !< results
-      type(error_t), intent(inout) :: err         !< status
-      integer :: i
-      do i = 1, size(lines)
-         if (.not. line_result_complete(lines(i))) then
-            call set_error(err, stat_io, 'output_write_static: results of line '''// &
-               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
-            return
-         end if
-      end do
-   end subroutine check_lines
 end module rodyn_output

@@ -10,12 +10,13 @@ module rodyn_output_common
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_attribute, hdf5_write_attributes, &
       hdf5_write_dataset, hdf5_create_group
    use rodyn_error, only: error_t, set_error, stat_io, has_error
-   use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment, row_len
-   use rodyn_outfile, only: path_join
+   use rodyn_output_schema, only: schema_dataset, schema_field, schema_environment, row_len, &
+      schema_header
+   use rodyn_outfile, only: path_join, text_or, out_file_t, outfile_create, outfile_put, remove_file
    implicit none
    private
-   public :: text_of, status_of, path_join, one_line, describe, csv_name
-   public :: described, dataset_texts
+   public :: text_or, status_of, path_join, one_line, describe, csv_name
+   public :: described, dataset_texts, table_started
    public :: env_item_t, environment_items, write_environment_h5, write_parameters_h5
    public :: wall_tension_of, seabed_force_of, water_fields_fit, touchdown_of
 
@@ -56,16 +57,24 @@ contains
       end do
    end subroutine write_parameters_h5
 
-   !> The text of an optional allocatable string ('' when unallocated).
-   pure function text_of(text) result(s)
-      character(len=:), allocatable, intent(in) :: text !< string, maybe unallocated
-      character(len=:), allocatable :: s                 !< its value or ''
-      if (allocated(text)) then
-         s = text
-      else
-         s = ''
-      end if
-   end function text_of
+   !> Start the static CSV table `name` in folder `dir`: remove the file an earlier run
+   !> left there, then, when `wanted`, create it (a temporary until outfile_commit) with
+   !> its header from rodyn_output_schema. True when f is open for the rows.
+   logical function table_started(f, dir, name, wanted, err)
+      type(out_file_t), intent(out) :: f    !< the table
+      character(len=*), intent(in) :: dir   !< output folder (exists)
+      character(len=*), intent(in) :: name  !< file name, 'static_points.csv', ...
+      logical, intent(in) :: wanted         !< the run has rows for it
+      type(error_t), intent(inout) :: err   !< status
+      table_started = .false.
+      if (has_error(err)) return
+      call remove_file(path_join(dir, name))
+      if (.not. wanted) return
+      call outfile_create(f, dir, name, err)
+      if (has_error(err)) return
+      call outfile_put(f, schema_header(name))
+      table_started = .true.
+   end function table_started
 
    !> The status message of a summary, with a default when none was set.
    pure function status_of(summary) result(s)

@@ -48,15 +48,15 @@ module rodyn_output_dynamic
    use rodyn_output, only: output_write_status, output_write_environment
    use rodyn_sea_output, only: sea_scene_t, sea_values_t
    use rodyn_outfile, only: temp_name, commit_rename, remove_file
-   use rodyn_output_common, only: text_of, status_of, path_join, one_line, &
+   use rodyn_output_common, only: text_or, status_of, path_join, one_line, &
                                   write_environment_h5, write_parameters_h5
    use rodyn_output_table, only: line_table_t, write_described, create_described_series, &
-                                 write_h5_root, line_result_complete, line_result_fits
+                                 write_h5_root, check_line_results, line_result_fits
    use rodyn_output_dynamic_files, only: dynamic_files_t, n_tables, tb_log, &
       tb_waves, tb_bodies_step, files_create, files_reopen, files_flush, files_mark, &
       files_close, files_committed, files_pending, files_written
    use rodyn_output_dynamic_series, only: log_block, frame_block, hold_bytes, chunk_bytes, &
-      series_rows, series_write_held, series_close
+      series_do, s_hold, s_cut, s_write, s_close
    use rodyn_output_dynamic_lines, only: line_out_t, n_line_tables, &
       n_frame_series, dynamic_h5, line_tables, set_up_line, create_h5_lines, open_h5_lines, &
       write_frame_rows, write_frame_h5, write_ends_step
@@ -158,18 +158,12 @@ contains
          return
       end if
       w%dir = dir
-      w%deck_file = text_of(model%deck_file)
+      w%deck_file = text_or(model%deck_file, '')
       if (allocated(model%parameters)) w%params = model%parameters
       w%csv = model%output%csv
       w%hdf5 = model%output%hdf5
       call start_counters(w, static_summary, resume)
-      do i = 1, size(lines)
-         if (.not. line_result_complete(lines(i))) then
-            call set_error(err, stat_io, where//': results of line '''// &
-               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
-            return
-         end if
-      end do
+      call check_line_results(lines, where, err)
       call line_tables(w%table, err)
       if (has_error(err)) return
       call output_write_status(dir, w%progress, e, w%deck_file, w%params)  ! makes the folder
@@ -199,9 +193,8 @@ contains
          if (has_error(e)) w%h5_failed = .true.
       end if
       if (has_error(e)) then
-         call note_failure(w, e)
+         call note_failure(w, e, err)
          call release_all(w, e)
-         call set_error(err, e%code, e%message)
          return
       end if
       w%is_open = .true.
@@ -213,13 +206,16 @@ contains
       type(dynamic_writer_t), intent(inout) :: w        !< the writer
       type(run_summary_t), intent(in), optional :: static_summary !< the static run
       type(dynamic_output_mark_t), intent(in), optional :: resume !< a checkpoint
-      w%frames = 0
-      w%steps = 0
-      w%end_rows = 0
+      type(dynamic_output_mark_t) :: m
+      m = dynamic_output_mark_t()
+      if (present(resume)) m = resume
+      w%frames = m%frames
+      w%steps = m%steps
+      w%end_rows = m%end_rows
+      w%last_time = m%last_time
       w%n_pending = 0
       w%frames_held = 0
       w%steps_held = 0
-      w%last_time = 0.0_wp
       w%failed = .false.
       w%h5_failed = .false.
       w%flush_time = 0.0_wp
@@ -228,22 +224,11 @@ contains
       w%progress%complete = .false.
       w%progress%status = running
       w%progress%dynamic = .true.
-      w%progress%time_reached = 0.0_wp
-      w%progress%steps = 0
-      w%progress%step_iterations = 0
-      w%progress%step_tangents = 0
-      w%progress%step_cutbacks = 0
-      if (present(resume)) then
-         w%frames = resume%frames
-         w%steps = resume%steps
-         w%end_rows = resume%end_rows
-         w%last_time = resume%last_time
-         w%progress%time_reached = resume%last_time
-         w%progress%steps = resume%steps
-         w%progress%step_iterations = resume%step_iterations
-         w%progress%step_tangents = resume%step_tangents
-         w%progress%step_cutbacks = resume%step_cutbacks
-      end if
+      w%progress%time_reached = m%last_time
+      w%progress%steps = m%steps
+      w%progress%step_iterations = m%step_iterations
+      w%progress%step_tangents = m%step_tangents
+      w%progress%step_cutbacks = m%step_cutbacks
       w%synced = w%progress
       w%static_wall_time = w%progress%wall_time
       call system_clock(w%clock_start)
@@ -263,11 +248,8 @@ contains
          return
       end if
       call sync(w, e)
-      if (has_error(e)) then
-         call note_failure(w, e)
-         call set_error(err, e%code, e%message)
-         return
-      end if
+      call note_failure(w, e, err)
+      if (has_error(e)) return
       mark%csv_bytes = files_written(w%files)
       mark%frames = w%frames
       mark%steps = w%steps
@@ -306,10 +288,7 @@ contains
             return
          end if
       end do
-      if (w%failed) then
-         call set_error(err, stat_io, w%why)
-         return
-      end if
+      if (.not. writer_ready(w, where, err)) return
       if (w%csv) call write_frame_rows(w%table, w%line, lines, time, w%files)
       if (w%hdf5) then
          call write_frame_h5(w%line, lines, e)
@@ -326,10 +305,7 @@ contains
          if (due .or. w%frames == 1 .or. w%frames_held >= w%hold_frames .or. &
              files_pending(w%files) > hold_bytes) call sync(w, e)
       end if
-      if (has_error(e)) then
-         call note_failure(w, e)
-         call set_error(err, e%code, e%message)
-      end if
+      call note_failure(w, e, err)
    end subroutine dynamic_output_frame
 
    !> The writer keeps its frames in a file (CSV or HDF5). A deck that asks for neither
@@ -359,8 +335,7 @@ contains
       w%progress%step_tangents = w%progress%step_tangents + log%tangents
       w%progress%step_cutbacks = w%progress%step_cutbacks + log%cutbacks
       if (w%steps_held >= log_block) call sync(w, e)
-      if (has_error(e)) call note_failure(w, e)
-      if (has_error(e)) call set_error(err, e%code, e%message)
+      call note_failure(w, e, err)
    end subroutine dynamic_output_step
 
    !> Append the support forces at the end of step `step` (0: the start state), at time
@@ -377,10 +352,8 @@ contains
       type(error_t) :: e
       if (.not. writer_ready(w, 'dynamic_output_ends_step', err)) return
       call write_ends_step(w%table, w%line, step, time, reaction, w%csv, w%hdf5, w%files, e)
-      if (has_error(e)) w%h5_failed = .true.
       if (.not. has_error(e)) w%end_rows = w%end_rows + 1
-      if (has_error(e)) call note_failure(w, e)
-      if (has_error(e)) call set_error(err, e%code, e%message)
+      call note_failure(w, e, err, h5=.true.)
    end subroutine dynamic_output_ends_step
 
    !> Append the sea and vessel outputs at the end of step `step` (0: the start state),
@@ -399,12 +372,8 @@ contains
       if (.not. writer_ready(w, 'dynamic_output_sea', err)) return
       if (w%hdf5) then
          call write_sea_h5(w%sea, time, v, frame, e)
-         if (has_error(e)) then
-            w%h5_failed = .true.
-            call note_failure(w, e)
-            call set_error(err, e%code, e%message)
-            return
-         end if
+         call note_failure(w, e, err, h5=.true.)
+         if (has_error(e)) return
       end if
       if (w%csv) call write_sea_rows(w%sea, w%files, step, time, v, frame)
    end subroutine dynamic_output_sea
@@ -426,20 +395,17 @@ contains
       s%dynamic = .true.
       if (w%is_open .and. .not. w%failed) then
          call sync(w, e, rewrite_status=.false.)
-         if (has_error(e)) call note_failure(w, e)
+         call note_failure(w, e)
       end if
       if (w%failed) call as_synced(w, s)
       if (w%is_open .and. w%hdf5 .and. .not. w%h5_failed) then
          call write_final_attributes(w, s, eh)
-         if (has_error(eh)) then
-            w%h5_failed = .true.
-            call note_failure(w, eh)
-         end if
+         call note_failure(w, eh, h5=.true.)
       end if
       call release_all(w, e)
       if (w%failed) call as_synced(w, s)
       if (.not. w%failed) s%frames = w%frames
-      if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_of(w%deck_file), &
+      if (allocated(w%dir)) call output_write_status(w%dir, s, e, text_or(w%deck_file, ''), &
                                                      w%params, files_committed(w%files))
       if (has_error(e)) call set_error(err, e%code, e%message)
       if (w%failed) call set_error(err, stat_io, w%why)
@@ -464,7 +430,7 @@ contains
          call hdf5_write_attribute(h5, '/', 'scheme', scheme_name(model%dynamic%scheme), err)
          call hdf5_write_attribute(h5, '/', 'rho_inf', model%dynamic%rho_inf, err)
          call hdf5_write_attribute(h5, '/', 'dt', model%dynamic%dt, err)
-         call write_described(h5, dynamic_h5, '/deck', err, text=text_of(model%deck_text))
+         call write_described(h5, dynamic_h5, '/deck', err, text=text_or(model%deck_text, ''))
          call hdf5_create_group(h5, '/dynamic', err)
          call hdf5_write_attribute(h5, '/dynamic', 'duration_s', model%dynamic%duration, err)
          call hdf5_write_attribute(h5, '/dynamic', 'output_interval_s', &
@@ -502,10 +468,10 @@ contains
       w%hold_frames = max(1, min(frame_block, hold_bytes/(8*nv)))
       call hdf5_series_hold(w%time, w%hold_frames)
       do i = 1, size(w%line)
-         call series_rows(w%line(i)%series, n_frame_series, w%hold_frames, log_block + 2, &
-                          .false., err)
+         call series_do(w%line(i)%series, s_hold, err, n_frame_series, w%hold_frames, &
+                        log_block + 2)
       end do
-      call series_rows(w%sea%h5, n_sea_frame, w%hold_frames, log_block + 2, .false., err)
+      call series_do(w%sea%h5, s_hold, err, n_sea_frame, w%hold_frames, log_block + 2)
    end subroutine hold_h5_series
 
    !> Open the dynamic.h5 of an interrupted run again and cut every time history back
@@ -528,11 +494,11 @@ contains
       call hold_h5_series(w, err)
       call hdf5_series_truncate(w%time, mark%frames, err)
       do i = 1, size(lines)
-         call series_rows(w%line(i)%series, n_frame_series, mark%frames, mark%end_rows, &
-                          .true., err)
+         call series_do(w%line(i)%series, s_cut, err, n_frame_series, mark%frames, &
+                        mark%end_rows)
       end do
-      call series_rows(w%log, 0, mark%steps, mark%steps, .true., err)
-      call series_rows(w%sea%h5, n_sea_frame, mark%frames, mark%end_rows, .true., err)
+      call series_do(w%log, s_cut, err, 0, mark%steps, mark%steps)
+      call series_do(w%sea%h5, s_cut, err, n_sea_frame, mark%frames, mark%end_rows)
       call flush_h5(w, err)
    end subroutine reopen_h5
 
@@ -557,9 +523,9 @@ contains
       if (w%hdf5) then
          call hdf5_series_write_held(w%time, eh)
          do i = 1, size(w%line)
-            call series_write_held(w%line(i)%series, eh)
+            call series_do(w%line(i)%series, s_write, eh)
          end do
-         call series_write_held(w%sea%h5, eh)
+         call series_do(w%sea%h5, s_write, eh)
          if (.not. has_error(eh)) then
             call write_log_h5(w%log, w%pending(1:w%n_pending), eh)
             w%n_pending = 0
@@ -604,11 +570,17 @@ contains
       end if
    end function writer_ready
 
-   !> Record a write failure: nothing more is written.
-   subroutine note_failure(w, e)
-      type(dynamic_writer_t), intent(inout) :: w   !< writer
-      type(error_t), intent(in) :: e               !< the failure
-      if (w%failed .or. .not. has_error(e)) return
+   !> Record a write failure e (nothing when e holds none): nothing more is written. h5:
+   !> a failure of dynamic.h5; err, the caller's status, gets it too.
+   subroutine note_failure(w, e, err, h5)
+      type(dynamic_writer_t), intent(inout) :: w    !< writer
+      type(error_t), intent(in) :: e                !< the failure, if any
+      type(error_t), intent(inout), optional :: err !< the caller's status
+      logical, intent(in), optional :: h5           !< a failure of dynamic.h5
+      if (.not. has_error(e)) return
+      if (present(h5)) w%h5_failed = w%h5_failed .or. h5
+      if (present(err)) call set_error(err, e%code, e%message)
+      if (w%failed) return
       w%failed = .true.
       w%why = e%message
    end subroutine note_failure
@@ -661,20 +633,17 @@ contains
       ! after a failure the held steps are dropped (the series see an error)
       if (w%failed) call set_error(eh, stat_io, w%why)
       call hdf5_close_series(w%time, eh)
-      call series_close(w%log, eh)
+      call series_do(w%log, s_close, eh)
       if (allocated(w%line)) then
          do i = 1, size(w%line)
-            call series_close(w%line(i)%series, eh)
+            call series_do(w%line(i)%series, s_close, eh)
          end do
          deallocate (w%line)
       end if
-      call series_close(w%sea%h5, eh)
+      call series_do(w%sea%h5, s_close, eh)
       if (w%h5%id >= 0) then
          call hdf5_close_file(w%h5, eh)
-         if (has_error(eh)) then
-            w%h5_failed = .true.
-            call note_failure(w, eh)
-         end if
+         call note_failure(w, eh, h5=.true.)
       end if
       if (w%h5_failed .and. allocated(w%dir)) then
          call remove_file(temp_name(w%dir, dynamic_h5))

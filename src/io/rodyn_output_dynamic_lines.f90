@@ -8,14 +8,14 @@ module rodyn_output_dynamic_lines
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t
    use rodyn_results, only: line_result_t
-   use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_create_group, &
-      hdf5_write_attribute, hdf5_open_series, hdf5_append_steps
+   use rodyn_hdf5, only: hdf5_file_t, hdf5_series_t, hdf5_write_attribute, &
+      hdf5_open_series, hdf5_append_steps
    use rodyn_outfile, only: out_file_t, outfile_put
    use rodyn_output_common, only: wall_tension_of, seabed_force_of, touchdown_of
    use rodyn_output_table, only: line_table_t, line_table, line_rows, line_row_kept, &
                                  line_row_head, put_line_values, put_end_values, group_name, &
                                  write_described, create_described_series, &
-                                 bending_curvature_at, row_len
+                                 bending_curvature_at, row_len, start_line_group
    use rodyn_output_dynamic_files, only: dynamic_files_t, table_name, tb_nodes, tb_elements, &
                                          tb_ends, tb_lines, tb_ends_step
    use rodyn_output_dynamic_series, only: chunk_bytes, log_chunk
@@ -119,30 +119,21 @@ contains
       type(line_result_t), intent(in) :: r   !< the line at open
       type(line_out_t), intent(inout) :: lo  !< the line's output (its series)
       type(error_t), intent(inout) :: err    !< status
-      integer :: nn, ng
-      nn = size(r%node_s)
-      ng = size(r%gp_s)
-      call hdf5_create_group(h5, g, err)
-      call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
-      call write_described(h5, dynamic_h5, g//'/node_s', err, g, x1=r%node_s)
+      integer :: k, cols(ls_seabed_friction)
+      cols = [integer :: size(r%node_s), size(r%node_s), size(r%node_s), &
+              (size(r%gp_s), k = 1, 5), 12, 2, size(r%gp_s), size(r%node_s), size(r%node_s)]
+      call start_line_group(h5, dynamic_h5, g, r, err)
       call write_described(h5, dynamic_h5, g//'/gp_s', err, g, x1=r%gp_s)
       call write_described(h5, dynamic_h5, g//'/gp_element', err, g, i1=r%gp_element)
       call write_described(h5, dynamic_h5, g//'/gp_point', err, g, i1=r%gp_point)
-      call history(ls_x, nn)
-      call history(ls_y, nn)
-      call history(ls_z, nn)
-      call history(ls_tension, ng)
-      call history(ls_moment_1, ng)
-      call history(ls_moment_2, ng)
-      call history(ls_torque, ng)
-      call history(ls_curvature, ng)
-      call history(ls_reactions, 12)
-      call hdf5_write_attribute(h5, g//'/reactions', 'end_held', merge(1, 0, r%end_held), &
-         err)
-      call history(ls_end_tension, 2)
-      call history(ls_wall_tension, ng)
-      call history(ls_seabed_normal, nn)
-      call history(ls_seabed_friction, nn)
+      ! the frames' histories ls_x .. ls_seabed_friction, cols(k) values a frame
+      do k = 1, ls_seabed_friction
+         call create_described_series(h5, dynamic_h5, g//'/'//trim(line_series_name(k)), &
+                                      cols(k), err, max(8, chunk_bytes/(8*cols(k))), g, &
+                                      series=lo%series(k))
+         if (k == ls_reactions) call hdf5_write_attribute(h5, g//'/reactions', 'end_held', &
+                                                          merge(1, 0, r%end_held), err)
+      end do
       call create_described_series(h5, dynamic_h5, g//'/step_time', 0, err, log_chunk, g, &
                                    series=lo%series(ls_step_time))
       call create_described_series(h5, dynamic_h5, g//'/step_reactions', 12, err, &
@@ -153,14 +144,6 @@ contains
                                    log_chunk, g, series=lo%series(ls_step_end_tension))
       call create_described_series(h5, dynamic_h5, g//'/'//trim(line_series_name(ls_touchdown)), &
                                    0, err, chunk_bytes/8, g, series=lo%series(ls_touchdown))
-   contains
-      !> The empty history k (ls_*) of n values per frame, with its units and description.
-      subroutine history(k, n)
-         integer, intent(in) :: k                     !< ls_* index
-         integer, intent(in) :: n                     !< values per frame
-         call create_described_series(h5, dynamic_h5, g//'/'//trim(line_series_name(k)), n, &
-                                      err, max(8, chunk_bytes/(8*n)), g, series=lo%series(k))
-      end subroutine history
    end subroutine create_h5_line
 
    !> Open every time history of the lines' groups of an existing dynamic.h5 for

@@ -7,13 +7,11 @@ module rodyn_output_modal
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t
    use rodyn_results, only: line_result_t, system_result_t
-   use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_commit, &
-                            remove_file
-   use rodyn_output_schema, only: schema_header
-   use rodyn_output_common, only: path_join, csv_name
+   use rodyn_outfile, only: out_file_t, outfile_put, outfile_commit, remove_file
+   use rodyn_output_common, only: path_join, csv_name, table_started
    use rodyn_output_table, only: write_described, group_name
    use rodyn_hdf5, only: hdf5_file_t, hdf5_create_group, hdf5_write_attribute
-   use rodyn_format, only: real_text, int_text
+   use rodyn_format, only: real_fields, int_text
    implicit none
    private
    public :: write_modes_csv, modes_csv, mode_shapes_csv, write_modes_h5
@@ -30,26 +28,19 @@ contains
       character(len=*), intent(in) :: dir                 !< output folder (exists)
       type(model_t), intent(in) :: model                  !< model (names)
       type(line_result_t), intent(in) :: lines(:)         !< static results (node S)
-      type(system_result_t), intent(in), optional :: sys  !< the modes
+      type(system_result_t), intent(in) :: sys            !< the modes (may be none)
       type(error_t), intent(inout) :: err                 !< status
       type(out_file_t) :: f
       integer :: k, j
-      character(len=:), allocatable :: row
       if (has_error(err)) return
-      call remove_file(path_join(dir, modes_csv))
       call remove_file(path_join(dir, mode_shapes_csv))
-      if (.not. present(sys)) return
-      if (.not. allocated(sys%modal_period)) return
-      call outfile_create(f, dir, modes_csv, err)
-      if (has_error(err)) return
-      call outfile_put(f, schema_header(modes_csv))
+      if (.not. table_started(f, dir, modes_csv, allocated(sys%modal_period), err)) return
       do k = 1, size(sys%modal_period)
          j = maxloc(sys%modal_share(:, k), dim=1)
-         row = int_text(k)//','//real_text(sys%modal_period(k))//','// &
-               real_text(1.0_wp/sys%modal_period(k))//','// &
-               csv_name(object_name(model, lines, sys, j))//','// &
-               real_text(sys%modal_share(j, k))
-         call outfile_put(f, row)
+         call outfile_put(f, int_text(k)// &
+                          real_fields([sys%modal_period(k), 1.0_wp/sys%modal_period(k)])// &
+                          ','//csv_name(object_name(model, lines, sys, j))// &
+                          real_fields([sys%modal_share(j, k)]))
       end do
       call outfile_commit(f, err)
       if (has_error(err)) return
@@ -65,39 +56,26 @@ contains
       type(error_t), intent(inout) :: err                 !< status
       type(out_file_t) :: f
       integer :: k, l, a, n0, m, nl
-      call outfile_create(f, dir, mode_shapes_csv, err)
-      if (has_error(err)) return
-      call outfile_put(f, schema_header(mode_shapes_csv))
+      if (.not. table_started(f, dir, mode_shapes_csv, .true., err)) return
       nl = size(lines)
       do k = 1, size(sys%modal_period)
          n0 = 0
          do l = 1, nl
             do a = 1, size(lines(l)%node_s)
                call outfile_put(f, int_text(k)//','//csv_name(lines(l)%name)//','// &
-                                int_text(a)//','//real_text(lines(l)%node_s(a))// &
-                                motion_text(sys%modal_shape(:, n0 + a, k)))
+                                int_text(a)//real_fields([lines(l)%node_s(a), &
+                                                          sys%modal_shape(:, n0 + a, k)]))
             end do
             n0 = n0 + size(lines(l)%node_s)
          end do
          do m = 1, size(sys%modal_master, 2)
             call outfile_put(f, int_text(k)//','// &
                              csv_name(object_name(model, lines, sys, nl + m))//',0,0'// &
-                             motion_text(sys%modal_master(:, m, k)))
+                             real_fields(sys%modal_master(:, m, k)))
          end do
       end do
       call outfile_commit(f, err)
    end subroutine write_shapes
-
-   !> ',x,y,z,rx,ry,rz' of a motion.
-   function motion_text(u) result(s)
-      real(wp), intent(in) :: u(6)             !< translation [m], rotation [rad]
-      character(len=:), allocatable :: s
-      integer :: i
-      s = ''
-      do i = 1, 6
-         s = s//','//real_text(u(i))
-      end do
-   end function motion_text
 
    !> The name of object j of the shares: a line, then the masters (points, bodies).
    function object_name(model, lines, sys, j) result(name)
@@ -124,13 +102,12 @@ contains
    subroutine write_modes_h5(h5, lines, sys, err)
       type(hdf5_file_t), intent(in) :: h5                 !< open file
       type(line_result_t), intent(in) :: lines(:)         !< lines
-      type(system_result_t), intent(in), optional :: sys  !< the modes
+      type(system_result_t), intent(in) :: sys            !< the modes (may be none)
       type(error_t), intent(inout) :: err                 !< status
       character(len=2), parameter :: comp(6) = ['ux', 'uy', 'uz', 'rx', 'ry', 'rz']
       character(len=:), allocatable :: g
       integer :: l, n0, nn, c
-      if (has_error(err) .or. .not. present(sys)) return
-      if (.not. allocated(sys%modal_period)) return
+      if (has_error(err) .or. .not. allocated(sys%modal_period)) return
       call hdf5_create_group(h5, '/modes', err)
       call hdf5_write_attribute(h5, '/modes', 'solver', trim(sys%modal_solver), err)
       call hdf5_write_attribute(h5, '/modes', 'tangent_asymmetry', sys%modal_asymmetry, err)

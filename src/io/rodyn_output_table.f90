@@ -35,8 +35,8 @@ module rodyn_output_table
    use rodyn_output_schema, only: output_columns, schema_field, schema_header, &
       schema_len => row_len
    use rodyn_hdf5, only: hdf5_file_t, hdf5_write_dataset, hdf5_write_attribute, &
-      hdf5_create_series, hdf5_create_series_1d, hdf5_series_t
-   use rodyn_output_common, only: csv_name, touchdown_of, water_fields_fit, text_of, &
+      hdf5_create_series, hdf5_create_series_1d, hdf5_series_t, hdf5_create_group
+   use rodyn_output_common, only: csv_name, touchdown_of, water_fields_fit, text_or, &
       described, dataset_texts
    implicit none
    private
@@ -44,7 +44,9 @@ module rodyn_output_table
    public :: put_line_values, put_end_values, line_row_values, end_row_values
    public :: write_line_table
    public :: group_name, write_described, create_described_series, write_h5_root
+   public :: start_line_group
    public :: line_result_complete, line_result_fits, bending_curvature_at
+   public :: check_line_results
    public :: row_len, units_si
 
    integer, parameter :: row_len = 1024    !< longest CSV row (19 fields of <= 26 characters)
@@ -339,6 +341,22 @@ contains
 
    ! ------------------------------------------------------------------ line results
 
+   !> Check that every line's arrays are allocated with consistent sizes; err names the
+   !> caller `who` and the first line that is not.
+   subroutine check_line_results(lines, who, err)
+      type(line_result_t), intent(in) :: lines(:) !< results
+      character(len=*), intent(in) :: who         !< the caller, for the message
+      type(error_t), intent(inout) :: err         !< status
+      integer :: i
+      do i = 1, size(lines)
+         if (.not. line_result_complete(lines(i))) then
+            call set_error(err, stat_io, who//': results of line '''// &
+               trim(lines(i)%name)//''' are missing or of inconsistent sizes')
+            return
+         end if
+      end do
+   end subroutine check_line_results
+
    !> Whether every array of a line result is allocated with consistent sizes.
    pure logical function line_result_complete(r)
       type(line_result_t), intent(in) :: r  !< line result
@@ -391,6 +409,19 @@ contains
       end do
    end function group_name
 
+   !> Start the group g of line r in HDF5 file `file` (its schema name): the group, its
+   !> attribute name, and the nodes' arc lengths node_s.
+   subroutine start_line_group(h5, file, g, r, err)
+      type(hdf5_file_t), intent(in) :: h5    !< open file
+      character(len=*), intent(in) :: file   !< 'results.h5', 'dynamic.h5'
+      character(len=*), intent(in) :: g      !< group path
+      type(line_result_t), intent(in) :: r   !< the line
+      type(error_t), intent(inout) :: err    !< status
+      call hdf5_create_group(h5, g, err)
+      call hdf5_write_attribute(h5, g, 'name', trim(r%name), err)
+      call write_described(h5, file, g//'/node_s', err, g, x1=r%node_s)
+   end subroutine start_line_group
+
    !> The root attributes both HDF5 files start with: program, version, deck_file,
    !> title, units, complete (0/1) and status.
    subroutine write_h5_root(h5, model, complete, status, err)
@@ -401,8 +432,8 @@ contains
       type(error_t), intent(inout) :: err          !< status of the writing
       call hdf5_write_attribute(h5, '/', 'program', 'rodyn', err)
       call hdf5_write_attribute(h5, '/', 'version', rodyn_version, err)
-      call hdf5_write_attribute(h5, '/', 'deck_file', text_of(model%deck_file), err)
-      call hdf5_write_attribute(h5, '/', 'title', text_of(model%title), err)
+      call hdf5_write_attribute(h5, '/', 'deck_file', text_or(model%deck_file, ''), err)
+      call hdf5_write_attribute(h5, '/', 'title', text_or(model%title, ''), err)
       call hdf5_write_attribute(h5, '/', 'units', units_si, err)
       call hdf5_write_attribute(h5, '/', 'complete', merge(1, 0, complete), err)
       call hdf5_write_attribute(h5, '/', 'status', status, err)

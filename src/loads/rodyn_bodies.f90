@@ -40,7 +40,7 @@ module rodyn_bodies
    implicit none
    private
    public :: body_loads_t, body_loads_build, body_force, body_damping, body_current_drag
-   public :: body_waves_build, body_waves_at, body_water_set
+   public :: body_waves_build, body_waves_at, body_water_set, body_transfer
 
    !> The bodies' loads, fixed for the run (and the last forces, for the work's books).
    type :: body_loads_t
@@ -213,7 +213,6 @@ contains
       real(wp), intent(out) :: f(6)            !< force and moment on the node [N, N m]
       real(wp), intent(out) :: kb(6, 6)        !< d f / d (x, theta) of the node
       real(wp) :: dm(3, 3), ab(3), ar(3), ar1(3), q(6), fw(6), t(6, 6), fe(3)
-      integer :: i
       dm = (1.0_wp - w)*d0 + w*d1
       ab = matmul(dm, bl%rb(:, k))
       ar = matmul(dm, bl%rr(:, k))
@@ -231,11 +230,7 @@ contains
       q(4:6) = rotation_log(dm)
       fw = -matmul(bl%c(:, :, k), q)
       fw(4:6) = fw(4:6) + cross(ar, fw(1:3))
-      t = 0.0_wp
-      do i = 1, 6
-         t(i, i) = 1.0_wp
-      end do
-      t(1:3, 4:6) = -skew(ar1)
+      t = body_transfer(ar1)
       kb = kb - w*matmul(transpose(t), matmul(bl%c(:, :, k), t))
       bl%fh(1:3, k) = f(1:3) + fw(1:3)
       bl%fh(4:6, k) = f(4:6) + fw(4:6)
@@ -301,11 +296,7 @@ contains
          f = f + fq
          bl%fd(:, k) = f
       end if
-      t = 0.0_wp
-      do i = 1, 6
-         t(i, i) = 1.0_wp
-      end do
-      t(1:3, 4:6) = -skew(ar1)
+      t = body_transfer(ar1)
       kb = -matmul(transpose(t), matmul(bl%b(:, :, k) + bq, t))/dt
    end subroutine body_damping
 
@@ -321,4 +312,17 @@ contains
          k(i, i) = k(i, i) - dot_product(a, force)
       end do
    end function moment_tangent
+
+   !> The transfer T_R = [I, -skew(a); 0, I] of a body's six motions to a point at a
+   !> from its reference point. docs/theory.md eq. (139).
+   pure function body_transfer(a) result(t)
+      real(wp), intent(in) :: a(3)   !< the point from R [m]
+      real(wp) :: t(6, 6)            !< the transfer
+      integer :: i
+      t = 0.0_wp
+      do i = 1, 6
+         t(i, i) = 1.0_wp
+      end do
+      t(1:3, 4:6) = -skew(a)
+   end function body_transfer
 end module rodyn_bodies

@@ -38,7 +38,7 @@ module rodyn_hydro
    private
    public :: water_section_t, water_env_t, water_point_load, submerged_fraction
    public :: part_water, part_seabed, seabed_normal_force, sea_pressure
-   public :: n_wk
+   public :: n_wk, outer
 
    !> Values per point of a wave's state (wkin): velocity (1:3) [m/s], acceleration
    !> (4:6) [m/s2], elevation eta (7) [m]

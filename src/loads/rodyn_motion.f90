@@ -64,9 +64,7 @@ contains
             u(j) = mo%amplitude(j)*sin(two_pi*mo%frequency(j)*t + mo%phase(j))
          end do
       case (motion_table)
-         do j = 1, 3
-            u(j) = interpolate(mo%time, mo%disp(j, :), t)
-         end do
+         u = interpolate_rows(mo%time, mo%disp(1:3, :), t)
       case default
          u = 0.0_wp
       end select
@@ -146,16 +144,13 @@ contains
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
       real(wp) :: xi(6)
-      integer :: k
       xi = 0.0_wp
       if (ve%kind == vessel_from_rao) then
          if (allocated(ve%coef)) xi = ramp_factor(t, ve%sea_ramp)* &
                                       vessel_harmonic_motion(ve%coef, ve%omega, t)
          return
       end if
-      do k = 1, 6
-         xi(k) = interpolate(ve%time, ve%motion(k, :), t)
-      end do
+      xi = interpolate_rows(ve%time, ve%motion(1:6, :), t)
    end function vessel_motion
 
    !> Slow motion of a vessel's reference point, global: its static offset plus its
@@ -167,15 +162,11 @@ contains
       type(vessel_t), intent(in) :: ve !< vessel
       real(wp), intent(in) :: t        !< time [s]
       real(wp) :: d(4)
-      integer :: k
       d = ve%offset
       if (ve%drift_period > 0.0_wp) &
          d = d + ve%drift*sin(two_pi*t/ve%drift_period + ve%drift_phase)
-      if (allocated(ve%drift_time)) then
-         do k = 1, 4
-            d(k) = d(k) + interpolate(ve%drift_time, ve%drift_table(k, :), t)
-         end do
-      end if
+      if (allocated(ve%drift_time)) &
+         d = d + interpolate_rows(ve%drift_time, ve%drift_table(1:4, :), t)
    end function vessel_slow_motion
 
    !> Pose of a vessel at time t, as motion_displacement moves its points with ramp r
@@ -205,6 +196,18 @@ contains
       real(wp), intent(in) :: t            !< time [s]
       amplitude_value = interpolate(amp%time, amp%value, t)
    end function amplitude_value
+
+   !> interpolate of each row of a table: y(k) from (tt, table(k, :)).
+   pure function interpolate_rows(tt, table, t) result(y)
+      real(wp), intent(in) :: tt(:)        !< increasing abscissae
+      real(wp), intent(in) :: table(:, :)  !< (rows, size(tt)) values
+      real(wp), intent(in) :: t            !< where
+      real(wp) :: y(size(table, 1))        !< the rows' values at t
+      integer :: k
+      do k = 1, size(table, 1)
+         y(k) = interpolate(tt, table(k, :), t)
+      end do
+   end function interpolate_rows
 
    !> Piecewise-linear interpolation in (tt, yy), constant beyond the ends.
    pure real(wp) function interpolate(tt, yy, t)

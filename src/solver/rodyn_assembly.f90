@@ -15,7 +15,7 @@ module rodyn_assembly
    use rodyn_hydro, only: water_section_t
    use rodyn_state, only: state_t, state_gather, copy_values
    use rodyn_banded, only: banded_t, banded_add, banded_fix_dof, banded_keep_column, &
-                           banded_kept_axpy
+                           banded_kept_axpy, banded_zero
    use rodyn_rod_element, only: rod_element_static, rod_element_line_load, max_points, rod_gp_t
    use rodyn_rod_dynamic, only: rod_element_dynamic
    use rodyn_cable_element, only: cable_element_static, cable_element_dynamic
@@ -402,10 +402,7 @@ contains
       real(wp) :: kc(3*max_nen, 3*max_nen)
       integer :: e, l, p, nen
       fint = 0.0_wp
-      if (want_k) then
-         bm%ab = 0.0_wp
-         bm%factored = .false.
-      end if
+      if (want_k) call banded_zero(bm)
       do e = 1, mesh%n_elements
          l = mesh%elem_line(e)
          p = mesh%line_order(l)
@@ -503,10 +500,7 @@ contains
          kde => kd6
          offe => off6
       end if
-      if (want_k) then
-         bm%ab = 0.0_wp
-         bm%factored = .false.
-      end if
+      if (want_k) call banded_zero(bm)
       do e = 1, mesh%n_elements
          l = mesh%elem_line(e)
          if (mesh%elem_cable(e)) cycle     ! assemble_dynamic_cables

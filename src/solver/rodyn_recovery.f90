@@ -13,6 +13,7 @@ module rodyn_recovery
    use rodyn_cable_element, only: cable_element_tension
    use rodyn_shape, only: max_order, max_nen
    use rodyn_results, only: line_result_t, system_result_t
+   use rodyn_bodies, only: body_transfer
    use rodyn_junctions, only: junctions_stiffness
    use rodyn_rotation, only: cross, skew, rotation_log
    use rodyn_banded, only: dense_sym_eigen, dense_factor, dense_solve
@@ -113,11 +114,7 @@ contains
                                             transpose(d)))
             mg = mg + added_mass_global(body_added_mass_g(bd), d)
          end associate
-         t = 0.0_wp
-         do i = 1, 6
-            t(i, i) = 1.0_wp
-         end do
-         t(1:3, 4:6) = -skew(g)
+         t = body_transfer(g)
          mr = matmul(transpose(t), matmul(mg, t))
          call dense_sym_eigen(kb, mr, lam, err)
          if (has_error(err)) return

@@ -18,7 +18,7 @@ module rodyn_rod_problem
    use rodyn_bodies, only: body_loads_t, body_loads_build
    implicit none
    private
-   public :: rod_problem_t, rod_problem_init
+   public :: rod_problem_t, rod_problem_init, rod_factor, rod_back_solve
 
    !> Shared part of the rod Newton problems.
    type, abstract, extends(newton_problem_t) :: rod_problem_t
@@ -157,11 +157,7 @@ contains
          call anderson_clear(this%aa)
       if (this%tangent_new) then
          this%tangent_new = .false.
-         if (this%jn%nj > 0) then
-            call junctions_factor(this%jn, this%bm, err)
-         else
-            call banded_factor(this%bm, err, this%sup%first)
-         end if
+         call rod_factor(this, err)
          if (has_error(err)) return
          this%factors_ok = .true.
       else if (.not. this%factors_ok) then
@@ -169,13 +165,33 @@ contains
          return
       end if
       this%du = -this%rhs
-      if (this%jn%nj > 0) then
-         call junctions_solve(this%jn, this%sup, this%bm, this%du, err)
-      else
-         call banded_solve(this%bm, this%du, err)
-      end if
+      call rod_back_solve(this, this%du, err)
       if (this%accelerate) call anderson_step(this%aa, this%du)
    end subroutine rod_solve
+
+   !> Factorise the tangent bm: by junction condensation when the mesh has junctions
+   !> (rodyn_junctions), else the banded LU.
+   subroutine rod_factor(this, err)
+      class(rod_problem_t), intent(inout) :: this !< problem, bm formed
+      type(error_t), intent(inout) :: err         !< status
+      if (this%jn%nj > 0) then
+         call junctions_factor(this%jn, this%bm, err)
+      else
+         call banded_factor(this%bm, err, this%sup%first)
+      end if
+   end subroutine rod_factor
+
+   !> x = K^{-1} x with the factors of rod_factor.
+   subroutine rod_back_solve(this, x, err)
+      class(rod_problem_t), intent(inout) :: this !< problem, bm factorised
+      real(wp), intent(inout) :: x(:)             !< (n_dof) right-hand side, solution
+      type(error_t), intent(inout) :: err         !< status
+      if (this%jn%nj > 0) then
+         call junctions_solve(this%jn, this%sup, this%bm, x, err)
+      else
+         call banded_solve(this%bm, x, err)
+      end if
+   end subroutine rod_back_solve
 
    !> max(|du_x| / L_ref, |du_theta|).
    function rod_correction_norm(this) result(v)
