@@ -595,8 +595,8 @@ REF_MD = [(40, None), (80, None), (160, None), (320, None), (160, "half")]
 REF_RODYN = [(20, 3, 0.1), (40, 3, 0.05), (80, 3, 0.025)]
 SWEEP_RODYN = ([(e, 3, dt) for e in (3, 4, 5, 6, 8, 10, 15, 20)
                 for dt in (0.05, 0.1, 0.15, 0.2)]
-               + [(e, 3, dt) for e in (6, 8, 10) for dt in (0.25, 0.3, 0.4)]
-               + [(e, 3, dt) for e in (6, 8) for dt in (0.5, 0.6)]
+               + [(e, 3, dt) for e in (3, 4, 5, 6, 8, 10) for dt in (0.25, 0.3, 0.4)]
+               + [(e, 3, dt) for e in (3, 4, 5, 6, 8) for dt in (0.5, 0.6)]
                + [(e, 2, dt) for e in (6, 8, 10, 15, 20) for dt in (0.1, 0.2)]
                + [(e, 3, dt, "ALPHA") for e in (5, 6, 8, 10) for dt in (0.1, 0.15, 0.2)])
 # MoorDyn: dtM at Courant numbers 0.3, 0.25 and 0.125 of a segment (duplicates dropped)
