@@ -478,7 +478,7 @@ contains
       type(error_t), intent(inout) :: err    !< status
       type(line_chord_t) :: lc
       type(start_catenary_t) :: sc
-      real(wp) :: t(3), n2(3)
+      real(wp) :: t(3), n2(3), stretch
       integer :: k, node
       call line_chord(model, mesh, l, lc)
       call check_slack_line(model, mesh, l, lc, err)
@@ -491,13 +491,15 @@ contains
          call place_catenary(model, mesh, l, sc, state)
          return
       end if
-      ! the straight line from end A towards end B
+      ! the straight line from end A towards end B, stretched uniformly to reach it when
+      ! the ends are farther apart than LENGTH (a taut line)
       t = lc%chord/lc%dist
+      stretch = max(1.0_wp, lc%dist/model%lines(l)%length)
       n2 = cross(lc%up, t)
       if (norm2(n2) < 1.0e-6_wp) n2 = [0.0_wp, 1.0_wp, 0.0_wp]
       do k = 1, mesh%line_n_nodes(l)
          node = mesh%line_first_node(l) + k - 1
-         state%x(:, node) = model%lines(l)%end_a + mesh%node_s(node)*t
+         state%x(:, node) = model%lines(l)%end_a + stretch*mesh%node_s(node)*t
          state%d(:, :, node) = line_frame(model, l, t, n2)
       end do
    end subroutine line_initial_shape
