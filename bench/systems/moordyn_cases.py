@@ -49,6 +49,17 @@ pinned    tests/bodies.cpp TEST_CASE("Pinned body") on tests/Mooring/body_tests/
           inertia), g' = sqrt(g^2 + a^2), th = atan(a/g) the swing's amplitude, within
           1e-3.
 
+rotating  tests/bodies.cpp TEST_CASE("Rotating body") on tests/Mooring/body_tests/
+          rotatingBody.txt (bench/systems/moordyn/rotatingBody.txt; rodyn: bench/systems/
+          decks/moordyn_rotating_body.inp with moordyn_rotating_body_path.csv). A free
+          body held at its centre by six taut lines, turned by a seventh from its point
+          (1, 0, 0) to a coupled point dragged on three quarter circles (xz, yz, xy
+          planes), each followed by a 0.5 s hold. The test: after each hold the body's
+          point within numpy's allclose (rtol 0.1, atol 0.15) of (0, 0, 1), (0, 1, 0),
+          (1, 0, 0) from the centre; at the end a turn of 90 degrees (within 10) about x
+          (the axis within 0.2 of it). rodyn only: the test moves the coupled point
+          through MoorDyn's C API step by step with a velocity a tenth of the path's (see
+          the deck), a path a rodyn table gives only as the test means it.
 orbital   tests/bodies.cpp TEST_CASE("Excentric body") on tests/Mooring/body_tests/
           orbitalBody.txt (bench/systems/moordyn/orbitalBody.txt; rodyn: bench/systems/
           decks/moordyn_orbital_body.inp). Two free bodies with their reference points
@@ -86,15 +97,15 @@ Measured (Release build, MoorDyn 2.7.2; bench/results/moordyn_cases.csv):
     MoorDyn -0.050852 rad (1324 steps), atan(-a/g) = -0.050942 rad (5.1e-5 and 9.0e-5
     from it, the test's 0.001); period rodyn 6.60835 s, MoorDyn 6.60830 s, compound
     pendulum 6.60830 s (7.8e-6 and 1.3e-7); swing amplitude 0.050942 rad on both.
+  rotating body (rodyn, EMC at dt 0.01 s): the body's point at (-0.061, 0.000, 1.013),
+    (-0.073, 1.011, -0.101) and (1.012, 0.054, -0.054) m from the centre after the holds;
+    final turn 83.91 degrees about an axis 0.057 off -x (the test: 10 degrees, 0.2).
   excentric bodies (rodyn, EMC at dt 0.01 s): radius within 1.3e-14 (the body with the
     point masses) and 2.5e-12 (the body with the clamped rod) of 10 m; turning rate
     3.33e-7 and 3.39e-7 below 0.2 rad/s, the Cayley rotation's (omega dt)^2/12 = 3.3e-7
     (the test: 1e-6 each).
 
 Not done (the other point/body cases of MoorDyn's tests/, and why):
-  "Rotating body" (rotatingBody.txt): a point coupled to the caller dragged on arcs;
-      rodyn moves a line end only by *MOTION (harmonic, a table or a vessel), and its
-      settle steps are jumps of the coupled point; needs a prescribed-motion point.
   "Body drag" (bodyDrag.txt): the test checks only that MoorDyn runs (rodyn's body drag,
       *BODY DRAG, is verified by ctest -R verify_body_current_drag).
   bodies_and_rods.cpp, rods.cpp, tripod.cpp and the others: MoorDyn rods (rigid, fixed to
@@ -134,6 +145,10 @@ P_T = 2.0 * math.pi / math.sqrt(G / P_L0)
 P_MASS, P_LUNSTR, P_EA, P_MLINE = 1.0e5, 100.5, 1.0e9, 7.85398
 # pinned body (tests/Mooring/body_tests/pinnedBody.txt, tests/bodies.cpp)
 B_ACCEL, B_DT, B_LEN, B_DIAM, B_ARM = 0.5, 0.01, 10.0, 2.0, 5.0
+# rotating body (tests/Mooring/body_tests/rotatingBody.txt, tests/bodies.cpp): after each
+# hold, the body's point (1, 0, 0) from its centre (0, 0, 5)
+R_CENTRE = (0.0, 0.0, 5.0)
+R_HOLDS = ((2.6, (0.0, 0.0, 1.0)), (5.1, (0.0, 1.0, 0.0)), (7.6, (1.0, 0.0, 0.0)))
 # excentric body (tests/Mooring/body_tests/orbitalBody.txt, tests/bodies.cpp)
 O_RADIUS, O_OMEGA, O_CENTRE = 10.0, 0.2, (0.0, 0.0, 20.0)
 
@@ -145,6 +160,10 @@ TOL = {
     "pendulum_amp_vs_md": 0.01,    # MoorDyn's amplitude tolerance
     "pendulum_period_closed": 0.025,  # MoorDyn's peak-time tolerance, on the period
     "pinned_mean_roll": 0.001,     # MoorDyn's [rad]
+    "rotating_rtol": 0.1,          # MoorDyn's allclose(rel_pos, expected, 0.1, 0.15)
+    "rotating_atol": 0.15,
+    "rotating_axis": 0.2,          # MoorDyn's: |axis.y|, |axis.z| < 0.2 (|axis.x| > 0.85)
+    "rotating_angle": 10.0,        # MoorDyn's: |angle - 90| < 10 degrees
     "orbital_radius": 1e-6,        # MoorDyn's: |R - r0| within 1e-6 of the radius
     "orbital_rate": 1e-6,          # MoorDyn's: angle / t within 1e-6 of omega
     "pinned_mean_vs_md": 1e-4,     # this script's [rad]
@@ -371,6 +390,34 @@ def pendulum_checks(t, x, z, x0_md_test, xstart):
                 period=period, ncross=ncross, amp=amp)
 
 
+def rotation_matrix(rv):
+    """The rotation of rotation vector rv (Rodrigues)."""
+    th = math.sqrt(sum(v * v for v in rv))
+    if th == 0.0:
+        return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    k = [v / th for v in rv]
+    kk = [[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]]
+    k2 = [[sum(kk[i][m] * kk[m][j] for m in range(3)) for j in range(3)] for i in range(3)]
+    return [[(1.0 if i == j else 0.0) + math.sin(th) * kk[i][j] + (1.0 - math.cos(th))
+             * k2[i][j] for j in range(3)] for i in range(3)]
+
+
+def rotating_checks(out):
+    """The rotating body's frames (dynamic_bodies.csv): the body's point (1, 0, 0) from
+    the centre at the ends of the holds, and the final turn's axis and angle [deg]."""
+    with open(os.path.join(out, "dynamic_bodies.csv")) as f:
+        rows = list(csv.DictReader(f))
+    holds = []
+    for t, _ in R_HOLDS:
+        r = [r for r in rows if abs(float(r["time_s"]) - t) < 1e-9][0]
+        q = rotation_matrix([float(r[k]) for k in ("rx_rad", "ry_rad", "rz_rad")])
+        holds.append([float(r[k]) + q[i][0] - R_CENTRE[i]
+                      for i, k in enumerate(("x_m", "y_m", "z_m"))])
+    rv = [float(rows[-1][k]) for k in ("rx_rad", "ry_rad", "rz_rad")]
+    th = math.sqrt(sum(v * v for v in rv))
+    return holds, [v / th for v in rv], math.degrees(th)
+
+
 def orbital_errors(out):
     """MoorDyn's excentric-body checks on rodyn's body frames (dynamic_bodies.csv): per
     body the largest | |R - r0| - r | / r and | atan2(z, y) / t - w | / w over the frames
@@ -479,6 +526,23 @@ def quick(args):
         mamp = (max(mtip) - min(mtip)) / 2.0
         row("pinned", "swing amplitude (max-min)/2 [rad]", f"{ramp:.6f}", f"{mamp:.6f}",
             f"{-theta:.6f}", abs(ramp / mamp - 1.0), 0.01, "this script")
+
+        # ---- rotating body: MoorDyn's own criteria after each hold and at the end
+        out = os.path.join(work, "rotating")
+        run_rodyn(rodyn, os.path.join(DECKS, "moordyn_rotating_body.inp"), out)
+        holds, axis, angle = rotating_checks(out)
+        for (t, want), rel in zip(R_HOLDS, holds):
+            # numpy's allclose: |a - b| <= atol + rtol |b|, as a margin (<= 0 passes)
+            miss = max(abs(a - b) - TOL["rotating_atol"] - TOL["rotating_rtol"] * abs(b)
+                       for a, b in zip(rel, want))
+            row("rotating", f"rodyn point (1,0,0) at t = {t} s",
+                "(" + ", ".join(f"{v:.3f}" for v in rel) + ")", "",
+                "(" + ", ".join(f"{v:g}" for v in want) + ")", max(miss, 0.0), 0.0,
+                "MoorDyn test (allclose 0.1, 0.15)")
+        row("rotating", "rodyn final turn: axis off x", f"{max(abs(axis[1]), abs(axis[2])):.3f}",
+            "", "0", max(abs(axis[1]), abs(axis[2])), TOL["rotating_axis"], "MoorDyn test")
+        row("rotating", "rodyn final turn [deg]", f"{angle:.2f}", "", "90", abs(angle - 90.0),
+            TOL["rotating_angle"], "MoorDyn test")
 
         # ---- excentric body: MoorDyn's own criteria, at its 0.25 s samples
         out = os.path.join(work, "orbital")
