@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """MoorDyn's own point and body test cases as rodyn cross-checks.
 
-Two of MoorDyn's unit tests (FloatingArrayDesign/MoorDyn, tag v2.7.1, tests/) whose physics
-rodyn has, each run by MoorDyn 2.7.2 (the python package) on MoorDyn's own input file and by
-rodyn on an equivalent deck, both judged by MoorDyn's own test criteria and against each
-other by the same signal processing:
+Four of MoorDyn's unit tests (FloatingArrayDesign/MoorDyn, tag v2.7.1, tests/) whose physics
+rodyn has. Two (pendulum, pinned) are run by MoorDyn 2.7.2 (the python package) on
+MoorDyn's own input file and by rodyn on an equivalent deck, both judged by MoorDyn's own
+test criteria and against each other by the same signal processing; two (rotating,
+orbital) drive MoorDyn through its C and C++ APIs in ways its python package cannot, and
+are run by rodyn alone, judged by the tests' criteria:
 
 pendulum  tests/pendulum.cpp on tests/Mooring/pendulum.txt (bench/systems/moordyn/
           pendulum.txt; rodyn: bench/systems/decks/moordyn_pendulum.inp). A FREE point of
