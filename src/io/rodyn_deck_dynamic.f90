@@ -296,13 +296,6 @@ contains
          mo%kind = kinds(it)
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
-         if (on_point .and. mo%kind == motion_vessel) then
-            call param_fail(card, 'TYPE', 'TYPE=VESSEL moves a line''s node or a body: a'// &
-                            ' point moved with a vessel is not available (put it on a'// &
-                            ' FIXED *BODY moved with the vessel, or put the line ends on'// &
-                            ' the vessel)', err)
-            return
-         end if
 
          if (mo%kind /= motion_vessel .and. card_find_param(card, 'VESSEL') > 0) then
             call param_fail(card, 'VESSEL', 'VESSEL is only allowed with TYPE=VESSEL', err)

@@ -334,6 +334,7 @@ contains
       type(model_t), intent(inout) :: model   !< motions' vessel indices set
       type(error_t), intent(inout) :: err     !< status
       integer :: i, j, k, ib, nn, node
+      character(len=:), allocatable :: what
       do i = 1, size(model%vessels)
          do j = 1, i - 1
             if (model%vessels(j)%name /= model%vessels(i)%name) cycle
@@ -364,14 +365,21 @@ contains
                return
             end if
             mo%vessel = i
-            if (mo%body > 0) then
-               ! a body on the vessel: fixed to it where it is at rest in the statics
+            if (mo%body > 0 .or. mo%point > 0) then
+               ! a body or point on the vessel: fixed to it where it is at rest in the
+               ! statics
                associate (ve => model%vessels(i))
-                  if (ve%offset_static .and. any(ve%offset /= 0.0_wp)) &
-                     call card_error(card, 'body '//trim(model%bodies(mo%body)%name)// &
-                                     ' is moved with vessel '//trim(ve%name)//', whose'// &
-                                     ' static offset the statics does not give a body:'// &
-                                     ' ramp the offset in with OFFSET START=DYNAMIC', err)
+                  if (ve%offset_static .and. any(ve%offset /= 0.0_wp)) then
+                     if (mo%body > 0) then
+                        what = 'body '//trim(model%bodies(mo%body)%name)
+                     else
+                        what = 'point '//trim(model%points(mo%point)%name)
+                     end if
+                     call card_error(card, what//' is moved with vessel '//trim(ve%name)// &
+                                     ', whose static offset the statics does not give a '// &
+                                     what(1:index(what, ' ') - 1)//': ramp the offset in'// &
+                                     ' with OFFSET START=DYNAMIC', err)
+                  end if
                end associate
                if (has_error(err)) return
                cycle

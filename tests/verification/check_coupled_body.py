@@ -12,7 +12,9 @@ A body moved with a vessel (*MOTION, BODY=, TYPE=VESSEL; decks/coupled_vessel_bo
 the vessel's six motions from a table, rolling 2, pitching 3 and yawing 4 degrees, at 20
 degrees of heading) against the same chain's end fixed to the vessel directly
 (decks/coupled_vessel_end.inp): the same comparisons, and the body's R and its rotation
-vector on the vessel's rigid motion X = O + R0 (xi + Rv p), Q = R0 Rv R0^T (1e-12).
+vector on the vessel's rigid motion X = O + R0 (xi + Rv p), Q = R0 Rv R0^T (1e-12). A
+point moved with that vessel (*MOTION, POINT=, TYPE=VESSEL; decks/coupled_vessel_point.inp)
+moves the chain's end as the direct motion does: every table equal byte for byte.
 
 A rod clamped to that body (*POINT, CONNECTION=CLAMPED; decks/clamped_vessel_body.inp)
 against the rod's top clamped to the vessel directly (decks/clamped_vessel_end.inp): its
@@ -124,6 +126,16 @@ def no_cutbacks(body, fails):
         fails.append(f"{len(log)} steps and {cut} cut-backs (300 and 0 expected)")
 
 
+def same_tables(what, a, b, fails):
+    """The node, end-force and element tables of two runs equal byte for byte."""
+    for table in ("dynamic_nodes.csv", "dynamic_ends_step.csv", "dynamic_elements.csv"):
+        with open(os.path.join(a, table), "rb") as f, open(os.path.join(b, table), "rb") as g:
+            same = f.read() == g.read()
+        print(f"{what}: {table} {'equal' if same else 'DIFFERENT'} byte for byte")
+        if not same:
+            fails.append(f"the {what}'s {table} differs from the direct motion's")
+
+
 def main():
     rodyn, decks, out = sys.argv[1:4]
     body, end = os.path.join(out, "body"), os.path.join(out, "end")
@@ -133,13 +145,7 @@ def main():
     compare(body, end, fails)
     point = os.path.join(out, "point")
     run(rodyn, os.path.join(decks, "coupled_point.inp"), point)
-    for table in ("dynamic_nodes.csv", "dynamic_ends_step.csv", "dynamic_elements.csv"):
-        with open(os.path.join(point, table), "rb") as f, \
-                open(os.path.join(end, table), "rb") as g:
-            same = f.read() == g.read()
-        print(f"coupled point: {table} {'equal' if same else 'DIFFERENT'} byte for byte")
-        if not same:
-            fails.append(f"the coupled point's {table} differs from the direct motion's")
+    same_tables("coupled point", point, end, fails)
     dr = 0.0
     for r in rows(body, "dynamic_bodies.csv"):
         t = float(r["time_s"])
@@ -154,6 +160,9 @@ def main():
     run(rodyn, os.path.join(decks, "coupled_vessel_body.inp"), vbody)
     run(rodyn, os.path.join(decks, "coupled_vessel_end.inp"), vend)
     compare(vbody, vend, fails)
+    vpoint = os.path.join(out, "vessel_point")
+    run(rodyn, os.path.join(decks, "coupled_vessel_point.inp"), vpoint)
+    same_tables("point moved with the vessel", vpoint, vend, fails)
     vessel_path(decks, vbody, fails)
     no_cutbacks(vbody, fails)
     cbody, cend = os.path.join(out, "clamped_body"), os.path.join(out, "clamped_end")
