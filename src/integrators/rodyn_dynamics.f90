@@ -459,7 +459,7 @@ contains
       type(error_t), intent(inout) :: err             !< status (cannot fail)
       real(wp) :: c2, kb(6, 6), bdt2, wp_
       real(wp) :: fx, mx
-      integer :: node, i
+      integer :: node
       if (has_error(err)) return
       ! a tangent formed after a correction takes its stresses from the strains
       ! linearized from the iterate before (rodyn_rod_dynamic's header, EMC only)
