@@ -12,7 +12,8 @@ module rodyn_deck_dynamic
    use rodyn_model, only: model_t, dynamic_options_t, amplitude_t, motion_t, &
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
-                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a
+                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
+                          body_fixed, body_free
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -22,13 +23,14 @@ module rodyn_deck_dynamic
    use rodyn_deck_table, only: table_t, card_data_table, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: upper_case
-   use rodyn_deck_targets, only: resolve_motion_body, resolve_motion_point, &
-                                 resolve_velocity_body
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_card, get_node, &
+   use rodyn_deck_targets, only: resolve_item_body, resolve_motion_point
+   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+                                 max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  get_int_range, &
                                  location, resolve_line, node_count, node_number, node_label, &
+                                 check_node_once, &
                                  check_at_most
    implicit none
    private
@@ -104,7 +106,6 @@ contains
       type(dynamic_options_t), intent(inout) :: dy    !< options: times set
       type(error_t), intent(inout) :: err             !< status
       call get_bounded(card, 'DT', dy%dt, .true., err, required=.true.)
-      if (has_error(err)) return
       call get_bounded(card, 'TIME', dy%duration, .true., err, required=.true.)
       if (has_error(err)) return
       if (dy%duration < dy%dt) then
@@ -223,20 +224,13 @@ contains
       type(table_t) :: table
       character(len=:), allocatable :: name
       logical :: from_file
-      integer :: ia, n
+      integer :: n
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'INPUT'], err)
+         call get_new_name(deck, ic, model%amplitudes(1:pend%n_amplitudes)%name, &
+                           pend%amplitude_card(1:pend%n_amplitudes), 'amplitude', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do ia = 1, pend%n_amplitudes
-            if (model%amplitudes(ia)%name == name) then
-               call card_error(card, "amplitude '"//name//"' is already defined (at "// &
-                               location(deck, pend%amplitude_card(ia))//')', err)
-               return
-            end if
-         end do
          amp%name = name
 
          from_file = card_find_param(card, 'INPUT') > 0
@@ -379,7 +373,6 @@ contains
             return
          end if
          call card_get_name(card, merge('BODY', 'LINE', on_body), line, err, required=.true.)
-         if (has_error(err)) return
          call card_check_data(card, 1, 3, err, 'vx, vy, vz')
          if (has_error(err)) return
          if (card%n_data < 2) then
@@ -387,7 +380,6 @@ contains
             return
          end if
          call card_data_reals(card, 1, 3, iv%velocity, err, 'vx, vy, vz')
-         if (has_error(err)) return
          call card_data_reals(card, 2, 3, iv%omega, err, 'wx, wy, wz')
          if (has_error(err)) return
          if (card%n_data == 3) then
@@ -548,7 +540,7 @@ contains
       type(pending_t), intent(in) :: pend     !< references to resolve
       type(model_t), intent(inout) :: model   !< model with lines and boundaries resolved
       type(error_t), intent(inout) :: err     !< status
-      integer :: k, ia, iref
+      integer :: k, ia, iref, ib
 
       ! AMPLITUDE= of *LOAD
       do k = 1, size(model%loads)
@@ -571,8 +563,11 @@ contains
       do k = 1, size(model%motions)
          associate (card => deck%cards(pend%motion_line(k)%card))
             if (pend%motion_body(k)) then
-               call resolve_motion_body(deck, pend, model, k, err)
+               call resolve_item_body(deck, model, pend%motion_line(1:k), &
+                                      model%motions(1:k - 1)%body, body_fixed, ib, err)
                if (has_error(err)) return
+               model%motions(k)%body = ib
+               model%motions(k)%line = 0
                cycle
             end if
             if (pend%motion_point(k)) then
@@ -586,7 +581,9 @@ contains
             model%motions(k)%line = iref
             call check_motion_held(card, model, k, err)
             if (has_error(err)) return
-            call check_unique_motion(deck, pend, model, k, err)
+            call check_node_once(deck, model, model%motions(1:k)%line, &
+                                 model%motions(1:k)%node, pend%motion_line(1:k)%card, k, &
+                                 'MOTION', err)
             if (has_error(err)) return
          end associate
       end do
@@ -595,7 +592,10 @@ contains
       do k = 1, size(model%initial_velocities)
          associate (card => deck%cards(pend%iv_line(k)%card))
             if (pend%iv_body(k)) then
-               call resolve_velocity_body(deck, pend, model, k, err)
+               call resolve_item_body(deck, model, pend%iv_line(1:k), &
+                                      model%initial_velocities(1:k - 1)%body, body_free, ib, &
+                                      err)
+               if (.not. has_error(err)) model%initial_velocities(k)%body = ib
             else
                call resolve_line(card, pend%iv_line(k)%name, model, iref, end_a, err)
                if (has_error(err)) return
@@ -640,30 +640,6 @@ contains
                          ' node', err)
       end associate
    end subroutine check_motion_held
-
-   !> Refuse a second *MOTION at the same node of the same line.
-   subroutine check_unique_motion(deck, pend, model, im, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card of each motion
-      type(model_t), intent(in) :: model     !< model with motions 1..im resolved
-      integer, intent(in) :: im              !< motion to check
-      type(error_t), intent(inout) :: err    !< status
-      integer :: jm, node, nn
-
-      associate (mo => model%motions(im))
-         nn = node_count(model%lines(mo%line))
-         node = node_number(mo%node, nn)
-         do jm = 1, im - 1
-            if (model%motions(jm)%line /= mo%line .or. mo%line == 0) cycle
-            if (node_number(model%motions(jm)%node, nn) /= node) cycle
-            call card_error(deck%cards(pend%motion_line(im)%card), 'line '// &
-                            trim(model%lines(mo%line)%name)//' '//node_label(node, nn)// &
-                            ' already has a *MOTION (at '// &
-                            location(deck, pend%motion_line(jm)%card)//')', err)
-            return
-         end do
-      end associate
-   end subroutine check_unique_motion
 
    !> Refuse a second *INITIAL VELOCITY for the same line.
    subroutine check_unique_velocity(deck, pend, model, iv, err)

@@ -13,7 +13,8 @@ module rodyn_deck_line
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
                                      card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_elements, max_distance, param_fail, &
+   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+                                 max_elements, max_distance, param_fail, &
                                  location, node_count, node_number
    use rodyn_deck_system, only: point_junction, point_held
    implicit none
@@ -45,22 +46,14 @@ contains
       type(line_def_t) :: line
       character(len=:), allocatable :: name, section, pa, pb
       logical :: plain
-      integer :: il
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
                                 'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT', 'POINT A', &
                                 'POINT B'], err)
+         call get_new_name(deck, ic, model%lines(1:pend%n_lines)%name, &
+                           pend%line_section(1:pend%n_lines)%card, 'line', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do il = 1, pend%n_lines
-            if (model%lines(il)%name == name) then
-               call card_error(card, "line '"//name//"' is already defined (at "// &
-                               location(deck, pend%line_section(il)%card)//')', err)
-               return
-            end if
-         end do
          line%name = name
          line%card_at = card%file//':'//int_str(card%line)
          section = ''
@@ -102,7 +95,6 @@ contains
          pa = ''
          pb = ''
          call card_get_name(card, 'POINT A', pa, err)
-         if (has_error(err)) return
          call card_get_name(card, 'POINT B', pb, err)
          if (has_error(err)) return
          if (len(pa) > 0 .and. pa == pb) then

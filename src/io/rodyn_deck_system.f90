@@ -16,7 +16,8 @@ module rodyn_deck_system
                               card_check_data, param_len
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
+   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+                                 max_distance, get_lumped_body, param_fail, &
                                  get_bounded, check_card, &
                                  location, node_count, node_number
    implicit none
@@ -43,20 +44,15 @@ contains
                                                  'CDA', 'CA']
       type(point_t) :: pt
       character(len=:), allocatable :: name, body
-      integer :: ip, k
+      integer :: k
 
       associate (card => deck%cards(ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
+         call get_new_name(deck, ic, model%points(1:pend%n_points)%name, &
+                           pend%point_card(1:pend%n_points), 'point', name, err, &
+                           at_name=.true.)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do ip = 1, pend%n_points
-            if (model%points(ip)%name /= name) cycle
-            call param_fail(card, 'NAME', "point '"//name//"' is already defined (at "// &
-                            location(deck, pend%point_card(ip))//')', err)
-            return
-         end do
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
          if (card_find_param(card, 'TYPE') == 0) then
@@ -93,9 +89,7 @@ contains
             return
          end if
          call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
-         if (has_error(err)) return
          call card_check_data(card, 1, 1, err, what)
-         if (has_error(err)) return
          call card_data_reals(card, 1, 3, pt%position, err, what)
          if (has_error(err)) return
          if (maxval(abs(pt%position)) > max_distance) then
@@ -139,7 +133,7 @@ contains
    subroutine check_clamped_ends(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< the lines' cards
-      type(model_t), intent(in) :: model      !< model
+      type(model_t), intent(inout) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       integer :: il, k, ip, is
       do il = 1, size(model%lines)
@@ -319,7 +313,6 @@ contains
       associate (card => deck%cards(ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
                          'BREAK LOAD'], 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return
          if (card_find_param(card, 'END') == 0) then

@@ -5,7 +5,7 @@
 module rodyn_deck_table
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_deck_text, only: field_t, next_line, without_cr, split_commas, lf
+   use rodyn_deck_text, only: field_t, next_line, without_cr, split_commas, lf, next_of
    use rodyn_deck_numbers, only: parse_real, fields_reals
    use rodyn_deck_files, only: read_file_text, encoding_problem
    use rodyn_deck_card, only: card_t, card_find_param, card_param_error, card_file_error
@@ -162,12 +162,7 @@ contains
                   p = p + 1
                   cycle
                end if
-               q = index(t(p:), ' ')
-               if (q == 0) then
-                  q = len(t) + 1
-               else
-                  q = p + q - 1
-               end if
+               q = next_of(t, p, ' ')
                n = n + 1
                buf(n)%s = t(p:q - 1)
                p = q + 1

@@ -17,8 +17,10 @@ module rodyn_deck_vessel
    use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
                                  node_label
    use rodyn_deck_dynamic, only: record_table, check_time_table
+   use rodyn_deck_waves, only: validate_waves
    use rodyn_waves, only: wave_field_t, waves_build
    use rodyn_vessel, only: vessel_coefficients
+   use rodyn_sort, only: sorted_order
    implicit none
    private
    public :: read_vessel_card, validate_vessels, rao_grid, rao_options
@@ -54,7 +56,6 @@ contains
                                 'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
                                 'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE', &
                                 'DRIFT INPUT', 'OFFSET START'], err)
-         if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
          ve%name = name
@@ -82,7 +83,6 @@ contains
             end if
          end if
          call card_check_data(card, 1, 1, err, 'x, y, z, heading')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 4, v, err, 'x, y, z, heading')
          if (has_error(err)) return
          ve%origin = v(1:3)
@@ -269,8 +269,8 @@ contains
             if (.not. any(headings == h)) headings = [headings, h]
          end associate
       end do
-      call sort(periods)
-      call sort(headings)
+      periods = periods(sorted_order(periods))
+      headings = headings(sorted_order(headings))
       np = size(periods)
       nh = size(headings)
       allocate (seen(np, nh), rao%h(6, np, nh))
@@ -305,35 +305,21 @@ contains
             return
          end do
       end do
-   contains
-      !> Insertion sort, increasing.
-      pure subroutine sort(a)
-         real(wp), intent(inout) :: a(:)
-         real(wp) :: x
-         integer :: i, j
-         do i = 2, size(a)
-            x = a(i)
-            j = i - 1
-            do while (j >= 1)
-               if (a(j) <= x) exit
-               a(j + 1) = a(j)
-               j = j - 1
-            end do
-            a(j + 1) = x
-         end do
-      end subroutine sort
    end subroutine rao_grid
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
    !> (its index set); its node is not hinged (the hinge's axis would not turn with the
    !> vessel; a clamped end turns with it, rodyn_dynamics); a vessel moved by RAOs needs
-   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea).
+   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea). The waves are
+   !> checked first (validate_waves).
    subroutine validate_vessels(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
       type(model_t), intent(inout) :: model   !< motions' vessel indices set
       type(error_t), intent(inout) :: err     !< status
       integer :: i, j, k, ib, nn, node
+      call validate_waves(deck, model, err)
+      if (has_error(err)) return
       do i = 1, size(model%vessels)
          do j = 1, i - 1
             if (model%vessels(j)%name /= model%vessels(i)%name) cycle

@@ -19,7 +19,7 @@ module rodyn_deck_water
    use rodyn_deck_table, only: table_t, card_data_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
-                                 get_lumped_body, check_card, &
+                                 get_lumped_body, check_card, get_pair, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most, get_int_range
    use rodyn_sort, only: sorted_order
@@ -62,9 +62,7 @@ contains
       associate (card => deck%cards(ic), w => model%water)
          call check_card(deck, ic, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
                          'DENSITY'], 0, 0, err, first=pend%water)
-         if (has_error(err)) return
          call get_bounded(card, 'DEPTH', w%depth, .true., err, required=.true.)
-         if (has_error(err)) return
          call card_get_real(card, 'SURFACE', w%surface, err)
          call get_bounded(card, 'DENSITY', w%density, .true., err)
          call check_at_most(card, 'DENSITY', w%density, max_water_density, ' kg/m3', &
@@ -92,11 +90,8 @@ contains
 
       associate (card => deck%cards(ic), w => model%water)
          call check_once(deck, ic, pend%current, err)
-         if (has_error(err)) return
          call card_check_params(card, [character(len=param_len) :: 'RAMP'], err)
-         if (has_error(err)) return
          call get_bounded(card, 'RAMP', w%cur_ramp, .false., err)
-         if (has_error(err)) return
          call card_check_data(card, 1, -1, err, what_cur)
          if (has_error(err)) return
          call card_data_table(card, 3, what_cur, table, err)
@@ -130,7 +125,7 @@ contains
       type(model_t), intent(inout) :: model   !< model: seabed properties set
       type(pending_t), intent(inout) :: pend  !< remembers the first *SEABED
       type(error_t), intent(inout) :: err     !< status
-      real(wp) :: slope, dir, mu
+      real(wp) :: slope, dir
 
       associate (card => deck%cards(ic), sb => model%seabed)
          call check_card(deck, ic, [character(len=param_len) :: 'SLOPE', 'SLOPE DIRECTION', &
@@ -157,22 +152,8 @@ contains
          call get_bounded(card, 'DAMPING', sb%damping, .false., err)
          call get_bounded(card, 'MOBILISATION VELOCITY', sb%v_mob, .true., err)
          if (has_error(err)) return
-         if (card_find_param(card, 'FRICTION') > 0) then
-            if (card_find_param(card, 'AXIAL FRICTION') > 0 .or. &
-                card_find_param(card, 'LATERAL FRICTION') > 0) then
-               call param_fail(card, 'FRICTION', 'give FRICTION or AXIAL FRICTION/LATERAL'// &
-                               ' FRICTION, not both', err)
-               return
-            end if
-            mu = 0.0_wp
-            call get_bounded(card, 'FRICTION', mu, .false., err)
-            if (has_error(err)) return
-            sb%mu_axial = mu
-            sb%mu_lateral = mu
-         else
-            call get_bounded(card, 'AXIAL FRICTION', sb%mu_axial, .false., err)
-            call get_bounded(card, 'LATERAL FRICTION', sb%mu_lateral, .false., err)
-         end if
+         call get_pair(card, 'FRICTION', 'AXIAL FRICTION', 'LATERAL FRICTION', sb%mu_axial, &
+                       sb%mu_lateral, .false., err)
       end associate
    end subroutine read_seabed_card
 
@@ -190,11 +171,8 @@ contains
       block
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'SECTION', &
                                 'LENGTH', 'ELEMENTS'], err)
-         if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
          call card_get_name(card, 'SECTION', section, err, required=.true.)
          if (has_error(err)) return
          length = 0.0_wp
@@ -226,9 +204,7 @@ contains
       associate (card => deck%cards(ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
                          'VOLUME', 'CDA', 'CA'], 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
          call get_bounded(card, 'S', att%s, .false., err, required=.true.)
          if (has_error(err)) return
          if (card_find_param(card, 'MASS') == 0 .and. card_find_param(card, 'VOLUME') == 0 &
@@ -269,9 +245,7 @@ contains
       call check_at_most(card, 'CAA', sec%caa, max_coefficient, '', coeff_why, err)
       call get_bounded(card, 'ID', sec%id, .false., err)
       call get_bounded(card, 'CONTENTS DENSITY', sec%rho_i, .false., err)
-      if (has_error(err)) return
       call card_get_real(card, 'CONTENTS PRESSURE', sec%p_i, err)
-      if (has_error(err)) return
       call card_get_real(card, 'PRESSURE Z', sec%z_pi, err)
       if (has_error(err)) return
 
@@ -392,6 +366,7 @@ contains
    !> *ATTACHMENT names a line, lies within it, and has no VOLUME, CDA or CA without
    !> *WATER; in water, every section used by a line has a buoyancy diameter (OD= or
    !> BUOYANCY DIAMETER=); no end of a line nor a POSITION target lies below the seabed.
+   !> Sets EMC's RHO INF in water when *DYNAMIC gives none (dynamic_scheme_default).
    subroutine validate_water(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
@@ -441,6 +416,7 @@ contains
 
       call check_attachments(deck, pend, model, err)
       if (has_error(err)) return
+      call dynamic_scheme_default(model)
       if (.not. model%water%present) return
       call check_sections_in_water(deck, pend, model, err)
       if (has_error(err)) return

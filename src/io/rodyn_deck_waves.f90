@@ -8,7 +8,7 @@ module rodyn_deck_waves
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
                           sea_jonswap, sea_table, sea_record
-   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_lexer, only: deck_t, last_card
    use rodyn_deck_card, only: card_t, card_check_params, card_error, card_check_data, &
                               card_data_error, card_find_param, card_file_error, param_len
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice, card_get_name, &
@@ -101,7 +101,6 @@ contains
          end if
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
                      'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
-         if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
          if (has_error(err)) return
          h = 0.0_wp
@@ -141,7 +140,6 @@ contains
       if (has_error(err)) return
       if (wv%kind == sea_table) then
          call refuse(card, [character(len=param_len) :: 'HS', 'TP'], 'SPECTRUM', err)
-         if (has_error(err)) return
          call card_check_data(card, 2, -1, err, what)
          if (has_error(err)) return
          call card_data_table(card, 2, what, table, err)
@@ -172,9 +170,7 @@ contains
          wv%omega_max = wv%tab_omega(n)
       else
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          call get_bounded(card, 'HS', wv%hs, .true., err, required=.true.)
-         if (has_error(err)) return
          call get_bounded(card, 'TP', wv%tp, .true., err, required=.true.)
          if (has_error(err)) return
          wv%gamma = 1.0_wp
@@ -197,7 +193,6 @@ contains
          return
       end if
       call read_spreading(card, wv, err)
-      if (has_error(err)) return
       call card_get_int(card, 'SEED', wv%seed, err)
       call get_bounded(card, 'OMEGA MIN', wv%omega_min, .true., err)
       call get_bounded(card, 'OMEGA MAX', wv%omega_max, .true., err)
@@ -223,9 +218,7 @@ contains
       call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE', 'HS', &
                   'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', 'OMEGA MAX', &
                   'SPREADING', 'DIRECTIONS'], 'RECORD', err)
-      if (has_error(err)) return
       call card_check_data(card, 0, 0, err)
-      if (has_error(err)) return
       call card_get_real(card, 'X', model%waves%point(1), err)
       call card_get_real(card, 'Y', model%waves%point(2), err)
       if (has_error(err)) return
@@ -312,7 +305,6 @@ contains
 
       associate (card => deck%cards(ic), wv => model%waves)
          call card_check_params(card, [character(len=param_len) :: 'NAME'], err)
-         if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
          if (len(name) > len(names)) then
@@ -321,7 +313,6 @@ contains
             return
          end if
          call card_check_data(card, 1, 1, err, 'x, y')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 2, xy, err, 'x, y')
          if (has_error(err)) return
          n = 0
@@ -382,10 +373,7 @@ contains
       integer :: ic, i
       text = ''
       if (.not. model%waves%present .or. .not. model%water%present) return
-      ic = 0
-      do i = 1, deck%n_cards
-         if (deck%cards(i)%keyword == 'WAVE') ic = i
-      end do
+      ic = last_card(deck, 'WAVE')
       if (ic == 0) return
       d = model%water%depth
       if (model%waves%kind == sea_record) return
