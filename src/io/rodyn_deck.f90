@@ -119,42 +119,7 @@ contains
          end if
       end if
 
-      ! the arrays are sized from the keyword counts, then filled card by card
-      allocate (model%sections(keyword_count(deck, 'SECTION')))
-      allocate (model%lines(keyword_count(deck, 'LINE')))
-      allocate (model%constraints(keyword_count(deck, 'BOUNDARY')))
-      allocate (model%loads(keyword_count(deck, 'LOAD')))
-      allocate (model%amplitudes(keyword_count(deck, 'AMPLITUDE')))
-      allocate (model%motions(keyword_count(deck, 'MOTION')))
-      allocate (model%vessels(keyword_count(deck, 'VESSEL')))
-      allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
-      allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
-      allocate (model%points(keyword_count(deck, 'POINT')))
-      allocate (model%bodies(keyword_count(deck, 'BODY')))
-      allocate (model%failures(keyword_count(deck, 'FAILURE')))
-      allocate (pend%failure_line(size(model%failures)))
-      allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
-      allocate (pend%section_card(size(model%sections)))
-      allocate (pend%line_section(size(model%lines)))
-      allocate (pend%bc_line(size(model%constraints)))
-      allocate (pend%load_line(size(model%loads)))
-      allocate (pend%load_amp(size(model%loads)))
-      allocate (pend%amplitude_card(size(model%amplitudes)))
-      allocate (pend%motion_line(size(model%motions)))
-      allocate (pend%motion_vessel(size(model%motions)), pend%motion_body(size(model%motions)), &
-                pend%motion_point(size(model%motions)))
-      allocate (pend%vessel_card(size(model%vessels)))
-      allocate (pend%iv_line(size(model%initial_velocities)), &
-                pend%iv_body(size(model%initial_velocities)))
-      allocate (pend%seg_line(keyword_count(deck, 'SEGMENT')))
-      allocate (pend%seg_section(size(pend%seg_line)))
-      allocate (pend%seg_length(size(pend%seg_line)))
-      allocate (pend%seg_elements(size(pend%seg_line)))
-      allocate (pend%att_line(size(model%attachments)))
-      allocate (pend%line_point_a(size(model%lines)), pend%line_point_b(size(model%lines)))
-      allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
-      allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
-      allocate (pend%body_card(size(model%bodies)), pend%body_sub(5, size(model%bodies)))
+      call size_items(deck, model, pend)
       if (has_error(err)) return
 
       do ic = 1, deck%n_cards
@@ -169,6 +134,34 @@ contains
          warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)// &
                     body_wave_warnings(model)
    end subroutine deck_read
+
+   !> Size the model's arrays and the readers' records from the keyword counts; the
+   !> cards then fill them one by one.
+   subroutine size_items(deck, model, pend)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(model_t), intent(inout) :: model   !< model: item arrays allocated
+      type(pending_t), intent(inout) :: pend  !< records allocated
+      character(len=16), parameter :: keywords(13) = [character(len=16) :: 'SECTION', &
+         'LINE', 'BOUNDARY', 'LOAD', 'AMPLITUDE', 'MOTION', 'VESSEL', 'INITIAL VELOCITY', &
+         'ATTACHMENT', 'POINT', 'BODY', 'FAILURE', 'SEGMENT']
+      integer :: n(13), k
+      n = [(keyword_count(deck, keywords(k)), k = 1, 13)]
+      allocate (model%sections(n(1)), model%lines(n(2)), model%constraints(n(3)), &
+                model%loads(n(4)), model%amplitudes(n(5)), model%motions(n(6)), &
+                model%vessels(n(7)), model%initial_velocities(n(8)), &
+                model%attachments(n(9)), model%points(n(10)), model%bodies(n(11)), &
+                model%failures(n(12)))
+      allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
+      allocate (pend%section_card(n(1)), pend%line_section(n(2)), pend%line_point_a(n(2)), &
+                pend%line_point_b(n(2)), pend%bc_line(n(3)), pend%load_line(n(4)), &
+                pend%load_amp(n(4)), pend%load_point(n(4)), pend%load_body(n(4)), &
+                pend%amplitude_card(n(5)), pend%motion_line(n(6)), pend%motion_vessel(n(6)), &
+                pend%motion_body(n(6)), pend%motion_point(n(6)), pend%vessel_card(n(7)), &
+                pend%iv_line(n(8)), pend%iv_body(n(8)), pend%att_line(n(9)), &
+                pend%point_card(n(10)), pend%point_body(n(10)), pend%body_card(n(11)), &
+                pend%body_sub(5, n(11)), pend%failure_line(n(12)), pend%seg_line(n(13)), &
+                pend%seg_section(n(13)), pend%seg_length(n(13)), pend%seg_elements(n(13)))
+   end subroutine size_items
 
    !> After an error: shrink the model's arrays to the items actually read.
    subroutine trim_model(pend, model)
@@ -402,7 +395,6 @@ contains
                              'TYPE'], err)
       call card_get_name(card, 'LINE', line, err, required=.true.)
       call get_node(card, bc%node, err)
-      if (has_error(err)) return
       it = 0
       call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
       if (has_error(err)) return
@@ -452,7 +444,6 @@ contains
 
       call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
                              'AMPLITUDE', 'POINT', 'BODY'], err)
-      if (has_error(err)) return
       line = ''
       point = ''
       body = ''
@@ -507,7 +498,6 @@ contains
          call check_card(deck, ic, [character(len=param_len) :: 'INCREMENTS', 'MAX ITERATIONS', &
                          'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'LINE SEARCH'], 0, 0, err, &
                          first=pend%static)
-         if (has_error(err)) return
          st%requested = .true.
          call get_int_range(card, 'INCREMENTS', 1, max_increments, st%increments, err)
          call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, st%max_iterations, err)

@@ -17,7 +17,8 @@ module rodyn_deck_body
    use rodyn_banded, only: dense_sym_eigen
    use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
                                  body_subcards, sub_drag, max_distance, &
-                                 get_bounded, param_fail, location, check_card, get_int_range
+                                 get_bounded, param_fail, location, check_card, get_int_range, &
+                                 find_named
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
@@ -56,11 +57,7 @@ contains
          if (has_error(err)) return
          b%name = name
          b%card_at = card%file//':'//int_str(card%line)
-         if (card_find_param(card, 'TYPE') == 0) then
-            call card_error(card, 'missing parameter TYPE (FIXED or FREE)', err)
-            return
-         end if
-         call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err)
+         call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err, listed=.true.)
          call get_bounded(card, 'MASS', b%mass, .false., err)
          call get_bounded(card, 'VOLUME', b%volume, .false., err)
          call card_check_data(card, 4, 4, err, trim(what(min(card%n_data + 1, 4))))
@@ -380,12 +377,7 @@ contains
       type(model_t), intent(in) :: model    !< model with its bodies
       integer, intent(out) :: ib            !< the body's index
       type(error_t), intent(inout) :: err   !< status
-      do ib = 1, size(model%bodies)
-         if (model%bodies(ib)%name == name) return
-      end do
-      ib = 0
-      call param_fail(card, param, param//" '"//name//"' is not defined (no *BODY with"// &
-                      ' NAME='//name//' in the deck)', err)
+      call find_named(card, param, name, model%bodies%name, 'BODY', ib, err)
    end subroutine find_body
 
    !> A body's VOLUME and its *BODY DRAG need *WATER.

@@ -169,8 +169,9 @@ contains
    end subroutine card_get_name
 
    !> Get a parameter whose value is one of `choices` (case-insensitive).
-   !> index = position in choices; unchanged when absent.
-   subroutine card_get_choice(card, name, choices, index, err, found, required)
+   !> index = position in choices; unchanged when absent. With `listed`, a missing
+   !> parameter is an error naming the choices.
+   subroutine card_get_choice(card, name, choices, index, err, found, required, listed)
       type(card_t), intent(in) :: card          !< the card
       character(len=*), intent(in) :: name      !< parameter name, upper case
       character(len=*), intent(in) :: choices(:) !< allowed values, upper case
@@ -178,9 +179,17 @@ contains
       type(error_t), intent(inout) :: err       !< status
       logical, intent(out), optional :: found   !< the parameter was given
       logical, intent(in), optional :: required !< absence is an error
+      logical, intent(in), optional :: listed   !< absence is an error naming the choices
       character(len=:), allocatable :: v, list
       integer :: ip, k
 
+      list = trim(choices(1))
+      do k = 2, size(choices) - 1
+         list = list//', '//trim(choices(k))
+      end do
+      if (size(choices) > 1) list = list//' or '//trim(choices(size(choices)))
+      if (present(listed) .and. card_find_param(card, name) == 0 .and. .not. has_error(err)) &
+         call card_error(card, 'missing parameter '//name//' ('//list//')', err)
       call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
       v = upper_case(card%params(ip)%value)
@@ -191,11 +200,6 @@ contains
             return
          end if
       end do
-      list = trim(choices(1))
-      do k = 2, size(choices) - 1
-         list = list//', '//trim(choices(k))
-      end do
-      if (size(choices) > 1) list = list//' or '//trim(choices(size(choices)))
       call card_param_error(card, ip, name//' must be '//list//", got '"// &
                             card%params(ip)%value//"'", err)
    end subroutine card_get_choice

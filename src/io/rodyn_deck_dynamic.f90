@@ -119,13 +119,8 @@ contains
                          ' allowed', err)
          return
       end if
-      call card_get_real(card, 'OUTPUT INTERVAL', dy%output_interval, err)
+      call get_bounded(card, 'OUTPUT INTERVAL', dy%output_interval, .false., err)
       if (has_error(err)) return
-      if (.not. dy%output_interval >= 0.0_wp) then
-         call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be >= 0, got '// &
-                         real_str(dy%output_interval), err)
-         return
-      end if
       if (dy%output_interval > 0.0_wp .and. dy%output_interval < dy%dt) then
          call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be 0 (every'// &
                          ' step) or >= DT ('//real_str(dy%dt)//'), got '// &
@@ -242,9 +237,7 @@ contains
             end if
             call card_get_table(card, 'INPUT', 2, what_amp, table, err)
          else
-            call card_check_data(card, 1, -1, err, what_amp)
-            if (has_error(err)) return
-            call card_data_table(card, 2, what_amp, table, err)
+            call card_data_table(card, 2, what_amp, table, err, nmin=1)
          end if
          if (has_error(err)) return
          call check_time_table(card, table, from_file, what_amp, err)
@@ -283,7 +276,6 @@ contains
                                 'END', 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
          call motion_target(card, mo, line, on_body, on_point, err)
-         if (has_error(err)) return
          it = 0
          call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
          if (has_error(err)) return

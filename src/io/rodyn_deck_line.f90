@@ -15,7 +15,7 @@ module rodyn_deck_line
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
                                  max_elements, max_distance, param_fail, &
-                                 location, node_count, node_number
+                                 location, node_count, node_number, get_bounded
    use rodyn_deck_system, only: point_junction, point_held
    implicit none
    private
@@ -61,13 +61,8 @@ contains
          if (has_error(err)) return
          plain = len(section) > 0     ! else segmented: LENGTH, ELEMENTS optional
 
-         call card_get_real(card, 'LENGTH', line%length, err, required=plain)
+         call get_bounded(card, 'LENGTH', line%length, .true., err, required=plain)
          if (has_error(err)) return
-         if (card_find_param(card, 'LENGTH') > 0 .and. .not. line%length > 0.0_wp) then
-            call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
-                            real_str(line%length), err)
-            return
-         end if
          if (line%length > max_distance) then
             call param_fail(card, 'LENGTH', 'LENGTH must be at most '// &
                             real_str(max_distance)//' m, got '//real_str(line%length), err)
@@ -90,7 +85,6 @@ contains
          end if
 
          call card_get_choice(card, 'ELEMENT', element_names, line%element, err)
-         if (has_error(err)) return
 
          pa = ''
          pb = ''

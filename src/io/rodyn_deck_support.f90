@@ -21,7 +21,7 @@ module rodyn_deck_support
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: get_int_range, param_fail, get_pair
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
-   public :: check_node_once, get_new_name
+   public :: check_node_once, get_new_name, find_named
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
@@ -166,20 +166,23 @@ contains
    end subroutine get_node
 
    !> A real parameter, optional unless `required`, that must be >= 0 (or > 0 when
-   !> `strict`).
-   subroutine get_bounded(card, name, value, strict, err, required)
+   !> `strict`); `hint` ends the message of a value out of bounds.
+   subroutine get_bounded(card, name, value, strict, err, required, hint)
       type(card_t), intent(in) :: card     !< the card
       character(len=*), intent(in) :: name !< parameter name
       real(wp), intent(inout) :: value     !< the value (unchanged if absent)
       logical, intent(in) :: strict        !< require > 0 rather than >= 0
       type(error_t), intent(inout) :: err  !< status
       logical, intent(in), optional :: required !< absence is an error
+      character(len=*), intent(in), optional :: hint !< ends the message of a bad value
+      character(len=:), allocatable :: msg
       logical :: found
 
       call card_get_real(card, name, value, err, found, required)
       if (has_error(err) .or. .not. found) return
-      if (len(sign_problem(name, value, strict)) > 0) &
-         call param_fail(card, name, sign_problem(name, value, strict), err)
+      msg = sign_problem(name, value, strict)
+      if (len(msg) > 0 .and. present(hint)) msg = msg//hint
+      if (len(msg) > 0) call param_fail(card, name, msg, err)
    end subroutine get_bounded
 
    !> '' when value > 0 (strict) or value >= 0, else 'NAME must be > 0, got VALUE' (or
@@ -350,15 +353,8 @@ contains
       type(error_t), intent(inout) :: err   !< status
       integer :: nn
 
-      do iline = 1, size(model%lines)
-         if (model%lines(iline)%name == name) exit
-      end do
-      if (iline > size(model%lines)) then
-         iline = 0
-         call param_fail(card, 'LINE', "LINE '"//name//"' is not defined (no *LINE"// &
-                         ' with NAME='//name//' in the deck)', err)
-         return
-      end if
+      call find_named(card, 'LINE', name, model%lines%name, 'LINE', iline, err)
+      if (iline == 0) return
       nn = node_count(model%lines(iline))
       if (node > nn) then
          call param_fail(card, 'NODE', 'NODE '//int_str(node)//' is beyond the last node'// &
@@ -373,13 +369,23 @@ contains
       type(model_t), intent(in) :: model    !< model with all sections
       integer, intent(out) :: isec          !< index of the section (0 if not found)
       type(error_t), intent(inout) :: err   !< status
-      do isec = 1, size(model%sections)
-         if (model%sections(isec)%name == name) return
-      end do
-      isec = 0
-      call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
-                      ' with NAME='//name//' in the deck)', err)
+      call find_named(card, 'SECTION', name, model%sections%name, 'SECTION', isec, err)
    end subroutine resolve_section
+
+   !> Index of `name` among `names`; 0 if absent, an error at parameter param: "PARAM
+   !> 'NAME' is not defined (no *KEYWORD with NAME=NAME in the deck)".
+   subroutine find_named(card, param, name, names, keyword, k, err)
+      type(card_t), intent(in) :: card          !< the card naming it
+      character(len=*), intent(in) :: param     !< the parameter naming it
+      character(len=*), intent(in) :: name      !< the name, upper case
+      character(len=*), intent(in) :: names(:)  !< the names defined
+      character(len=*), intent(in) :: keyword   !< the keyword defining them
+      integer, intent(out) :: k                 !< index of the name in names (0: none)
+      type(error_t), intent(inout) :: err       !< status
+      k = findloc(names == name, .true., dim=1)
+      if (k == 0) call param_fail(card, param, param//" '"//name//"' is not defined (no *"// &
+                                  keyword//' with NAME='//name//' in the deck)', err)
+   end subroutine find_named
 
    !> NAME= of card ic, which defines a named item (a section, line, amplitude, body or
    !> point): required, and not the name of an earlier item of its kind ("<what> 'NAME' is

@@ -17,7 +17,7 @@ module rodyn_deck_system
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
-                                 max_distance, get_lumped_body, param_fail, &
+                                 max_distance, get_lumped_body, param_fail, find_named, &
                                  get_bounded, check_card, &
                                  location, node_count, node_number
    implicit none
@@ -55,11 +55,7 @@ contains
          if (has_error(err)) return
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
-         if (card_find_param(card, 'TYPE') == 0) then
-            call card_error(card, 'missing parameter TYPE (FIXED, FREE or BODY)', err)
-            return
-         end if
-         call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err)
+         call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err, listed=.true.)
          if (has_error(err)) return
          if (pt%kind /= point_free) then
             do k = 1, size(props)
@@ -195,13 +191,7 @@ contains
       integer, intent(out) :: ip            !< the point's index (0: none)
       type(error_t), intent(inout) :: err   !< status
       ip = 0
-      if (len(name) == 0) return
-      do ip = 1, size(model%points)
-         if (model%points(ip)%name == name) return
-      end do
-      ip = 0
-      call param_fail(card, param, param//" '"//name//"' is not defined (no *POINT with"// &
-                      ' NAME='//name//' in the deck)', err)
+      if (len(name) > 0) call find_named(card, param, name, model%points%name, 'POINT', ip, err)
    end subroutine find_point
 
    !> No *BOUNDARY on a line end that is on a point (the point holds it, or moves it),

@@ -92,9 +92,7 @@ contains
          call check_once(deck, ic, pend%current, err)
          call card_check_params(card, [character(len=param_len) :: 'RAMP'], err)
          call get_bounded(card, 'RAMP', w%cur_ramp, .false., err)
-         call card_check_data(card, 1, -1, err, what_cur)
-         if (has_error(err)) return
-         call card_data_table(card, 3, what_cur, table, err)
+         call card_data_table(card, 3, what_cur, table, err, nmin=1)
          if (has_error(err)) return
          n = table%n_rows
          do k = 1, n
@@ -174,10 +172,8 @@ contains
          call card_check_data(card, 0, 0, err)
          call card_get_name(card, 'LINE', line, err, required=.true.)
          call card_get_name(card, 'SECTION', section, err, required=.true.)
-         if (has_error(err)) return
          length = 0.0_wp
          call get_bounded(card, 'LENGTH', length, .true., err, required=.true.)
-         if (has_error(err)) return
          n = 0
          call get_int_range(card, 'ELEMENTS', 1, max_elements, n, err, required=.true.)
          if (has_error(err)) return

@@ -102,13 +102,10 @@ contains
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
                      'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          h = 0.0_wp
          call get_bounded(card, 'HEIGHT', h, .true., err, required=.true.)
-         if (has_error(err)) return
          t = 0.0_wp
          call get_bounded(card, 'PERIOD', t, .true., err, required=.true.)
-         if (has_error(err)) return
          phase = 0.0_wp
          call card_get_real(card, 'PHASE', phase, err)
          if (has_error(err)) return
@@ -140,9 +137,7 @@ contains
       if (has_error(err)) return
       if (wv%kind == sea_table) then
          call refuse(card, [character(len=param_len) :: 'HS', 'TP'], 'SPECTRUM', err)
-         call card_check_data(card, 2, -1, err, what)
-         if (has_error(err)) return
-         call card_data_table(card, 2, what, table, err)
+         call card_data_table(card, 2, what, table, err, nmin=2)
          if (has_error(err)) return
          n = table%n_rows
          do k = 1, n
