@@ -29,7 +29,7 @@ module rodyn_deck
                                      card_get_yesno, card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
-   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
                                  max_cutbacks, max_elements, check_card, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, get_pair, &
@@ -90,48 +90,48 @@ contains
    subroutine deck_read(path, model, err, overrides, warnings)
       character(len=*), intent(in) :: path    !< path of the main deck file
       type(model_t), intent(out) :: model     !< the model read
-      type(error_t), intent(inout) :: err     !< status (stat_input on a bad deck)
+      type(error_t), intent(inout) :: err     !< status (stat_input on a bad rd%deck)
       type(param_override_t), intent(in), optional :: overrides(:) !< --set values
       character(len=:), allocatable, intent(out), optional :: warnings !< warning lines
-      type(deck_t) :: deck
-      type(pending_t) :: pend
+      type(reading_t) :: rd
       integer :: ic
 
       model%deck_file = path
       model%deck_text = ''
       model%title = ''
-      call deck_lex(path, deck, err, overrides)
-      if (allocated(deck%text)) model%deck_text = deck%text
-      if (has_error(err)) deck%n_cards = 0
-      allocate (model%parameters(deck%params%n))
-      do ic = 1, deck%params%n
-         model%parameters(ic)%name = deck%params%p(ic)%name
-         model%parameters(ic)%text = deck%params%p(ic)%text
-         model%parameters(ic)%is_number = deck%params%p(ic)%is_number
-         model%parameters(ic)%value = deck%params%p(ic)%value
+      call deck_lex(path, rd%deck, err, overrides)
+      if (allocated(rd%deck%text)) model%deck_text = rd%deck%text
+      if (has_error(err)) rd%deck%n_cards = 0
+      allocate (model%parameters(rd%deck%params%n))
+      do ic = 1, rd%deck%params%n
+         model%parameters(ic)%name = rd%deck%params%p(ic)%name
+         model%parameters(ic)%text = rd%deck%params%p(ic)%text
+         model%parameters(ic)%is_number = rd%deck%params%p(ic)%is_number
+         model%parameters(ic)%value = rd%deck%params%p(ic)%value
       end do
       if (present(warnings)) then
          warnings = ''
-         if (allocated(deck%warnings)) then
-            do ic = 1, size(deck%warnings)
-               warnings = warnings//deck%warnings(ic)%s//new_line('a')
+         if (allocated(rd%deck%warnings)) then
+            do ic = 1, size(rd%deck%warnings)
+               warnings = warnings//rd%deck%warnings(ic)%s//new_line('a')
             end do
          end if
       end if
 
-      call size_items(deck, model, pend)
+      call size_items(rd%deck, model, rd%pend)
       if (has_error(err)) return
 
-      do ic = 1, deck%n_cards
-         call read_card(deck, ic, model, pend, err)
+      do ic = 1, rd%deck%n_cards
+         rd%ic = ic
+         call read_card(rd, model, err)
          if (has_error(err)) then
-            call trim_model(pend, model)
+            call trim_model(rd%pend, model)
             return
          end if
       end do
-      call validate_model(deck, pend, model, err)
+      call validate_model(rd%deck, rd%pend, model, err)
       if (present(warnings) .and. .not. has_error(err)) &
-         warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)// &
+         warnings = warnings//dynamic_warnings(rd%deck, model)//wave_warnings(rd%deck, model)// &
                     body_wave_warnings(model)
    end subroutine deck_read
 
@@ -181,74 +181,72 @@ contains
       model%failures = model%failures(1:pend%n_failures)
    end subroutine trim_model
 
-   !> Hand card `ic` to the reader of its keyword.
-   subroutine read_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card to read
+   !> Hand card rd%ic to the reader of its keyword.
+   subroutine read_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card to read, the records
       type(model_t), intent(inout) :: model   !< model being filled
-      type(pending_t), intent(inout) :: pend  !< references to resolve later
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (card => rd%deck%cards(rd%ic))
          select case (card%keyword)
          case ('HEADING')
-            call read_heading_card(deck, ic, model, pend, err)
+            call read_heading_card(rd, model, err)
          case ('GRAVITY')
-            call read_gravity_card(deck, ic, model, pend, err)
+            call read_gravity_card(rd, model, err)
          case ('SECTION')
-            call read_section_card(deck, ic, model, pend, err)
+            call read_section_card(rd, model, err)
          case ('LINE')
-            call read_line_card(deck, ic, model, pend, err)
+            call read_line_card(rd, model, err)
          case ('BOUNDARY')
-            call read_boundary_card(card, ic, model, pend, err)
+            call read_boundary_card(card, rd%ic, model, rd%pend, err)
          case ('LOAD')
-            call read_load_card(card, ic, model, pend, err)
+            call read_load_card(card, rd%ic, model, rd%pend, err)
          case ('STATIC')
-            call read_static_card(deck, ic, model, pend, err)
+            call read_static_card(rd, model, err)
          case ('OUTPUT')
-            call read_output_card(deck, ic, model, pend, err)
+            call read_output_card(rd, model, err)
          case ('DYNAMIC')
-            call read_dynamic_card(deck, ic, model, pend, err)
+            call read_dynamic_card(rd, model, err)
          case ('DAMPING')
-            call read_damping_card(deck, ic, model, pend, err)
+            call read_damping_card(rd, model, err)
          case ('AMPLITUDE')
-            call read_amplitude_card(deck, ic, model, pend, err)
+            call read_amplitude_card(rd, model, err)
          case ('MOTION')
-            call read_motion_card(deck, ic, model, pend, err)
+            call read_motion_card(rd, model, err)
          case ('INITIAL VELOCITY')
-            call read_initial_velocity_card(deck, ic, model, pend, err)
+            call read_initial_velocity_card(rd, model, err)
          case ('WATER')
-            call read_water_card(deck, ic, model, pend, err)
+            call read_water_card(rd, model, err)
          case ('CURRENT')
-            call read_current_card(deck, ic, model, pend, err)
+            call read_current_card(rd, model, err)
          case ('SEABED')
-            call read_seabed_card(deck, ic, model, pend, err)
+            call read_seabed_card(rd, model, err)
          case ('SEGMENT')
-            call read_segment_card(card, ic, pend, err)
+            call read_segment_card(card, rd%ic, rd%pend, err)
          case ('ATTACHMENT')
-            call read_attachment_card(deck, ic, model, pend, err)
+            call read_attachment_card(rd, model, err)
          case ('POINT')
-            call read_point_card(deck, ic, model, pend, err)
+            call read_point_card(rd, model, err)
          case ('BODY')
-            call read_body_card(deck, ic, model, pend, err)
+            call read_body_card(rd, model, err)
          case ('BODY HYDROSTATICS', 'BODY DAMPING')
-            call read_body_hydrostatics_card(deck, ic, model, pend, err)
+            call read_body_hydrostatics_card(rd, model, err)
          case ('BODY ADDED MASS', 'BODY DRAG')
-            call read_body_added_mass_card(deck, ic, model, pend, err)
+            call read_body_added_mass_card(rd, model, err)
          case ('BODY WAVE LOAD')
-            call read_body_wave_load_card(deck, ic, model, pend, err)
+            call read_body_wave_load_card(rd, model, err)
          case ('FAILURE')
-            call read_failure_card(deck, ic, model, pend, err)
+            call read_failure_card(rd, model, err)
          case ('OFFSET CURVE')
-            call read_offset_curve_card(deck, ic, model, pend, err)
+            call read_offset_curve_card(rd, model, err)
          case ('MODAL')
-            call read_modal_card(deck, ic, model, pend, err)
+            call read_modal_card(rd, model, err)
          case ('VESSEL')
-            call read_vessel_card(deck, ic, model, pend, err)
+            call read_vessel_card(rd, model, err)
          case ('WAVE')
-            call read_wave_card(deck, ic, model, err)
+            call read_wave_card(rd%deck, rd%ic, model, err)
          case ('WAVE PROBE')
-            call read_wave_probe_card(deck, ic, model, err)
+            call read_wave_probe_card(rd%deck, rd%ic, model, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -263,14 +261,13 @@ contains
    ! ================================================================ card readers
 
    !> *HEADING: free-text data lines, the first one is the title. At most one.
-   subroutine read_heading_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *HEADING card
+   subroutine read_heading_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: title set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *HEADING
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) ::], 1, -1, err, first=pend%heading, &
                          what='the title')
          if (has_error(err)) return
@@ -279,16 +276,15 @@ contains
    end subroutine read_heading_card
 
    !> *GRAVITY: one data line gx, gy, gz [m/s2]. At most one; zero is allowed.
-   subroutine read_gravity_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *GRAVITY card
+   subroutine read_gravity_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: gravity set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *GRAVITY
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'gx, gy, gz'
       real(wp) :: g(3)
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) ::], 1, 1, err, first=pend%gravity, &
                          what=what)
          call card_data_reals(card, 1, 3, g, err, what)
@@ -309,11 +305,9 @@ contains
    !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16, the buoyancy and drag diameters) are
    !> resolved in validate_model; the hydrodynamic and contents parameters are read by
    !> rodyn_deck_water's read_section_hydro.
-   subroutine read_section_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *SECTION card
+   subroutine read_section_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one section appended
-      type(pending_t), intent(inout) :: pend  !< remembers the section's card
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what1 = 'EA, EI1, EI2, GJ, MASS'
       character(len=*), parameter :: what2 = 'K1, K2, K3'
@@ -322,7 +316,8 @@ contains
       real(wp) :: v(5), k(3)
       integer :: elem
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'OD', 'GA', &
                                 'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2', &
                                 'BUOYANCY DIAMETER', 'DRAG DIAMETER', 'CDN', 'CDA', 'CAN', &
@@ -368,10 +363,10 @@ contains
             if (has_error(err)) return
             sec%kappa0 = k
          end if
+         pend%n_sections = pend%n_sections + 1
+         model%sections(pend%n_sections) = sec
+         pend%section_card(pend%n_sections) = ic
       end associate
-      pend%n_sections = pend%n_sections + 1
-      model%sections(pend%n_sections) = sec
-      pend%section_card(pend%n_sections) = ic
    end subroutine read_section_card
 
    !> *BOUNDARY: a node constraint of TYPE FREE, PINNED, HINGED (data line: axis),
@@ -487,14 +482,13 @@ contains
    end subroutine read_load_card
 
    !> *STATIC: request a static analysis and set its options. No data lines.
-   subroutine read_static_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *STATIC card
+   subroutine read_static_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: static options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *STATIC
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic), st => model%static)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), st => model%static)
          call check_card(deck, ic, [character(len=param_len) :: 'INCREMENTS', 'MAX ITERATIONS', &
                          'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'LINE SEARCH'], 0, 0, err, &
                          first=pend%static)
@@ -510,14 +504,13 @@ contains
    end subroutine read_static_card
 
    !> *OUTPUT: which result files to write (CSV=YES|NO, HDF5=YES|NO). No data lines.
-   subroutine read_output_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *OUTPUT card
+   subroutine read_output_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: output options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *OUTPUT
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'CSV', 'HDF5'], 0, 0, err, &
                          first=pend%output)
          call card_get_yesno(card, 'CSV', model%output%csv, err)

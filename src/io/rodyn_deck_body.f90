@@ -15,7 +15,7 @@ module rodyn_deck_body
                                      card_get_real, card_get_int
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_banded, only: dense_sym_eigen
-   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
                                  body_subcards, sub_drag, max_distance, &
                                  get_bounded, param_fail, location, check_card, get_int_range, &
                                  find_named
@@ -36,11 +36,9 @@ contains
    !> *BODY, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=]; four data lines of 3 values:
    !> the reference point R at the start (global), G and B (body axes from R), and the
    !> inertia Ixx, Iyy, Izz about G (body axes). A FREE body needs MASS > 0 and inertia.
-   subroutine read_body_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *BODY card
+   subroutine read_body_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one body appended
-      type(pending_t), intent(inout) :: pend  !< counts the bodies
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what(4) = [character(len=40) :: 'xR, yR, zR', &
          'xG, yG, zG (body axes from R)', 'xB, yB, zB (body axes from R)', 'Ixx, Iyy, Izz']
@@ -49,7 +47,8 @@ contains
       real(wp) :: v(3, 4)
       integer :: k
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME'], err)
          call get_new_name(deck, ic, model%bodies(1:pend%n_bodies)%name, &
@@ -78,11 +77,11 @@ contains
          b%inertia = v(:, 4)
          if (b%kind == body_free) call check_free_body(card, b, err)
          if (has_error(err)) return
+         pend%n_bodies = pend%n_bodies + 1
+         model%bodies(pend%n_bodies) = b
+         pend%body_card(pend%n_bodies) = ic
+         pend%body_sub(:, pend%n_bodies) = 0
       end associate
-      pend%n_bodies = pend%n_bodies + 1
-      model%bodies(pend%n_bodies) = b
-      pend%body_card(pend%n_bodies) = ic
-      pend%body_sub(:, pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -115,39 +114,38 @@ contains
    !> DAMPING, BODY=name: the linear damping matrix B about R likewise, on R's velocity
    !> and the angular velocity [N s/m, N s, N m s/m, N m s/rad]. After the *BODY card;
    !> one of each per body.
-   subroutine read_body_hydrostatics_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_hydrostatics_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's matrix set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
       real(wp) :: mat(6, 6)
       integer :: ib
 
-      call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY'], name, &
-                        ib, err)
-      call body_card_once(deck, ic, pend, name, ib, err)
-      call read_matrix6(deck%cards(ic), 'C(k,1), ..., C(k,6)', mat, err)
-      if (has_error(err)) return
-      if (deck%cards(ic)%keyword == 'BODY DAMPING') model%bodies(ib)%damping = mat
-      if (deck%cards(ic)%keyword /= 'BODY DAMPING') model%bodies(ib)%hydrostatic = mat
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend)
+         call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY'], name, &
+                           ib, err)
+         call body_card_once(deck, ic, pend, name, ib, err)
+         call read_matrix6(deck%cards(ic), 'C(k,1), ..., C(k,6)', mat, err)
+         if (has_error(err)) return
+         if (deck%cards(ic)%keyword == 'BODY DAMPING') model%bodies(ib)%damping = mat
+         if (deck%cards(ic)%keyword /= 'BODY DAMPING') model%bodies(ib)%hydrostatic = mat
+      end associate
    end subroutine read_body_hydrostatics_card
 
    !> *BODY ADDED MASS, BODY=name: one data line A11, A22, A33 [kg] (translations of G),
    !> A44, A55, A66 [kg m2] (rotations about G), body axes, each >= 0. After the *BODY
    !> card; one per body.
-   subroutine read_body_added_mass_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_added_mass_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's added mass or drag set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name, what
       real(wp) :: a(6)
       integer :: ib, form
       logical :: drag
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          drag = card%keyword == 'BODY DRAG'
          what = merge('CdA1, CdA2, CdA3, Cr1, Cr2, Cr3', 'A11, A22, A33, A44, A55, A66   ', &
                       drag)
@@ -234,15 +232,14 @@ contains
    !> *OFFSET CURVE, BODY=name, FORCE=F [, HEADING=deg] [, STEPS=n]: after the statics, a
    !> horizontal force at the body's R towards HEADING raised to F in n steps (1 to 1000,
    !> default 10). At most one; the body is resolved with the whole deck.
-   subroutine read_offset_curve_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_offset_curve_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the curve's parameters set
-      type(pending_t), intent(inout) :: pend  !< remembers the card and BODY=
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
       real(wp) :: deg
-      associate (card => deck%cards(ic), oc => model%offset_curve)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), oc => model%offset_curve)
          call check_card(deck, ic, [character(len=param_len) :: 'BODY', 'FORCE', 'HEADING', &
                          'STEPS'], 0, 0, err, first=pend%offset_card)
          call card_get_name(card, 'BODY', name, err, required=.true.)
@@ -253,8 +250,8 @@ contains
          oc%heading = deg*acos(-1.0_wp)/180.0_wp
          call get_int_range(card, 'STEPS', 1, 1000, oc%steps, err)
          if (has_error(err)) return
+         pend%offset_body = ref_t(name, ic)
       end associate
-      pend%offset_body = ref_t(name, ic)
    end subroutine read_offset_curve_card
 
    !> The body of *OFFSET CURVE: it exists and is FREE.
@@ -404,14 +401,13 @@ contains
    !> *MODAL [, MODES=n] [, SOLVER=AUTO|DENSE|LANCZOS]: after the statics, the n (1 to
    !> 1000, default 10) longest natural periods of the whole system about its equilibrium
    !> and their shapes. At most one.
-   subroutine read_modal_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_modal_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model%modal set
-      type(pending_t), intent(inout) :: pend  !< remembers the card
       type(error_t), intent(inout) :: err     !< status
       integer :: k
-      associate (card => deck%cards(ic), mo => model%modal)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), mo => model%modal)
          call check_card(deck, ic, [character(len=param_len) :: 'MODES', 'SOLVER'], 0, 0, err, &
                          first=pend%modal_card)
          call get_int_range(card, 'MODES', 1, 1000, mo%modes, err)

@@ -14,7 +14,7 @@ module rodyn_deck_body_waves
    use rodyn_deck_card_values, only: card_get_name
    use rodyn_deck_table, only: table_t, card_get_table, card_data_table
    use rodyn_deck_numbers, only: real_str
-   use rodyn_deck_support, only: pending_t, param_fail, location, sub_wave
+   use rodyn_deck_support, only: pending_t, reading_t, param_fail, location, sub_wave
    use rodyn_deck_body, only: body_of_card, body_card_once
    use rodyn_deck_vessel, only: rao_grid, rao_options
    use rodyn_deck_dynamic, only: record_table
@@ -33,17 +33,16 @@ contains
    !> per metre of wave amplitude, and their 6 phases [deg] (lags behind the crest at R
    !> by default), on a full grid of periods and headings: from INPUT=file or from the
    !> card's data lines. One per body, after its *BODY card.
-   subroutine read_body_wave_load_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_wave_load_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's wave load set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       type(table_t) :: table
       character(len=:), allocatable :: name
       integer :: ib, iphase, interp
       logical :: found
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY', &
                            'INPUT', 'PHASE', 'INTERPOLATION'], name, ib, err)
          call body_card_once(deck, ic, pend, name, ib, err)

@@ -24,7 +24,7 @@ module rodyn_deck_dynamic
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: upper_case
    use rodyn_deck_targets, only: resolve_item_body, resolve_motion_point
-   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
                                  max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -59,17 +59,16 @@ contains
    !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8,
    !> and EMC, where it defaults to 1 (no numerical dissipation) and may be as low as
    !> edmc_rho_min (rodyn_numerical_dissipation).
-   subroutine read_dynamic_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *DYNAMIC card
+   subroutine read_dynamic_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: dynamic options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *DYNAMIC
       type(error_t), intent(inout) :: err     !< status
       character(len=8), parameter :: starts(2) = [character(len=8) :: 'STATIC', 'DEFINED']
       character(len=8), parameter :: tangents(2) = [character(len=8) :: 'NEW', 'REUSE']
       integer :: k
 
-      associate (card => deck%cards(ic), dy => model%dynamic)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), dy => model%dynamic)
          call check_card(deck, ic, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
                          'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
                          'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', 'CHECKPOINT'], 0, 0, err, &
@@ -175,13 +174,12 @@ contains
 
    !> *DAMPING, ALPHA=a, BETA=b: Rayleigh damping C = a M + b K, a [1/s], b [s], both
    !> >= 0, at least one given (the other stays 0). No data lines; at most one.
-   subroutine read_damping_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *DAMPING card
+   subroutine read_damping_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: Rayleigh coefficients set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *DAMPING
       type(error_t), intent(inout) :: err     !< status
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'ALPHA', 'BETA'], 0, 0, err, &
                          first=pend%damping)
          if (has_error(err)) return
@@ -209,11 +207,9 @@ contains
 
    !> *AMPLITUDE, NAME= [, INPUT=file]: pairs t, value, one per data line or one per
    !> row of the file; at least 2, times increasing strictly. Names are unique.
-   subroutine read_amplitude_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *AMPLITUDE card
+   subroutine read_amplitude_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one amplitude appended
-      type(pending_t), intent(inout) :: pend  !< remembers the amplitude's card
       type(error_t), intent(inout) :: err     !< status
       type(amplitude_t) :: amp
       type(table_t) :: table
@@ -221,7 +217,8 @@ contains
       logical :: from_file
       integer :: n
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'INPUT'], err)
          call get_new_name(deck, ic, model%amplitudes(1:pend%n_amplitudes)%name, &
                            pend%amplitude_card(1:pend%n_amplitudes), 'amplitude', name, err)
@@ -246,20 +243,18 @@ contains
          n = table%n_rows
          amp%time = table%values(1, 1:n)
          amp%value = table%values(2, 1:n)
+         pend%n_amplitudes = pend%n_amplitudes + 1
+         model%amplitudes(pend%n_amplitudes) = amp
+         pend%amplitude_card(pend%n_amplitudes) = ic
       end associate
-      pend%n_amplitudes = pend%n_amplitudes + 1
-      model%amplitudes(pend%n_amplitudes) = amp
-      pend%amplitude_card(pend%n_amplitudes) = ic
    end subroutine read_amplitude_card
 
    !> *MOTION, LINE=, END=|NODE=, TYPE=HARMONIC|TABLE [, RAMP=] [, INPUT=]: displacement
    !> of a held node in time. HARMONIC: 1 to 3 data lines direction, amplitude [m],
    !> frequency [Hz], phase [deg] (stored in rad). TABLE: rows t, ux, uy, uz from INPUT.
-   subroutine read_motion_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *MOTION card
+   subroutine read_motion_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one motion appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       character(len=8), parameter :: types(3) = [character(len=8) :: 'HARMONIC', 'TABLE', &
                                                  'VESSEL']
@@ -271,7 +266,8 @@ contains
       logical :: on_body, on_point
 
       vessel = ''
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'POINT', &
                                 'END', 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
@@ -335,28 +331,27 @@ contains
             mo%disp = table%values(2:4, 1:n)
          end select
          if (has_error(err)) return
+         pend%n_motions = pend%n_motions + 1
+         model%motions(pend%n_motions) = mo
+         pend%motion_line(pend%n_motions) = ref_t(line, ic)
+         pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
+         pend%motion_body(pend%n_motions) = on_body
+         pend%motion_point(pend%n_motions) = on_point
       end associate
-      pend%n_motions = pend%n_motions + 1
-      model%motions(pend%n_motions) = mo
-      pend%motion_line(pend%n_motions) = ref_t(line, ic)
-      pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
-      pend%motion_body(pend%n_motions) = on_body
-      pend%motion_point(pend%n_motions) = on_point
    end subroutine read_motion_card
 
    !> *INITIAL VELOCITY, LINE=: data lines vx, vy, vz [m/s]; wx, wy, wz [rad/s];
    !> optionally the centre cx, cy, cz [m] of the rotation.
-   subroutine read_initial_velocity_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *INITIAL VELOCITY card
+   subroutine read_initial_velocity_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one initial velocity appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(initial_velocity_t) :: iv
       character(len=:), allocatable :: line
       logical :: on_body
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY'], err)
          if (has_error(err)) return
          on_body = card_find_param(card, 'BODY') > 0
@@ -379,11 +374,11 @@ contains
             if (has_error(err)) return
             iv%has_centre = .true.
          end if
+         pend%n_ivs = pend%n_ivs + 1
+         model%initial_velocities(pend%n_ivs) = iv
+         pend%iv_line(pend%n_ivs) = ref_t(line, ic)
+         pend%iv_body(pend%n_ivs) = on_body
       end associate
-      pend%n_ivs = pend%n_ivs + 1
-      model%initial_velocities(pend%n_ivs) = iv
-      pend%iv_line(pend%n_ivs) = ref_t(line, ic)
-      pend%iv_body(pend%n_ivs) = on_body
    end subroutine read_initial_velocity_card
 
    ! ============================================================ reader helpers

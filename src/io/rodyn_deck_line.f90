@@ -13,7 +13,7 @@ module rodyn_deck_line
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
                                      card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
                                  max_elements, max_distance, param_fail, &
                                  location, node_count, node_number, get_bounded
    use rodyn_deck_system, only: point_junction, point_held
@@ -37,17 +37,16 @@ contains
    !> data line gives only the other end's (3 values), or nothing when both are on points
    !> (read_line_data). The geometry that depends on the length is checked by
    !> check_line_geometry.
-   subroutine read_line_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *LINE card
+   subroutine read_line_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one line appended
-      type(pending_t), intent(inout) :: pend  !< remembers the SECTION= reference
       type(error_t), intent(inout) :: err     !< status
       type(line_def_t) :: line
       character(len=:), allocatable :: name, section, pa, pb
       logical :: plain
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
                                 'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT', 'POINT A', &
                                 'POINT B'], err)
@@ -98,12 +97,12 @@ contains
          end if
          call read_line_data(card, len(pa) > 0, len(pb) > 0, line, err)
          if (has_error(err)) return
+         pend%n_lines = pend%n_lines + 1
+         model%lines(pend%n_lines) = line
+         pend%line_section(pend%n_lines) = ref_t(section, ic)
+         pend%line_point_a(pend%n_lines) = ref_t(pa, ic)
+         pend%line_point_b(pend%n_lines) = ref_t(pb, ic)
       end associate
-      pend%n_lines = pend%n_lines + 1
-      model%lines(pend%n_lines) = line
-      pend%line_section(pend%n_lines) = ref_t(section, ic)
-      pend%line_point_a(pend%n_lines) = ref_t(pa, ic)
-      pend%line_point_b(pend%n_lines) = ref_t(pb, ic)
    end subroutine read_line_card
 
    !> The data lines of *LINE: the positions of the ends not on a point (6, 3 or no

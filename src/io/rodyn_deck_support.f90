@@ -1,9 +1,10 @@
 !> Deck reader support: what the keyword readers remember for the validation pass
 !> (pending_t: names referred to, the card of each item, the first card of keywords
-!> allowed once) and the checks they share: parameters in a range, END=/NODE=, a line
-!> name resolved with its node number, error locations. Used by rodyn_deck (the reader
-!> and the static-analysis keywords), rodyn_deck_dynamic (the dynamic keywords) and
-!> rodyn_deck_water (the sea, seabed, segments and attachments).
+!> allowed once), what a reader works on (reading_t: the cards, the card read and those
+!> records) and the checks they share: parameters in a range, a pair set together,
+!> END=/NODE=, a new item's NAME=, a name among those defined, a line name resolved with
+!> its node number, a node given once, error locations. Used by all the keyword readers
+!> (rodyn_deck and the rodyn_deck_* modules).
 module rodyn_deck_support
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -15,7 +16,8 @@ module rodyn_deck_support
    use rodyn_deck_numbers, only: real_str, int_str
    implicit none
    private
-   public :: ref_t, pending_t, max_cutbacks, max_elements, body_subcards, sub_drag, sub_wave
+   public :: ref_t, pending_t, reading_t, max_cutbacks, max_elements, body_subcards, &
+             sub_drag, sub_wave
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: get_lumped_body
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
@@ -100,6 +102,14 @@ module rodyn_deck_support
       integer :: offset_card = 0 !< card of the first *OFFSET CURVE
       integer :: modal_card = 0  !< card of the first *MODAL
    end type pending_t
+
+   !> What a keyword reader works on: all cards, the index of the card it reads, and the
+   !> readers' records (one for the whole reading of a deck, deck_read).
+   type :: reading_t
+      type(deck_t) :: deck      !< all cards
+      integer :: ic = 0         !< index of the card being read
+      type(pending_t) :: pend   !< what the readers remember for the validation pass
+   end type reading_t
 
 contains
 

@@ -16,7 +16,7 @@ module rodyn_deck_system
                               card_check_data, param_len
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
                                  max_distance, get_lumped_body, param_fail, find_named, &
                                  get_bounded, check_card, &
                                  location, node_count, node_number
@@ -33,11 +33,9 @@ contains
    !> data line x, y, z (the position at the start; on a body, in its axes from its
    !> reference point). MASS, VOLUME, CDA and CA only for a FREE point, BODY= only (and
    !> always) for a BODY point.
-   subroutine read_point_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *POINT card
+   subroutine read_point_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one point appended
-      type(pending_t), intent(inout) :: pend  !< counts the points
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'x, y, z'
       character(len=6), parameter :: props(4) = [character(len=6) :: 'MASS', 'VOLUME', &
@@ -46,7 +44,8 @@ contains
       character(len=:), allocatable :: name, body
       integer :: k
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
          call get_new_name(deck, ic, model%points(1:pend%n_points)%name, &
@@ -94,12 +93,12 @@ contains
                             real_str(max_distance)//' m of the origin', err)
             return
          end if
+         pt%global = pt%position
+         pend%n_points = pend%n_points + 1
+         model%points(pend%n_points) = pt
+         pend%point_card(pend%n_points) = ic
+         pend%point_body(pend%n_points) = ref_t(body, ic)
       end associate
-      pt%global = pt%position
-      pend%n_points = pend%n_points + 1
-      model%points(pend%n_points) = pt
-      pend%point_card(pend%n_points) = ic
-      pend%point_body(pend%n_points) = ref_t(body, ic)
    end subroutine read_point_card
 
    !> The points of each line's ends (POINT A=, POINT B=): they exist, and the end takes
@@ -292,15 +291,14 @@ contains
 
    !> *FAILURE, LINE=name, END=A|B [, TIME=t] [, BREAK LOAD=T]: that end is released at
    !> time t or when its force first reaches T, whichever comes first (one of them given).
-   subroutine read_failure_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_failure_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< one failure appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(failure_t) :: f
       character(len=:), allocatable :: line
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
                          'BREAK LOAD'], 0, 0, err)
          call card_get_name(card, 'LINE', line, err, required=.true.)
@@ -319,10 +317,10 @@ contains
          call get_bounded(card, 'TIME', f%time, .false., err)
          call get_bounded(card, 'BREAK LOAD', f%break_load, .true., err)
          if (has_error(err)) return
+         pend%n_failures = pend%n_failures + 1
+         model%failures(pend%n_failures) = f
+         pend%failure_line(pend%n_failures) = ref_t(line, ic)
       end associate
-      pend%n_failures = pend%n_failures + 1
-      model%failures(pend%n_failures) = f
-      pend%failure_line(pend%n_failures) = ref_t(line, ic)
    end subroutine read_failure_card
 
    !> Each *FAILURE: its line exists, the end is held or on a point (else nothing holds

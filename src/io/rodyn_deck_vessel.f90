@@ -14,7 +14,8 @@ module rodyn_deck_vessel
    use rodyn_deck_card_values, only: card_get_real, card_get_name, card_get_choice, card_data_reals
    use rodyn_deck_table, only: table_t, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
+   use rodyn_deck_support, only: pending_t, reading_t, param_fail, location, node_count, &
+                                 node_number, &
                                  node_label
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_deck_waves, only: validate_waves
@@ -38,11 +39,9 @@ contains
    !> RAO rows: period [s], relative heading [deg], 6 amplitudes (m/m for translations,
    !> ROTATION UNITS per m for rotations), 6 phases [deg], on a full grid of periods and
    !> headings. TABLE rows: t [s], surge, sway, heave [m], roll, pitch, yaw (ROTATION UNITS).
-   subroutine read_vessel_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *VESSEL card
+   subroutine read_vessel_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one vessel appended
-      type(pending_t), intent(inout) :: pend  !< counts the vessels, remembers the card
       type(error_t), intent(inout) :: err     !< status
       type(vessel_t) :: ve
       type(table_t) :: table
@@ -50,7 +49,8 @@ contains
       real(wp) :: v(4), rot
       integer :: it, iphase, iunit, interp, n
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'INPUT', &
                                 'PHASE', 'ROTATION UNITS', 'INTERPOLATION', 'OFFSET X', &
                                 'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
@@ -109,10 +109,10 @@ contains
             if (has_error(err)) return
          end if
          call record_table(table, model)
+         pend%n_vessels = pend%n_vessels + 1
+         model%vessels(pend%n_vessels) = ve
+         pend%vessel_card(pend%n_vessels) = ic
       end associate
-      pend%n_vessels = pend%n_vessels + 1
-      model%vessels(pend%n_vessels) = ve
-      pend%vessel_card(pend%n_vessels) = ic
    end subroutine read_vessel_card
 
    !> The slow motion of the reference point, global (rodyn_motion's vessel_slow_motion):

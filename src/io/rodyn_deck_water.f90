@@ -18,7 +18,8 @@ module rodyn_deck_water
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_data_real
    use rodyn_deck_table, only: table_t, card_data_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, max_elements, check_once, &
+                                 get_bounded, &
                                  get_lumped_body, check_card, get_pair, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most, get_int_range
@@ -52,14 +53,13 @@ contains
    !> *WATER, DEPTH= [, SURFACE=, DENSITY=]: still water level z = SURFACE, depth below
    !> it (the seabed lies there, so the seabed is present too) and density. No data
    !> lines; at most one.
-   subroutine read_water_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *WATER card
+   subroutine read_water_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: water and seabed present
-      type(pending_t), intent(inout) :: pend  !< remembers the first *WATER
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic), w => model%water)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), w => model%water)
          call check_card(deck, ic, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
                          'DENSITY'], 0, 0, err, first=pend%water)
          call get_bounded(card, 'DEPTH', w%depth, .true., err, required=.true.)
@@ -78,17 +78,16 @@ contains
    !> the water flows towards, from +x towards +y), one level per line; levels distinct,
    !> stored by increasing z, headings in rad. At most one. That the deck has *WATER and
    !> no level is above its surface is checked by validate_water.
-   subroutine read_current_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *CURRENT card
+   subroutine read_current_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: current profile set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *CURRENT
       type(error_t), intent(inout) :: err     !< status
       type(table_t) :: table
       integer, allocatable :: order(:)
       integer :: j, k, n
 
-      associate (card => deck%cards(ic), w => model%water)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), w => model%water)
          call check_once(deck, ic, pend%current, err)
          call card_check_params(card, [character(len=param_len) :: 'RAMP'], err)
          call get_bounded(card, 'RAMP', w%cur_ramp, .false., err)
@@ -117,15 +116,14 @@ contains
    !> FRICTION=, LATERAL FRICTION=, MOBILISATION VELOCITY=]: the properties of the plane
    !> seabed at the water depth (angles in deg, stored in rad). No data lines; at most
    !> one. That the deck has *WATER is checked by validate_water.
-   subroutine read_seabed_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *SEABED card
+   subroutine read_seabed_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: seabed properties set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *SEABED
       type(error_t), intent(inout) :: err     !< status
       real(wp) :: slope, dir
 
-      associate (card => deck%cards(ic), sb => model%seabed)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), sb => model%seabed)
          call check_card(deck, ic, [character(len=param_len) :: 'SLOPE', 'SLOPE DIRECTION', &
                          'STIFFNESS', 'DAMPING', 'FRICTION', 'AXIAL FRICTION', &
                          'LATERAL FRICTION', 'MOBILISATION VELOCITY'], 0, 0, err, &
@@ -188,16 +186,15 @@ contains
    !> *ATTACHMENT, LINE=, S= [, MASS=, VOLUME=, CDA=, CA=]: a clump weight or buoy at
    !> arc length S of a line. No data lines. S within the line and the need for *WATER
    !> are checked by validate_water.
-   subroutine read_attachment_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *ATTACHMENT card
+   subroutine read_attachment_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one attachment appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(attachment_t) :: att
       character(len=:), allocatable :: line
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
                          'VOLUME', 'CDA', 'CA'], 0, 0, err)
          call card_get_name(card, 'LINE', line, err, required=.true.)
@@ -212,10 +209,10 @@ contains
          end if
          call get_lumped_body(card, att%mass, att%volume, att%cda_area, att%ca, err)
          if (has_error(err)) return
+         pend%n_attachments = pend%n_attachments + 1
+         model%attachments(pend%n_attachments) = att
+         pend%att_line(pend%n_attachments) = ref_t(line, ic)
       end associate
-      pend%n_attachments = pend%n_attachments + 1
-      model%attachments(pend%n_attachments) = att
-      pend%att_line(pend%n_attachments) = ref_t(line, ic)
    end subroutine read_attachment_card
 
    !> The hydrodynamic and contents parameters of a *SECTION card (BUOYANCY DIAMETER,
