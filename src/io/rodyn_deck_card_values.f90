@@ -180,16 +180,11 @@ contains
       logical, intent(out), optional :: found   !< the parameter was given
       logical, intent(in), optional :: required !< absence is an error
       logical, intent(in), optional :: listed   !< absence is an error naming the choices
-      character(len=:), allocatable :: v, list
+      character(len=:), allocatable :: v
       integer :: ip, k
 
-      list = trim(choices(1))
-      do k = 2, size(choices) - 1
-         list = list//', '//trim(choices(k))
-      end do
-      if (size(choices) > 1) list = list//' or '//trim(choices(size(choices)))
       if (present(listed) .and. card_find_param(card, name) == 0 .and. .not. has_error(err)) &
-         call card_error(card, 'missing parameter '//name//' ('//list//')', err)
+         call card_error(card, 'missing parameter '//name//' ('//list()//')', err)
       call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
       v = upper_case(card%params(ip)%value)
@@ -200,8 +195,19 @@ contains
             return
          end if
       end do
-      call card_param_error(card, ip, name//' must be '//list//", got '"// &
+      call card_param_error(card, ip, name//' must be '//list()//", got '"// &
                             card%params(ip)%value//"'", err)
+   contains
+      !> The choices as 'A, B or C' (formed only for a message).
+      function list() result(s)
+         character(len=:), allocatable :: s  !< the list
+         integer :: j
+         s = trim(choices(1))
+         do j = 2, size(choices) - 1
+            s = s//', '//trim(choices(j))
+         end do
+         if (size(choices) > 1) s = s//' or '//trim(choices(size(choices)))
+      end function list
    end subroutine card_get_choice
 
    !> Get a YES/NO parameter. Unchanged when absent.
