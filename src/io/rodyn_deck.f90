@@ -29,7 +29,7 @@ module rodyn_deck
                                      card_get_yesno, card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
-   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  max_cutbacks, max_elements, check_card, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
                                  get_node, get_pair, &
@@ -324,8 +324,8 @@ contains
                                 'CAA', 'ID', 'CONTENTS DENSITY', 'CONTENTS PRESSURE', &
                                 'PRESSURE Z', 'ELEMENT', 'AXIAL DAMPING', &
                                 'AXIAL DAMPING RATIO', 'BENDING DAMPING'], err)
-         call get_new_name(deck, ic, model%sections(1:pend%n_sections)%name, &
-                           pend%section_card(1:pend%n_sections), 'section', name, err)
+         call get_item_name(deck, ic, model%sections(1:pend%n_sections)%name, &
+                            pend%section_card(1:pend%n_sections), 'section', name, err)
          if (has_error(err)) return
          sec%name = name
 

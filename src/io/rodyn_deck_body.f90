@@ -15,7 +15,7 @@ module rodyn_deck_body
                                      card_get_real, card_get_int
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_banded, only: dense_sym_eigen
-   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  body_subcards, sub_drag, max_distance, &
                                  get_bounded, param_fail, location, check_card, get_int_range, &
                                  find_named
@@ -51,8 +51,8 @@ contains
                  card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME'], err)
-         call get_new_name(deck, ic, model%bodies(1:pend%n_bodies)%name, &
-                           pend%body_card(1:pend%n_bodies), 'body', name, err)
+         call get_item_name(deck, ic, model%bodies(1:pend%n_bodies)%name, &
+                            pend%body_card(1:pend%n_bodies), 'body', name, err)
          if (has_error(err)) return
          b%name = name
          b%card_at = card%file//':'//int_str(card%line)

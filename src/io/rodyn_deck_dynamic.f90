@@ -24,7 +24,7 @@ module rodyn_deck_dynamic
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: upper_case
    use rodyn_deck_targets, only: resolve_item_body, resolve_motion_point
-   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
@@ -220,8 +220,8 @@ contains
       associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
                  card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'INPUT'], err)
-         call get_new_name(deck, ic, model%amplitudes(1:pend%n_amplitudes)%name, &
-                           pend%amplitude_card(1:pend%n_amplitudes), 'amplitude', name, err)
+         call get_item_name(deck, ic, model%amplitudes(1:pend%n_amplitudes)%name, &
+                            pend%amplitude_card(1:pend%n_amplitudes), 'amplitude', name, err)
          if (has_error(err)) return
          amp%name = name
 

@@ -13,7 +13,7 @@ module rodyn_deck_line
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
                                      card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  max_elements, max_distance, param_fail, &
                                  location, node_count, node_number, get_bounded
    use rodyn_deck_system, only: point_junction, point_held
@@ -50,8 +50,8 @@ contains
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
                                 'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT', 'POINT A', &
                                 'POINT B'], err)
-         call get_new_name(deck, ic, model%lines(1:pend%n_lines)%name, &
-                           pend%line_section(1:pend%n_lines)%card, 'line', name, err)
+         call get_item_name(deck, ic, model%lines(1:pend%n_lines)%name, &
+                            pend%line_section(1:pend%n_lines)%card, 'line', name, err)
          if (has_error(err)) return
          line%name = name
          line%card_at = card%file//':'//int_str(card%line)

@@ -2,9 +2,9 @@
 !> (pending_t: names referred to, the card of each item, the first card of keywords
 !> allowed once), what a reader works on (reading_t: the cards, the card read and those
 !> records) and the checks they share: parameters in a range, a pair set together,
-!> END=/NODE=, a new item's NAME=, a name among those defined, a line name resolved with
-!> its node number, a node given once, error locations. Used by all the keyword readers
-!> (rodyn_deck and the rodyn_deck_* modules).
+!> END=/NODE=, the NAME= of an item a card defines, a name among those defined, a line
+!> name resolved with its node number, a node given once, error locations. Used by all
+!> the keyword readers (rodyn_deck and the rodyn_deck_* modules).
 module rodyn_deck_support
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -23,7 +23,7 @@ module rodyn_deck_support
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: get_int_range, param_fail, get_pair
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
-   public :: check_node_once, get_new_name, find_named
+   public :: check_node_once, get_item_name, find_named
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
@@ -400,7 +400,7 @@ contains
    !> NAME= of card ic, which defines a named item (a section, line, amplitude, body or
    !> point): required, and not the name of an earlier item of its kind ("<what> 'NAME' is
    !> already defined (at FILE:LINE)", at the NAME= parameter when at_name is given).
-   subroutine get_new_name(deck, ic, names, cards, what, name, err, at_name)
+   subroutine get_item_name(deck, ic, names, cards, what, name, err, at_name)
       type(deck_t), intent(in) :: deck         !< all cards
       integer, intent(in) :: ic                !< index of the card
       character(len=*), intent(in) :: names(:) !< the names of the earlier items
@@ -421,7 +421,7 @@ contains
          call card_error(deck%cards(ic), what//" '"//name//"' is already defined (at "// &
                          location(deck, cards(j))//')', err)
       end if
-   end subroutine get_new_name
+   end subroutine get_item_name
 
    !> Refuse item k of a list of node items (*BOUNDARY, *MOTION) at the node of an
    !> earlier item on the same line: 'line L node N already has a *KEYWORD (at ...)'.

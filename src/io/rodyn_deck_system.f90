@@ -16,7 +16,7 @@ module rodyn_deck_system
                               card_check_data, param_len
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_new_name, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  max_distance, get_lumped_body, param_fail, find_named, &
                                  get_bounded, check_card, &
                                  location, node_count, node_number
@@ -48,9 +48,9 @@ contains
                  card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
-         call get_new_name(deck, ic, model%points(1:pend%n_points)%name, &
-                           pend%point_card(1:pend%n_points), 'point', name, err, &
-                           at_name=.true.)
+         call get_item_name(deck, ic, model%points(1:pend%n_points)%name, &
+                            pend%point_card(1:pend%n_points), 'point', name, err, &
+                            at_name=.true.)
          if (has_error(err)) return
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
