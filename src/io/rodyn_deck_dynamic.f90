@@ -30,7 +30,7 @@ module rodyn_deck_dynamic
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  get_int_range, &
                                  location, resolve_line, node_count, node_number, node_label, &
-                                 check_node_once, &
+                                 check_node_once, refuse, &
                                  check_at_most
    implicit none
    private
@@ -286,16 +286,13 @@ contains
             return
          end if
 
-         if (mo%kind /= motion_vessel .and. card_find_param(card, 'VESSEL') > 0) then
-            call param_fail(card, 'VESSEL', 'VESSEL is only allowed with TYPE=VESSEL', err)
-            return
-         end if
+         if (mo%kind /= motion_vessel) call refuse(card, [character(len=6) :: 'VESSEL'], &
+                                                   ' is only allowed with TYPE=VESSEL', err)
+         if (mo%kind /= motion_table) call refuse(card, [character(len=5) :: 'INPUT'], &
+                                                  ' is only allowed with TYPE=TABLE', err)
+         if (has_error(err)) return
          select case (mo%kind)
          case (motion_vessel)
-            if (card_find_param(card, 'INPUT') > 0) then
-               call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
-               return
-            end if
             if (card%n_data > 0) then
                call card_data_error(card, 1, 'data lines are not allowed with TYPE=VESSEL'// &
                                     ' (the motion is the vessel''s, *VESSEL)', err)
@@ -303,10 +300,6 @@ contains
             end if
             call card_get_name(card, 'VESSEL', vessel, err, required=.true.)
          case (motion_harmonic)
-            if (card_find_param(card, 'INPUT') > 0) then
-               call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
-               return
-            end if
             call read_harmonic_lines(card, mo, err)
          case (motion_table)
             if (card%n_data > 0) then

@@ -23,7 +23,7 @@ module rodyn_deck_support
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: get_int_range, param_fail, get_pair
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
-   public :: check_node_once, get_item_name, find_named
+   public :: check_node_once, get_item_name, find_named, refuse
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
@@ -281,6 +281,22 @@ contains
          call param_fail(card, 'CA', 'CA > 0 needs VOLUME > 0 (the added mass is'// &
                          ' CA rho_w VOLUME)', err)
    end subroutine get_lumped_body
+
+   !> An error at the first of `names` the card gives: 'NAME'//why (why: ' is only
+   !> allowed with TYPE=TABLE', ...).
+   subroutine refuse(card, names, why, err)
+      type(card_t), intent(in) :: card          !< the card
+      character(len=*), intent(in) :: names(:)  !< parameters the card may not give
+      character(len=*), intent(in) :: why       !< why, following the name in the message
+      type(error_t), intent(inout) :: err       !< status
+      integer :: j
+      if (has_error(err)) return
+      do j = 1, size(names)
+         if (card_find_param(card, trim(names(j))) == 0) cycle
+         call param_fail(card, trim(names(j)), trim(names(j))//why, err)
+         return
+      end do
+   end subroutine refuse
 
    !> A value no physical model has: refused when above vmax, with `why` (the physical
    !> meaning of the bound, ending the message).

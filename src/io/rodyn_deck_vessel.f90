@@ -16,7 +16,7 @@ module rodyn_deck_vessel
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: pending_t, reading_t, param_fail, location, node_count, &
                                  node_number, &
-                                 node_label
+                                 node_label, refuse
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_deck_waves, only: validate_waves
    use rodyn_waves, only: wave_field_t, waves_build
@@ -71,17 +71,9 @@ contains
          rot = merge(deg, 1.0_wp, iunit == 1)
          call rao_options(card, iphase, interp, err)
          if (has_error(err)) return
-         if (ve%kind == vessel_from_table) then
-            if (card_find_param(card, 'PHASE') > 0) then
-               call param_fail(card, 'PHASE', 'PHASE is only allowed with TYPE=RAO', err)
-               return
-            end if
-            if (card_find_param(card, 'INTERPOLATION') > 0) then
-               call param_fail(card, 'INTERPOLATION', 'INTERPOLATION is only allowed'// &
-                               ' with TYPE=RAO', err)
-               return
-            end if
-         end if
+         if (ve%kind == vessel_from_table) call refuse(card, [character(len=param_len) :: &
+                                                   'PHASE', 'INTERPOLATION'], &
+                                                   ' is only allowed with TYPE=RAO', err)
          call card_check_data(card, 1, 1, err, 'x, y, z, heading')
          call card_data_reals(card, 1, 4, v, err, 'x, y, z, heading')
          if (has_error(err)) return

@@ -15,7 +15,7 @@ module rodyn_deck_waves
                                      card_data_reals
    use rodyn_deck_table, only: table_t, card_data_table, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
+   use rodyn_deck_support, only: get_bounded, param_fail, location, data_check, refuse
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components
    implicit none
@@ -35,6 +35,7 @@ module rodyn_deck_waves
    integer, parameter :: default_directions = 15   !< directions when SPREADING is given
    real(wp), parameter :: record_spacing = 1.0e-6_wp !< tolerance of a record's step [dt]
    character(len=1), parameter :: lf = achar(10)
+   character(len=*), parameter :: not_of = ' is not a parameter of TYPE=' !< refuse's why
 
 contains
 
@@ -89,7 +90,7 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'INPUT', 'X', 'Y'], &
-                     trim(sea_names(wv%kind)), err)
+                     not_of//trim(sea_names(wv%kind)), err)
          if (has_error(err)) return
          if (wv%kind /= sea_airy) then
             call read_sea(card, wv, err)
@@ -100,7 +101,8 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
-                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
+                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], &
+                     not_of//'AIRY', err)
          call card_check_data(card, 0, 0, err)
          h = 0.0_wp
          call get_bounded(card, 'HEIGHT', h, .true., err, required=.true.)
@@ -131,12 +133,12 @@ contains
       logical :: found
 
       call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE'], &
-                  trim(sea_names(wv%kind)), err)
+                  not_of//trim(sea_names(wv%kind)), err)
       if (wv%kind /= sea_jonswap) call refuse(card, [character(len=param_len) :: 'GAMMA'], &
-                                              trim(sea_names(wv%kind)), err)
+                                              not_of//trim(sea_names(wv%kind)), err)
       if (has_error(err)) return
       if (wv%kind == sea_table) then
-         call refuse(card, [character(len=param_len) :: 'HS', 'TP'], 'SPECTRUM', err)
+         call refuse(card, [character(len=param_len) :: 'HS', 'TP'], not_of//'SPECTRUM', err)
          call card_data_table(card, 2, what, table, err, nmin=2)
          if (has_error(err)) return
          n = table%n_rows
@@ -212,7 +214,7 @@ contains
       integer :: k, n
       call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE', 'HS', &
                   'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', 'OMEGA MAX', &
-                  'SPREADING', 'DIRECTIONS'], 'RECORD', err)
+                  'SPREADING', 'DIRECTIONS'], not_of//'RECORD', err)
       call card_check_data(card, 0, 0, err)
       call card_get_real(card, 'X', model%waves%point(1), err)
       call card_get_real(card, 'Y', model%waves%point(2), err)
@@ -267,22 +269,6 @@ contains
          return
       end if
    end subroutine read_spreading
-
-   !> An error at the first of `names` given on the card: not a parameter of this TYPE.
-   subroutine refuse(card, names, kind, err)
-      type(card_t), intent(in) :: card          !< the *WAVE card
-      character(len=*), intent(in) :: names(:)  !< parameters the TYPE does not take
-      character(len=*), intent(in) :: kind      !< the TYPE
-      type(error_t), intent(inout) :: err       !< status
-      integer :: j
-      if (has_error(err)) return
-      do j = 1, size(names)
-         if (card_find_param(card, trim(names(j))) == 0) cycle
-         call param_fail(card, trim(names(j)), trim(names(j))//' is not a parameter of '// &
-                         'TYPE='//kind, err)
-         return
-      end do
-   end subroutine refuse
 
    !> *WAVE PROBE, NAME=: one data line x, y [m] (global): a point whose wave elevation
    !> is written with the frames and every step (dynamic_waves.csv, docs/output.md).
