@@ -21,7 +21,7 @@ module rodyn_deck
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
                           bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b, &
                           element_names, element_cable, element_rod
-   use rodyn_deck_lexer, only: deck_t, deck_lex
+   use rodyn_deck_lexer, only: deck_t, deck_lex, keyword_count
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_param_error, card_data_error, card_check_data, card_data_count, &
                               param_len
@@ -29,11 +29,12 @@ module rodyn_deck
                                      card_get_yesno, card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: param_override_t
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, max_elements, check_card, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
+                                 max_cutbacks, max_elements, check_card, &
                                  max_gravity, max_distance, max_increments, max_iterations, &
-                                 get_node, &
+                                 get_node, get_pair, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
-                                 location, resolve_line, node_count, node_number, node_label, &
+                                 location, resolve_line, check_node_once, &
                                  get_int_range
    use rodyn_deck_dynamic, only: read_dynamic_card, read_damping_card, &
                                  read_amplitude_card, read_motion_card, &
@@ -45,8 +46,8 @@ module rodyn_deck
    use rodyn_deck_section_damping, only: read_section_damping
    use rodyn_deck_water, only: read_water_card, read_current_card, read_seabed_card, &
                                read_segment_card, read_attachment_card, read_section_hydro, &
-                               resolve_segments, validate_water, dynamic_scheme_default
-   use rodyn_deck_waves, only: read_wave_card, validate_waves, wave_warnings, &
+                               resolve_segments, validate_water
+   use rodyn_deck_waves, only: read_wave_card, wave_warnings, &
                                read_wave_probe_card
    use rodyn_deck_line, only: read_line_card, all_cable, check_line_element, &
                               check_line_geometry, static_analysis_runs, check_supported, &
@@ -62,6 +63,22 @@ module rodyn_deck
    private
    public :: deck_read
 
+   !> A whole-deck check, run once all cards are read (validate_model).
+   abstract interface
+      subroutine deck_check_i(deck, pend, model, err)
+         import :: deck_t, pending_t, model_t, error_t
+         type(deck_t), intent(in) :: deck        !< all cards
+         type(pending_t), intent(in) :: pend     !< what the cards named
+         type(model_t), intent(inout) :: model   !< model being completed
+         type(error_t), intent(inout) :: err     !< status
+      end subroutine deck_check_i
+   end interface
+
+   !> One entry of the table of whole-deck checks.
+   type :: deck_check_t
+      procedure(deck_check_i), pointer, nopass :: run => null() !< the check
+   end type deck_check_t
+
 contains
 
    !> Read the deck `path` into `model`, fully validated (docs/deck.md). err must be
@@ -73,98 +90,78 @@ contains
    subroutine deck_read(path, model, err, overrides, warnings)
       character(len=*), intent(in) :: path    !< path of the main deck file
       type(model_t), intent(out) :: model     !< the model read
-      type(error_t), intent(inout) :: err     !< status (stat_input on a bad deck)
+      type(error_t), intent(inout) :: err     !< status (stat_input on a bad rd%deck)
       type(param_override_t), intent(in), optional :: overrides(:) !< --set values
       character(len=:), allocatable, intent(out), optional :: warnings !< warning lines
-      type(deck_t) :: deck
-      type(pending_t) :: pend
+      type(reading_t) :: rd
       integer :: ic
 
       model%deck_file = path
       model%deck_text = ''
       model%title = ''
-      call deck_lex(path, deck, err, overrides)
-      if (allocated(deck%text)) model%deck_text = deck%text
-      if (has_error(err)) deck%n_cards = 0
-      allocate (model%parameters(deck%params%n))
-      do ic = 1, deck%params%n
-         model%parameters(ic)%name = deck%params%p(ic)%name
-         model%parameters(ic)%text = deck%params%p(ic)%text
-         model%parameters(ic)%is_number = deck%params%p(ic)%is_number
-         model%parameters(ic)%value = deck%params%p(ic)%value
+      call deck_lex(path, rd%deck, err, overrides)
+      if (allocated(rd%deck%text)) model%deck_text = rd%deck%text
+      if (has_error(err)) rd%deck%n_cards = 0
+      allocate (model%parameters(rd%deck%params%n))
+      do ic = 1, rd%deck%params%n
+         model%parameters(ic)%name = rd%deck%params%p(ic)%name
+         model%parameters(ic)%text = rd%deck%params%p(ic)%text
+         model%parameters(ic)%is_number = rd%deck%params%p(ic)%is_number
+         model%parameters(ic)%value = rd%deck%params%p(ic)%value
       end do
       if (present(warnings)) then
          warnings = ''
-         if (allocated(deck%warnings)) then
-            do ic = 1, size(deck%warnings)
-               warnings = warnings//deck%warnings(ic)%s//new_line('a')
+         if (allocated(rd%deck%warnings)) then
+            do ic = 1, size(rd%deck%warnings)
+               warnings = warnings//rd%deck%warnings(ic)%s//new_line('a')
             end do
          end if
       end if
 
-      ! the arrays are sized from the keyword counts, then filled card by card
-      allocate (model%sections(keyword_count(deck, 'SECTION')))
-      allocate (model%lines(keyword_count(deck, 'LINE')))
-      allocate (model%constraints(keyword_count(deck, 'BOUNDARY')))
-      allocate (model%loads(keyword_count(deck, 'LOAD')))
-      allocate (model%amplitudes(keyword_count(deck, 'AMPLITUDE')))
-      allocate (model%motions(keyword_count(deck, 'MOTION')))
-      allocate (model%vessels(keyword_count(deck, 'VESSEL')))
-      allocate (model%initial_velocities(keyword_count(deck, 'INITIAL VELOCITY')))
-      allocate (model%attachments(keyword_count(deck, 'ATTACHMENT')))
-      allocate (model%points(keyword_count(deck, 'POINT')))
-      allocate (model%bodies(keyword_count(deck, 'BODY')))
-      allocate (model%failures(keyword_count(deck, 'FAILURE')))
-      allocate (pend%failure_line(size(model%failures)))
-      allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
-      allocate (pend%section_card(size(model%sections)))
-      allocate (pend%line_section(size(model%lines)))
-      allocate (pend%bc_line(size(model%constraints)))
-      allocate (pend%load_line(size(model%loads)))
-      allocate (pend%load_amp(size(model%loads)))
-      allocate (pend%amplitude_card(size(model%amplitudes)))
-      allocate (pend%motion_line(size(model%motions)))
-      allocate (pend%motion_vessel(size(model%motions)), pend%motion_body(size(model%motions)), &
-                pend%motion_point(size(model%motions)))
-      allocate (pend%vessel_card(size(model%vessels)))
-      allocate (pend%iv_line(size(model%initial_velocities)), &
-                pend%iv_body(size(model%initial_velocities)))
-      allocate (pend%seg_line(keyword_count(deck, 'SEGMENT')))
-      allocate (pend%seg_section(size(pend%seg_line)))
-      allocate (pend%seg_length(size(pend%seg_line)))
-      allocate (pend%seg_elements(size(pend%seg_line)))
-      allocate (pend%att_line(size(model%attachments)))
-      allocate (pend%line_point_a(size(model%lines)), pend%line_point_b(size(model%lines)))
-      allocate (pend%load_point(size(model%loads)), pend%point_card(size(model%points)))
-      allocate (pend%point_body(size(model%points)), pend%load_body(size(model%loads)))
-      allocate (pend%body_card(size(model%bodies)), pend%body_hydro(size(model%bodies)), &
-                pend%body_damp(size(model%bodies)), pend%body_added(size(model%bodies)), &
-                pend%body_drag(size(model%bodies)), pend%body_wave(size(model%bodies)))
+      call size_items(rd%deck, model, rd%pend)
       if (has_error(err)) return
 
-      do ic = 1, deck%n_cards
-         call read_card(deck, ic, model, pend, err)
+      do ic = 1, rd%deck%n_cards
+         rd%ic = ic
+         call read_card(rd, model, err)
          if (has_error(err)) then
-            call trim_model(pend, model)
+            call trim_model(rd%pend, model)
             return
          end if
       end do
-      call validate_model(deck, pend, model, err)
+      call validate_model(rd%deck, rd%pend, model, err)
       if (present(warnings) .and. .not. has_error(err)) &
-         warnings = warnings//dynamic_warnings(deck, model)//wave_warnings(deck, model)// &
+         warnings = warnings//dynamic_warnings(rd%deck, model)//wave_warnings(rd%deck, model)// &
                     body_wave_warnings(model)
    end subroutine deck_read
 
-   !> Number of cards with the given keyword.
-   pure integer function keyword_count(deck, keyword) result(n)
+   !> Size the model's arrays and the readers' records from the keyword counts; the
+   !> cards then fill them one by one.
+   subroutine size_items(deck, model, pend)
       type(deck_t), intent(in) :: deck        !< all cards
-      character(len=*), intent(in) :: keyword !< keyword, upper case, without '*'
-      integer :: ic
-      n = 0
-      do ic = 1, deck%n_cards
-         if (deck%cards(ic)%keyword == keyword) n = n + 1
-      end do
-   end function keyword_count
+      type(model_t), intent(inout) :: model   !< model: item arrays allocated
+      type(pending_t), intent(inout) :: pend  !< records allocated
+      character(len=16), parameter :: keywords(13) = [character(len=16) :: 'SECTION', &
+         'LINE', 'BOUNDARY', 'LOAD', 'AMPLITUDE', 'MOTION', 'VESSEL', 'INITIAL VELOCITY', &
+         'ATTACHMENT', 'POINT', 'BODY', 'FAILURE', 'SEGMENT']
+      integer :: n(13), k
+      n = [(keyword_count(deck, keywords(k)), k = 1, 13)]
+      allocate (model%sections(n(1)), model%lines(n(2)), model%constraints(n(3)), &
+                model%loads(n(4)), model%amplitudes(n(5)), model%motions(n(6)), &
+                model%vessels(n(7)), model%initial_velocities(n(8)), &
+                model%attachments(n(9)), model%points(n(10)), model%bodies(n(11)), &
+                model%failures(n(12)))
+      allocate (model%water%cur_z(0), model%water%cur_speed(0), model%water%cur_heading(0))
+      allocate (pend%section_card(n(1)), pend%line_section(n(2)), pend%line_point_a(n(2)), &
+                pend%line_point_b(n(2)), pend%bc_line(n(3)), pend%load_line(n(4)), &
+                pend%load_amp(n(4)), pend%load_point(n(4)), pend%load_body(n(4)), &
+                pend%amplitude_card(n(5)), pend%motion_line(n(6)), pend%motion_vessel(n(6)), &
+                pend%motion_body(n(6)), pend%motion_point(n(6)), pend%vessel_card(n(7)), &
+                pend%iv_line(n(8)), pend%iv_body(n(8)), pend%att_line(n(9)), &
+                pend%point_card(n(10)), pend%point_body(n(10)), pend%body_card(n(11)), &
+                pend%body_sub(5, n(11)), pend%failure_line(n(12)), pend%seg_line(n(13)), &
+                pend%seg_section(n(13)), pend%seg_length(n(13)), pend%seg_elements(n(13)))
+   end subroutine size_items
 
    !> After an error: shrink the model's arrays to the items actually read.
    subroutine trim_model(pend, model)
@@ -184,74 +181,72 @@ contains
       model%failures = model%failures(1:pend%n_failures)
    end subroutine trim_model
 
-   !> Hand card `ic` to the reader of its keyword.
-   subroutine read_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card to read
+   !> Hand card rd%ic to the reader of its keyword.
+   subroutine read_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card to read, the records
       type(model_t), intent(inout) :: model   !< model being filled
-      type(pending_t), intent(inout) :: pend  !< references to resolve later
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (card => rd%deck%cards(rd%ic))
          select case (card%keyword)
          case ('HEADING')
-            call read_heading_card(deck, ic, model, pend, err)
+            call read_heading_card(rd, model, err)
          case ('GRAVITY')
-            call read_gravity_card(deck, ic, model, pend, err)
+            call read_gravity_card(rd, model, err)
          case ('SECTION')
-            call read_section_card(deck, ic, model, pend, err)
+            call read_section_card(rd, model, err)
          case ('LINE')
-            call read_line_card(deck, ic, model, pend, err)
+            call read_line_card(rd, model, err)
          case ('BOUNDARY')
-            call read_boundary_card(card, ic, model, pend, err)
+            call read_boundary_card(card, rd%ic, model, rd%pend, err)
          case ('LOAD')
-            call read_load_card(card, ic, model, pend, err)
+            call read_load_card(card, rd%ic, model, rd%pend, err)
          case ('STATIC')
-            call read_static_card(deck, ic, model, pend, err)
+            call read_static_card(rd, model, err)
          case ('OUTPUT')
-            call read_output_card(deck, ic, model, pend, err)
+            call read_output_card(rd, model, err)
          case ('DYNAMIC')
-            call read_dynamic_card(deck, ic, model, pend, err)
+            call read_dynamic_card(rd, model, err)
          case ('DAMPING')
-            call read_damping_card(deck, ic, model, pend, err)
+            call read_damping_card(rd, model, err)
          case ('AMPLITUDE')
-            call read_amplitude_card(deck, ic, model, pend, err)
+            call read_amplitude_card(rd, model, err)
          case ('MOTION')
-            call read_motion_card(deck, ic, model, pend, err)
+            call read_motion_card(rd, model, err)
          case ('INITIAL VELOCITY')
-            call read_initial_velocity_card(deck, ic, model, pend, err)
+            call read_initial_velocity_card(rd, model, err)
          case ('WATER')
-            call read_water_card(deck, ic, model, pend, err)
+            call read_water_card(rd, model, err)
          case ('CURRENT')
-            call read_current_card(deck, ic, model, pend, err)
+            call read_current_card(rd, model, err)
          case ('SEABED')
-            call read_seabed_card(deck, ic, model, pend, err)
+            call read_seabed_card(rd, model, err)
          case ('SEGMENT')
-            call read_segment_card(card, ic, pend, err)
+            call read_segment_card(card, rd%ic, rd%pend, err)
          case ('ATTACHMENT')
-            call read_attachment_card(deck, ic, model, pend, err)
+            call read_attachment_card(rd, model, err)
          case ('POINT')
-            call read_point_card(deck, ic, model, pend, err)
+            call read_point_card(rd, model, err)
          case ('BODY')
-            call read_body_card(deck, ic, model, pend, err)
+            call read_body_card(rd, model, err)
          case ('BODY HYDROSTATICS', 'BODY DAMPING')
-            call read_body_hydrostatics_card(deck, ic, model, pend, err)
+            call read_body_hydrostatics_card(rd, model, err)
          case ('BODY ADDED MASS', 'BODY DRAG')
-            call read_body_added_mass_card(deck, ic, model, pend, err)
+            call read_body_added_mass_card(rd, model, err)
          case ('BODY WAVE LOAD')
-            call read_body_wave_load_card(deck, ic, model, pend, err)
+            call read_body_wave_load_card(rd, model, err)
          case ('FAILURE')
-            call read_failure_card(deck, ic, model, pend, err)
+            call read_failure_card(rd, model, err)
          case ('OFFSET CURVE')
-            call read_offset_curve_card(deck, ic, model, pend, err)
+            call read_offset_curve_card(rd, model, err)
          case ('MODAL')
-            call read_modal_card(deck, ic, model, pend, err)
+            call read_modal_card(rd, model, err)
          case ('VESSEL')
-            call read_vessel_card(deck, ic, model, pend, err)
+            call read_vessel_card(rd, model, err)
          case ('WAVE')
-            call read_wave_card(deck, ic, model, err)
+            call read_wave_card(rd%deck, rd%ic, model, err)
          case ('WAVE PROBE')
-            call read_wave_probe_card(deck, ic, model, err)
+            call read_wave_probe_card(rd%deck, rd%ic, model, err)
          case default
             if (index(card%keyword, '=') > 0) then
                call card_error(card, 'unknown keyword (a comma missing after the keyword?)', &
@@ -266,14 +261,13 @@ contains
    ! ================================================================ card readers
 
    !> *HEADING: free-text data lines, the first one is the title. At most one.
-   subroutine read_heading_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *HEADING card
+   subroutine read_heading_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: title set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *HEADING
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) ::], 1, -1, err, first=pend%heading, &
                          what='the title')
          if (has_error(err)) return
@@ -282,19 +276,17 @@ contains
    end subroutine read_heading_card
 
    !> *GRAVITY: one data line gx, gy, gz [m/s2]. At most one; zero is allowed.
-   subroutine read_gravity_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *GRAVITY card
+   subroutine read_gravity_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: gravity set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *GRAVITY
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'gx, gy, gz'
       real(wp) :: g(3)
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) ::], 1, 1, err, first=pend%gravity, &
                          what=what)
-         if (has_error(err)) return
          call card_data_reals(card, 1, 3, g, err, what)
          if (has_error(err)) return
          if (norm2(g) > max_gravity) then
@@ -313,46 +305,36 @@ contains
    !> Defaults (GA -> EA, RHOI -> MASS*OD**2/16, the buoyancy and drag diameters) are
    !> resolved in validate_model; the hydrodynamic and contents parameters are read by
    !> rodyn_deck_water's read_section_hydro.
-   subroutine read_section_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *SECTION card
+   subroutine read_section_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one section appended
-      type(pending_t), intent(inout) :: pend  !< remembers the section's card
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what1 = 'EA, EI1, EI2, GJ, MASS'
       character(len=*), parameter :: what2 = 'K1, K2, K3'
       type(section_t) :: sec
       character(len=:), allocatable :: name
       real(wp) :: v(5), k(3)
-      integer :: is, elem
+      integer :: elem
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'OD', 'GA', &
                                 'GA1', 'GA2', 'RHOI', 'RHOI1', 'RHOI2', &
                                 'BUOYANCY DIAMETER', 'DRAG DIAMETER', 'CDN', 'CDA', 'CAN', &
                                 'CAA', 'ID', 'CONTENTS DENSITY', 'CONTENTS PRESSURE', &
                                 'PRESSURE Z', 'ELEMENT', 'AXIAL DAMPING', &
                                 'AXIAL DAMPING RATIO', 'BENDING DAMPING'], err)
+         call get_item_name(deck, ic, model%sections(1:pend%n_sections)%name, &
+                            pend%section_card(1:pend%n_sections), 'section', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do is = 1, pend%n_sections
-            if (model%sections(is)%name == name) then
-               call card_error(card, "section '"//name//"' is already defined (at "// &
-                               location(deck, pend%section_card(is))//')', err)
-               return
-            end if
-         end do
          sec%name = name
 
          call get_bounded(card, 'OD', sec%od, .false., err)
-         call get_pair(card, 'GA', sec%ga1, sec%ga2, .true., err)
-         call get_pair(card, 'RHOI', sec%rhoi1, sec%rhoi2, .false., err)
+         call get_pair(card, 'GA', 'GA1', 'GA2', sec%ga1, sec%ga2, .true., err)
+         call get_pair(card, 'RHOI', 'RHOI1', 'RHOI2', sec%rhoi1, sec%rhoi2, .false., err)
          call read_section_hydro(card, sec, err)
-         if (has_error(err)) return
 
          call card_check_data(card, 1, 2, err, what1)
-         if (has_error(err)) return
          call card_data_reals(card, 1, 5, v, err, what1)
          if (has_error(err)) return
          ! EI1, EI2, GJ > 0 for a rod; all three 0 make a cable section (ELEMENT=CABLE
@@ -381,10 +363,10 @@ contains
             if (has_error(err)) return
             sec%kappa0 = k
          end if
+         pend%n_sections = pend%n_sections + 1
+         model%sections(pend%n_sections) = sec
+         pend%section_card(pend%n_sections) = ic
       end associate
-      pend%n_sections = pend%n_sections + 1
-      model%sections(pend%n_sections) = sec
-      pend%section_card(pend%n_sections) = ic
    end subroutine read_section_card
 
    !> *BOUNDARY: a node constraint of TYPE FREE, PINNED, HINGED (data line: axis),
@@ -406,11 +388,8 @@ contains
 
       call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
                              'TYPE'], err)
-      if (has_error(err)) return
       call card_get_name(card, 'LINE', line, err, required=.true.)
-      if (has_error(err)) return
       call get_node(card, bc%node, err)
-      if (has_error(err)) return
       it = 0
       call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
       if (has_error(err)) return
@@ -419,7 +398,6 @@ contains
       select case (bc%kind)
       case (bc_hinged)
          call card_check_data(card, 1, 1, err, 'hinge axis ax, ay, az')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 3, v, err, 'ax, ay, az')
          if (has_error(err)) return
          vn = norm2(v)
@@ -430,7 +408,6 @@ contains
          bc%axis = v/vn
       case (bc_position)
          call card_check_data(card, 1, 1, err, 'position x, y, z')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 3, v, err, 'x, y, z')
          if (has_error(err)) return
          bc%position = v
@@ -462,12 +439,10 @@ contains
 
       call card_check_params(card, [character(len=param_len) :: 'LINE', 'END', 'NODE', &
                              'AMPLITUDE', 'POINT', 'BODY'], err)
-      if (has_error(err)) return
       line = ''
       point = ''
       body = ''
       call card_get_name(card, 'POINT', point, err)
-      if (has_error(err)) return
       call card_get_name(card, 'BODY', body, err)
       if (has_error(err)) return
       if (len(point) > 0 .or. len(body) > 0) then   ! on a FREE point or body
@@ -479,13 +454,11 @@ contains
          end if
       else
          call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
          call get_node(card, load%node, err)
          if (has_error(err)) return
       end if
       amplitude = ''
       call card_get_name(card, 'AMPLITUDE', amplitude, err)
-      if (has_error(err)) return
       call card_check_data(card, 1, 1, err, 'Fx, Fy, Fz [, Mx, My, Mz]')
       if (has_error(err)) return
       n = card_data_count(card, 1)
@@ -509,25 +482,20 @@ contains
    end subroutine read_load_card
 
    !> *STATIC: request a static analysis and set its options. No data lines.
-   subroutine read_static_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *STATIC card
+   subroutine read_static_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: static options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *STATIC
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic), st => model%static)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), st => model%static)
          call check_card(deck, ic, [character(len=param_len) :: 'INCREMENTS', 'MAX ITERATIONS', &
                          'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'LINE SEARCH'], 0, 0, err, &
                          first=pend%static)
-         if (has_error(err)) return
          st%requested = .true.
          call get_int_range(card, 'INCREMENTS', 1, max_increments, st%increments, err)
-         if (has_error(err)) return
          call get_int_range(card, 'MAX ITERATIONS', 1, max_iterations, st%max_iterations, err)
-         if (has_error(err)) return
          call get_int_range(card, 'CUTBACKS', 0, max_cutbacks, st%max_cutbacks, err)
-         if (has_error(err)) return
          call get_tolerance(card, 'FORCE TOL', st%force_tol, err)
          call get_tolerance(card, 'DISP TOL', st%disp_tol, err)
          if (has_error(err)) return
@@ -536,69 +504,38 @@ contains
    end subroutine read_static_card
 
    !> *OUTPUT: which result files to write (CSV=YES|NO, HDF5=YES|NO). No data lines.
-   subroutine read_output_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *OUTPUT card
+   subroutine read_output_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: output options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *OUTPUT
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'CSV', 'HDF5'], 0, 0, err, &
                          first=pend%output)
-         if (has_error(err)) return
          call card_get_yesno(card, 'CSV', model%output%csv, err)
          if (has_error(err)) return
          call card_get_yesno(card, 'HDF5', model%output%hdf5, err)
       end associate
    end subroutine read_output_card
 
-   ! ============================================================ reader helpers
-
-   !> A pair of parameters NAME1, NAME2 that NAME sets together (GA, RHOI).
-   !> NAME with NAME1 or NAME2 is an error. Values not given stay unchanged.
-   subroutine get_pair(card, name, v1, v2, strict, err)
-      type(card_t), intent(in) :: card     !< the *SECTION card
-      character(len=*), intent(in) :: name !< 'GA' or 'RHOI'
-      real(wp), intent(inout) :: v1        !< component 1 (unchanged if not given)
-      real(wp), intent(inout) :: v2        !< component 2 (unchanged if not given)
-      logical, intent(in) :: strict        !< require > 0 rather than >= 0
-      type(error_t), intent(inout) :: err  !< status
-      real(wp) :: both
-
-      if (has_error(err)) return
-      if (card_find_param(card, name) > 0) then
-         if (card_find_param(card, name//'1') > 0 .or. &
-             card_find_param(card, name//'2') > 0) then
-            call param_fail(card, name, 'give '//name//' or '//name//'1/'//name// &
-                            '2, not both', err)
-            return
-         end if
-         both = -1.0_wp
-         call get_bounded(card, name, both, strict, err)
-         if (has_error(err)) return
-         v1 = both
-         v2 = both
-      else
-         call get_bounded(card, name//'1', v1, strict, err)
-         call get_bounded(card, name//'2', v2, strict, err)
-      end if
-   end subroutine get_pair
-
    ! ================================================================ validation
 
-   !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE;
-   !> the lines' sections and segments (resolve_segments), then their geometry with the
-   !> total length; references resolved in card order (LINE=, NODE range, one *BOUNDARY
-   !> per node); the dynamic keywords' references (validate_dynamics); the sea, seabed
-   !> and attachments (validate_water); section defaults; lines not held at both ends
+   !> Whole-deck checks after all cards are read: at least one *SECTION and *LINE, then
+   !> the checks of the table below in its order, each on the model the ones before it
+   !> completed: the lines' sections and segments, the points and bodies the lines and
+   !> loads name, the lines' geometry with the total length, references resolved in
+   !> card order (LINE=, NODE range, one *BOUNDARY per node), the dynamic keywords'
+   !> references, the sea, seabed and attachments (and EMC's RHO INF in water), the
+   !> mooring system, waves and vessels; section defaults; lines not held at both ends
    !> start straight; every line is held somewhere when a static analysis will run.
    subroutine validate_model(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
       type(model_t), intent(inout) :: model   !< model to complete
       type(error_t), intent(inout) :: err     !< status
-      integer :: ic, il, ib, iload, iref
+      type(deck_check_t) :: checks(19)
+      integer :: k
 
       if (size(model%sections) == 0) then
          call set_error(err, stat_input, deck%main_file//':1: error: no *SECTION in deck')
@@ -608,13 +545,29 @@ contains
          call set_error(err, stat_input, deck%main_file//':1: error: no *LINE in deck')
          return
       end if
+      checks = [deck_check_t(resolve_segments), deck_check_t(resolve_point_bodies), &
+                deck_check_t(resolve_line_points), deck_check_t(check_lines), &
+                deck_check_t(check_clamped_ends), deck_check_t(resolve_node_refs), &
+                deck_check_t(resolve_load_points), deck_check_t(resolve_load_bodies), &
+                deck_check_t(check_point_ends), deck_check_t(validate_dynamics), &
+                deck_check_t(validate_water), deck_check_t(system_complete), &
+                deck_check_t(check_bodies), deck_check_t(check_body_wave_loads), &
+                deck_check_t(check_failures), deck_check_t(resolve_offset_curve), &
+                deck_check_t(check_modal), deck_check_t(validate_vessels), &
+                deck_check_t(check_lines_start)]
+      do k = 1, size(checks)
+         call checks(k)%run(deck, pend, model, err)
+         if (has_error(err)) return
+      end do
+   end subroutine validate_model
 
-      call resolve_segments(deck, pend, model, err)
-      if (has_error(err)) return
-      call resolve_point_bodies(deck, pend, model, err)
-      if (has_error(err)) return
-      call resolve_line_points(deck, pend, model, err)
-      if (has_error(err)) return
+   !> Each line's geometry with its total length, and its element.
+   subroutine check_lines(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< card of each line
+      type(model_t), intent(inout) :: model   !< model with the segments resolved
+      type(error_t), intent(inout) :: err     !< status
+      integer :: il
       do il = 1, size(model%lines)
          call check_line_geometry(deck%cards(pend%line_section(il)%card), model%lines(il), &
                                   err)
@@ -622,8 +575,17 @@ contains
          call check_line_element(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
       end do
-      call check_clamped_ends(deck, pend, model, err)
-      if (has_error(err)) return
+   end subroutine check_lines
+
+   !> The LINE= and node of each *BOUNDARY and of each *LOAD on a line, in card order:
+   !> the line exists, the node is on it, one *BOUNDARY per node; a cable line has no
+   !> rotations to hold and takes no moment.
+   subroutine resolve_node_refs(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< LINE= of each constraint and load
+      type(model_t), intent(inout) :: model   !< constraints and loads get their line
+      type(error_t), intent(inout) :: err     !< status
+      integer :: ic, ib, iload, iref
 
       ib = 0
       iload = 0
@@ -635,7 +597,9 @@ contains
                               iref, model%constraints(ib)%node, err)
             if (has_error(err)) return
             model%constraints(ib)%line = iref
-            call check_unique_boundary(deck, pend, model, ib, err)
+            call check_node_once(deck, model, model%constraints(1:ib)%line, &
+                                 model%constraints(1:ib)%node, pend%bc_line(1:ib)%card, ib, &
+                                 'BOUNDARY', err)
             if (has_error(err)) return
             if (all_cable(model, iref) .and. &
                 (model%constraints(ib)%kind == bc_hinged .or. &
@@ -659,26 +623,17 @@ contains
          end select
          if (has_error(err)) return
       end do
-      call resolve_load_points(deck, pend, model, err)
-      if (has_error(err)) return
-      call resolve_load_bodies(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_point_ends(deck, pend, model, err)
-      if (has_error(err)) return
-      call validate_dynamics(deck, pend, model, err)
-      if (has_error(err)) return
-      call validate_water(deck, pend, model, err)
-      if (has_error(err)) return
-      call validate_system(deck, pend, model, err)
-      if (has_error(err)) return
-      call dynamic_scheme_default(model)
-      call validate_waves(deck, model, err)
-      if (has_error(err)) return
-      call validate_vessels(deck, pend, model, err)
-      if (has_error(err)) return
+   end subroutine resolve_node_refs
 
+   !> The section defaults (resolve_section_defaults), then each line not held at both
+   !> ends starts straight, and is held somewhere when a static analysis will run.
+   subroutine check_lines_start(deck, pend, model, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(pending_t), intent(in) :: pend     !< card of each line
+      type(model_t), intent(inout) :: model   !< model to complete
+      type(error_t), intent(inout) :: err     !< status
+      integer :: il
       call resolve_section_defaults(model)
-
       do il = 1, size(model%lines)
          call check_straight_start(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
@@ -686,53 +641,7 @@ contains
          call check_supported(deck%cards(pend%line_section(il)%card), model, il, err)
          if (has_error(err)) return
       end do
-   end subroutine validate_model
-
-   !> The whole-deck checks of a mooring system: every group of lines held, the bodies'
-   !> volumes, drag and wave loads, the failures, the offset curve and *MODAL.
-   subroutine validate_system(deck, pend, model, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      type(pending_t), intent(in) :: pend     !< what the cards named
-      type(model_t), intent(inout) :: model   !< model (attachments, failures, the curve set)
-      type(error_t), intent(inout) :: err     !< status
-      call system_complete(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_bodies(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_body_wave_loads(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_failures(deck, pend, model, err)
-      if (has_error(err)) return
-      call resolve_offset_curve(deck, pend, model, err)
-      if (has_error(err)) return
-      call check_modal(deck, pend, model, err)
-   end subroutine validate_system
-
-   !> Refuse a second *BOUNDARY at the same node of the same line (END=A is NODE=1,
-   !> END=B is the last node).
-   subroutine check_unique_boundary(deck, pend, model, ib, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card of each constraint
-      type(model_t), intent(in) :: model     !< model with constraints 1..ib resolved
-      integer, intent(in) :: ib              !< constraint to check
-      type(error_t), intent(inout) :: err    !< status
-      integer :: jb, node, nn
-
-      associate (b => model%constraints(ib))
-         nn = node_count(model%lines(b%line))
-         node = node_number(b%node, nn)
-         do jb = 1, ib - 1
-            if (model%constraints(jb)%line /= b%line) cycle
-            if (node_number(model%constraints(jb)%node, nn) /= node) cycle
-            call card_error(deck%cards(pend%bc_line(ib)%card), 'line '// &
-                            trim(model%lines(b%line)%name)//' '//node_label(node, nn)// &
-                            ' already has a *BOUNDARY (at '// &
-                            location(deck, pend%bc_line(jb)%card)//')', err)
-            return
-         end do
-      end associate
-   end subroutine check_unique_boundary
-
+   end subroutine check_lines_start
    !> Resolve the section defaults: GA1, GA2 -> EA (penalty on shear, formulation
    !> note); RHOI1, RHOI2 -> MASS*OD**2/16 (solid circular section; 0 without OD);
    !> buoyancy diameter -> OD (0 without OD: validate_water has refused that in water);

@@ -15,13 +15,15 @@ module rodyn_deck_body
                                      card_get_real, card_get_int
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_banded, only: dense_sym_eigen
-   use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_bounded, param_fail, &
-                                 location, check_card, get_int_range
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
+                                 body_subcards, sub_drag, max_distance, &
+                                 get_bounded, param_fail, location, check_card, get_int_range, &
+                                 find_named
    implicit none
    private
    public :: read_body_card, read_body_hydrostatics_card, read_body_added_mass_card
    public :: read_offset_curve_card, resolve_offset_curve, read_modal_card, check_modal
-   public :: find_body, body_above
+   public :: find_body, body_of_card, body_card_once
    public :: resolve_point_bodies, &
              resolve_load_bodies, check_bodies
 
@@ -34,41 +36,29 @@ contains
    !> *BODY, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=]; four data lines of 3 values:
    !> the reference point R at the start (global), G and B (body axes from R), and the
    !> inertia Ixx, Iyy, Izz about G (body axes). A FREE body needs MASS > 0 and inertia.
-   subroutine read_body_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *BODY card
+   subroutine read_body_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one body appended
-      type(pending_t), intent(inout) :: pend  !< counts the bodies
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what(4) = [character(len=40) :: 'xR, yR, zR', &
          'xG, yG, zG (body axes from R)', 'xB, yB, zB (body axes from R)', 'Ixx, Iyy, Izz']
       type(body_t) :: b
       character(len=:), allocatable :: name
       real(wp) :: v(3, 4)
-      integer :: ib, k
+      integer :: k
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME'], err)
+         call get_item_name(deck, ic, model%bodies(1:pend%n_bodies)%name, &
+                            pend%body_card(1:pend%n_bodies), 'body', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do ib = 1, pend%n_bodies
-            if (model%bodies(ib)%name /= name) cycle
-            call card_error(card, "body '"//name//"' is already defined (at "// &
-                            location(deck, pend%body_card(ib))//')', err)
-            return
-         end do
          b%name = name
          b%card_at = card%file//':'//int_str(card%line)
-         if (card_find_param(card, 'TYPE') == 0) then
-            call card_error(card, 'missing parameter TYPE (FIXED or FREE)', err)
-            return
-         end if
-         call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err)
+         call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err, listed=.true.)
          call get_bounded(card, 'MASS', b%mass, .false., err)
          call get_bounded(card, 'VOLUME', b%volume, .false., err)
-         if (has_error(err)) return
          call card_check_data(card, 4, 4, err, trim(what(min(card%n_data + 1, 4))))
          if (has_error(err)) return
          do k = 1, 4
@@ -87,15 +77,11 @@ contains
          b%inertia = v(:, 4)
          if (b%kind == body_free) call check_free_body(card, b, err)
          if (has_error(err)) return
+         pend%n_bodies = pend%n_bodies + 1
+         model%bodies(pend%n_bodies) = b
+         pend%body_card(pend%n_bodies) = ic
+         pend%body_sub(:, pend%n_bodies) = 0
       end associate
-      pend%n_bodies = pend%n_bodies + 1
-      model%bodies(pend%n_bodies) = b
-      pend%body_card(pend%n_bodies) = ic
-      pend%body_hydro(pend%n_bodies) = 0
-      pend%body_damp(pend%n_bodies) = 0
-      pend%body_added(pend%n_bodies) = 0
-      pend%body_drag(pend%n_bodies) = 0
-      pend%body_wave(pend%n_bodies) = 0
    end subroutine read_body_card
 
    !> A FREE body has inertia: MASS > 0, Ixx, Iyy, Izz > 0, each at most the sum of the
@@ -128,87 +114,54 @@ contains
    !> DAMPING, BODY=name: the linear damping matrix B about R likewise, on R's velocity
    !> and the angular velocity [N s/m, N s, N m s/m, N m s/rad]. After the *BODY card;
    !> one of each per body.
-   subroutine read_body_hydrostatics_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_hydrostatics_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's matrix set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
       real(wp) :: mat(6, 6)
-      logical :: damping
-      integer :: ib, k
+      integer :: ib
 
-      associate (card => deck%cards(ic))
-         damping = card%keyword == 'BODY DAMPING'
-         call card_check_params(card, [character(len=param_len) :: 'BODY'], err)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend)
+         call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY'], name, &
+                           ib, err)
+         call body_card_once(deck, ic, pend, name, ib, err)
+         call read_matrix6(deck%cards(ic), 'C(k,1), ..., C(k,6)', mat, err)
          if (has_error(err)) return
-         call card_get_name(card, 'BODY', name, err, required=.true.)
-         if (has_error(err)) return
-         call body_above(card, name, model, pend, ib, err)
-         if (has_error(err)) return
-         k = merge(pend%body_damp(ib), pend%body_hydro(ib), damping)
-         if (k > 0) then
-            call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
-                            ' (at '//location(deck, k)//')', err)
-            return
-         end if
-         call read_matrix6(card, 'C(k,1), ..., C(k,6)', mat, err)
-         if (has_error(err)) return
-         if (damping) then
-            model%bodies(ib)%damping = mat
-            pend%body_damp(ib) = ic
-         else
-            model%bodies(ib)%hydrostatic = mat
-            pend%body_hydro(ib) = ic
-         end if
+         if (deck%cards(ic)%keyword == 'BODY DAMPING') model%bodies(ib)%damping = mat
+         if (deck%cards(ic)%keyword /= 'BODY DAMPING') model%bodies(ib)%hydrostatic = mat
       end associate
    end subroutine read_body_hydrostatics_card
 
    !> *BODY ADDED MASS, BODY=name: one data line A11, A22, A33 [kg] (translations of G),
    !> A44, A55, A66 [kg m2] (rotations about G), body axes, each >= 0. After the *BODY
    !> card; one per body.
-   subroutine read_body_added_mass_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_added_mass_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's added mass or drag set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
-      character(len=:), allocatable :: name, what, first
+      character(len=:), allocatable :: name, what
       real(wp) :: a(6)
       integer :: ib, form
       logical :: drag
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          drag = card%keyword == 'BODY DRAG'
          what = merge('CdA1, CdA2, CdA3, Cr1, Cr2, Cr3', 'A11, A22, A33, A44, A55, A66   ', &
                       drag)
          what = trim(what)
-         call card_check_params(card, [character(len=param_len) :: 'BODY', &
-                                merge('BODY', 'FORM', drag)], err)
-         if (has_error(err)) return
-         call card_get_name(card, 'BODY', name, err, required=.true.)
-         if (has_error(err)) return
-         call body_above(card, name, model, pend, ib, err)
-         if (has_error(err)) return
+         call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY', &
+                           merge('BODY', 'FORM', drag)], name, ib, err)
          form = 1
          if (.not. drag) call card_get_choice(card, 'FORM', [character(len=8) :: &
                                               'DIAGONAL', 'MATRIX'], form, err)
+         call body_card_once(deck, ic, pend, name, ib, err)
          if (has_error(err)) return
-         if (drag .and. pend%body_drag(ib) > 0) first = location(deck, pend%body_drag(ib))
-         if (.not. drag .and. pend%body_added(ib) > 0) &
-            first = location(deck, pend%body_added(ib))
-         if (allocated(first)) then
-            call card_error(card, "body '"//name//"' already has its *"//card%keyword// &
-                            ' (at '//first//')', err)
-            return
-         end if
          if (form == 2) then
             call read_added_matrix(card, model%bodies(ib)%added_matrix, err)
-            if (.not. has_error(err)) pend%body_added(ib) = ic
             return
          end if
          call card_check_data(card, 1, 1, err, what)
-         if (has_error(err)) return
          call card_data_reals(card, 1, 6, a, err, what)
          if (has_error(err)) return
          if (.not. all(a >= 0.0_wp)) then
@@ -218,13 +171,8 @@ contains
             err%message = trim(err%message)
             return
          end if
-         if (drag) then
-            model%bodies(ib)%drag = a
-            pend%body_drag(ib) = ic
-         else
-            model%bodies(ib)%added_mass = a
-            pend%body_added(ib) = ic
-         end if
+         if (drag) model%bodies(ib)%drag = a
+         if (.not. drag) model%bodies(ib)%added_mass = a
       end associate
    end subroutine read_body_added_mass_card
 
@@ -284,20 +232,17 @@ contains
    !> *OFFSET CURVE, BODY=name, FORCE=F [, HEADING=deg] [, STEPS=n]: after the statics, a
    !> horizontal force at the body's R towards HEADING raised to F in n steps (1 to 1000,
    !> default 10). At most one; the body is resolved with the whole deck.
-   subroutine read_offset_curve_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_offset_curve_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the curve's parameters set
-      type(pending_t), intent(inout) :: pend  !< remembers the card and BODY=
       type(error_t), intent(inout) :: err     !< status
       character(len=:), allocatable :: name
       real(wp) :: deg
-      associate (card => deck%cards(ic), oc => model%offset_curve)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), oc => model%offset_curve)
          call check_card(deck, ic, [character(len=param_len) :: 'BODY', 'FORCE', 'HEADING', &
                          'STEPS'], 0, 0, err, first=pend%offset_card)
-         if (has_error(err)) return
          call card_get_name(card, 'BODY', name, err, required=.true.)
-         if (has_error(err)) return
          call get_bounded(card, 'FORCE', oc%force, .true., err, required=.true.)
          if (has_error(err)) return
          deg = 0.0_wp
@@ -305,8 +250,8 @@ contains
          oc%heading = deg*acos(-1.0_wp)/180.0_wp
          call get_int_range(card, 'STEPS', 1, 1000, oc%steps, err)
          if (has_error(err)) return
+         pend%offset_body = ref_t(name, ic)
       end associate
-      pend%offset_body = ref_t(name, ic)
    end subroutine read_offset_curve_card
 
    !> The body of *OFFSET CURVE: it exists and is FREE.
@@ -326,22 +271,48 @@ contains
       end associate
    end subroutine resolve_offset_curve
 
-   !> Body ib named `name` among those read so far (a card that refers to the body above
-   !> it: *BODY HYDROSTATICS, *BODY DAMPING, *BODY ADDED MASS, *BODY WAVE LOAD).
-   subroutine body_above(card, name, model, pend, ib, err)
-      type(card_t), intent(in) :: card      !< the referring card
-      character(len=*), intent(in) :: name  !< body name
-      type(model_t), intent(in) :: model    !< model with the bodies read so far
-      type(pending_t), intent(in) :: pend   !< how many
-      integer, intent(out) :: ib            !< the body's index
-      type(error_t), intent(inout) :: err   !< status
+   !> The body of a card that belongs to one (BODY=name, keyword in body_subcards): only
+   !> the parameters `allowed`, and a body defined above the card.
+   subroutine body_of_card(deck, ic, model, pend, allowed, name, ib, err)
+      type(deck_t), intent(in) :: deck           !< all cards
+      integer, intent(in) :: ic                  !< index of the card
+      type(model_t), intent(in) :: model         !< model with the bodies read so far
+      type(pending_t), intent(in) :: pend        !< how many
+      character(len=*), intent(in) :: allowed(:) !< allowed parameters, upper case
+      character(len=:), allocatable, intent(out) :: name !< the body's name
+      integer, intent(out) :: ib                 !< the body's index
+      type(error_t), intent(inout) :: err        !< status
+      ib = 0
+      call card_check_params(deck%cards(ic), allowed, err)
+      call card_get_name(deck%cards(ic), 'BODY', name, err, required=.true.)
+      if (has_error(err)) return
       do ib = 1, pend%n_bodies
          if (model%bodies(ib)%name == name) return
       end do
-      call param_fail(card, 'BODY', "BODY '"//name//"' is not defined above (a *BODY"// &
-                      ' card with NAME='//name//' comes first)', err)
-   end subroutine body_above
+      call param_fail(deck%cards(ic), 'BODY', "BODY '"//name//"' is not defined above (a"// &
+                      ' *BODY card with NAME='//name//' comes first)', err)
+   end subroutine body_of_card
 
+   !> Refuse a second card of the same keyword (in body_subcards) for body ib; remember
+   !> card ic as the body's.
+   subroutine body_card_once(deck, ic, pend, name, ib, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      integer, intent(in) :: ic               !< index of the card
+      type(pending_t), intent(inout) :: pend  !< the card of each body's keyword
+      character(len=*), intent(in) :: name    !< the body's name
+      integer, intent(in) :: ib               !< the body's index
+      type(error_t), intent(inout) :: err     !< status
+      integer :: k
+      if (has_error(err)) return
+      k = findloc(body_subcards == deck%cards(ic)%keyword, .true., dim=1)
+      if (pend%body_sub(k, ib) > 0) then
+         call card_error(deck%cards(ic), "body '"//name//"' already has its *"// &
+                         deck%cards(ic)%keyword//' (at '//location(deck, pend%body_sub(k, ib))// &
+                         ')', err)
+         return
+      end if
+      pend%body_sub(k, ib) = ic
+   end subroutine body_card_once
    !> The body of each BODY point: it exists; the point lies within reach of it
    !> (reach_radii radii of gyration); its global position at the start is R + offset.
    subroutine resolve_point_bodies(deck, pend, model, err)
@@ -403,26 +374,21 @@ contains
       type(model_t), intent(in) :: model    !< model with its bodies
       integer, intent(out) :: ib            !< the body's index
       type(error_t), intent(inout) :: err   !< status
-      do ib = 1, size(model%bodies)
-         if (model%bodies(ib)%name == name) return
-      end do
-      ib = 0
-      call param_fail(card, param, param//" '"//name//"' is not defined (no *BODY with"// &
-                      ' NAME='//name//' in the deck)', err)
+      call find_named(card, param, name, model%bodies%name, 'BODY', ib, err)
    end subroutine find_body
 
    !> A body's VOLUME and its *BODY DRAG need *WATER.
    subroutine check_bodies(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< card of each body
-      type(model_t), intent(in) :: model      !< model
+      type(model_t), intent(inout) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       integer :: ib
       if (model%water%present) return
       do ib = 1, size(model%bodies)
-         if (pend%body_drag(ib) > 0) then
-            call card_error(deck%cards(pend%body_drag(ib)), 'a body''s drag needs *WATER '// &
-                            '(no *WATER in the deck)', err)
+         if (pend%body_sub(sub_drag, ib) > 0) then
+            call card_error(deck%cards(pend%body_sub(sub_drag, ib)), 'a body''s drag needs'// &
+                            ' *WATER (no *WATER in the deck)', err)
             return
          end if
          if (.not. model%bodies(ib)%volume > 0.0_wp) cycle
@@ -435,17 +401,15 @@ contains
    !> *MODAL [, MODES=n] [, SOLVER=AUTO|DENSE|LANCZOS]: after the statics, the n (1 to
    !> 1000, default 10) longest natural periods of the whole system about its equilibrium
    !> and their shapes. At most one.
-   subroutine read_modal_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_modal_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model%modal set
-      type(pending_t), intent(inout) :: pend  !< remembers the card
       type(error_t), intent(inout) :: err     !< status
       integer :: k
-      associate (card => deck%cards(ic), mo => model%modal)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), mo => model%modal)
          call check_card(deck, ic, [character(len=param_len) :: 'MODES', 'SOLVER'], 0, 0, err, &
                          first=pend%modal_card)
-         if (has_error(err)) return
          call get_int_range(card, 'MODES', 1, 1000, mo%modes, err)
          if (has_error(err)) return
          k = mo%solver + 1              ! (choices from 1; the names from 0)
@@ -461,7 +425,7 @@ contains
    subroutine check_modal(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< the card of *MODAL
-      type(model_t), intent(in) :: model      !< model
+      type(model_t), intent(inout) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       if (pend%modal_card == 0) return
       if (model%dynamic%requested .and. .not. model%dynamic%start_static .and. &

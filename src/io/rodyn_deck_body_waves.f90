@@ -14,8 +14,8 @@ module rodyn_deck_body_waves
    use rodyn_deck_card_values, only: card_get_name
    use rodyn_deck_table, only: table_t, card_get_table, card_data_table
    use rodyn_deck_numbers, only: real_str
-   use rodyn_deck_support, only: pending_t, param_fail, location
-   use rodyn_deck_body, only: body_above
+   use rodyn_deck_support, only: pending_t, reading_t, param_fail, location, sub_wave
+   use rodyn_deck_body, only: body_of_card, body_card_once
    use rodyn_deck_vessel, only: rao_grid, rao_options
    use rodyn_deck_dynamic, only: record_table
    implicit none
@@ -33,29 +33,19 @@ contains
    !> per metre of wave amplitude, and their 6 phases [deg] (lags behind the crest at R
    !> by default), on a full grid of periods and headings: from INPUT=file or from the
    !> card's data lines. One per body, after its *BODY card.
-   subroutine read_body_wave_load_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_body_wave_load_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< the body's wave load set
-      type(pending_t), intent(inout) :: pend  !< remembers the card of each body's
       type(error_t), intent(inout) :: err     !< status
       type(table_t) :: table
       character(len=:), allocatable :: name
       integer :: ib, iphase, interp
       logical :: found
-      associate (card => deck%cards(ic))
-         call card_check_params(card, [character(len=param_len) :: 'BODY', 'INPUT', &
-                                'PHASE', 'INTERPOLATION'], err)
-         if (has_error(err)) return
-         call card_get_name(card, 'BODY', name, err, required=.true.)
-         if (has_error(err)) return
-         call body_above(card, name, model, pend, ib, err)
-         if (has_error(err)) return
-         if (pend%body_wave(ib) > 0) then
-            call card_error(card, "body '"//name//"' already has its *BODY WAVE LOAD (at "// &
-                            location(deck, pend%body_wave(ib))//')', err)
-            return
-         end if
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
+         call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY', &
+                           'INPUT', 'PHASE', 'INTERPOLATION'], name, ib, err)
+         call body_card_once(deck, ic, pend, name, ib, err)
          call rao_options(card, iphase, interp, err)
          if (has_error(err)) return
          call card_get_table(card, 'INPUT', 14, what_load, table, err, found)
@@ -74,7 +64,6 @@ contains
          if (has_error(err)) return
          if (found) call record_table(table, model)
          model%bodies(ib)%wave_load_at = location(deck, ic)
-         pend%body_wave(ib) = ic
       end associate
    end subroutine read_body_wave_load_card
 
@@ -82,12 +71,12 @@ contains
    subroutine check_body_wave_loads(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< card of each body's wave load
-      type(model_t), intent(in) :: model      !< model
+      type(model_t), intent(inout) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       integer :: ib
       do ib = 1, size(model%bodies)
-         if (pend%body_wave(ib) == 0) cycle
-         associate (card => deck%cards(pend%body_wave(ib)))
+         if (pend%body_sub(sub_wave, ib) == 0) cycle
+         associate (card => deck%cards(pend%body_sub(sub_wave, ib)))
             if (model%bodies(ib)%kind /= body_free) then
                call param_fail(card, 'BODY', "body '"//trim(model%bodies(ib)%name)// &
                                "' is FIXED: a wave load moves a FREE body only", err)

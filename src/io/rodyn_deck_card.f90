@@ -4,7 +4,7 @@
 !> *KEYWORD: message' (card_error, card_param_error, card_data_error, card_file_error);
 !> the checks of a card's parameter names and number of data lines.
 module rodyn_deck_card
-   use rodyn_error, only: error_t, set_error, stat_input
+   use rodyn_error, only: error_t, set_error, stat_input, has_error
    use rodyn_deck_text, only: field_t
    use rodyn_deck_numbers, only: int_str
    implicit none
@@ -96,6 +96,7 @@ contains
       character(len=:), allocatable :: list
       integer :: ip, jp, k
 
+      if (has_error(err)) return
       do ip = 1, size(card%params)
          if (.not. any(allowed == card%params(ip)%name)) then
             if (size(allowed) == 0) then
@@ -137,6 +138,7 @@ contains
       integer, intent(in) :: nmax             !< most data lines allowed, < 0: any
       type(error_t), intent(inout) :: err     !< status
       character(len=*), intent(in), optional :: what !< what the missing line holds
+      if (has_error(err)) return
       if (card%n_data < nmin) then
          if (present(what)) then
             call card_error(card, 'missing data line ('//what//')', err)

@@ -1,10 +1,12 @@
 !> Deck lexer, the values of a card, the readers' toolkit: a parameter as a real, an
 !> integer, a name, a text, a file path, a choice from a list or YES/NO; the reals of a
 !> data line. Each helper reports its own errors, located at the parameter or data line
-!> (rodyn_deck_card), and leaves the value unchanged when the parameter is absent.
+!> (rodyn_deck_card), and leaves the value unchanged when the parameter is absent. A
+!> helper called with an error already in err does nothing: a reader's calls chain, and
+!> the first error stands.
 module rodyn_deck_card_values
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t
+   use rodyn_error, only: error_t, has_error
    use rodyn_model, only: name_len
    use rodyn_deck_params, only: upper_case
    use rodyn_deck_numbers, only: parse_real, parse_int, int_str, fields_reals, field_real
@@ -19,13 +21,17 @@ module rodyn_deck_card_values
 contains
 
    !> Find parameter `name` and check it has a value. ip = 0 when absent (an error if
-   !> required) or when it has no value (always an error).
-   subroutine find_valued(card, name, ip, err, required)
+   !> required), when it has no value (always an error) or when err holds an error.
+   subroutine find_valued(card, name, ip, err, required, found)
       type(card_t), intent(in) :: card        !< the card
       character(len=*), intent(in) :: name    !< parameter name, upper case
       integer, intent(out) :: ip              !< index of the parameter, 0 if unusable
       type(error_t), intent(inout) :: err     !< status
       logical, intent(in), optional :: required !< absence is an error
+      logical, intent(out), optional :: found !< set .false. (the getter sets it .true.)
+      ip = 0
+      if (present(found)) found = .false.
+      if (has_error(err)) return
       ip = card_find_param(card, name)
       if (ip == 0) then
          if (present(required)) then
@@ -46,20 +52,7 @@ contains
       type(error_t), intent(inout) :: err     !< status
       logical, intent(out), optional :: found !< the parameter was given
       logical, intent(in), optional :: required !< absence is an error
-      character(len=:), allocatable :: msg
-      real(wp) :: x
-      integer :: ip
-
-      if (present(found)) found = .false.
-      call find_valued(card, name, ip, err, required)
-      if (ip == 0) return
-      call parse_real(card%params(ip)%value, x, msg)
-      if (len(msg) > 0) then
-         call card_param_error(card, ip, name//': '//msg, err)
-         return
-      end if
-      value = x
-      if (present(found)) found = .true.
+      call get_number(card, name, err, found, required, r=value)
    end subroutine card_get_real
 
    !> Get an integer parameter ('10.5' and '1e3' are refused). Unchanged when absent.
@@ -70,20 +63,34 @@ contains
       type(error_t), intent(inout) :: err     !< status
       logical, intent(out), optional :: found !< the parameter was given
       logical, intent(in), optional :: required !< absence is an error
-      character(len=:), allocatable :: msg
-      integer :: ip, i
+      call get_number(card, name, err, found, required, i=value)
+   end subroutine card_get_int
 
-      if (present(found)) found = .false.
-      call find_valued(card, name, ip, err, required)
+   !> Get a number parameter: a real into r, or an integer into i. Unchanged when absent.
+   subroutine get_number(card, name, err, found, required, r, i)
+      type(card_t), intent(in) :: card        !< the card
+      character(len=*), intent(in) :: name    !< parameter name, upper case
+      type(error_t), intent(inout) :: err     !< status
+      logical, intent(out), optional :: found !< the parameter was given
+      logical, intent(in), optional :: required !< absence is an error
+      real(wp), intent(inout), optional :: r  !< the real (unchanged if absent)
+      integer, intent(inout), optional :: i   !< the integer (unchanged if absent)
+      character(len=:), allocatable :: msg
+      real(wp) :: x
+      integer :: ip, k
+
+      call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
-      call parse_int(card%params(ip)%value, i, msg)
+      if (present(r)) call parse_real(card%params(ip)%value, x, msg)
+      if (present(i)) call parse_int(card%params(ip)%value, k, msg)
       if (len(msg) > 0) then
          call card_param_error(card, ip, name//': '//msg, err)
          return
       end if
-      value = i
+      if (present(r)) r = x
+      if (present(i)) i = k
       if (present(found)) found = .true.
-   end subroutine card_get_int
+   end subroutine get_number
 
    !> Get the raw text of a parameter (case kept), e.g. a file path. Unchanged if absent.
    subroutine card_get_text(card, name, value, err, found, required)
@@ -95,8 +102,7 @@ contains
       logical, intent(in), optional :: required !< absence is an error
       integer :: ip
 
-      if (present(found)) found = .false.
-      call find_valued(card, name, ip, err, required)
+      call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
       value = card%params(ip)%value
       if (present(found)) found = .true.
@@ -145,8 +151,7 @@ contains
       character(len=:), allocatable :: v
       integer :: ip
 
-      if (present(found)) found = .false.
-      call find_valued(card, name, ip, err, required)
+      call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
       v = upper_case(card%params(ip)%value)
       if (len(v) > name_len) then
@@ -164,8 +169,9 @@ contains
    end subroutine card_get_name
 
    !> Get a parameter whose value is one of `choices` (case-insensitive).
-   !> index = position in choices; unchanged when absent.
-   subroutine card_get_choice(card, name, choices, index, err, found, required)
+   !> index = position in choices; unchanged when absent. With `listed`, a missing
+   !> parameter is an error naming the choices.
+   subroutine card_get_choice(card, name, choices, index, err, found, required, listed)
       type(card_t), intent(in) :: card          !< the card
       character(len=*), intent(in) :: name      !< parameter name, upper case
       character(len=*), intent(in) :: choices(:) !< allowed values, upper case
@@ -173,11 +179,13 @@ contains
       type(error_t), intent(inout) :: err       !< status
       logical, intent(out), optional :: found   !< the parameter was given
       logical, intent(in), optional :: required !< absence is an error
-      character(len=:), allocatable :: v, list
+      logical, intent(in), optional :: listed   !< absence is an error naming the choices
+      character(len=:), allocatable :: v
       integer :: ip, k
 
-      if (present(found)) found = .false.
-      call find_valued(card, name, ip, err, required)
+      if (present(listed) .and. card_find_param(card, name) == 0 .and. .not. has_error(err)) &
+         call card_error(card, 'missing parameter '//name//' ('//list()//')', err)
+      call find_valued(card, name, ip, err, required, found)
       if (ip == 0) return
       v = upper_case(card%params(ip)%value)
       do k = 1, size(choices)
@@ -187,13 +195,19 @@ contains
             return
          end if
       end do
-      list = trim(choices(1))
-      do k = 2, size(choices) - 1
-         list = list//', '//trim(choices(k))
-      end do
-      if (size(choices) > 1) list = list//' or '//trim(choices(size(choices)))
-      call card_param_error(card, ip, name//' must be '//list//", got '"// &
+      call card_param_error(card, ip, name//' must be '//list()//", got '"// &
                             card%params(ip)%value//"'", err)
+   contains
+      !> The choices as 'A, B or C' (formed only for a message).
+      function list() result(s)
+         character(len=:), allocatable :: s  !< the list
+         integer :: j
+         s = trim(choices(1))
+         do j = 2, size(choices) - 1
+            s = s//', '//trim(choices(j))
+         end do
+         if (size(choices) > 1) s = s//' or '//trim(choices(size(choices)))
+      end function list
    end subroutine card_get_choice
 
    !> Get a YES/NO parameter. Unchanged when absent.
@@ -223,6 +237,7 @@ contains
       character(len=*), intent(in), optional :: what !< names of the values
       character(len=:), allocatable :: msg, names
 
+      if (has_error(err)) return
       names = ''
       if (present(what)) names = what
       call fields_reals(card%data(id)%fields, values, names, msg)
@@ -240,6 +255,7 @@ contains
       character(len=*), intent(in), optional :: what !< names of the values of the line
       character(len=:), allocatable :: msg, names
 
+      if (has_error(err)) return
       names = ''
       if (present(what)) names = what
       call field_real(card%data(id)%fields(k)%s, k, card_data_count(card, id), names, &

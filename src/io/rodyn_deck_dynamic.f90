@@ -12,7 +12,8 @@ module rodyn_deck_dynamic
    use rodyn_model, only: model_t, dynamic_options_t, amplitude_t, motion_t, &
                           initial_velocity_t, scheme_alpha, scheme_emc, edmc_rho_min, &
                           scheme_names, &
-                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a
+                          motion_harmonic, motion_table, motion_vessel, bc_free, end_a, &
+                          body_fixed, body_free
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_data_error, card_file_error, card_check_data, card_data_count, &
@@ -22,13 +23,14 @@ module rodyn_deck_dynamic
    use rodyn_deck_table, only: table_t, card_data_table, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_params, only: upper_case
-   use rodyn_deck_targets, only: resolve_motion_body, resolve_motion_point, &
-                                 resolve_velocity_body
-   use rodyn_deck_support, only: ref_t, pending_t, max_cutbacks, check_card, get_node, &
+   use rodyn_deck_targets, only: resolve_item_body, resolve_motion_point
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
+                                 max_cutbacks, check_card, get_node, &
                                  max_iterations, max_frequency, &
                                  get_bounded, get_tolerance, data_check, param_fail, &
                                  get_int_range, &
                                  location, resolve_line, node_count, node_number, node_label, &
+                                 check_node_once, refuse, &
                                  check_at_most
    implicit none
    private
@@ -57,17 +59,16 @@ contains
    !> No data lines; at most one. RHO INF only with SCHEME=ALPHA, where it defaults to 0.8,
    !> and EMC, where it defaults to 1 (no numerical dissipation) and may be as low as
    !> edmc_rho_min (rodyn_numerical_dissipation).
-   subroutine read_dynamic_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *DYNAMIC card
+   subroutine read_dynamic_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: dynamic options set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *DYNAMIC
       type(error_t), intent(inout) :: err     !< status
       character(len=8), parameter :: starts(2) = [character(len=8) :: 'STATIC', 'DEFINED']
       character(len=8), parameter :: tangents(2) = [character(len=8) :: 'NEW', 'REUSE']
       integer :: k
 
-      associate (card => deck%cards(ic), dy => model%dynamic)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), dy => model%dynamic)
          call check_card(deck, ic, [character(len=param_len) :: 'DT', 'TIME', 'SCHEME', &
                          'RHO INF', 'OUTPUT INTERVAL', 'START', 'MAX ITERATIONS', &
                          'CUTBACKS', 'FORCE TOL', 'DISP TOL', 'TANGENT', 'CHECKPOINT'], 0, 0, err, &
@@ -104,7 +105,6 @@ contains
       type(dynamic_options_t), intent(inout) :: dy    !< options: times set
       type(error_t), intent(inout) :: err             !< status
       call get_bounded(card, 'DT', dy%dt, .true., err, required=.true.)
-      if (has_error(err)) return
       call get_bounded(card, 'TIME', dy%duration, .true., err, required=.true.)
       if (has_error(err)) return
       if (dy%duration < dy%dt) then
@@ -118,13 +118,8 @@ contains
                          ' allowed', err)
          return
       end if
-      call card_get_real(card, 'OUTPUT INTERVAL', dy%output_interval, err)
+      call get_bounded(card, 'OUTPUT INTERVAL', dy%output_interval, .false., err)
       if (has_error(err)) return
-      if (.not. dy%output_interval >= 0.0_wp) then
-         call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be >= 0, got '// &
-                         real_str(dy%output_interval), err)
-         return
-      end if
       if (dy%output_interval > 0.0_wp .and. dy%output_interval < dy%dt) then
          call param_fail(card, 'OUTPUT INTERVAL', 'OUTPUT INTERVAL must be 0 (every'// &
                          ' step) or >= DT ('//real_str(dy%dt)//'), got '// &
@@ -179,13 +174,12 @@ contains
 
    !> *DAMPING, ALPHA=a, BETA=b: Rayleigh damping C = a M + b K, a [1/s], b [s], both
    !> >= 0, at least one given (the other stays 0). No data lines; at most one.
-   subroutine read_damping_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *DAMPING card
+   subroutine read_damping_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: Rayleigh coefficients set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *DAMPING
       type(error_t), intent(inout) :: err     !< status
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'ALPHA', 'BETA'], 0, 0, err, &
                          first=pend%damping)
          if (has_error(err)) return
@@ -213,30 +207,22 @@ contains
 
    !> *AMPLITUDE, NAME= [, INPUT=file]: pairs t, value, one per data line or one per
    !> row of the file; at least 2, times increasing strictly. Names are unique.
-   subroutine read_amplitude_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *AMPLITUDE card
+   subroutine read_amplitude_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one amplitude appended
-      type(pending_t), intent(inout) :: pend  !< remembers the amplitude's card
       type(error_t), intent(inout) :: err     !< status
       type(amplitude_t) :: amp
       type(table_t) :: table
       character(len=:), allocatable :: name
       logical :: from_file
-      integer :: ia, n
+      integer :: n
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'INPUT'], err)
+         call get_item_name(deck, ic, model%amplitudes(1:pend%n_amplitudes)%name, &
+                            pend%amplitude_card(1:pend%n_amplitudes), 'amplitude', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do ia = 1, pend%n_amplitudes
-            if (model%amplitudes(ia)%name == name) then
-               call card_error(card, "amplitude '"//name//"' is already defined (at "// &
-                               location(deck, pend%amplitude_card(ia))//')', err)
-               return
-            end if
-         end do
          amp%name = name
 
          from_file = card_find_param(card, 'INPUT') > 0
@@ -248,9 +234,7 @@ contains
             end if
             call card_get_table(card, 'INPUT', 2, what_amp, table, err)
          else
-            call card_check_data(card, 1, -1, err, what_amp)
-            if (has_error(err)) return
-            call card_data_table(card, 2, what_amp, table, err)
+            call card_data_table(card, 2, what_amp, table, err, nmin=1)
          end if
          if (has_error(err)) return
          call check_time_table(card, table, from_file, what_amp, err)
@@ -259,20 +243,18 @@ contains
          n = table%n_rows
          amp%time = table%values(1, 1:n)
          amp%value = table%values(2, 1:n)
+         pend%n_amplitudes = pend%n_amplitudes + 1
+         model%amplitudes(pend%n_amplitudes) = amp
+         pend%amplitude_card(pend%n_amplitudes) = ic
       end associate
-      pend%n_amplitudes = pend%n_amplitudes + 1
-      model%amplitudes(pend%n_amplitudes) = amp
-      pend%amplitude_card(pend%n_amplitudes) = ic
    end subroutine read_amplitude_card
 
    !> *MOTION, LINE=, END=|NODE=, TYPE=HARMONIC|TABLE [, RAMP=] [, INPUT=]: displacement
    !> of a held node in time. HARMONIC: 1 to 3 data lines direction, amplitude [m],
    !> frequency [Hz], phase [deg] (stored in rad). TABLE: rows t, ux, uy, uz from INPUT.
-   subroutine read_motion_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *MOTION card
+   subroutine read_motion_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one motion appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       character(len=8), parameter :: types(3) = [character(len=8) :: 'HARMONIC', 'TABLE', &
                                                  'VESSEL']
@@ -284,12 +266,12 @@ contains
       logical :: on_body, on_point
 
       vessel = ''
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY', 'POINT', &
                                 'END', 'NODE', 'TYPE', 'RAMP', 'INPUT', 'VESSEL'], err)
          if (has_error(err)) return
          call motion_target(card, mo, line, on_body, on_point, err)
-         if (has_error(err)) return
          it = 0
          call card_get_choice(card, 'TYPE', types, it, err, required=.true.)
          if (has_error(err)) return
@@ -297,16 +279,13 @@ contains
          call get_bounded(card, 'RAMP', mo%ramp, .false., err)
          if (has_error(err)) return
 
-         if (mo%kind /= motion_vessel .and. card_find_param(card, 'VESSEL') > 0) then
-            call param_fail(card, 'VESSEL', 'VESSEL is only allowed with TYPE=VESSEL', err)
-            return
-         end if
+         if (mo%kind /= motion_vessel) call refuse(card, [character(len=6) :: 'VESSEL'], &
+                                                   ' is only allowed with TYPE=VESSEL', err)
+         if (mo%kind /= motion_table) call refuse(card, [character(len=5) :: 'INPUT'], &
+                                                  ' is only allowed with TYPE=TABLE', err)
+         if (has_error(err)) return
          select case (mo%kind)
          case (motion_vessel)
-            if (card_find_param(card, 'INPUT') > 0) then
-               call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
-               return
-            end if
             if (card%n_data > 0) then
                call card_data_error(card, 1, 'data lines are not allowed with TYPE=VESSEL'// &
                                     ' (the motion is the vessel''s, *VESSEL)', err)
@@ -314,10 +293,6 @@ contains
             end if
             call card_get_name(card, 'VESSEL', vessel, err, required=.true.)
          case (motion_harmonic)
-            if (card_find_param(card, 'INPUT') > 0) then
-               call param_fail(card, 'INPUT', 'INPUT is only allowed with TYPE=TABLE', err)
-               return
-            end if
             call read_harmonic_lines(card, mo, err)
          case (motion_table)
             if (card%n_data > 0) then
@@ -342,28 +317,27 @@ contains
             mo%disp = table%values(2:4, 1:n)
          end select
          if (has_error(err)) return
+         pend%n_motions = pend%n_motions + 1
+         model%motions(pend%n_motions) = mo
+         pend%motion_line(pend%n_motions) = ref_t(line, ic)
+         pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
+         pend%motion_body(pend%n_motions) = on_body
+         pend%motion_point(pend%n_motions) = on_point
       end associate
-      pend%n_motions = pend%n_motions + 1
-      model%motions(pend%n_motions) = mo
-      pend%motion_line(pend%n_motions) = ref_t(line, ic)
-      pend%motion_vessel(pend%n_motions) = ref_t(vessel, ic)
-      pend%motion_body(pend%n_motions) = on_body
-      pend%motion_point(pend%n_motions) = on_point
    end subroutine read_motion_card
 
    !> *INITIAL VELOCITY, LINE=: data lines vx, vy, vz [m/s]; wx, wy, wz [rad/s];
    !> optionally the centre cx, cy, cz [m] of the rotation.
-   subroutine read_initial_velocity_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *INITIAL VELOCITY card
+   subroutine read_initial_velocity_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one initial velocity appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(initial_velocity_t) :: iv
       character(len=:), allocatable :: line
       logical :: on_body
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'BODY'], err)
          if (has_error(err)) return
          on_body = card_find_param(card, 'BODY') > 0
@@ -372,7 +346,6 @@ contains
             return
          end if
          call card_get_name(card, merge('BODY', 'LINE', on_body), line, err, required=.true.)
-         if (has_error(err)) return
          call card_check_data(card, 1, 3, err, 'vx, vy, vz')
          if (has_error(err)) return
          if (card%n_data < 2) then
@@ -380,7 +353,6 @@ contains
             return
          end if
          call card_data_reals(card, 1, 3, iv%velocity, err, 'vx, vy, vz')
-         if (has_error(err)) return
          call card_data_reals(card, 2, 3, iv%omega, err, 'wx, wy, wz')
          if (has_error(err)) return
          if (card%n_data == 3) then
@@ -388,11 +360,11 @@ contains
             if (has_error(err)) return
             iv%has_centre = .true.
          end if
+         pend%n_ivs = pend%n_ivs + 1
+         model%initial_velocities(pend%n_ivs) = iv
+         pend%iv_line(pend%n_ivs) = ref_t(line, ic)
+         pend%iv_body(pend%n_ivs) = on_body
       end associate
-      pend%n_ivs = pend%n_ivs + 1
-      model%initial_velocities(pend%n_ivs) = iv
-      pend%iv_line(pend%n_ivs) = ref_t(line, ic)
-      pend%iv_body(pend%n_ivs) = on_body
    end subroutine read_initial_velocity_card
 
    ! ============================================================ reader helpers
@@ -541,7 +513,7 @@ contains
       type(pending_t), intent(in) :: pend     !< references to resolve
       type(model_t), intent(inout) :: model   !< model with lines and boundaries resolved
       type(error_t), intent(inout) :: err     !< status
-      integer :: k, ia, iref
+      integer :: k, ia, iref, ib
 
       ! AMPLITUDE= of *LOAD
       do k = 1, size(model%loads)
@@ -564,8 +536,11 @@ contains
       do k = 1, size(model%motions)
          associate (card => deck%cards(pend%motion_line(k)%card))
             if (pend%motion_body(k)) then
-               call resolve_motion_body(deck, pend, model, k, err)
+               call resolve_item_body(deck, model, pend%motion_line(1:k), &
+                                      model%motions(1:k - 1)%body, body_fixed, ib, err)
                if (has_error(err)) return
+               model%motions(k)%body = ib
+               model%motions(k)%line = 0
                cycle
             end if
             if (pend%motion_point(k)) then
@@ -579,7 +554,9 @@ contains
             model%motions(k)%line = iref
             call check_motion_held(card, model, k, err)
             if (has_error(err)) return
-            call check_unique_motion(deck, pend, model, k, err)
+            call check_node_once(deck, model, model%motions(1:k)%line, &
+                                 model%motions(1:k)%node, pend%motion_line(1:k)%card, k, &
+                                 'MOTION', err)
             if (has_error(err)) return
          end associate
       end do
@@ -588,7 +565,10 @@ contains
       do k = 1, size(model%initial_velocities)
          associate (card => deck%cards(pend%iv_line(k)%card))
             if (pend%iv_body(k)) then
-               call resolve_velocity_body(deck, pend, model, k, err)
+               call resolve_item_body(deck, model, pend%iv_line(1:k), &
+                                      model%initial_velocities(1:k - 1)%body, body_free, ib, &
+                                      err)
+               if (.not. has_error(err)) model%initial_velocities(k)%body = ib
             else
                call resolve_line(card, pend%iv_line(k)%name, model, iref, end_a, err)
                if (has_error(err)) return
@@ -633,30 +613,6 @@ contains
                          ' node', err)
       end associate
    end subroutine check_motion_held
-
-   !> Refuse a second *MOTION at the same node of the same line.
-   subroutine check_unique_motion(deck, pend, model, im, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card of each motion
-      type(model_t), intent(in) :: model     !< model with motions 1..im resolved
-      integer, intent(in) :: im              !< motion to check
-      type(error_t), intent(inout) :: err    !< status
-      integer :: jm, node, nn
-
-      associate (mo => model%motions(im))
-         nn = node_count(model%lines(mo%line))
-         node = node_number(mo%node, nn)
-         do jm = 1, im - 1
-            if (model%motions(jm)%line /= mo%line .or. mo%line == 0) cycle
-            if (node_number(model%motions(jm)%node, nn) /= node) cycle
-            call card_error(deck%cards(pend%motion_line(im)%card), 'line '// &
-                            trim(model%lines(mo%line)%name)//' '//node_label(node, nn)// &
-                            ' already has a *MOTION (at '// &
-                            location(deck, pend%motion_line(jm)%card)//')', err)
-            return
-         end do
-      end associate
-   end subroutine check_unique_motion
 
    !> Refuse a second *INITIAL VELOCITY for the same line.
    subroutine check_unique_velocity(deck, pend, model, iv, err)

@@ -6,7 +6,7 @@
 module rodyn_deck_dynamic_warnings
    use rodyn_kinds, only: wp
    use rodyn_model, only: model_t, motion_harmonic, motion_vessel
-   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_lexer, only: deck_t, last_card
    use rodyn_deck_card, only: card_t, card_find_param
    use rodyn_deck_numbers, only: real_str, int_str
    implicit none
@@ -37,10 +37,7 @@ contains
       character(len=:), allocatable :: dt_at, out_at, what, shortest
       text = ''
       if (.not. model%dynamic%requested) return
-      idyn = 0
-      do ic = 1, deck%n_cards
-         if (deck%cards(ic)%keyword == 'DYNAMIC') idyn = ic
-      end do
+      idyn = last_card(deck, 'DYNAMIC')
       if (idyn == 0) return
       dt = model%dynamic%dt
       out = model%dynamic%output_interval

@@ -31,7 +31,6 @@ contains
       logical :: ok
 
       call card_check_params(card, [character(len=param_len) :: 'INPUT'], err)
-      if (has_error(err)) return
       call card_get_file(card, 'INPUT', path, err, required=.true.)
       if (has_error(err)) return
       norm = path_normalise(path)

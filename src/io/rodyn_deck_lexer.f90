@@ -34,7 +34,7 @@ module rodyn_deck_lexer
    use rodyn_deck_include, only: include_open, max_include_depth
    implicit none
    private
-   public :: deck_t, deck_lex
+   public :: deck_t, deck_lex, keyword_count, last_card
 
    !> The deck: all cards of the main file and its includes, in reading order.
    type :: deck_t
@@ -353,5 +353,26 @@ contains
          end do
       end associate
    end subroutine append_data_line
+
+   !> Number of cards with the given keyword.
+   pure integer function keyword_count(deck, keyword) result(n)
+      type(deck_t), intent(in) :: deck        !< all cards
+      character(len=*), intent(in) :: keyword !< keyword, upper case, without '*'
+      integer :: ic
+      n = 0
+      do ic = 1, deck%n_cards
+         if (deck%cards(ic)%keyword == keyword) n = n + 1
+      end do
+   end function keyword_count
+
+   !> Index of the last card with the given keyword, 0 if there is none.
+   pure integer function last_card(deck, keyword) result(ic)
+      type(deck_t), intent(in) :: deck        !< all cards
+      character(len=*), intent(in) :: keyword !< keyword, upper case, without '*'
+      do ic = deck%n_cards, 1, -1
+         if (deck%cards(ic)%keyword == keyword) return
+      end do
+      ic = 0
+   end function last_card
 
 end module rodyn_deck_lexer

@@ -13,8 +13,9 @@ module rodyn_deck_line
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_get_choice, &
                                      card_data_reals
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_elements, max_distance, param_fail, &
-                                 location, node_count, node_number
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
+                                 max_elements, max_distance, param_fail, &
+                                 location, node_count, node_number, get_bounded
    use rodyn_deck_system, only: point_junction, point_held
    implicit none
    private
@@ -38,31 +39,22 @@ contains
    !> data line gives only the other end's (3 values), or nothing when both are on points
    !> (read_line_data). The geometry that depends on the length is checked by
    !> check_line_geometry.
-   subroutine read_line_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *LINE card
+   subroutine read_line_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one line appended
-      type(pending_t), intent(inout) :: pend  !< remembers the SECTION= reference
       type(error_t), intent(inout) :: err     !< status
       type(line_def_t) :: line
       character(len=:), allocatable :: name, section, pa, pb
       logical :: plain
-      integer :: il
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'SECTION', &
                                 'LENGTH', 'ELEMENTS', 'ORDER', 'ELEMENT', 'POINT A', &
                                 'POINT B'], err)
+         call get_item_name(deck, ic, model%lines(1:pend%n_lines)%name, &
+                            pend%line_section(1:pend%n_lines)%card, 'line', name, err)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do il = 1, pend%n_lines
-            if (model%lines(il)%name == name) then
-               call card_error(card, "line '"//name//"' is already defined (at "// &
-                               location(deck, pend%line_section(il)%card)//')', err)
-               return
-            end if
-         end do
          line%name = name
          line%card_at = card%file//':'//int_str(card%line)
          section = ''
@@ -70,13 +62,8 @@ contains
          if (has_error(err)) return
          plain = len(section) > 0     ! else segmented: LENGTH, ELEMENTS optional
 
-         call card_get_real(card, 'LENGTH', line%length, err, required=plain)
+         call get_bounded(card, 'LENGTH', line%length, .true., err, required=plain)
          if (has_error(err)) return
-         if (card_find_param(card, 'LENGTH') > 0 .and. .not. line%length > 0.0_wp) then
-            call param_fail(card, 'LENGTH', 'LENGTH must be > 0, got '// &
-                            real_str(line%length), err)
-            return
-         end if
          if (line%length > max_distance) then
             call param_fail(card, 'LENGTH', 'LENGTH must be at most '// &
                             real_str(max_distance)//' m, got '//real_str(line%length), err)
@@ -99,12 +86,10 @@ contains
          end if
 
          call card_get_choice(card, 'ELEMENT', element_names, line%element, err)
-         if (has_error(err)) return
 
          pa = ''
          pb = ''
          call card_get_name(card, 'POINT A', pa, err)
-         if (has_error(err)) return
          call card_get_name(card, 'POINT B', pb, err)
          if (has_error(err)) return
          if (len(pa) > 0 .and. pa == pb) then
@@ -114,12 +99,12 @@ contains
          end if
          call read_line_data(card, len(pa) > 0, len(pb) > 0, line, err)
          if (has_error(err)) return
+         pend%n_lines = pend%n_lines + 1
+         model%lines(pend%n_lines) = line
+         pend%line_section(pend%n_lines) = ref_t(section, ic)
+         pend%line_point_a(pend%n_lines) = ref_t(pa, ic)
+         pend%line_point_b(pend%n_lines) = ref_t(pb, ic)
       end associate
-      pend%n_lines = pend%n_lines + 1
-      model%lines(pend%n_lines) = line
-      pend%line_section(pend%n_lines) = ref_t(section, ic)
-      pend%line_point_a(pend%n_lines) = ref_t(pa, ic)
-      pend%line_point_b(pend%n_lines) = ref_t(pb, ic)
    end subroutine read_line_card
 
    !> The data lines of *LINE: the positions of the ends not on a point (6, 3 or no

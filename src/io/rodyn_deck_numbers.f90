@@ -7,6 +7,7 @@ module rodyn_deck_numbers
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use rodyn_kinds, only: wp, i8
    use rodyn_deck_text, only: field_t, item_of, is_digit
+   use rodyn_deck_params, only: shortest_text, int_str
    implicit none
    private
    public :: parse_real, parse_int, real_str, int_str, fields_reals, field_real
@@ -149,11 +150,6 @@ contains
    function real_str(x) result(s)
       real(wp), intent(in) :: x           !< the number
       character(len=:), allocatable :: s  !< its text
-      character(len=40) :: buf, fmt
-      character(len=:), allocatable :: mant, digits
-      real(wp) :: y
-      integer :: p, ios, epos, e, k
-
       if (ieee_is_nan(x)) then      ! not produced by the reader, but be safe
          s = 'NaN'
          return
@@ -167,51 +163,8 @@ contains
          s = '0'
          return
       end if
-      do p = 1, 17
-         write (fmt, '(a,i0,a)') '(es40.', p - 1, 'e3)'
-         write (buf, fmt) x
-         if (abs(x) > 1.0e300_wp) cycle   ! rounding up could overflow on reading back
-         read (buf, *, iostat=ios) y
-         if (ios == 0) then
-            if (transfer(y, 0_i8) == transfer(x, 0_i8)) exit
-         end if
-      end do
-      buf = adjustl(buf)
-      epos = index(buf, 'E')
-      mant = buf(:epos - 1)
-      read (buf(epos + 1:), *) e
-      digits = ''
-      do k = 1, len(mant)
-         if (is_digit(mant(k:k))) digits = digits//mant(k:k)
-      end do
-      do while (len(digits) > 1)
-         if (digits(len(digits):len(digits)) /= '0') exit
-         digits = digits(:len(digits) - 1)
-      end do
-      if (e >= 0 .and. e < 7) then
-         if (len(digits) <= e + 1) then
-            s = digits//repeat('0', e + 1 - len(digits))
-         else
-            s = digits(:e + 1)//'.'//digits(e + 2:)
-         end if
-      else if (e < 0 .and. e >= -4) then
-         s = '0.'//repeat('0', -e - 1)//digits
-      else
-         s = digits(1:1)
-         if (len(digits) > 1) s = s//'.'//digits(2:)
-         s = s//'e'//int_str(e)
-      end if
-      if (x < 0.0_wp) s = '-'//s
+      s = shortest_text(x, 7, 1.0e300_wp)
    end function real_str
-
-   !> Integer as text without blanks.
-   pure function int_str(i) result(s)
-      integer, intent(in) :: i            !< the number
-      character(len=:), allocatable :: s  !< its text
-      character(len=24) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function int_str
 
    !> Parse fields as exactly size(values) reals. msg = '' on success, else what is
    !> wrong, naming the value by `what` (comma-separated names) and position.

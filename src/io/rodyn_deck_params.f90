@@ -26,7 +26,7 @@ module rodyn_deck_params
    public :: deck_param_t, param_table_t, param_override_t
    public :: param_valid_name, param_find, param_add, param_split_definition
    public :: param_value, param_eval, param_substitute, param_number_text
-   public :: param_name_len, upper_case
+   public :: param_name_len, upper_case, shortest_text, int_str
 
    integer, parameter :: param_name_len = 32      !< longest parameter name
    real(wp), parameter :: big = 1.0e300_wp        !< largest magnitude of a value
@@ -127,7 +127,7 @@ contains
       text = trim(adjustl(line(eq + 1:)))
       if (.not. param_valid_name(name)) then
          call fail(err, "'"//name//"' is not a valid parameter name (a letter, then "// &
-                   "letters, digits and '_', at most "//itoa(param_name_len)//' characters)')
+                   "letters, digits and '_', at most "//int_str(param_name_len)//' characters)')
          return
       end if
       name = upper_case(name)
@@ -205,7 +205,7 @@ contains
       ps%pos = 1
       ps%msg = ''
       value = 0.0_wp
-      call parse_sum(ps, table, value)
+      call parse_terms(ps, table, '+-', value)
       if (len(ps%msg) == 0) then
          call skip_blanks(ps)
          if (ps%pos <= len(ps%s)) then
@@ -222,73 +222,79 @@ contains
       end if
    end subroutine param_eval
 
-   !> sum = product {('+'|'-') product}
-   pure recursive subroutine parse_sum(ps, table, v)
+   !> sum = product {('+'|'-') product} (ops '+-'), product = unary {('*'|'/') unary}
+   !> (ops '*/').
+   pure recursive subroutine parse_terms(ps, table, ops, v)
       type(parser_t), intent(inout) :: ps          !< parser
       type(param_table_t), intent(inout) :: table  !< parameters
+      character(len=2), intent(in) :: ops          !< '+-' (a sum) or '*/' (a product)
       real(wp), intent(out) :: v                   !< value
       real(wp) :: w
       character(len=1) :: op
-      call parse_product(ps, table, v)
+      op = ' '
+      v = 0.0_wp
       do while (len(ps%msg) == 0)
-         call skip_blanks(ps)
-         if (ps%pos > len(ps%s)) exit
-         op = ps%s(ps%pos:ps%pos)
-         if (op /= '+' .and. op /= '-') exit
-         ps%pos = ps%pos + 1
-         call parse_product(ps, table, w)
-         if (len(ps%msg) > 0) exit
-         if (op == '+') then
-            v = v + w
+         if (ops == '+-') then
+            call parse_terms(ps, table, '*/', w)
          else
-            v = v - w
+            call parse_unary(ps, table, w)
          end if
-         call check_range(ps, v)
+         if (op == ' ') v = w
+         if (op /= ' ' .and. len(ps%msg) == 0) call apply_operator(ps, op, v, w)
+         if (len(ps%msg) > 0) exit
+         call next_operator(ps, ops, op)
+         if (op == ' ') exit
       end do
-   end subroutine parse_sum
+   end subroutine parse_terms
 
-   !> product = unary {('*'|'/') unary}
-   pure recursive subroutine parse_product(ps, table, v)
-      type(parser_t), intent(inout) :: ps          !< parser
-      type(param_table_t), intent(inout) :: table  !< parameters
-      real(wp), intent(out) :: v                   !< value
-      real(wp) :: w
-      character(len=1) :: op
-      call parse_unary(ps, table, v)
-      do while (len(ps%msg) == 0)
-         call skip_blanks(ps)
-         if (ps%pos > len(ps%s)) exit
-         op = ps%s(ps%pos:ps%pos)
-         if (op /= '*' .and. op /= '/') exit
-         if (ps%pos < len(ps%s)) then
-            if (ps%s(ps%pos:ps%pos + 1) == '**') exit   ! a power is a unary's business
+   !> v = v op w for op '+', '-', '*' or '/', or the reason why not in ps%msg (a result
+   !> above 1e300 in magnitude, a division by zero).
+   pure subroutine apply_operator(ps, op, v, w)
+      type(parser_t), intent(inout) :: ps  !< parser
+      character(len=1), intent(in) :: op   !< the operator
+      real(wp), intent(inout) :: v         !< left operand, then the result
+      real(wp), intent(in) :: w            !< right operand
+      select case (op)
+      case ('+', '-')
+         v = v + merge(w, -w, op == '+')
+         if (abs(v) > big) ps%msg = 'a sum is out of range (above 1e300)'
+      case ('*')
+         if (abs(v) > 1.0_wp) then
+            if (abs(w) > big/abs(v)) then
+               ps%msg = 'a product is out of range (above 1e300)'
+               return
+            end if
          end if
-         ps%pos = ps%pos + 1
-         call parse_unary(ps, table, w)
-         if (len(ps%msg) > 0) exit
-         if (op == '*') then
-            if (abs(v) > 1.0_wp) then
-               if (abs(w) > big/abs(v)) then
-                  ps%msg = 'a product is out of range (above 1e300)'
-                  exit
-               end if
-            end if
-            v = v*w
-         else
-            if (w == 0.0_wp) then
-               ps%msg = 'division by zero'
-               exit
-            end if
-            if (abs(w) < 1.0_wp) then
-               if (abs(v) > big*abs(w)) then
-                  ps%msg = 'a quotient is out of range (above 1e300)'
-                  exit
-               end if
-            end if
-            v = v/w
+         v = v*w
+      case default
+         if (w == 0.0_wp) then
+            ps%msg = 'division by zero'
+            return
          end if
-      end do
-   end subroutine parse_product
+         if (abs(w) < 1.0_wp) then
+            if (abs(v) > big*abs(w)) then
+               ps%msg = 'a quotient is out of range (above 1e300)'
+               return
+            end if
+         end if
+         v = v/w
+      end select
+   end subroutine apply_operator
+
+   !> The binary operator at the parser's position (after blanks) when it is one of
+   !> `ops`, and the parser moved past it; ' ' otherwise ('**', a power, is a unary's).
+   pure subroutine next_operator(ps, ops, op)
+      type(parser_t), intent(inout) :: ps  !< parser
+      character(len=*), intent(in) :: ops  !< the operators looked for
+      character(len=1), intent(out) :: op  !< the operator, or ' '
+      op = ' '
+      call skip_blanks(ps)
+      if (ps%pos > len(ps%s)) return
+      if (index(ops, ps%s(ps%pos:ps%pos)) == 0) return
+      if (ps%s(ps%pos:min(ps%pos + 1, len(ps%s))) == '**') return
+      op = ps%s(ps%pos:ps%pos)
+      ps%pos = ps%pos + 1
+   end subroutine next_operator
 
    !> unary = ('+'|'-') unary | power
    pure recursive subroutine parse_unary(ps, table, v)
@@ -299,7 +305,7 @@ contains
       call skip_blanks(ps)
       v = 0.0_wp
       if (ps%depth >= max_depth) then
-         ps%msg = 'signs, powers and parentheses nested deeper than '//itoa(max_depth)// &
+         ps%msg = 'signs, powers and parentheses nested deeper than '//int_str(max_depth)// &
                   ' levels'
          return
       end if
@@ -376,7 +382,7 @@ contains
       c = ps%s(ps%pos:ps%pos)
       if (c == '(') then
          ps%pos = ps%pos + 1
-         call parse_sum(ps, table, v)
+         call parse_terms(ps, table, '+-', v)
          if (len(ps%msg) > 0) return
          call skip_blanks(ps)
          if (ps%pos > len(ps%s)) then
@@ -497,13 +503,6 @@ contains
       e = len(tok(:p - 1)) - (verify(tok(:p - 1)//'.', '0') - 1) - 1 + x
    end function log10_estimate
 
-   !> Record an out-of-range value.
-   pure subroutine check_range(ps, v)
-      type(parser_t), intent(inout) :: ps  !< parser
-      real(wp), intent(in) :: v            !< value just computed
-      if (abs(v) > big) ps%msg = 'a sum is out of range (above 1e300)'
-   end subroutine check_range
-
    !> Skip blanks.
    pure subroutine skip_blanks(ps)
       type(parser_t), intent(inout) :: ps  !< parser
@@ -578,10 +577,6 @@ contains
       real(wp), intent(in) :: x           !< the number (finite)
       character(len=:), allocatable :: s  !< its text
       character(len=40) :: buf
-      character(len=16) :: fmt
-      character(len=:), allocatable :: mant, dig
-      real(wp) :: y
-      integer :: p, ios, epos, e, k
 
       if (x == 0.0_wp) then
          s = '0'
@@ -592,9 +587,30 @@ contains
          s = trim(buf)
          return
       end if
+      s = shortest_text(x, 15, huge(x))
+   end function param_number_text
+
+   ! ================================================================== helpers
+
+   !> The shortest decimal text of x (finite, not zero) that reads back to the same
+   !> double: the fewest significant digits (at most 17), in fixed notation for a decimal
+   !> exponent e with -4 <= e < e_fixed, else as 'd.ddde-7'. A candidate of x above
+   !> check_max in magnitude is not read back (rounding up could overflow): 17 digits.
+   pure function shortest_text(x, e_fixed, check_max) result(s)
+      real(wp), intent(in) :: x           !< the number
+      integer, intent(in) :: e_fixed      !< fixed notation below this exponent
+      real(wp), intent(in) :: check_max   !< largest magnitude whose text is read back
+      character(len=:), allocatable :: s  !< its text
+      character(len=40) :: buf
+      character(len=16) :: fmt
+      character(len=:), allocatable :: mant, dig
+      real(wp) :: y
+      integer :: p, ios, epos, e, k
+
       do p = 1, 17
          write (fmt, '(a,i0,a)') '(es40.', p - 1, 'e3)'
          write (buf, fmt) x
+         if (abs(x) > check_max) cycle
          read (buf, *, iostat=ios) y
          if (ios == 0) then
             if (y == x) exit
@@ -612,7 +628,7 @@ contains
          if (dig(len(dig):len(dig)) /= '0') exit
          dig = dig(:len(dig) - 1)
       end do
-      if (e >= 0 .and. e < 15) then
+      if (e >= 0 .and. e < e_fixed) then
          if (len(dig) <= e + 1) then
             s = dig//repeat('0', e + 1 - len(dig))
          else
@@ -623,12 +639,10 @@ contains
       else
          s = dig(1:1)
          if (len(dig) > 1) s = s//'.'//dig(2:)
-         s = s//'e'//itoa(e)
+         s = s//'e'//int_str(e)
       end if
       if (x < 0.0_wp) s = '-'//s
-   end function param_number_text
-
-   ! ================================================================== helpers
+   end function shortest_text
 
    !> Record an input error (the first one wins).
    pure subroutine fail(err, message)
@@ -652,11 +666,11 @@ contains
    end function upper_case
 
    !> Integer as text.
-   pure function itoa(i) result(s)
+   pure function int_str(i) result(s)
       integer, intent(in) :: i            !< the number
       character(len=:), allocatable :: s  !< its text
       character(len=24) :: buf
       write (buf, '(i0)') i
       s = trim(buf)
-   end function itoa
+   end function int_str
 end module rodyn_deck_params

@@ -10,7 +10,7 @@ module rodyn_deck_section_damping
    use rodyn_deck_card, only: card_t, card_find_param
    use rodyn_deck_card_values, only: card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: param_fail, check_at_most
+   use rodyn_deck_support, only: param_fail, check_at_most, get_bounded
    implicit none
    private
    public :: read_section_damping
@@ -38,11 +38,11 @@ contains
                          ' DAMPING RATIO, not both', err)
          return
       end if
-      call get_nonnegative(card, 'AXIAL DAMPING', sec%axial_damping, &
-                           ' (a damping ratio, MoorDyn''s negative BA, is AXIAL DAMPING'// &
-                           ' RATIO=)', err)
-      call get_nonnegative(card, 'AXIAL DAMPING RATIO', sec%axial_damping_ratio, '', err)
-      call get_nonnegative(card, 'BENDING DAMPING', sec%bending_damping, '', err)
+      call get_bounded(card, 'AXIAL DAMPING', sec%axial_damping, .false., err, &
+                       hint=' (a damping ratio, MoorDyn''s negative BA, is AXIAL DAMPING'// &
+                       ' RATIO=)')
+      call get_bounded(card, 'AXIAL DAMPING RATIO', sec%axial_damping_ratio, .false., err)
+      call get_bounded(card, 'BENDING DAMPING', sec%bending_damping, .false., err)
       if (has_error(err)) return
       if (sec%bending_damping > 0.0_wp .and. sec%element == element_cable) then
          call param_fail(card, 'BENDING DAMPING', 'BENDING DAMPING needs a rod section:'// &
@@ -74,20 +74,4 @@ contains
                       ' *DAMPING BETA does, every one of period below '// &
                       int_str(nint(pi*max_damping_time))//' s beyond critical', err)
    end subroutine check_time
-
-   !> An optional parameter >= 0 (unchanged if absent); hint ends the message of a
-   !> negative value.
-   subroutine get_nonnegative(card, name, value, hint, err)
-      type(card_t), intent(in) :: card     !< the card
-      character(len=*), intent(in) :: name !< parameter name
-      real(wp), intent(inout) :: value     !< the value
-      character(len=*), intent(in) :: hint !< appended to the message of a value < 0
-      type(error_t), intent(inout) :: err  !< status
-      logical :: found
-      if (has_error(err)) return
-      call card_get_real(card, name, value, err, found)
-      if (has_error(err) .or. .not. found) return
-      if (.not. value >= 0.0_wp) call param_fail(card, name, name//' must be >= 0, got '// &
-                                                 real_str(value)//hint, err)
-   end subroutine get_nonnegative
 end module rodyn_deck_section_damping

@@ -1,9 +1,10 @@
 !> Deck reader support: what the keyword readers remember for the validation pass
 !> (pending_t: names referred to, the card of each item, the first card of keywords
-!> allowed once) and the checks they share: parameters in a range, END=/NODE=, a line
-!> name resolved with its node number, error locations. Used by rodyn_deck (the reader
-!> and the static-analysis keywords), rodyn_deck_dynamic (the dynamic keywords) and
-!> rodyn_deck_water (the sea, seabed, segments and attachments).
+!> allowed once), what a reader works on (reading_t: the cards, the card read and those
+!> records) and the checks they share: parameters in a range, a pair set together,
+!> END=/NODE=, the NAME= of an item a card defines, a name among those defined, a line
+!> name resolved with its node number, a node given once, error locations. Used by all
+!> the keyword readers (rodyn_deck and the rodyn_deck_* modules).
 module rodyn_deck_support
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -11,16 +12,18 @@ module rodyn_deck_support
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_find_param, card_error, card_param_error, &
                               card_data_error, card_check_params, card_check_data
-   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice
+   use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice, card_get_name
    use rodyn_deck_numbers, only: real_str, int_str
    implicit none
    private
-   public :: ref_t, pending_t, max_cutbacks, max_elements
+   public :: ref_t, pending_t, reading_t, max_cutbacks, max_elements, body_subcards, &
+             sub_drag, sub_wave
    public :: max_gravity, max_frequency, max_distance, max_increments, max_iterations
    public :: get_lumped_body
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
-   public :: get_int_range, param_fail
+   public :: get_int_range, param_fail, get_pair
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
+   public :: check_node_once, get_item_name, find_named, refuse
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
@@ -30,6 +33,12 @@ module rodyn_deck_support
    real(wp), parameter :: max_distance = 1.0e7_wp      !< LENGTH, coordinates [m]
    integer, parameter :: max_increments = 100000       !< *STATIC INCREMENTS
    integer, parameter :: max_iterations = 1000         !< MAX ITERATIONS (Newton)
+
+   !> The keywords of the cards that belong to a body (BODY=name), one of each per body;
+   !> sub_drag and sub_wave index *BODY DRAG and *BODY WAVE LOAD.
+   character(len=*), parameter :: body_subcards(5) = [character(len=17) :: &
+      'BODY HYDROSTATICS', 'BODY DAMPING', 'BODY ADDED MASS', 'BODY DRAG', 'BODY WAVE LOAD']
+   integer, parameter :: sub_drag = 4, sub_wave = 5  !< indices in body_subcards
 
    !> A reference by name from one card to a section, line or amplitude, resolved after
    !> all cards are read.
@@ -63,11 +72,7 @@ module rodyn_deck_support
       type(ref_t), allocatable :: point_body(:)   !< per point: its BODY= ('' if none)
       type(ref_t), allocatable :: load_body(:)    !< per load: its BODY= ('' if none)
       integer, allocatable :: body_card(:)        !< per body: card index
-      integer, allocatable :: body_hydro(:)       !< per body: its *BODY HYDROSTATICS card
-      integer, allocatable :: body_damp(:)        !< per body: its *BODY DAMPING card
-      integer, allocatable :: body_added(:)       !< per body: its *BODY ADDED MASS card
-      integer, allocatable :: body_drag(:)        !< per body: its *BODY DRAG card
-      integer, allocatable :: body_wave(:)        !< per body: its *BODY WAVE LOAD card
+      integer, allocatable :: body_sub(:, :)      !< (k, body): its body_subcards(k) card
       type(ref_t), allocatable :: failure_line(:) !< per *FAILURE: its LINE=
       type(ref_t) :: offset_body                  !< *OFFSET CURVE's BODY=
       integer, allocatable :: section_card(:)     !< per section: card index
@@ -98,6 +103,14 @@ module rodyn_deck_support
       integer :: modal_card = 0  !< card of the first *MODAL
    end type pending_t
 
+   !> What a keyword reader works on: all cards, the index of the card it reads, and the
+   !> readers' records (one for the whole reading of a deck, deck_read).
+   type :: reading_t
+      type(deck_t) :: deck      !< all cards
+      integer :: ic = 0         !< index of the card being read
+      type(pending_t) :: pend   !< what the readers remember for the validation pass
+   end type reading_t
+
 contains
 
    !> The form of card ic: only the parameters `allowed`, between nmin and nmax data lines
@@ -113,9 +126,7 @@ contains
       integer, intent(inout), optional :: first      !< first card of the keyword (0: none)
       character(len=*), intent(in), optional :: what !< names of a data line's values
       if (present(first)) call check_once(deck, ic, first, err)
-      if (has_error(err)) return
       call card_check_params(deck%cards(ic), allowed, err)
-      if (has_error(err)) return
       call card_check_data(deck%cards(ic), nmin, nmax, err, what)
    end subroutine check_card
 
@@ -125,6 +136,7 @@ contains
       integer, intent(in) :: ic            !< index of this card
       integer, intent(inout) :: first      !< index of the first such card (0: none)
       type(error_t), intent(inout) :: err  !< status
+      if (has_error(err)) return
       if (first == 0) then
          first = ic
       else
@@ -142,6 +154,7 @@ contains
       integer :: which
 
       node = end_a
+      if (has_error(err)) return
       if (card_find_param(card, 'END') > 0 .and. card_find_param(card, 'NODE') > 0) then
          call card_error(card, 'give END or NODE, not both', err)
          return
@@ -163,25 +176,67 @@ contains
    end subroutine get_node
 
    !> A real parameter, optional unless `required`, that must be >= 0 (or > 0 when
-   !> `strict`).
-   subroutine get_bounded(card, name, value, strict, err, required)
+   !> `strict`); `hint` ends the message of a value out of bounds.
+   subroutine get_bounded(card, name, value, strict, err, required, hint)
       type(card_t), intent(in) :: card     !< the card
       character(len=*), intent(in) :: name !< parameter name
       real(wp), intent(inout) :: value     !< the value (unchanged if absent)
       logical, intent(in) :: strict        !< require > 0 rather than >= 0
       type(error_t), intent(inout) :: err  !< status
       logical, intent(in), optional :: required !< absence is an error
+      character(len=*), intent(in), optional :: hint !< ends the message of a bad value
+      character(len=:), allocatable :: msg
       logical :: found
 
-      if (has_error(err)) return
       call card_get_real(card, name, value, err, found, required)
       if (has_error(err) .or. .not. found) return
-      if (strict .and. .not. value > 0.0_wp) then
-         call param_fail(card, name, name//' must be > 0, got '//real_str(value), err)
-      else if (.not. value >= 0.0_wp) then
-         call param_fail(card, name, name//' must be >= 0, got '//real_str(value), err)
-      end if
+      msg = sign_problem(name, value, strict)
+      if (len(msg) > 0 .and. present(hint)) msg = msg//hint
+      if (len(msg) > 0) call param_fail(card, name, msg, err)
    end subroutine get_bounded
+
+   !> '' when value > 0 (strict) or value >= 0, else 'NAME must be > 0, got VALUE' (or
+   !> '>= 0').
+   function sign_problem(name, value, strict) result(msg)
+      character(len=*), intent(in) :: name  !< name of the value
+      real(wp), intent(in) :: value         !< the value
+      logical, intent(in) :: strict         !< require > 0 rather than >= 0
+      character(len=:), allocatable :: msg  !< '' or what is wrong
+      msg = ''
+      if (strict .and. .not. value > 0.0_wp) then
+         msg = name//' must be > 0, got '//real_str(value)
+      else if (.not. value >= 0.0_wp) then
+         msg = name//' must be >= 0, got '//real_str(value)
+      end if
+   end function sign_problem
+
+   !> Two values set by parameters n1 and n2, or both by `name` (GA sets GA1 and GA2):
+   !> `name` with n1 or n2 is an error. Each >= 0 (> 0 when strict); unchanged if absent.
+   subroutine get_pair(card, name, n1, n2, v1, v2, strict, err)
+      type(card_t), intent(in) :: card     !< the card
+      character(len=*), intent(in) :: name !< the parameter setting both
+      character(len=*), intent(in) :: n1   !< the parameter of value 1
+      character(len=*), intent(in) :: n2   !< the parameter of value 2
+      real(wp), intent(inout) :: v1        !< value 1 (unchanged if not given)
+      real(wp), intent(inout) :: v2        !< value 2 (unchanged if not given)
+      logical, intent(in) :: strict        !< require > 0 rather than >= 0
+      type(error_t), intent(inout) :: err  !< status
+      real(wp) :: both
+
+      if (has_error(err)) return
+      if (card_find_param(card, name) == 0) then
+         call get_bounded(card, n1, v1, strict, err)
+         call get_bounded(card, n2, v2, strict, err)
+      else if (card_find_param(card, n1) > 0 .or. card_find_param(card, n2) > 0) then
+         call param_fail(card, name, 'give '//name//' or '//n1//'/'//n2//', not both', err)
+      else
+         both = -1.0_wp
+         call get_bounded(card, name, both, strict, err)
+         if (has_error(err)) return
+         v1 = both
+         v2 = both
+      end if
+   end subroutine get_pair
 
    !> An integer parameter, optional unless `required`, with lo <= value <= hi (hi = huge:
    !> no upper bound); a value left unchanged is checked too.
@@ -227,6 +282,22 @@ contains
                          ' CA rho_w VOLUME)', err)
    end subroutine get_lumped_body
 
+   !> An error at the first of `names` the card gives: 'NAME'//why (why: ' is only
+   !> allowed with TYPE=TABLE', ...).
+   subroutine refuse(card, names, why, err)
+      type(card_t), intent(in) :: card          !< the card
+      character(len=*), intent(in) :: names(:)  !< parameters the card may not give
+      character(len=*), intent(in) :: why       !< why, following the name in the message
+      type(error_t), intent(inout) :: err       !< status
+      integer :: j
+      if (has_error(err)) return
+      do j = 1, size(names)
+         if (card_find_param(card, trim(names(j))) == 0) cycle
+         call param_fail(card, trim(names(j)), trim(names(j))//why, err)
+         return
+      end do
+   end subroutine refuse
+
    !> A value no physical model has: refused when above vmax, with `why` (the physical
    !> meaning of the bound, ending the message).
    subroutine check_at_most(card, name, value, vmax, unit, why, err)
@@ -270,12 +341,8 @@ contains
       real(wp), intent(in) :: value        !< the value
       logical, intent(in) :: strict        !< require > 0 rather than >= 0
       type(error_t), intent(inout) :: err  !< status
-      if (has_error(err)) return
-      if (strict .and. .not. value > 0.0_wp) then
-         call card_data_error(card, id, name//' must be > 0, got '//real_str(value), err)
-      else if (.not. value >= 0.0_wp) then
-         call card_data_error(card, id, name//' must be >= 0, got '//real_str(value), err)
-      end if
+      if (len(sign_problem(name, value, strict)) > 0) &
+         call card_data_error(card, id, sign_problem(name, value, strict), err)
    end subroutine data_check
 
    !> Report an error at the line of parameter `name` (keyword line if absent).
@@ -312,15 +379,8 @@ contains
       type(error_t), intent(inout) :: err   !< status
       integer :: nn
 
-      do iline = 1, size(model%lines)
-         if (model%lines(iline)%name == name) exit
-      end do
-      if (iline > size(model%lines)) then
-         iline = 0
-         call param_fail(card, 'LINE', "LINE '"//name//"' is not defined (no *LINE"// &
-                         ' with NAME='//name//' in the deck)', err)
-         return
-      end if
+      call find_named(card, 'LINE', name, model%lines%name, 'LINE', iline, err)
+      if (iline == 0) return
       nn = node_count(model%lines(iline))
       if (node > nn) then
          call param_fail(card, 'NODE', 'NODE '//int_str(node)//' is beyond the last node'// &
@@ -335,13 +395,74 @@ contains
       type(model_t), intent(in) :: model    !< model with all sections
       integer, intent(out) :: isec          !< index of the section (0 if not found)
       type(error_t), intent(inout) :: err   !< status
-      do isec = 1, size(model%sections)
-         if (model%sections(isec)%name == name) return
-      end do
-      isec = 0
-      call param_fail(card, 'SECTION', "SECTION '"//name//"' is not defined (no *SECTION"// &
-                      ' with NAME='//name//' in the deck)', err)
+      call find_named(card, 'SECTION', name, model%sections%name, 'SECTION', isec, err)
    end subroutine resolve_section
+
+   !> Index of `name` among `names`; 0 if absent, an error at parameter param: "PARAM
+   !> 'NAME' is not defined (no *KEYWORD with NAME=NAME in the deck)".
+   subroutine find_named(card, param, name, names, keyword, k, err)
+      type(card_t), intent(in) :: card          !< the card naming it
+      character(len=*), intent(in) :: param     !< the parameter naming it
+      character(len=*), intent(in) :: name      !< the name, upper case
+      character(len=*), intent(in) :: names(:)  !< the names defined
+      character(len=*), intent(in) :: keyword   !< the keyword defining them
+      integer, intent(out) :: k                 !< index of the name in names (0: none)
+      type(error_t), intent(inout) :: err       !< status
+      k = findloc(names == name, .true., dim=1)
+      if (k == 0) call param_fail(card, param, param//" '"//name//"' is not defined (no *"// &
+                                  keyword//' with NAME='//name//' in the deck)', err)
+   end subroutine find_named
+
+   !> NAME= of card ic, which defines a named item (a section, line, amplitude, body or
+   !> point): required, and not the name of an earlier item of its kind ("<what> 'NAME' is
+   !> already defined (at FILE:LINE)", at the NAME= parameter when at_name is given).
+   subroutine get_item_name(deck, ic, names, cards, what, name, err, at_name)
+      type(deck_t), intent(in) :: deck         !< all cards
+      integer, intent(in) :: ic                !< index of the card
+      character(len=*), intent(in) :: names(:) !< the names of the earlier items
+      integer, intent(in) :: cards(:)          !< the card of each earlier item
+      character(len=*), intent(in) :: what     !< the kind of item, 'section', ...
+      character(len=:), allocatable, intent(inout) :: name !< the name, upper case
+      type(error_t), intent(inout) :: err      !< status
+      logical, intent(in), optional :: at_name !< report at NAME= (else the keyword line)
+      integer :: j
+      call card_get_name(deck%cards(ic), 'NAME', name, err, required=.true.)
+      if (has_error(err)) return
+      j = findloc(names == name, .true., dim=1)
+      if (j == 0) return
+      if (present(at_name)) then
+         call param_fail(deck%cards(ic), 'NAME', what//" '"//name//"' is already defined"// &
+                         ' (at '//location(deck, cards(j))//')', err)
+      else
+         call card_error(deck%cards(ic), what//" '"//name//"' is already defined (at "// &
+                         location(deck, cards(j))//')', err)
+      end if
+   end subroutine get_item_name
+
+   !> Refuse item k of a list of node items (*BOUNDARY, *MOTION) at the node of an
+   !> earlier item on the same line: 'line L node N already has a *KEYWORD (at ...)'.
+   subroutine check_node_once(deck, model, lines, nodes, cards, k, keyword, err)
+      type(deck_t), intent(in) :: deck        !< all cards
+      type(model_t), intent(in) :: model      !< model with the lines
+      integer, intent(in) :: lines(:)         !< line of each item (0: on no line)
+      integer, intent(in) :: nodes(:)         !< stored node of each item (end_a, end_b, k)
+      integer, intent(in) :: cards(:)         !< card of each item
+      integer, intent(in) :: k                !< item to check
+      character(len=*), intent(in) :: keyword !< keyword of the items
+      type(error_t), intent(inout) :: err     !< status
+      integer :: j, nn, node
+
+      if (lines(k) == 0) return
+      nn = node_count(model%lines(lines(k)))
+      node = node_number(nodes(k), nn)
+      do j = 1, k - 1
+         if (lines(j) /= lines(k) .or. node_number(nodes(j), nn) /= node) cycle
+         call card_error(deck%cards(cards(k)), 'line '//trim(model%lines(lines(k))%name)// &
+                         ' '//node_label(node, nn)//' already has a *'//keyword//' (at '// &
+                         location(deck, cards(j))//')', err)
+         return
+      end do
+   end subroutine check_node_once
 
    !> Number of nodes of a line: ELEMENTS*ORDER + 1.
    pure integer function node_count(line) result(nn)

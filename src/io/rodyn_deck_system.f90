@@ -16,7 +16,8 @@ module rodyn_deck_system
                               card_check_data, param_len
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_distance, get_lumped_body, param_fail, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
+                                 max_distance, get_lumped_body, param_fail, find_named, &
                                  get_bounded, check_card, &
                                  location, node_count, node_number
    implicit none
@@ -32,38 +33,28 @@ contains
    !> data line x, y, z (the position at the start; on a body, in its axes from its
    !> reference point). MASS, VOLUME, CDA and CA only for a FREE point, BODY= only (and
    !> always) for a BODY point.
-   subroutine read_point_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *POINT card
+   subroutine read_point_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one point appended
-      type(pending_t), intent(inout) :: pend  !< counts the points
       type(error_t), intent(inout) :: err     !< status
       character(len=*), parameter :: what = 'x, y, z'
       character(len=6), parameter :: props(4) = [character(len=6) :: 'MASS', 'VOLUME', &
                                                  'CDA', 'CA']
       type(point_t) :: pt
       character(len=:), allocatable :: name, body
-      integer :: ip, k
+      integer :: k
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
                                 'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
+         call get_item_name(deck, ic, model%points(1:pend%n_points)%name, &
+                            pend%point_card(1:pend%n_points), 'point', name, err, &
+                            at_name=.true.)
          if (has_error(err)) return
-         call card_get_name(card, 'NAME', name, err, required=.true.)
-         if (has_error(err)) return
-         do ip = 1, pend%n_points
-            if (model%points(ip)%name /= name) cycle
-            call param_fail(card, 'NAME', "point '"//name//"' is already defined (at "// &
-                            location(deck, pend%point_card(ip))//')', err)
-            return
-         end do
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
-         if (card_find_param(card, 'TYPE') == 0) then
-            call card_error(card, 'missing parameter TYPE (FIXED, FREE or BODY)', err)
-            return
-         end if
-         call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err)
+         call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err, listed=.true.)
          if (has_error(err)) return
          if (pt%kind /= point_free) then
             do k = 1, size(props)
@@ -93,9 +84,7 @@ contains
             return
          end if
          call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
-         if (has_error(err)) return
          call card_check_data(card, 1, 1, err, what)
-         if (has_error(err)) return
          call card_data_reals(card, 1, 3, pt%position, err, what)
          if (has_error(err)) return
          if (maxval(abs(pt%position)) > max_distance) then
@@ -104,12 +93,12 @@ contains
                             real_str(max_distance)//' m of the origin', err)
             return
          end if
+         pt%global = pt%position
+         pend%n_points = pend%n_points + 1
+         model%points(pend%n_points) = pt
+         pend%point_card(pend%n_points) = ic
+         pend%point_body(pend%n_points) = ref_t(body, ic)
       end associate
-      pt%global = pt%position
-      pend%n_points = pend%n_points + 1
-      model%points(pend%n_points) = pt
-      pend%point_card(pend%n_points) = ic
-      pend%point_body(pend%n_points) = ref_t(body, ic)
    end subroutine read_point_card
 
    !> The points of each line's ends (POINT A=, POINT B=): they exist, and the end takes
@@ -139,7 +128,7 @@ contains
    subroutine check_clamped_ends(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< the lines' cards
-      type(model_t), intent(in) :: model      !< model
+      type(model_t), intent(inout) :: model      !< model
       type(error_t), intent(inout) :: err     !< status
       integer :: il, k, ip, is
       do il = 1, size(model%lines)
@@ -201,13 +190,7 @@ contains
       integer, intent(out) :: ip            !< the point's index (0: none)
       type(error_t), intent(inout) :: err   !< status
       ip = 0
-      if (len(name) == 0) return
-      do ip = 1, size(model%points)
-         if (model%points(ip)%name == name) return
-      end do
-      ip = 0
-      call param_fail(card, param, param//" '"//name//"' is not defined (no *POINT with"// &
-                      ' NAME='//name//' in the deck)', err)
+      if (len(name) > 0) call find_named(card, param, name, model%points%name, 'POINT', ip, err)
    end subroutine find_point
 
    !> No *BOUNDARY on a line end that is on a point (the point holds it, or moves it),
@@ -308,18 +291,16 @@ contains
 
    !> *FAILURE, LINE=name, END=A|B [, TIME=t] [, BREAK LOAD=T]: that end is released at
    !> time t or when its force first reaches T, whichever comes first (one of them given).
-   subroutine read_failure_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the card
+   subroutine read_failure_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< one failure appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(failure_t) :: f
       character(len=:), allocatable :: line
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'END', 'TIME', &
                          'BREAK LOAD'], 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
          if (has_error(err)) return
          if (card_find_param(card, 'END') == 0) then
@@ -336,10 +317,10 @@ contains
          call get_bounded(card, 'TIME', f%time, .false., err)
          call get_bounded(card, 'BREAK LOAD', f%break_load, .true., err)
          if (has_error(err)) return
+         pend%n_failures = pend%n_failures + 1
+         model%failures(pend%n_failures) = f
+         pend%failure_line(pend%n_failures) = ref_t(line, ic)
       end associate
-      pend%n_failures = pend%n_failures + 1
-      model%failures(pend%n_failures) = f
-      pend%failure_line(pend%n_failures) = ref_t(line, ic)
    end subroutine read_failure_card
 
    !> Each *FAILURE: its line exists, the end is held or on a point (else nothing holds

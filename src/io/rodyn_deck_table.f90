@@ -5,10 +5,11 @@
 module rodyn_deck_table
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
-   use rodyn_deck_text, only: field_t, next_line, without_cr, split_commas, lf
+   use rodyn_deck_text, only: field_t, next_line, without_cr, split_commas, lf, next_of
    use rodyn_deck_numbers, only: parse_real, fields_reals
    use rodyn_deck_files, only: read_file_text, encoding_problem
-   use rodyn_deck_card, only: card_t, card_find_param, card_param_error, card_file_error
+   use rodyn_deck_card, only: card_t, card_find_param, card_param_error, card_file_error, &
+                              card_check_data
    use rodyn_deck_card_values, only: card_get_file, card_data_reals
    implicit none
    private
@@ -28,13 +29,17 @@ contains
 
    !> The data lines as a table: each line one row of exactly ncol reals (`what` names
    !> the columns). table%path is the card's file, table%line the data lines' numbers.
-   subroutine card_data_table(card, ncol, what, table, err)
+   subroutine card_data_table(card, ncol, what, table, err, nmin)
       type(card_t), intent(in) :: card        !< the card
       integer, intent(in) :: ncol             !< number of values on each line
       character(len=*), intent(in) :: what    !< names of the columns
       type(table_t), intent(out) :: table     !< the rows
       type(error_t), intent(inout) :: err     !< status
+      integer, intent(in), optional :: nmin   !< fewest data lines (else not checked)
       integer :: id
+
+      if (present(nmin)) call card_check_data(card, nmin, -1, err, what)
+      if (has_error(err)) return
 
       table%path = card%file
       table%text = ''
@@ -162,12 +167,7 @@ contains
                   p = p + 1
                   cycle
                end if
-               q = index(t(p:), ' ')
-               if (q == 0) then
-                  q = len(t) + 1
-               else
-                  q = p + q - 1
-               end if
+               q = next_of(t, p, ' ')
                n = n + 1
                buf(n)%s = t(p:q - 1)
                p = q + 1

@@ -7,43 +7,44 @@ module rodyn_deck_targets
    use rodyn_model, only: model_t, body_fixed, body_free, point_fixed, end_a, end_b
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_error
-   use rodyn_deck_support, only: pending_t, param_fail, location
+   use rodyn_deck_support, only: ref_t, pending_t, param_fail, location
    use rodyn_deck_body, only: find_body
    use rodyn_deck_system, only: find_point
    implicit none
    private
-   public :: resolve_motion_body, resolve_motion_point, resolve_velocity_body
+   public :: resolve_item_body, resolve_motion_point
 
 contains
 
-   !> The body of motion `im` (BODY=): it exists, is FIXED (held: the motion moves it)
-   !> and has no other *MOTION.
-   subroutine resolve_motion_body(deck, pend, model, im, err)
+   !> The body named by the last of a list of *MOTION (BODY=) or *INITIAL VELOCITY cards:
+   !> it exists, is FIXED for a *MOTION (held: the motion moves it) and FREE for an
+   !> *INITIAL VELOCITY, and no earlier card of the list names it.
+   subroutine resolve_item_body(deck, model, refs, earlier, kind, ib, err)
       type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card and BODY= of each motion
-      type(model_t), intent(inout) :: model  !< the motion's body set
-      integer, intent(in) :: im              !< the motion
+      type(model_t), intent(in) :: model    !< model with the bodies
+      type(ref_t), intent(in) :: refs(:)     !< BODY= and card of each item of the list
+      integer, intent(in) :: earlier(:)      !< body of each earlier item (0: none)
+      integer, intent(in) :: kind            !< body_fixed (*MOTION) or body_free
+      integer, intent(out) :: ib             !< the body
       type(error_t), intent(inout) :: err    !< status
-      integer :: ib, jm
-      associate (card => deck%cards(pend%motion_line(im)%card), &
-                 name => pend%motion_line(im)%name)
+      integer :: j
+      associate (card => deck%cards(refs(size(refs))%card), name => refs(size(refs))%name)
          call find_body(card, 'BODY', name, model, ib, err)
          if (has_error(err)) return
-         if (model%bodies(ib)%kind /= body_fixed) then
+         if (model%bodies(ib)%kind /= kind .and. kind == body_fixed) then
             call param_fail(card, 'BODY', "body '"//name//"' is FREE: a *MOTION moves a"// &
                             ' FIXED body (its motion prescribed), not a FREE one', err)
-            return
+         else if (model%bodies(ib)%kind /= kind) then
+            call param_fail(card, 'BODY', "body '"//name//"' is FIXED: only a FREE body "// &
+                            'has a velocity of its own', err)
          end if
-         do jm = 1, im - 1
-            if (model%motions(jm)%body /= ib) cycle
-            call card_error(card, "body '"//name//"' already has a *MOTION (at "// &
-                            location(deck, pend%motion_line(jm)%card)//')', err)
-            return
-         end do
-         model%motions(im)%body = ib
-         model%motions(im)%line = 0
+         j = findloc(earlier, ib, dim=1)
+         if (j > 0) call card_error(card, "body '"//name//"' already has "// &
+                                    trim(merge('a *MOTION           ', 'an *INITIAL VELOCITY', &
+                                               kind == body_fixed))//' (at '// &
+                                    location(deck, refs(j)%card)//')', err)
       end associate
-   end subroutine resolve_motion_body
+   end subroutine resolve_item_body
 
    !> The point of motion `im` (POINT=): it exists, is FIXED (its line ends held: the
    !> motion moves them), has no other *MOTION, and no end on it has one of its own.
@@ -88,30 +89,4 @@ contains
          model%motions(im)%line = 0
       end associate
    end subroutine resolve_motion_point
-
-   !> The body of initial velocity `iv` (BODY=): it exists, is FREE and has no other.
-   subroutine resolve_velocity_body(deck, pend, model, iv, err)
-      type(deck_t), intent(in) :: deck       !< all cards
-      type(pending_t), intent(in) :: pend    !< card and BODY= of each initial velocity
-      type(model_t), intent(inout) :: model  !< its body set
-      integer, intent(in) :: iv              !< the initial velocity
-      type(error_t), intent(inout) :: err    !< status
-      integer :: ib, jv
-      associate (card => deck%cards(pend%iv_line(iv)%card), name => pend%iv_line(iv)%name)
-         call find_body(card, 'BODY', name, model, ib, err)
-         if (has_error(err)) return
-         if (model%bodies(ib)%kind /= body_free) then
-            call param_fail(card, 'BODY', "body '"//name//"' is FIXED: only a FREE body "// &
-                            'has a velocity of its own', err)
-            return
-         end if
-         do jv = 1, iv - 1
-            if (model%initial_velocities(jv)%body /= ib) cycle
-            call card_error(card, "body '"//name//"' already has an *INITIAL VELOCITY (at "// &
-                            location(deck, pend%iv_line(jv)%card)//')', err)
-            return
-         end do
-         model%initial_velocities(iv)%body = ib
-      end associate
-   end subroutine resolve_velocity_body
 end module rodyn_deck_targets

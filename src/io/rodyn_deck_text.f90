@@ -8,6 +8,7 @@ module rodyn_deck_text
    private
    public :: field_t
    public :: normalise_name, clean_line, next_line, without_cr, split_commas, item_of
+   public :: next_of
    public :: is_digit
    public :: lf, cr
 
@@ -27,18 +28,10 @@ contains
       character(len=*), intent(in) :: s   !< name as written
       character(len=:), allocatable :: n  !< normalised name
       character(len=:), allocatable :: t
-      integer :: k, m
+      integer :: k
       t = upper_case(trim(adjustl(s)))
-      allocate (character(len=len(t)) :: n)
-      m = 0
-      do k = 1, len(t)
-         if (t(k:k) == ' ' .and. m > 0) then
-            if (n(m:m) == ' ') cycle
-         end if
-         m = m + 1
-         n(m:m) = t(k:k)
-      end do
-      n = n(:m)
+      n = kept(t, [(t(k:k) /= ' ' .or. t(max(k - 1, 1):max(k - 1, 1)) /= ' ', &
+                    k = 1, len(t))])
    end function normalise_name
 
    !> A line of a file with tabs made blanks, a trailing carriage return dropped,
@@ -65,12 +58,7 @@ contains
       integer, intent(inout) :: line_no               !< number of the line before
       character(len=:), allocatable, intent(out) :: s !< the line, cleaned
       integer :: last
-      last = index(text(first:), lf)
-      if (last == 0) then
-         last = len(text) + 1
-      else
-         last = first + last - 1
-      end if
+      last = next_of(text, first, lf)
       line_no = line_no + 1
       s = clean_line(text(first:last - 1))
       first = last + 1
@@ -81,17 +69,38 @@ contains
       character(len=*), intent(in) :: text !< text with any line ends
       character(len=:), allocatable :: t   !< the text with LF line ends only
       integer :: k, n
-      allocate (character(len=len(text)) :: t)
-      n = 0
-      do k = 1, len(text)
-         if (text(k:k) == cr .and. k < len(text)) then
-            if (text(k + 1:k + 1) == lf) cycle
-         end if
-         n = n + 1
-         t(n:n) = text(k:k)
-      end do
-      t = t(:n)
+      n = len(text)
+      t = kept(text, [(text(k:k) /= cr .or. k == n .or. text(min(k + 1, n):min(k + 1, n)) &
+                       /= lf, k = 1, n)])
    end function without_cr
+
+   !> The characters of t where keep is true, in one pass.
+   pure function kept(t, keep) result(s)
+      character(len=*), intent(in) :: t    !< text
+      logical, intent(in) :: keep(:)       !< per character of t: keep it
+      character(len=:), allocatable :: s   !< the characters kept
+      integer :: k, m
+      allocate (character(len=count(keep)) :: s)
+      m = 0
+      do k = 1, len(t)
+         if (.not. keep(k)) cycle
+         m = m + 1
+         s(m:m) = t(k:k)
+      end do
+   end function kept
+
+   !> Position of the first c in s at or after first; len(s) + 1 if there is none.
+   pure integer function next_of(s, first, c) result(last)
+      character(len=*), intent(in) :: s  !< text
+      integer, intent(in) :: first       !< where to start looking
+      character(len=1), intent(in) :: c  !< the separator
+      last = index(s(first:), c)
+      if (last == 0) then
+         last = len(s) + 1
+      else
+         last = first + last - 1
+      end if
+   end function next_of
 
    !> Split s at commas into trimmed pieces (at least one piece).
    pure subroutine split_commas(s, pieces)
@@ -105,12 +114,7 @@ contains
       allocate (pieces(n))
       first = 1
       do k = 1, n
-         last = index(s(first:), ',')
-         if (last == 0) then
-            last = len(s) + 1
-         else
-            last = first + last - 1
-         end if
+         last = next_of(s, first, ',')
          pieces(k)%s = trim(adjustl(s(first:last - 1)))
          first = last + 1
       end do

@@ -14,11 +14,14 @@ module rodyn_deck_vessel
    use rodyn_deck_card_values, only: card_get_real, card_get_name, card_get_choice, card_data_reals
    use rodyn_deck_table, only: table_t, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: pending_t, param_fail, location, node_count, node_number, &
-                                 node_label
+   use rodyn_deck_support, only: pending_t, reading_t, param_fail, location, node_count, &
+                                 node_number, &
+                                 node_label, refuse
    use rodyn_deck_dynamic, only: record_table, check_time_table
+   use rodyn_deck_waves, only: validate_waves
    use rodyn_waves, only: wave_field_t, waves_build
    use rodyn_vessel, only: vessel_coefficients
+   use rodyn_sort, only: sorted_order
    implicit none
    private
    public :: read_vessel_card, validate_vessels, rao_grid, rao_options
@@ -36,11 +39,9 @@ contains
    !> RAO rows: period [s], relative heading [deg], 6 amplitudes (m/m for translations,
    !> ROTATION UNITS per m for rotations), 6 phases [deg], on a full grid of periods and
    !> headings. TABLE rows: t [s], surge, sway, heave [m], roll, pitch, yaw (ROTATION UNITS).
-   subroutine read_vessel_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *VESSEL card
+   subroutine read_vessel_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one vessel appended
-      type(pending_t), intent(inout) :: pend  !< counts the vessels, remembers the card
       type(error_t), intent(inout) :: err     !< status
       type(vessel_t) :: ve
       type(table_t) :: table
@@ -48,13 +49,13 @@ contains
       real(wp) :: v(4), rot
       integer :: it, iphase, iunit, interp, n
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'INPUT', &
                                 'PHASE', 'ROTATION UNITS', 'INTERPOLATION', 'OFFSET X', &
                                 'OFFSET Y', 'OFFSET Z', 'OFFSET HEADING', 'DRIFT X', &
                                 'DRIFT Y', 'DRIFT YAW', 'DRIFT PERIOD', 'DRIFT PHASE', &
                                 'DRIFT INPUT', 'OFFSET START'], err)
-         if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
          ve%name = name
@@ -70,19 +71,10 @@ contains
          rot = merge(deg, 1.0_wp, iunit == 1)
          call rao_options(card, iphase, interp, err)
          if (has_error(err)) return
-         if (ve%kind == vessel_from_table) then
-            if (card_find_param(card, 'PHASE') > 0) then
-               call param_fail(card, 'PHASE', 'PHASE is only allowed with TYPE=RAO', err)
-               return
-            end if
-            if (card_find_param(card, 'INTERPOLATION') > 0) then
-               call param_fail(card, 'INTERPOLATION', 'INTERPOLATION is only allowed'// &
-                               ' with TYPE=RAO', err)
-               return
-            end if
-         end if
+         if (ve%kind == vessel_from_table) call refuse(card, [character(len=param_len) :: &
+                                                   'PHASE', 'INTERPOLATION'], &
+                                                   ' is only allowed with TYPE=RAO', err)
          call card_check_data(card, 1, 1, err, 'x, y, z, heading')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 4, v, err, 'x, y, z, heading')
          if (has_error(err)) return
          ve%origin = v(1:3)
@@ -109,10 +101,10 @@ contains
             if (has_error(err)) return
          end if
          call record_table(table, model)
+         pend%n_vessels = pend%n_vessels + 1
+         model%vessels(pend%n_vessels) = ve
+         pend%vessel_card(pend%n_vessels) = ic
       end associate
-      pend%n_vessels = pend%n_vessels + 1
-      model%vessels(pend%n_vessels) = ve
-      pend%vessel_card(pend%n_vessels) = ic
    end subroutine read_vessel_card
 
    !> The slow motion of the reference point, global (rodyn_motion's vessel_slow_motion):
@@ -269,8 +261,8 @@ contains
             if (.not. any(headings == h)) headings = [headings, h]
          end associate
       end do
-      call sort(periods)
-      call sort(headings)
+      periods = periods(sorted_order(periods))
+      headings = headings(sorted_order(headings))
       np = size(periods)
       nh = size(headings)
       allocate (seen(np, nh), rao%h(6, np, nh))
@@ -305,29 +297,13 @@ contains
             return
          end do
       end do
-   contains
-      !> Insertion sort, increasing.
-      pure subroutine sort(a)
-         real(wp), intent(inout) :: a(:)
-         real(wp) :: x
-         integer :: i, j
-         do i = 2, size(a)
-            x = a(i)
-            j = i - 1
-            do while (j >= 1)
-               if (a(j) <= x) exit
-               a(j + 1) = a(j)
-               j = j - 1
-            end do
-            a(j + 1) = x
-         end do
-      end subroutine sort
    end subroutine rao_grid
 
    !> Whole-deck checks of vessels: unique names; each *MOTION, TYPE=VESSEL names one
    !> (its index set); its node is not hinged (the hinge's axis would not turn with the
    !> vessel; a clamped end turns with it, rodyn_dynamics); a vessel moved by RAOs needs
-   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea).
+   !> a sea (*WAVE), and gets its response factors in it (vessel_in_sea). The waves are
+   !> checked first (validate_waves).
    subroutine validate_vessels(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< vessel and motion cards, VESSEL= names
@@ -335,6 +311,8 @@ contains
       type(error_t), intent(inout) :: err     !< status
       integer :: i, j, k, ib, nn, node
       character(len=:), allocatable :: what
+      call validate_waves(deck, model, err)
+      if (has_error(err)) return
       do i = 1, size(model%vessels)
          do j = 1, i - 1
             if (model%vessels(j)%name /= model%vessels(i)%name) cycle

@@ -18,8 +18,9 @@ module rodyn_deck_water
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_name, card_data_real
    use rodyn_deck_table, only: table_t, card_data_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: ref_t, pending_t, max_elements, check_once, get_bounded, &
-                                 get_lumped_body, check_card, &
+   use rodyn_deck_support, only: ref_t, pending_t, reading_t, max_elements, check_once, &
+                                 get_bounded, &
+                                 get_lumped_body, check_card, get_pair, &
                                  data_check, param_fail, location, resolve_line, &
                                  resolve_section, check_at_most, get_int_range
    use rodyn_sort, only: sorted_order
@@ -52,19 +53,16 @@ contains
    !> *WATER, DEPTH= [, SURFACE=, DENSITY=]: still water level z = SURFACE, depth below
    !> it (the seabed lies there, so the seabed is present too) and density. No data
    !> lines; at most one.
-   subroutine read_water_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *WATER card
+   subroutine read_water_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: water and seabed present
-      type(pending_t), intent(inout) :: pend  !< remembers the first *WATER
       type(error_t), intent(inout) :: err     !< status
 
-      associate (card => deck%cards(ic), w => model%water)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), w => model%water)
          call check_card(deck, ic, [character(len=param_len) :: 'DEPTH', 'SURFACE', &
                          'DENSITY'], 0, 0, err, first=pend%water)
-         if (has_error(err)) return
          call get_bounded(card, 'DEPTH', w%depth, .true., err, required=.true.)
-         if (has_error(err)) return
          call card_get_real(card, 'SURFACE', w%surface, err)
          call get_bounded(card, 'DENSITY', w%density, .true., err)
          call check_at_most(card, 'DENSITY', w%density, max_water_density, ' kg/m3', &
@@ -80,26 +78,20 @@ contains
    !> the water flows towards, from +x towards +y), one level per line; levels distinct,
    !> stored by increasing z, headings in rad. At most one. That the deck has *WATER and
    !> no level is above its surface is checked by validate_water.
-   subroutine read_current_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *CURRENT card
+   subroutine read_current_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: current profile set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *CURRENT
       type(error_t), intent(inout) :: err     !< status
       type(table_t) :: table
       integer, allocatable :: order(:)
       integer :: j, k, n
 
-      associate (card => deck%cards(ic), w => model%water)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), w => model%water)
          call check_once(deck, ic, pend%current, err)
-         if (has_error(err)) return
          call card_check_params(card, [character(len=param_len) :: 'RAMP'], err)
-         if (has_error(err)) return
          call get_bounded(card, 'RAMP', w%cur_ramp, .false., err)
-         if (has_error(err)) return
-         call card_check_data(card, 1, -1, err, what_cur)
-         if (has_error(err)) return
-         call card_data_table(card, 3, what_cur, table, err)
+         call card_data_table(card, 3, what_cur, table, err, nmin=1)
          if (has_error(err)) return
          n = table%n_rows
          do k = 1, n
@@ -124,15 +116,14 @@ contains
    !> FRICTION=, LATERAL FRICTION=, MOBILISATION VELOCITY=]: the properties of the plane
    !> seabed at the water depth (angles in deg, stored in rad). No data lines; at most
    !> one. That the deck has *WATER is checked by validate_water.
-   subroutine read_seabed_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *SEABED card
+   subroutine read_seabed_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: seabed properties set
-      type(pending_t), intent(inout) :: pend  !< remembers the first *SEABED
       type(error_t), intent(inout) :: err     !< status
-      real(wp) :: slope, dir, mu
+      real(wp) :: slope, dir
 
-      associate (card => deck%cards(ic), sb => model%seabed)
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic), sb => model%seabed)
          call check_card(deck, ic, [character(len=param_len) :: 'SLOPE', 'SLOPE DIRECTION', &
                          'STIFFNESS', 'DAMPING', 'FRICTION', 'AXIAL FRICTION', &
                          'LATERAL FRICTION', 'MOBILISATION VELOCITY'], 0, 0, err, &
@@ -157,22 +148,8 @@ contains
          call get_bounded(card, 'DAMPING', sb%damping, .false., err)
          call get_bounded(card, 'MOBILISATION VELOCITY', sb%v_mob, .true., err)
          if (has_error(err)) return
-         if (card_find_param(card, 'FRICTION') > 0) then
-            if (card_find_param(card, 'AXIAL FRICTION') > 0 .or. &
-                card_find_param(card, 'LATERAL FRICTION') > 0) then
-               call param_fail(card, 'FRICTION', 'give FRICTION or AXIAL FRICTION/LATERAL'// &
-                               ' FRICTION, not both', err)
-               return
-            end if
-            mu = 0.0_wp
-            call get_bounded(card, 'FRICTION', mu, .false., err)
-            if (has_error(err)) return
-            sb%mu_axial = mu
-            sb%mu_lateral = mu
-         else
-            call get_bounded(card, 'AXIAL FRICTION', sb%mu_axial, .false., err)
-            call get_bounded(card, 'LATERAL FRICTION', sb%mu_lateral, .false., err)
-         end if
+         call get_pair(card, 'FRICTION', 'AXIAL FRICTION', 'LATERAL FRICTION', sb%mu_axial, &
+                       sb%mu_lateral, .false., err)
       end associate
    end subroutine read_seabed_card
 
@@ -190,16 +167,11 @@ contains
       block
          call card_check_params(card, [character(len=param_len) :: 'LINE', 'SECTION', &
                                 'LENGTH', 'ELEMENTS'], err)
-         if (has_error(err)) return
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
          call card_get_name(card, 'SECTION', section, err, required=.true.)
-         if (has_error(err)) return
          length = 0.0_wp
          call get_bounded(card, 'LENGTH', length, .true., err, required=.true.)
-         if (has_error(err)) return
          n = 0
          call get_int_range(card, 'ELEMENTS', 1, max_elements, n, err, required=.true.)
          if (has_error(err)) return
@@ -214,21 +186,18 @@ contains
    !> *ATTACHMENT, LINE=, S= [, MASS=, VOLUME=, CDA=, CA=]: a clump weight or buoy at
    !> arc length S of a line. No data lines. S within the line and the need for *WATER
    !> are checked by validate_water.
-   subroutine read_attachment_card(deck, ic, model, pend, err)
-      type(deck_t), intent(in) :: deck        !< all cards
-      integer, intent(in) :: ic               !< index of the *ATTACHMENT card
+   subroutine read_attachment_card(rd, model, err)
+      type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one attachment appended
-      type(pending_t), intent(inout) :: pend  !< remembers the LINE= reference
       type(error_t), intent(inout) :: err     !< status
       type(attachment_t) :: att
       character(len=:), allocatable :: line
 
-      associate (card => deck%cards(ic))
+      associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
+                 card => rd%deck%cards(rd%ic))
          call check_card(deck, ic, [character(len=param_len) :: 'LINE', 'S', 'MASS', &
                          'VOLUME', 'CDA', 'CA'], 0, 0, err)
-         if (has_error(err)) return
          call card_get_name(card, 'LINE', line, err, required=.true.)
-         if (has_error(err)) return
          call get_bounded(card, 'S', att%s, .false., err, required=.true.)
          if (has_error(err)) return
          if (card_find_param(card, 'MASS') == 0 .and. card_find_param(card, 'VOLUME') == 0 &
@@ -240,10 +209,10 @@ contains
          end if
          call get_lumped_body(card, att%mass, att%volume, att%cda_area, att%ca, err)
          if (has_error(err)) return
+         pend%n_attachments = pend%n_attachments + 1
+         model%attachments(pend%n_attachments) = att
+         pend%att_line(pend%n_attachments) = ref_t(line, ic)
       end associate
-      pend%n_attachments = pend%n_attachments + 1
-      model%attachments(pend%n_attachments) = att
-      pend%att_line(pend%n_attachments) = ref_t(line, ic)
    end subroutine read_attachment_card
 
    !> The hydrodynamic and contents parameters of a *SECTION card (BUOYANCY DIAMETER,
@@ -269,9 +238,7 @@ contains
       call check_at_most(card, 'CAA', sec%caa, max_coefficient, '', coeff_why, err)
       call get_bounded(card, 'ID', sec%id, .false., err)
       call get_bounded(card, 'CONTENTS DENSITY', sec%rho_i, .false., err)
-      if (has_error(err)) return
       call card_get_real(card, 'CONTENTS PRESSURE', sec%p_i, err)
-      if (has_error(err)) return
       call card_get_real(card, 'PRESSURE Z', sec%z_pi, err)
       if (has_error(err)) return
 
@@ -392,6 +359,7 @@ contains
    !> *ATTACHMENT names a line, lies within it, and has no VOLUME, CDA or CA without
    !> *WATER; in water, every section used by a line has a buoyancy diameter (OD= or
    !> BUOYANCY DIAMETER=); no end of a line nor a POSITION target lies below the seabed.
+   !> Sets EMC's RHO INF in water when *DYNAMIC gives none (dynamic_scheme_default).
    subroutine validate_water(deck, pend, model, err)
       type(deck_t), intent(in) :: deck        !< all cards
       type(pending_t), intent(in) :: pend     !< references to resolve
@@ -441,6 +409,7 @@ contains
 
       call check_attachments(deck, pend, model, err)
       if (has_error(err)) return
+      call dynamic_scheme_default(model)
       if (.not. model%water%present) return
       call check_sections_in_water(deck, pend, model, err)
       if (has_error(err)) return

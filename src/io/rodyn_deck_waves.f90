@@ -8,14 +8,14 @@ module rodyn_deck_waves
    use rodyn_error, only: error_t, has_error
    use rodyn_model, only: model_t, waves_t, stretch_names, sea_names, sea_airy, &
                           sea_jonswap, sea_table, sea_record
-   use rodyn_deck_lexer, only: deck_t
+   use rodyn_deck_lexer, only: deck_t, last_card
    use rodyn_deck_card, only: card_t, card_check_params, card_error, card_check_data, &
                               card_data_error, card_find_param, card_file_error, param_len
    use rodyn_deck_card_values, only: card_get_real, card_get_int, card_get_choice, card_get_name, &
                                      card_data_reals
    use rodyn_deck_table, only: table_t, card_data_table, card_get_table
    use rodyn_deck_numbers, only: real_str, int_str
-   use rodyn_deck_support, only: get_bounded, param_fail, location, data_check
+   use rodyn_deck_support, only: get_bounded, param_fail, location, data_check, refuse
    use rodyn_deck_dynamic, only: record_table, check_time_table
    use rodyn_waves, only: wave_number, jonswap_gamma, sea_components, record_components
    implicit none
@@ -35,6 +35,7 @@ module rodyn_deck_waves
    integer, parameter :: default_directions = 15   !< directions when SPREADING is given
    real(wp), parameter :: record_spacing = 1.0e-6_wp !< tolerance of a record's step [dt]
    character(len=1), parameter :: lf = achar(10)
+   character(len=*), parameter :: not_of = ' is not a parameter of TYPE=' !< refuse's why
 
 contains
 
@@ -89,7 +90,7 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'INPUT', 'X', 'Y'], &
-                     trim(sea_names(wv%kind)), err)
+                     not_of//trim(sea_names(wv%kind)), err)
          if (has_error(err)) return
          if (wv%kind /= sea_airy) then
             call read_sea(card, wv, err)
@@ -100,16 +101,13 @@ contains
             return
          end if
          call refuse(card, [character(len=param_len) :: 'HS', 'TP', 'GAMMA', 'COMPONENTS', &
-                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], 'AIRY', err)
-         if (has_error(err)) return
+                     'SEED', 'OMEGA MIN', 'OMEGA MAX', 'SPREADING', 'DIRECTIONS'], &
+                     not_of//'AIRY', err)
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          h = 0.0_wp
          call get_bounded(card, 'HEIGHT', h, .true., err, required=.true.)
-         if (has_error(err)) return
          t = 0.0_wp
          call get_bounded(card, 'PERIOD', t, .true., err, required=.true.)
-         if (has_error(err)) return
          phase = 0.0_wp
          call card_get_real(card, 'PHASE', phase, err)
          if (has_error(err)) return
@@ -135,16 +133,13 @@ contains
       logical :: found
 
       call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE'], &
-                  trim(sea_names(wv%kind)), err)
+                  not_of//trim(sea_names(wv%kind)), err)
       if (wv%kind /= sea_jonswap) call refuse(card, [character(len=param_len) :: 'GAMMA'], &
-                                              trim(sea_names(wv%kind)), err)
+                                              not_of//trim(sea_names(wv%kind)), err)
       if (has_error(err)) return
       if (wv%kind == sea_table) then
-         call refuse(card, [character(len=param_len) :: 'HS', 'TP'], 'SPECTRUM', err)
-         if (has_error(err)) return
-         call card_check_data(card, 2, -1, err, what)
-         if (has_error(err)) return
-         call card_data_table(card, 2, what, table, err)
+         call refuse(card, [character(len=param_len) :: 'HS', 'TP'], not_of//'SPECTRUM', err)
+         call card_data_table(card, 2, what, table, err, nmin=2)
          if (has_error(err)) return
          n = table%n_rows
          do k = 1, n
@@ -172,9 +167,7 @@ contains
          wv%omega_max = wv%tab_omega(n)
       else
          call card_check_data(card, 0, 0, err)
-         if (has_error(err)) return
          call get_bounded(card, 'HS', wv%hs, .true., err, required=.true.)
-         if (has_error(err)) return
          call get_bounded(card, 'TP', wv%tp, .true., err, required=.true.)
          if (has_error(err)) return
          wv%gamma = 1.0_wp
@@ -197,7 +190,6 @@ contains
          return
       end if
       call read_spreading(card, wv, err)
-      if (has_error(err)) return
       call card_get_int(card, 'SEED', wv%seed, err)
       call get_bounded(card, 'OMEGA MIN', wv%omega_min, .true., err)
       call get_bounded(card, 'OMEGA MAX', wv%omega_max, .true., err)
@@ -222,10 +214,8 @@ contains
       integer :: k, n
       call refuse(card, [character(len=param_len) :: 'HEIGHT', 'PERIOD', 'PHASE', 'HS', &
                   'TP', 'GAMMA', 'COMPONENTS', 'SEED', 'OMEGA MIN', 'OMEGA MAX', &
-                  'SPREADING', 'DIRECTIONS'], 'RECORD', err)
-      if (has_error(err)) return
+                  'SPREADING', 'DIRECTIONS'], not_of//'RECORD', err)
       call card_check_data(card, 0, 0, err)
-      if (has_error(err)) return
       call card_get_real(card, 'X', model%waves%point(1), err)
       call card_get_real(card, 'Y', model%waves%point(2), err)
       if (has_error(err)) return
@@ -280,22 +270,6 @@ contains
       end if
    end subroutine read_spreading
 
-   !> An error at the first of `names` given on the card: not a parameter of this TYPE.
-   subroutine refuse(card, names, kind, err)
-      type(card_t), intent(in) :: card          !< the *WAVE card
-      character(len=*), intent(in) :: names(:)  !< parameters the TYPE does not take
-      character(len=*), intent(in) :: kind      !< the TYPE
-      type(error_t), intent(inout) :: err       !< status
-      integer :: j
-      if (has_error(err)) return
-      do j = 1, size(names)
-         if (card_find_param(card, trim(names(j))) == 0) cycle
-         call param_fail(card, trim(names(j)), trim(names(j))//' is not a parameter of '// &
-                         'TYPE='//kind, err)
-         return
-      end do
-   end subroutine refuse
-
    !> *WAVE PROBE, NAME=: one data line x, y [m] (global): a point whose wave elevation
    !> is written with the frames and every step (dynamic_waves.csv, docs/output.md).
    !> Names are unique among the probes; the deck needs *WAVE (validate_waves).
@@ -312,7 +286,6 @@ contains
 
       associate (card => deck%cards(ic), wv => model%waves)
          call card_check_params(card, [character(len=param_len) :: 'NAME'], err)
-         if (has_error(err)) return
          call card_get_name(card, 'NAME', name, err, required=.true.)
          if (has_error(err)) return
          if (len(name) > len(names)) then
@@ -321,7 +294,6 @@ contains
             return
          end if
          call card_check_data(card, 1, 1, err, 'x, y')
-         if (has_error(err)) return
          call card_data_reals(card, 1, 2, xy, err, 'x, y')
          if (has_error(err)) return
          n = 0
@@ -382,10 +354,7 @@ contains
       integer :: ic, i
       text = ''
       if (.not. model%waves%present .or. .not. model%water%present) return
-      ic = 0
-      do i = 1, deck%n_cards
-         if (deck%cards(i)%keyword == 'WAVE') ic = i
-      end do
+      ic = last_card(deck, 'WAVE')
       if (ic == 0) return
       d = model%water%depth
       if (model%waves%kind == sea_record) return
