@@ -321,24 +321,30 @@ def worker_moordyn_ic(a):
                    "static_tension_N": tens}, f)
 
 
-def worker_moordyn(a):
-    import moordyn
+def moordyn_restored(moordyn, a, deck, x0):
+    """MoorDyn on the deck of a.n segments and dtM a.dt (written to `deck`), its static
+    state restored from the stationary solve (ic_path); the system and its three
+    coupled points."""
     base, _ = ic_path(a.n)
     with open(base + ".bin", "rb") as f:
         data = f.read()
-    deck = a.out[:-4] + ".dat"
     with open(deck, "w") as f:
         f.write(md_deck(a.n, "MoorDyn", moordyn_options(a.dt)))
+    s = moordyn.Create(deck)
+    moordyn.Init_NoIC(s, x0.ravel().tolist(), [0.0] * 3 * NLEG)
+    moordyn.Deserialize(s, data)
+    return s, [moordyn.GetPoint(s, k + 4) for k in range(NLEG)]
+
+
+def worker_moordyn(a):
+    import moordyn
     ts, u = samples()
     nsteps = int(round(T_END / H))
     x0 = fairleads()
     out_t, out_T = [0.0], []
     c0, w0 = time.process_time(), time.perf_counter()
     with _Quiet():
-        s = moordyn.Create(deck)
-        moordyn.Init_NoIC(s, x0.ravel().tolist(), [0.0] * 3 * NLEG)
-        moordyn.Deserialize(s, data)
-        pts = [moordyn.GetPoint(s, k + 4) for k in range(NLEG)]
+        s, pts = moordyn_restored(moordyn, a, a.out[:-4] + ".dat", x0)
         force = moordyn.GetPointForce
         out_T.append([math.sqrt(sum(c * c for c in force(p))) for p in pts])
         c1, w1 = time.process_time(), time.perf_counter()
@@ -367,19 +373,10 @@ def worker_moordyn_loop(a):
     """The MoorDyn worker's time loop without moordyn.Step (the coupling arrays, the force
     read-outs): the Python share of its stepping CPU. Prints the CPU [s]."""
     import moordyn
-    base, _ = ic_path(a.n)
-    with open(base + ".bin", "rb") as f:
-        data = f.read()
-    deck = a.out
-    with open(deck, "w") as f:
-        f.write(md_deck(a.n, "MoorDyn", moordyn_options(a.dt)))
     ts, u = samples()
     x0 = fairleads()
     with _Quiet():
-        s = moordyn.Create(deck)
-        moordyn.Init_NoIC(s, x0.ravel().tolist(), [0.0] * 3 * NLEG)
-        moordyn.Deserialize(s, data)
-        pts = [moordyn.GetPoint(s, k + 4) for k in range(NLEG)]
+        s, pts = moordyn_restored(moordyn, a, a.out, x0)
         force = moordyn.GetPointForce
         out = []
         c0 = time.process_time()

@@ -331,14 +331,14 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem (x_held set)
       real(wp), intent(in) :: t0                     !< time at the start of the step [s]
       real(wp), intent(in) :: dt                     !< step [s]
-      real(wp) :: u(3), q(3, 3)
+      real(wp) :: u(3)
       integer :: node, i
       do i = 1, size(prob%motion_node)
          node = prob%motion_node(i)
          ! (vessels unallocated, as in a model built without a deck, is an absent
          ! optional argument)
          call held_motion(prob%model%motions(prob%motion_of(i)), prob%vessels, &
-                          prob%x_start(:, node), t0, dt, past_end(prob, t0, dt), u, q)
+                          prob%x_start(:, node), t0, dt, past_end(prob, t0, dt), u)
          prob%x_held(:, node) = prob%x_start(:, node) + u
       end do
    end subroutine held_positions

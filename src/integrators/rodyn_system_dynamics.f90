@@ -294,8 +294,8 @@ contains
       call point_velocities(mesh, state)
    end subroutine apply_initial_velocities
    !> Where a prescribed motion takes a node over the step t0 -> t0 + dt: its
-   !> displacement u from x0 (its position at t = 0) and its rotation q at t0 + dt
-   !> (rodyn_motion; q = I but for a vessel's). The step past the run's end (past:
+   !> displacement u from x0 (its position at t = 0) and, if asked, its rotation q at
+   !> t0 + dt (rodyn_motion; q = I but for a vessel's). The step past the run's end (past:
    !> rodyn_timeloop's look_ahead, for the last frame's support forces) continues a
    !> motion whose data end before t0 + dt on the path of its last step: a *MOTION table
    !> by u(t0 + dt) = 2 u(t0) - u(t0 - dt), a vessel's motion and drift tables by a row
@@ -310,22 +310,22 @@ contains
       real(wp), intent(in) :: dt                         !< step [s]
       logical, intent(in) :: past                        !< the step past the run's end
       real(wp), intent(out) :: u(3)                      !< displacement at t0 + dt [m]
-      real(wp), intent(out) :: q(3, 3)                   !< rotation at t0 + dt [-]
+      real(wp), intent(out), optional :: q(3, 3)         !< rotation at t0 + dt [-]
       type(vessel_t), allocatable :: vx(:)
       if (past .and. motion_data_end(mo, vessels) < t0 + dt) then
          if (mo%kind == motion_vessel) then
             vx = vessels
             call extend_vessel(vx(mo%vessel), t0, dt)
             u = motion_displacement(mo, t0 + dt, vx, x0)
-            q = motion_rotation(mo, t0 + dt, vx)
+            if (present(q)) q = motion_rotation(mo, t0 + dt, vx)
          else
             u = 2.0_wp*motion_displacement(mo, t0, vessels, x0) - &
                 motion_displacement(mo, t0 - dt, vessels, x0)
-            q = motion_rotation(mo, t0 + dt, vessels)
+            if (present(q)) q = motion_rotation(mo, t0 + dt, vessels)
          end if
       else
          u = motion_displacement(mo, t0 + dt, vessels, x0)
-         q = motion_rotation(mo, t0 + dt, vessels)
+         if (present(q)) q = motion_rotation(mo, t0 + dt, vessels)
       end if
    end subroutine held_motion
 
