@@ -1,6 +1,7 @@
 !> Command line of the rodyn program:
-!>   rodyn DECK [-o DIR] [--restart DIR] [--set NAME=VALUE ...] [--check] [--verbose]
-!>         [--quiet] [--progress] [--version] [--help]
+!>   rodyn DECK [-o DIR] [--restart DIR] [--set NAME=VALUE ...] [--check] [--to-deck]
+!>         [--verbose] [--quiet] [--progress] [--version] [--help]
+!> DECK is a rodyn deck or a MoorDyn v2 input file (docs/moordyn.md).
 module rodyn_cli
    use rodyn_error, only: error_t, set_error, stat_input
    use rodyn_deck_params, only: param_override_t, param_valid_name, upper_case
@@ -13,6 +14,7 @@ module rodyn_cli
       character(len=:), allocatable :: deck    !< input deck path
       character(len=:), allocatable :: outdir  !< output folder ('' = default)
       logical :: check = .false.               !< validate the deck only
+      logical :: to_deck = .false.             !< write the deck of a MoorDyn file
       logical :: restart = .false.             !< continue the run in outdir (--restart)
       logical :: verbose = .false.             !< Newton iteration log on stdout
       logical :: quiet = .false.               !< nothing on stdout
@@ -24,9 +26,10 @@ module rodyn_cli
 
    character(len=*), parameter :: cli_usage = &
       'usage: rodyn DECK [-o DIR] [--restart DIR] [--set NAME=VALUE ...] [--check]'// &
-      ' [--verbose] [--quiet] [--progress] [--version] [--help]'// &
+      ' [--to-deck] [--verbose] [--quiet] [--progress] [--version] [--help]'// &
       new_line('a')//new_line('a')// &
-      '  DECK           keyword input deck (see docs/deck.md)'//new_line('a')// &
+      '  DECK           keyword input deck (see docs/deck.md), or a MoorDyn v2 input'// &
+      ' file (docs/moordyn.md)'//new_line('a')// &
       '  -o, --output DIR  folder for the results (default: the deck name without'// &
       ' extension)'//new_line('a')// &
       '  --restart DIR  continue the killed dynamic run in folder DIR from its last'// &
@@ -35,6 +38,8 @@ module rodyn_cli
       new_line('a')// &
       '  --check        read and validate the deck, build the mesh, compute nothing'// &
       new_line('a')// &
+      '  --to-deck      write the rodyn deck of a MoorDyn file on stdout, compute'// &
+      ' nothing'//new_line('a')// &
       '  --verbose      log every Newton iteration'//new_line('a')// &
       '  --quiet        print nothing but errors'//new_line('a')// &
       '  --progress     progress line of a dynamic run on stderr (default: only when'// &
@@ -91,6 +96,8 @@ contains
             if (err%code /= 0) return
          case ('--check')
             opts%check = .true.
+         case ('--to-deck')
+            opts%to_deck = .true.
          case ('-v', '--verbose')
             opts%verbose = .true.
          case ('-q', '--quiet')

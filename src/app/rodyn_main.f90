@@ -12,6 +12,7 @@ program rodyn
    use rodyn_cli, only: cli_options_t, cli_parse, cli_usage
    use rodyn_model, only: model_t, scheme_names, scheme_emc, scheme_alpha
    use rodyn_deck, only: deck_read
+   use rodyn_moordyn, only: moordyn_file, moordyn_read, moordyn_deck_text
    use rodyn_mesh, only: mesh_t, mesh_build
    use rodyn_mesh_checks, only: fix_leading_dots
    use rodyn_state, only: state_t
@@ -54,7 +55,7 @@ program rodyn
    type(state_t), target :: dstate
    type(checkpoint_t) :: ck      ! --restart: the checkpoint continued
    real(wp), allocatable :: r0(:, :)
-   character(len=:), allocatable :: missing, warnings
+   character(len=:), allocatable :: missing, warnings, notes, deck_text
    logical :: static_runs, show_progress
    integer :: log_unit, n_dof, half_bw
    integer, allocatable :: dof_first(:), dof_count(:)
@@ -74,7 +75,26 @@ program rodyn
       call finish(stat_ok)
    end if
 
-   call deck_read(opts%deck, model, err, opts%sets, warnings)
+   warnings = ''
+   notes = ''
+   if (moordyn_file(opts%deck)) then
+      if (opts%to_deck) then
+         call moordyn_deck_text(opts%deck, deck_text, notes, err)
+         if (.not. has_error(err)) write (output_unit, '(a)', advance='no') deck_text
+         if (has_error(err)) write (error_unit, '(a)') err%message
+         call finish(err%code)
+      end if
+      if (size(opts%sets) > 0) call set_error(err, stat_input, 'rodyn: error: --set: '// &
+                                              opts%deck//' is a MoorDyn file: no *PARAMETER')
+      if (.not. has_error(err)) call moordyn_read(opts%deck, model, err, notes, warnings)
+      if (len(notes) > 0 .and. .not. opts%quiet) write (output_unit, '(a)', advance='no') notes
+   else if (opts%to_deck) then
+      write (error_unit, '(a)') 'rodyn: error: --to-deck: '//opts%deck//' is not a MoorDyn '// &
+         'input file (no line of dashes naming LINE TYPES, POINTS, LINES, ...)'
+      call finish(stat_input)
+   else
+      call deck_read(opts%deck, model, err, opts%sets, warnings)
+   end if
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
    ! --check computes nothing: the lines' starting catenaries are solved only for a run
    if (.not. has_error(err)) call mesh_build(model, mesh, state, err, &

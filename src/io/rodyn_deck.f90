@@ -21,7 +21,7 @@ module rodyn_deck
    use rodyn_model, only: model_t, section_t, line_def_t, constraint_t, point_load_t, &
                           bc_free, bc_pinned, bc_hinged, bc_clamped, bc_position, end_a, end_b, &
                           element_names, element_cable, element_rod
-   use rodyn_deck_lexer, only: deck_t, deck_lex, keyword_count
+   use rodyn_deck_lexer, only: deck_t, deck_lex, keyword_count, deck_source_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
                               card_param_error, card_data_error, card_check_data, card_data_count, &
                               param_len
@@ -61,7 +61,7 @@ module rodyn_deck
                                 check_clamped_ends, check_point_ends, system_complete
    implicit none
    private
-   public :: deck_read
+   public :: deck_read, deck_source_t
 
    !> A whole-deck check, run once all cards are read (validate_model).
    abstract interface
@@ -86,20 +86,22 @@ contains
    !> model%deck_text what was read, and the model arrays the items read before the error.
    !> `overrides` are the --set values of parameters (rodyn_deck_params); model%parameters
    !> gets the values used; `warnings` the lines 'FILE:LINE: warning: ...' to show
-   !> (parameters never used), each ended by a newline ('' if none).
-   subroutine deck_read(path, model, err, overrides, warnings)
+   !> (parameters never used), each ended by a newline ('' if none). With `source`, the
+   !> deck is its text (a MoorDyn file translated), located at the lines of path it maps.
+   subroutine deck_read(path, model, err, overrides, warnings, source)
       character(len=*), intent(in) :: path    !< path of the main deck file
       type(model_t), intent(out) :: model     !< the model read
       type(error_t), intent(inout) :: err     !< status (stat_input on a bad rd%deck)
       type(param_override_t), intent(in), optional :: overrides(:) !< --set values
       character(len=:), allocatable, intent(out), optional :: warnings !< warning lines
+      type(deck_source_t), intent(in), optional :: source !< the deck's text, for path's
       type(reading_t) :: rd
       integer :: ic
 
       model%deck_file = path
       model%deck_text = ''
       model%title = ''
-      call deck_lex(path, rd%deck, err, overrides)
+      call deck_lex(path, rd%deck, err, overrides, source)
       if (allocated(rd%deck%text)) model%deck_text = rd%deck%text
       if (has_error(err)) rd%deck%n_cards = 0
       allocate (model%parameters(rd%deck%params%n))

@@ -34,7 +34,7 @@ module rodyn_deck_lexer
    use rodyn_deck_include, only: include_open, max_include_depth
    implicit none
    private
-   public :: deck_t, deck_lex, keyword_count, last_card
+   public :: deck_t, deck_source_t, deck_lex, keyword_count, last_card
 
    !> The deck: all cards of the main file and its includes, in reading order.
    type :: deck_t
@@ -47,17 +47,27 @@ module rodyn_deck_lexer
       type(field_t), allocatable :: warnings(:)  !< 'FILE:LINE: warning: ...' messages
    end type deck_t
 
+   !> A deck made by a program rather than read from `path` (a MoorDyn input file
+   !> translated, rodyn_moordyn_deck): its text, and for each of its lines the line of
+   !> `path` it stands for, where its messages point (0: a line of its own, reported as
+   !> line 1 of path).
+   type :: deck_source_t
+      character(len=:), allocatable :: text      !< the deck's text, lines ended by LF
+      integer, allocatable :: line_map(:)        !< line of path of each line of text
+   end type deck_source_t
+
 contains
 
    !> Read the deck file `path` and its includes into a list of cards.
    !> A file that cannot be read gives 'PATH: error: cannot open deck'; a value of
    !> `overrides` whose name no *PARAMETER defines, 'rodyn: error: --set NAME: no
    !> *PARAMETER NAME in PATH'. Parameters never used are listed in deck%warnings.
-   subroutine deck_lex(path, deck, err, overrides)
+   subroutine deck_lex(path, deck, err, overrides, source)
       character(len=*), intent(in) :: path   !< path of the main deck file
       type(deck_t), intent(out) :: deck      !< the cards read
       type(error_t), intent(inout) :: err    !< status (stat_input on error)
       type(param_override_t), intent(in), optional :: overrides(:) !< --set values
+      type(deck_source_t), intent(in), optional :: source !< the deck's text, for path's
       character(len=:), allocatable :: text
       type(field_t) :: stack(0:max_include_depth)
       logical :: ok
@@ -73,13 +83,22 @@ contains
       else
          allocate (deck%overrides(0))
       end if
-      call read_file_text(path, text, ok)
+      if (present(source)) then
+         text = source%text
+         ok = .true.
+      else
+         call read_file_text(path, text, ok)
+      end if
       if (.not. ok) then
          call set_error(err, stat_input, path//': error: cannot open deck')
          return
       end if
       stack(0)%s = path_normalise(path)
-      call lex_text(path, text, 0, stack, deck, err)
+      if (present(source)) then
+         call lex_text(path, text, 0, stack, deck, err, source%line_map)
+      else
+         call lex_text(path, text, 0, stack, deck, err)
+      end if
       if (has_error(err)) return
       do k = 1, size(deck%overrides)
          if (.not. deck%overrides(k)%matched) then
@@ -97,15 +116,17 @@ contains
    end subroutine deck_lex
 
    !> Split the text of one file into lines and turn them into cards; recurse into
-   !> *INCLUDE files (rodyn_deck_include). `depth` is 0 for the main file.
-   recursive subroutine lex_text(path, text, depth, stack, deck, err)
+   !> *INCLUDE files (rodyn_deck_include). `depth` is 0 for the main file. With
+   !> `line_map`, line k of text is located at line line_map(k) of path.
+   recursive subroutine lex_text(path, text, depth, stack, deck, err, line_map)
       character(len=*), intent(in) :: path       !< path the file was opened with
       character(len=*), intent(in) :: text       !< the file's contents
       integer, intent(in) :: depth               !< include depth of this file
       type(field_t), intent(inout) :: stack(0:)  !< normalised paths of the open files
       type(deck_t), intent(inout) :: deck        !< cards read so far
       type(error_t), intent(inout) :: err        !< status
-      integer :: first, line_no, cur
+      integer, intent(in), optional :: line_map(:) !< line of path of each line of text
+      integer :: first, line_no, cur, k
       character(len=:), allocatable :: s, t, ipath, itext
       type(card_t) :: card
       type(error_t) :: perr
@@ -121,10 +142,12 @@ contains
       end if
 
       cur = 0        ! card of the data lines: 0 none yet, -1 *INCLUDE, -2 *PARAMETER
-      line_no = 0
+      k = 0
       first = 1
       do while (first <= len(text))
-         call next_line(text, first, line_no, s)
+         call next_line(text, first, k, s)
+         line_no = k
+         if (present(line_map)) line_no = max(1, line_map(min(k, size(line_map))))
          if (len(s) == 0) cycle
          if (len(s) >= 2) then
             if (s(1:2) == '**') cycle

@@ -467,8 +467,10 @@ contains
    end subroutine line_stress_free_strains
 
    !> Initial configuration of line l: the elastic catenary when both ends are held in
-   !> position and the line hangs (weight > 0, ends not vertically aligned), else the
-   !> straight line from A towards B.
+   !> position and the line is slack with a weight in water (ends not vertically
+   !> aligned): hanging for a weight > 0, floating up (the catenary turned upside down:
+   !> gravity's direction reversed) for a buoyant line; else the straight line from A
+   !> towards B.
    subroutine line_initial_shape(model, mesh, l, state, shape, err)
       type(model_t), intent(in) :: model     !< model
       type(mesh_t), intent(in) :: mesh       !< mesh
@@ -484,6 +486,11 @@ contains
       call check_slack_line(model, mesh, l, lc, err)
       if (has_error(err)) return
       if (.not. shape) return
+      if (lc%w < 0.0_wp) then       ! a buoyant line: the catenary hung from gravity reversed
+         lc%up = -lc%up
+         lc%rise = -lc%rise
+         lc%w = -lc%w
+      end if
       if (mesh%line_catenary(l) .and. lc%w > 0.0_wp .and. &
           lc%span >= 1.0e-9_wp*model%lines(l)%length) then
          call start_catenary(model, mesh, l, lc, sc, err)
@@ -529,8 +536,8 @@ contains
       call line_mean_weight(model, mesh, l, lc%w, lc%ea)
    end subroutine line_chord
 
-   !> A slack line held at both ends needs weight and a horizontal span to hang: the
-   !> error naming what it lacks when it has not.
+   !> A slack line held at both ends needs a weight in water (or a buoyancy) and a
+   !> horizontal span to hang: the error naming what it lacks when it has not.
    subroutine check_slack_line(model, mesh, l, lc, err)
       type(model_t), intent(in) :: model          !< model
       type(mesh_t), intent(in) :: mesh            !< mesh
@@ -541,13 +548,8 @@ contains
       associate (ld => model%lines(l))
          if (.not. (mesh%line_catenary(l) .and. &
                     lc%dist < ld%length*(1.0_wp - 1.0e-12_wp))) return
-         if (.not. (lc%w <= 0.0_wp .or. lc%span < 1.0e-9_wp*ld%length)) return
-         if (lc%w < 0.0_wp) then
-            write (msg, '(3a,es10.3,a)') 'line ', trim(ld%name), ' is slack between'// &
-               ' its held ends but buoyant (mean weight in water ', lc%w, ' N/m < 0:'// &
-               ' it floats up; check the water DENSITY, the section masses and'// &
-               ' BUOYANCY DIAMETER): no hanging catenary to start from'
-         else if (lc%w == 0.0_wp) then
+         if (.not. (lc%w == 0.0_wp .or. lc%span < 1.0e-9_wp*ld%length)) return
+         if (lc%w == 0.0_wp) then
             write (msg, '(3a)') 'line ', trim(ld%name), ' is slack between its'// &
                ' held ends but weightless (no mass, no gravity, or a weight balanced'// &
                ' exactly by buoyancy): no hanging catenary to start from'
@@ -576,7 +578,8 @@ contains
       associate (ld => model%lines(l))
          sc%grounded = .false.
          sc%b_low = lc%rise < 0.0_wp
-         if (model%seabed%present .and. abs(lc%rise) > 1.0e-9_wp*ld%length) then
+         if (model%seabed%present .and. abs(lc%rise) > 1.0e-9_wp*ld%length .and. &
+             dot_product(lc%up, model%gravity) < 0.0_wp) then
             xy = merge(ld%end_b, ld%end_a, sc%b_low)
             z_lo = seabed_z(model, xy(1), xy(2))
             if (xy(3) - z_lo < 1.0e-6_wp*ld%length + 1.0e-9_wp) &
