@@ -12,8 +12,9 @@ cd "$(dirname "$0")/.."
 debs=(gfortran cmake make liblapack-dev libblas-dev libarpack2-dev libhdf5-dev m4)
 # --tests (tools/test.sh): also valgrind, for the allocation check of the Newton loops
 # (bench/alloc_check.sh, CTest bench_alloc_check_quick), and strace, which stops a run at
-# a chosen system call (tests/program/check_status_gap.py)
-[ "${1:-}" = "--tests" ] && debs+=(valgrind strace)
+# a chosen system call (tests/program/check_status_gap.py), and g++, which builds MoorDyn's
+# own C++ tests against librodyn (tests/moordyn_suite/)
+[ "${1:-}" = "--tests" ] && debs+=(valgrind strace g++)
 # python3 and pip may come from elsewhere (pyenv): ask Debian only when absent
 command -v python3 >/dev/null 2>&1 || debs+=(python3)
 python3 -m pip --version >/dev/null 2>&1 || debs+=(python3-pip)

@@ -20,9 +20,8 @@ module rodyn_timeloop
    use rodyn_load_check, only: load_divergence_hint
    use rodyn_newton, only: newton_options_t, newton_stats_t, newton_solve
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_begin_step, dynamics_end_step, &
-                             dynamics_accept_step, dynamics_strain_energy, mesh_strain_energy
-   use rodyn_inertia, only: kinetic_energy, linear_momentum, angular_momentum
-   use rodyn_rotation, only: rotation_cayley_inverse, relative_rotation
+                             dynamics_accept_step
+   use rodyn_step_energy, only: step_energies, converged_energies, step_work
    use rodyn_results, only: step_log_t, run_summary_t
    use rodyn_state, only: state_copy
    use rodyn_mesh_checks, only: mesh_spurious_shape
@@ -32,6 +31,7 @@ module rodyn_timeloop
    private
    public :: timeloop_run, frame_callback, step_callback, step_energies
    public :: timeloop_state_t, checkpoint_callback, timeloop_observer_t
+   public :: timeloop_begin, timeloop_advance
 
    !> What the time loop carries from one step to the next besides the problem (a
    !> checkpoint holds it; timeloop_run continues from it).
@@ -49,6 +49,7 @@ module rodyn_timeloop
       type(newton_options_t) :: opts     !< Newton controls of a step
       real(wp) :: dt = 0.0_wp            !< time step DT [s]
       real(wp) :: t_end = 0.0_wp         !< end of the run [s]
+      real(wp) :: t_pause = huge(1.0_wp) !< where the run waits for its host [s]
       real(wp) :: interval = 0.0_wp      !< time between output frames [s]
       real(wp) :: tol_t = 0.0_wp         !< tolerance of a time [s]
       real(wp) :: e_tol = 0.0_wp         !< EMC's energy identity: mismatch / exchange [-]
@@ -154,102 +155,6 @@ module rodyn_timeloop
 
 contains
 
-   !> Energies and momenta of the iterate state into log (work terms untouched).
-   !> docs/theory.md eqs. (41)-(42).
-   subroutine step_energies(prob, log)
-      type(dynamic_problem_t), intent(in) :: prob !< problem
-      type(step_log_t), intent(inout) :: log      !< filled
-      call mesh_strain_energy(prob%mesh, prob%s1, log%strain, log%strain_scale)
-      call other_energies(prob, log)
-   end subroutine step_energies
-
-   !> step_energies of a converged step, whose pass over the rods also keeps their
-   !> fields of s1 for the next step (dynamics_strain_energy).
-   subroutine converged_energies(prob, log)
-      type(dynamic_problem_t), intent(inout) :: prob !< problem (s1 converged)
-      type(step_log_t), intent(inout) :: log         !< filled
-      call dynamics_strain_energy(prob, log%strain, log%strain_scale)
-      call other_energies(prob, log)
-   end subroutine converged_energies
-
-   !> The energies and momenta of step_energies other than the stored energy.
-   subroutine other_energies(prob, log)
-      type(dynamic_problem_t), intent(in) :: prob !< problem
-      type(step_log_t), intent(inout) :: log      !< log%strain filled
-      log%kinetic = kinetic_energy(prob%inert, prob%s1)
-      log%gravity = -sum(prob%loads%gravity*prob%s1%x)
-      log%total = log%kinetic + log%strain + log%gravity
-      log%momentum = linear_momentum(prob%inert, prob%s1)
-      log%angular_momentum = angular_momentum(prob%inert, prob%s1)
-   end subroutine other_energies
-
-   !> Work of supports and point loads, and work of damping, over the step just solved.
-   !> docs/theory.md eq. (43).
-   subroutine step_work(prob, w_ext, w_damp, w_hydro, w_seabed)
-      type(dynamic_problem_t), intent(in) :: prob !< problem (converged step)
-      real(wp), intent(out) :: w_ext              !< external work [J]
-      real(wp), intent(out) :: w_damp             !< energy taken by damping [J]
-      real(wp), intent(out) :: w_hydro            !< work of the water [J]
-      real(wp), intent(out) :: w_seabed           !< work of the seabed [J]
-      real(wp) :: dx(3), th(3), grav(3)
-      integer :: node, i
-      w_ext = 0.0_wp
-      w_damp = 0.0_wp
-      w_hydro = 0.0_wp
-      w_seabed = 0.0_wp
-      if (prob%water%active) then
-         w_hydro = sum(prob%water%fh*prob%dx)
-         w_seabed = sum(prob%water%fs*prob%dx)
-      end if
-      ! the bodies' buoyancy and waterplane (water), the moment of their loads at R
-      do i = 1, prob%bl%nb
-         node = prob%bl%node(i)
-         th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
-                                                        prob%s0%d(:, :, node)))
-         w_hydro = w_hydro + dot_product(prob%bl%fh(1:3, i), prob%dx(:, node)) &
-                   + dot_product(prob%bl%fh(4:6, i), th)
-         w_ext = w_ext + dot_product(prob%bl%fe(:, i), th)
-         w_damp = w_damp - dot_product(prob%bl%fd(1:3, i), prob%dx(:, node)) &
-                  - dot_product(prob%bl%fd(4:6, i), th)
-      end do
-      ! a held body moved (*MOTION, BODY=): the work of its line ends' forces
-      do i = 1, prob%jn%ns
-         if (.not. prob%jn%s_on(i)) cycle
-         if (.not. prob%jn%held(prob%jn%m_j0(prob%jn%s_m(i)) + 1)) cycle
-         node = prob%jn%s_node(i)
-         w_ext = w_ext + dot_product(prob%r(1:3, node), prob%dx(:, node))
-         if (prob%jn%s_ne(i) == 6) w_ext = w_ext + dot_product(prob%r(4:6, node), &
-            rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
-                                                      prob%s0%d(:, :, node))))
-      end do
-      do node = 1, prob%mesh%n_nodes
-         dx = prob%dx(:, node)
-         grav = prob%loads%gravity(:, node)
-         ! point loads (external force beyond the weight) and supports (the residual)
-         w_ext = w_ext + dot_product(prob%fext(1:3, node) - grav, dx)
-         if (any(prob%fext(4:6, node) /= 0.0_wp) .or. prob%sup%held(4, node)) then
-            th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
-                                                   prob%s0%d(:, :, node)))
-            w_ext = w_ext + dot_product(prob%fext(4:6, node), th)
-            if (prob%sup%held(4, node)) w_ext = w_ext + dot_product(prob%r(4:6, node), th)
-         end if
-         if (prob%sup%held(1, node)) w_ext = w_ext + dot_product(prob%r(1:3, node), dx)
-         if (prob%beta_d > 0.0_wp .or. prob%mesh%damped) then
-            th = rotation_cayley_inverse(relative_rotation(prob%s1%d(:, :, node), &
-                                                   prob%s0%d(:, :, node)))
-            w_damp = w_damp + dot_product(prob%fdamp(1:3, node), dx) &
-                     + dot_product(prob%fdamp(4:6, node), th)
-         end if
-         if (prob%alpha > 0.0_wp) then
-            w_damp = w_damp + prob%alpha*prob%inert%m(node)*dot_product(dx, dx)/prob%dt
-            do i = 1, 3
-               w_damp = w_damp + prob%alpha*prob%inert%md(i, node)/prob%dt* &
-                        sum((prob%s1%d(:, i, node) - prob%s0%d(:, i, node))**2)
-            end do
-         end if
-      end do
-   end subroutine step_work
-
    !> timeloop_run with the callbacks as procedures (no context; a test's callbacks).
    subroutine timeloop_run_procedures(prob, model, summary, err, log_unit, on_frame, &
                                       on_step, after_step, on_checkpoint, resume)
@@ -294,7 +199,6 @@ contains
       type(timeloop_state_t), intent(in), optional :: resume !< continue from a checkpoint
       type(step_controls_t) :: ctl
       type(timeloop_state_t) :: ls
-      type(step_attempt_t) :: att
       logical :: halt
       ctl = step_controls(model, log_unit)
       summary%dynamic = .true.
@@ -306,7 +210,44 @@ contains
          call timeloop_start(prob, ctl, obs, ls, err)
          if (has_error(err)) return
       end if
-      do while (ls%t < ctl%t_end - ctl%tol_t)
+      call timeloop_advance(prob, model, summary, err, log_unit, obs, ls, ctl%t_end, halt)
+      if (halt) return
+      summary%complete = .true.
+      summary%status = 'complete'
+      if (obs%after_step_used) call look_ahead(prob, ctl, obs, ls, err)
+   end subroutine timeloop_run_observer
+
+   !> The loop's state at t = 0 for a run driven step by step (timeloop_advance): the
+   !> energies of the start state, the frame at t = 0 handed to obs.
+   subroutine timeloop_begin(prob, model, err, obs, ls)
+      type(dynamic_problem_t), intent(inout) :: prob   !< set-up problem, start state
+      type(model_t), intent(in) :: model               !< model (dynamic options)
+      type(error_t), intent(inout) :: err              !< status
+      class(timeloop_observer_t), intent(inout) :: obs !< frames
+      type(timeloop_state_t), intent(out) :: ls        !< the state at t = 0
+      call timeloop_start(prob, step_controls(model, -1), obs, ls, err)
+   end subroutine timeloop_begin
+
+   !> Advance the run from ls%t to t_until (a host program's coupling step, or the end
+   !> of the run): steps of DT, halved where Newton needs it, the last one ending at
+   !> t_until (a pause: frames are written at their times and the run's end only).
+   !> halt: the run stopped (err set).
+   subroutine timeloop_advance(prob, model, summary, err, log_unit, obs, ls, t_until, halt)
+      type(dynamic_problem_t), intent(inout) :: prob   !< problem, state at ls%t
+      type(model_t), intent(in) :: model               !< model (dynamic options)
+      type(run_summary_t), intent(inout) :: summary    !< progress
+      type(error_t), intent(inout) :: err              !< status
+      integer, intent(in) :: log_unit                  !< Newton log unit (< 0: silent)
+      class(timeloop_observer_t), intent(inout) :: obs !< frames, steps, checkpoints
+      type(timeloop_state_t), intent(inout) :: ls      !< the loop's state, advanced
+      real(wp), intent(in) :: t_until                  !< time to reach [s]
+      logical, intent(out) :: halt                     !< the run stopped
+      type(step_controls_t) :: ctl
+      type(step_attempt_t) :: att
+      ctl = step_controls(model, log_unit)
+      ctl%t_pause = min(t_until, ctl%t_end)
+      halt = .false.
+      do while (ls%t < ctl%t_pause - ctl%tol_t)
          att%t1 = step_end(ctl, ls)
          ! factors of a tangent formed for another step size no longer fit
          if (abs((att%t1 - ls%t) - prob%dt) > ctl%tol_t) prob%factors_ok = .false.
@@ -320,10 +261,7 @@ contains
          end if
          if (halt) return
       end do
-      summary%complete = .true.
-      summary%status = 'complete'
-      if (obs%after_step_used) call look_ahead(prob, ctl, obs, ls, err)
-   end subroutine timeloop_run_observer
+   end subroutine timeloop_advance
 
    !> The controls of a run's steps from its *DYNAMIC options: Newton's, the output
    !> interval (DT when not given), the tolerance of a time, and that of EMC's energy
@@ -383,7 +321,8 @@ contains
    end subroutine timeloop_start
 
    !> End [s] of the step from ls%t: DT halved ls%level times, not beyond the next output
-   !> time or the end. A remainder of less than half a step before either is shared with
+   !> time, the end or the pause (timeloop_advance). A remainder of less than half a step
+   !> before one is shared with
    !> the step before it: no step is cut down to a sliver (over a sliver the inertia of
    !> the unresolved axial vibration is averaged over too short a time, and the tension
    !> of that step is far off).
@@ -392,12 +331,13 @@ contains
       type(timeloop_state_t), intent(in) :: ls !< time [s], next frame [s], halvings
       real(wp) :: h, t_next
       h = ctl%dt*0.5_wp**ls%level
-      t_next = min(ctl%t_end, ls%next_frame)
-      t1 = min(on_grid(ls%t + h, h), ctl%t_end, ls%next_frame)
+      t_next = min(ctl%t_end, ls%next_frame, ctl%t_pause)
+      t1 = min(on_grid(ls%t + h, h), t_next)
       if (t_next - ls%t > h + ctl%tol_t .and. t_next - ls%t < 1.5_wp*h) &
          t1 = ls%t + 0.5_wp*(t_next - ls%t)
       if (ls%next_frame - t1 < ctl%tol_t) t1 = ls%next_frame
       if (ctl%t_end - t1 < ctl%tol_t) t1 = ctl%t_end
+      if (ctl%t_pause - t1 < ctl%tol_t) t1 = ctl%t_pause
    end function step_end
 
    !> Solve the step from t0 to t0 + h (retry: the second attempt, with the line search

@@ -39,31 +39,43 @@ contains
    end subroutine moordyn_deck_text
 
    !> The MoorDyn file at path read and written as a deck, with its notes.
-   subroutine translate(path, d, notes, err)
+   subroutine translate(path, d, notes, err, host)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(md_deck_t), intent(out) :: d     !< the deck
       character(len=:), allocatable, intent(out) :: notes !< the notes, LF-ended lines
       type(error_t), intent(inout) :: err   !< status (stat_input)
+      logical, intent(in), optional :: host !< for a host program's steps (md_to_deck)
       type(md_file_t) :: md
       notes = ''
       call md_read(path, md, err)
       if (has_error(err)) return
-      call md_to_deck(md, d, err)
+      call md_to_deck(md, d, err, host)
       if (allocated(d%notes)) notes = d%notes
    end subroutine translate
 
    !> Read the MoorDyn file at path into model, validated as a deck (deck_read) whose
    !> lines are located at the MoorDyn lines they come from; notes as moordyn_deck_text.
-   subroutine moordyn_read(path, model, err, notes, warnings)
+   !> For a host program (host present): the model has a *DYNAMIC to step, and
+   !> coupled_points the model%points a host moves (MoorDyn's Coupled and Vessel points,
+   !> in their order), coupled_bodies the bodies.
+   subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
+                           coupled_bodies)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
       character(len=:), allocatable, intent(out) :: notes    !< the notes
       character(len=:), allocatable, intent(out) :: warnings !< the deck's warnings
+      logical, intent(in), optional :: host !< read for a host program's steps
+      integer, allocatable, intent(out), optional :: coupled_points(:) !< points moved
+      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies moved
       type(md_deck_t) :: d
       type(deck_source_t) :: source
       warnings = ''
-      call translate(path, d, notes, err)
+      call translate(path, d, notes, err, host)
+      if (present(coupled_points) .and. allocated(d%coupled_points)) &
+         coupled_points = d%coupled_points
+      if (present(coupled_bodies) .and. allocated(d%coupled_bodies)) &
+         coupled_bodies = d%coupled_bodies
       if (has_error(err)) return
       source%text = d%text
       source%line_map = d%map(1:d%n)

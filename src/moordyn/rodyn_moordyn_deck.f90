@@ -36,15 +36,19 @@ contains
 
    !> Write the rodyn deck of the MoorDyn file md into d (its text and line map, the
    !> notes). Errors: 'FILE:LINE: error: SECTION: ...' (stat_input).
-   subroutine md_to_deck(md, d, err)
+   subroutine md_to_deck(md, d, err, host)
       type(md_file_t), intent(in) :: md     !< the MoorDyn file, in sections
       type(md_deck_t), intent(out) :: d     !< the deck
       type(error_t), intent(inout) :: err   !< status
+      !> for a host program's steps (librodyn): a *DYNAMIC whose DT the host's coupling
+      !> step replaces, run until the host stops
+      logical, intent(in), optional :: host
       type(md_env_t) :: env
       integer :: k
 
       d%path = md%path
       d%notes = ''
+      allocate (d%coupled_points(0), d%coupled_bodies(0))
       call put(d, '** rodyn deck of the MoorDyn file '//md%path//' (rodyn --to-deck);', 0)
       call put(d, '** each keyword stands for the MoorDyn entry on the line it names', 0)
       call put(d, '*HEADING', 0)
@@ -88,6 +92,9 @@ contains
          'rodyn writes every line''s nodes and tensions, every point and body (docs/'// &
          'output.md); MoorDyn''s .out channels are not written by `rodyn FILE`')
       call put(d, '*STATIC, INCREMENTS=20', 0)
+      if (present(host)) then
+         if (host) call put(d, '*DYNAMIC, DT=1.0, TIME=1.0e7, OUTPUT INTERVAL=1.0e7', 0)
+      end if
       call put(d, '*OUTPUT, CSV=YES, HDF5=YES', 0)
    end subroutine md_to_deck
 
@@ -224,6 +231,7 @@ contains
          kind = 'FREE'
       case ('COUPLED', 'VESSEL', 'VES', 'CPLD', 'FAIRLEAD')
          kind = 'FIXED'
+         d%coupled_points = [d%coupled_points, id]
          call note(d, row%line, 'POINTS: point '//row%f(1)%s//' ('//row%f(2)%s//') is '// &
                    'held at its start: it moves when a host program moves it')
       case ('BODY')
@@ -408,6 +416,8 @@ contains
          kind = 'FREE'
       case ('FIXED', 'FIX', 'ANCHOR', 'COUPLED', 'VESSEL', 'VES', 'CPLD')
          kind = 'FIXED'
+         if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') &
+            d%coupled_bodies = [d%coupled_bodies, id]
          if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') call note(d, &
             row%line, 'BODIES: body '//row%f(1)%s//' ('//row%f(2)%s//') is held at '// &
             'its start: it moves when a host program moves it')

@@ -21,6 +21,9 @@ module rodyn_moordyn_out
       integer, allocatable :: map(:)          !< line of the MoorDyn file of each line
       integer :: n = 0                        !< lines written
       character(len=:), allocatable :: notes  !< 'FILE:LINE: note: ...' lines, LF-ended
+      !> the points a host program moves (Coupled, Vessel: their IDs, in order) and the
+      !> coupled bodies
+      integer, allocatable :: coupled_points(:), coupled_bodies(:)
    end type md_deck_t
 
 contains

@@ -1,0 +1,229 @@
+!> librodyn's C functions: MoorDyn v2's C API (src/capi/include/MoorDyn2.h, MoorDyn.h;
+!> docs/capi.md) over md_system_t (rodyn_capi_system). A MoorDyn handle is a pointer
+!> to a capi_system_t; a line or point handle a pointer to an item of it. IDs of lines
+!> and points count from 1 and nodes from 0, as MoorDyn's. Every function returns one
+!> of MoorDyn's codes; a message goes to stderr. No error stops the host.
+module rodyn_capi
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_null_ptr, c_loc, &
+                                          c_f_pointer, c_associated
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, stat_input
+   use rodyn_capi_system, only: system_create, system_init, system_step
+   use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, f_string, md_success, &
+                                 md_invalid_input, md_nan_error, md_invalid_value
+   implicit none
+   private
+   public :: md_create, md_init, md_step, md_close, md_get_line, md_get_point
+
+contains
+
+   !> MoorDyn_Create: the system of a MoorDyn v2 input file; NULL when it cannot be read
+   !> (the reader's 'FILE:LINE: error: ...' on stderr).
+   function md_create(infile) result(h) bind(c, name='MoorDyn_Create')
+      type(c_ptr), value :: infile          !< const char*
+      type(c_ptr) :: h
+      type(capi_system_t), pointer :: cs
+      type(error_t) :: err
+      integer :: k
+      h = c_null_ptr
+      allocate (cs)
+      call system_create(cs%s, f_string(infile), err)
+      if (has_error(err)) then
+         write (error_unit, '(a)') err%message
+         deallocate (cs)
+         return
+      end if
+      allocate (cs%lines(size(cs%s%model%lines)), cs%points(0))
+      if (allocated(cs%s%model%points)) then
+         deallocate (cs%points)
+         allocate (cs%points(size(cs%s%model%points)))
+      end if
+      do k = 1, size(cs%lines)
+         cs%lines(k)%sys => cs
+         cs%lines(k)%index = k
+      end do
+      do k = 1, size(cs%points)
+         cs%points(k)%sys => cs
+         cs%points(k)%index = k
+      end do
+      h = c_loc(cs)
+   end function md_create
+
+   !> MoorDyn_NCoupledDOF: 3 a coupled point.
+   function md_ncoupled(h, n) result(code) bind(c, name='MoorDyn_NCoupledDOF')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(out) :: n      !< unsigned int*
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      n = 0
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      n = int(3*size(cs%s%coupled), c_int)
+      code = md_success
+   end function md_ncoupled
+
+   !> MoorDyn_SetVerbosity, MoorDyn_SetLogLevel: accepted (rodyn writes errors only).
+   function md_verbosity(h, v) result(code) bind(c, name='MoorDyn_SetVerbosity')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: v            !< level
+      integer(c_int) :: code
+      code = merge(md_success, md_invalid_value, c_associated(h) .and. v >= 0)
+   end function md_verbosity
+
+   function md_log_level(h, v) result(code) bind(c, name='MoorDyn_SetLogLevel')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: v            !< level
+      integer(c_int) :: code
+      code = md_verbosity(h, v)
+   end function md_log_level
+
+   !> MoorDyn_Init: the coupled points at x, the statics solved (MoorDyn's initial
+   !> condition), the dynamics set up at t = 0.
+   function md_init(h, x, xd) result(code) bind(c, name='MoorDyn_Init')
+      type(c_ptr), value :: h               !< system
+      type(c_ptr), value :: x, xd           !< const double* (3 a coupled point)
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      real(c_double), pointer :: xp(:)
+      type(error_t) :: err
+      integer :: n
+      cs => system_of(h)
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      if (cs%s%stage /= 0) return
+      n = 3*size(cs%s%coupled)
+      ! (the velocities are not used: the statics start at rest; MoorDyn asks for both)
+      if (n > 0 .and. .not. (c_associated(x) .and. c_associated(xd))) return
+      if (n > 0) then
+         call c_f_pointer(x, xp, [n])
+         call system_init(cs%s, real(xp, wp), err)
+      else
+         call system_init(cs%s, [real(wp) ::], err)
+      end if
+      code = code_of(err)
+   end function md_init
+
+   !> MoorDyn_Step: from *t with the coupled points from x at velocities xd, *dt on;
+   !> f the lines' forces on them at the end, *t advanced.
+   function md_step(h, x, xd, f, t, dt) result(code) bind(c, name='MoorDyn_Step')
+      type(c_ptr), value :: h               !< system
+      type(c_ptr), value :: x, xd, f        !< const double*, const double*, double*
+      real(c_double), intent(inout) :: t    !< time [s]
+      real(c_double), intent(inout) :: dt   !< coupling step [s]
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      real(c_double), pointer :: xp(:), xdp(:), fp(:)
+      real(wp), allocatable :: fw(:)
+      type(error_t) :: err
+      integer :: n
+      cs => system_of(h)
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      if (cs%s%stage /= 1) return
+      n = 3*size(cs%s%coupled)
+      allocate (fw(n))
+      if (n > 0) then
+         if (.not. (c_associated(x) .and. c_associated(xd) .and. c_associated(f))) return
+         call c_f_pointer(x, xp, [n])
+         call c_f_pointer(xd, xdp, [n])
+         call c_f_pointer(f, fp, [n])
+         call system_step(cs%s, real(xp, wp), real(xdp, wp), real(dt, wp), fw, err)
+         fp = real(fw, c_double)
+      else
+         call system_step(cs%s, [real(wp) ::], [real(wp) ::], real(dt, wp), fw, err)
+      end if
+      code = code_of(err)
+      if (code == md_success) t = real(cs%s%t, c_double)
+   end function md_step
+
+   !> MoorDyn_Close: the system freed.
+   function md_close(h) result(code) bind(c, name='MoorDyn_Close')
+      type(c_ptr), value :: h               !< system
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      deallocate (cs)
+      code = md_success
+   end function md_close
+
+   !> MoorDyn's code of an error_t: bad input, a numerical failure, else success; the
+   !> message on stderr.
+   integer(c_int) function code_of(err) result(code)
+      type(error_t), intent(in) :: err      !< status
+      code = md_success
+      if (.not. has_error(err)) return
+      write (error_unit, '(a)') 'rodyn: error: '//err%message
+      code = md_nan_error
+      if (err%code == stat_input) code = md_invalid_input
+   end function code_of
+
+   !> MoorDyn_GetNumberLines, MoorDyn_GetNumberPoints.
+   function md_nlines(h, n) result(code) bind(c, name='MoorDyn_GetNumberLines')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(out) :: n      !< unsigned int*
+      integer(c_int) :: code
+      code = count_of(h, .true., n)
+   end function md_nlines
+
+   function md_npoints(h, n) result(code) bind(c, name='MoorDyn_GetNumberPoints')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(out) :: n      !< unsigned int*
+      integer(c_int) :: code
+      code = count_of(h, .false., n)
+   end function md_npoints
+
+   !> The number of lines (or points) of a system.
+   function count_of(h, lines, n) result(code)
+      type(c_ptr), intent(in) :: h          !< system
+      logical, intent(in) :: lines          !< lines, else points
+      integer(c_int), intent(out) :: n      !< how many
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      n = 0
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      n = int(merge(size(cs%lines), size(cs%points), lines), c_int)
+      code = md_success
+   end function count_of
+
+   !> MoorDyn_GetLine, MoorDyn_GetPoint: the handle of line (point) ID l, from 1; NULL
+   !> when there is none.
+   function md_get_line(h, l) result(item) bind(c, name='MoorDyn_GetLine')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: l            !< unsigned int ID
+      type(c_ptr) :: item
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      item = c_null_ptr
+      if (associated(cs)) item = handle(cs%lines, l, 'line')
+   end function md_get_line
+
+   function md_get_point(h, c) result(item) bind(c, name='MoorDyn_GetPoint')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: c            !< unsigned int ID
+      type(c_ptr) :: item
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      item = c_null_ptr
+      if (associated(cs)) item = handle(cs%points, c, 'point')
+   end function md_get_point
+
+   !> The handle of item k of items (NULL, and a message, when there is none).
+   function handle(items, k, what) result(item)
+      type(capi_item_t), intent(in), target :: items(:) !< the lines or points
+      integer(c_int), intent(in) :: k       !< ID, from 1
+      character(len=*), intent(in) :: what  !< 'line' or 'point'
+      type(c_ptr) :: item
+      item = c_null_ptr
+      if (k >= 1 .and. k <= size(items)) then
+         item = c_loc(items(k))
+      else
+         write (error_unit, '(a,i0)') 'Error: There is not such '//what//' ', k
+      end if
+   end function handle
+end module rodyn_capi

@@ -1,0 +1,280 @@
+!> librodyn's functions of a line and a point (MoorDyn v2's Line.h and Point.h), the
+!> fairlead and anchor tensions of MoorDyn_GetFASTtens, and MoorDyn's first API (one
+!> system per program: MoorDynInit, MoorDynStep, MoorDynClose; MoorDyn.h) over the
+!> second (docs/capi.md).
+module rodyn_capi_items
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_float, c_null_ptr, &
+                                          c_associated
+   use rodyn_kinds, only: wp
+   use rodyn_model, only: end_a, end_b, point_body
+   use rodyn_mesh, only: mesh_node
+   use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces
+   use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
+                                 md_success, md_invalid_value, md_unhandled
+   use rodyn_capi, only: md_create, md_init, md_step, md_close
+   implicit none
+   private
+
+   !> The one system of MoorDyn's first API.
+   type(c_ptr), save :: old_api = c_null_ptr
+
+contains
+
+   !> MoorDyn_GetLineID, MoorDyn_GetLineN (segments), MoorDyn_GetLineNumberNodes.
+   function line_id(h, id) result(code) bind(c, name='MoorDyn_GetLineID')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), intent(out) :: id     !< its ID
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      id = 0
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      id = int(it%index, c_int)
+      code = md_success
+   end function line_id
+
+   function line_n(h, n) result(code) bind(c, name='MoorDyn_GetLineN')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), intent(out) :: n      !< unsigned int*: segments
+      integer(c_int) :: code
+      code = line_nodes(h, n)
+      if (code == md_success) n = n - 1
+   end function line_n
+
+   function line_nodes(h, n) result(code) bind(c, name='MoorDyn_GetLineNumberNodes')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), intent(out) :: n      !< unsigned int*: nodes
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      n = 0
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage == 0) then      ! not meshed yet: the file's segments
+         n = int(it%sys%s%model%lines(it%index)%n_elements* &
+                 it%sys%s%model%lines(it%index)%order + 1, c_int)
+      else
+         n = int(it%sys%s%mesh%line_n_nodes(it%index), c_int)
+      end if
+      code = md_success
+   end function line_nodes
+
+   !> MoorDyn_GetLineUnstretchedLength [m].
+   function line_length(h, ul) result(code) bind(c, name='MoorDyn_GetLineUnstretchedLength')
+      type(c_ptr), value :: h               !< line
+      real(c_double), intent(out) :: ul     !< length [m]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      ul = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      ul = real(it%sys%s%model%lines(it%index)%length, c_double)
+      code = md_success
+   end function line_length
+
+   !> The line and node of a handle and index i (from 0), when both exist and the system
+   !> is initialised.
+   function node_of(h, i) result(it)
+      type(c_ptr), intent(in) :: h          !< line
+      integer(c_int), intent(in) :: i       !< node, from 0
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1 .or. i < 0) then
+         it => null()
+      else if (i >= it%sys%s%mesh%line_n_nodes(it%index)) then
+         it => null()
+      end if
+   end function node_of
+
+   !> MoorDyn_GetLineNodePos: node i (from 0) [m].
+   function node_pos(h, i, pos) result(code) bind(c, name='MoorDyn_GetLineNodePos')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), value :: i            !< node, from 0
+      real(c_double), intent(out) :: pos(3) !< position [m]
+      integer(c_int) :: code
+      code = node_vector(h, i, pos, .false.)
+   end function node_pos
+
+   !> MoorDyn_GetLineNodeTen: MoorDyn's tension vector of node i [N].
+   function node_ten(h, i, t) result(code) bind(c, name='MoorDyn_GetLineNodeTen')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), value :: i            !< node, from 0
+      real(c_double), intent(out) :: t(3)   !< tension [N]
+      integer(c_int) :: code
+      code = node_vector(h, i, t, .true.)
+   end function node_ten
+
+   !> The position (tension: the tension vector) of node i of a line.
+   function node_vector(h, i, v, tension) result(code)
+      type(c_ptr), intent(in) :: h          !< line
+      integer(c_int), intent(in) :: i       !< node, from 0
+      real(c_double), intent(out) :: v(3)   !< [m] or [N]
+      logical, intent(in) :: tension        !< the tension, else the position
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => node_of(h, i)
+      v = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (tension) then
+         v = real(system_node_tension(it%sys%s, it%index, int(i)), c_double)
+      else
+         v = real(system_node_x(it%sys%s, it%index, int(i)), c_double)
+      end if
+      code = md_success
+   end function node_vector
+
+   !> MoorDyn_GetLineNodeCurv: 0, a cable line's (rodyn's cable elements carry no
+   !> bending; a line with EI > 0 is not yet served).
+   function node_curv(h, i, c) result(code) bind(c, name='MoorDyn_GetLineNodeCurv')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), value :: i            !< node, from 0
+      real(c_double), intent(out) :: c      !< curvature [1/m]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => node_of(h, i)
+      c = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      code = md_success
+      if (it%sys%s%model%sections(it%sys%s%model%lines(it%index)%section)%ei1 > 0.0_wp) &
+         code = md_unhandled
+   end function node_curv
+
+   !> MoorDyn_GetLineFairTen: the tension at end B (MoorDyn's fairlead end) [N].
+   function line_fair_ten(h, t) result(code) bind(c, name='MoorDyn_GetLineFairTen')
+      type(c_ptr), value :: h               !< line
+      real(c_double), intent(out) :: t      !< tension [N]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      integer :: n
+      it => item_of(h)
+      t = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1) return
+      n = it%sys%s%mesh%line_n_nodes(it%index) - 1
+      t = real(norm2(system_node_tension(it%sys%s, it%index, n)), c_double)
+      code = md_success
+   end function line_fair_ten
+
+   !> MoorDyn_GetPointID.
+   function point_id(h, id) result(code) bind(c, name='MoorDyn_GetPointID')
+      type(c_ptr), value :: h               !< point
+      integer(c_int), intent(out) :: id     !< its ID
+      integer(c_int) :: code
+      code = line_id(h, id)
+   end function point_id
+
+   !> MoorDyn_GetPointPos: where the point is [m] (a point on a line end: that end's
+   !> node, once initialised).
+   function point_pos(h, pos) result(code) bind(c, name='MoorDyn_GetPointPos')
+      type(c_ptr), value :: h               !< point
+      real(c_double), intent(out) :: pos(3) !< position [m]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      integer :: l, node
+      it => item_of(h)
+      pos = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      associate (s => it%sys%s)
+         if (s%model%points(it%index)%kind == point_body) then
+            pos = real(s%model%points(it%index)%global, c_double)
+         else
+            pos = real(s%model%points(it%index)%position, c_double)
+         end if
+         if (s%stage == 1) then
+            do l = 1, size(s%model%lines)
+               node = 0
+               if (s%model%lines(l)%point_a == it%index) node = mesh_node(s%mesh, l, end_a)
+               if (s%model%lines(l)%point_b == it%index) node = mesh_node(s%mesh, l, end_b)
+               if (node == 0) cycle
+               pos = real(s%state%x(:, node), c_double)
+               exit
+            end do
+         end if
+      end associate
+      code = md_success
+   end function point_pos
+
+   !> MoorDyn_GetPointForce: the lines' force on a coupled point [N] (0 on the others,
+   !> not yet served).
+   function point_force(h, f) result(code) bind(c, name='MoorDyn_GetPointForce')
+      type(c_ptr), value :: h               !< point
+      real(c_double), intent(out) :: f(3)   !< force [N]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      real(wp), allocatable :: fa(:)
+      integer :: k
+      it => item_of(h)
+      f = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1) return
+      k = findloc(it%sys%s%coupled, it%index, dim=1)
+      code = md_unhandled
+      if (k == 0) return
+      allocate (fa(3*size(it%sys%s%coupled)))
+      call system_forces(it%sys%s, fa)
+      f = real(fa(3*k - 2:3*k), c_double)
+      code = md_success
+   end function point_force
+
+   !> MoorDyn_GetFASTtens: for each line, the horizontal and vertical tension at end B
+   !> (fairlead) and end A (anchor) [N].
+   function fast_tens(h, nl, fh, fv, ah, av) result(code) bind(c, name='MoorDyn_GetFASTtens')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(in) :: nl      !< lines to fill
+      real(c_float), intent(out) :: fh(*), fv(*), ah(*), av(*) !< tensions [N]
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      real(wp) :: t(3)
+      integer :: l, n
+      cs => system_of(h)
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      if (cs%s%stage /= 1 .or. nl > size(cs%lines)) return
+      do l = 1, nl
+         n = cs%s%mesh%line_n_nodes(l) - 1
+         t = system_node_tension(cs%s, l, n)
+         fh(l) = real(norm2(t(1:2)), c_float)
+         fv(l) = real(abs(t(3)), c_float)
+         t = system_node_tension(cs%s, l, 0)
+         ah(l) = real(norm2(t(1:2)), c_float)
+         av(l) = real(abs(t(3)), c_float)
+      end do
+      code = md_success
+   end function fast_tens
+
+   !> MoorDynInit (MoorDyn's first API): the one system of infile, initialised at x.
+   function old_init(x, xd, infile) result(code) bind(c, name='MoorDynInit')
+      type(c_ptr), value :: x, xd, infile   !< const double[], const double[], const char*
+      integer(c_int) :: code
+      code = md_unhandled
+      if (c_associated(old_api)) return
+      old_api = md_create(infile)
+      if (.not. c_associated(old_api)) return
+      code = md_init(old_api, x, xd)
+      if (code == md_success) return
+      if (md_close(old_api) == md_success) old_api = c_null_ptr
+   end function old_init
+
+   !> MoorDynStep: a step of the one system.
+   function old_step(x, xd, f, t, dt) result(code) bind(c, name='MoorDynStep')
+      type(c_ptr), value :: x, xd, f        !< const double[], const double[], double[]
+      real(c_double), intent(inout) :: t, dt !< time, step [s]
+      integer(c_int) :: code
+      code = md_step(old_api, x, xd, f, t, dt)
+   end function old_step
+
+   !> MoorDynClose: the one system freed (MOORDYN_INVALID_VALUE when there is none).
+   function old_close() result(code) bind(c, name='MoorDynClose')
+      integer(c_int) :: code
+      code = md_close(old_api)
+      old_api = c_null_ptr
+   end function old_close
+end module rodyn_capi_items

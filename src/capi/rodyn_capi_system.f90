@@ -1,0 +1,291 @@
+!> A mooring system driven by a host program step by step, as MoorDyn's C API drives
+!> one (docs/capi.md): a run's data by lifetime in one object, md_system_t: the model
+!> read from a MoorDyn file (parameters), the mesh, the dynamic problem and the time
+!> loop's state (the state the steps advance), the results of the state last asked
+!> for (scratch). The C functions (rodyn_capi) hold a pointer to it.
+!>
+!> Life: system_create reads the file; system_init puts the coupled points where the
+!> host says, solves the statics (MoorDyn's initial condition) and sets up the dynamics;
+!> each system_step moves the coupled points on the straight line from x (at t) with
+!> velocity xd to x + xd dt, advances rodyn's implicit steps to t + dt (one step of dt,
+!> halved where Newton needs it) and gives the lines' forces on the coupled points at
+!> t + dt.
+module rodyn_capi_system
+   use rodyn_kinds, only: wp
+   use rodyn_error, only: error_t, has_error, set_error, stat_input, stat_numerical
+   use rodyn_model, only: model_t, motion_t, motion_table, end_a, end_b
+   use rodyn_mesh, only: mesh_t, mesh_build, mesh_node
+   use rodyn_state, only: state_t
+   use rodyn_statics, only: static_problem_t, statics_run
+   use rodyn_results, only: run_summary_t, step_log_t
+   use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup
+   use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
+                             timeloop_advance
+   use rodyn_moordyn, only: moordyn_read
+   implicit none
+   private
+   public :: md_system_t, system_create, system_init, system_step, system_forces
+   public :: system_node_x, system_node_tension
+
+   !> What the time loop hands a host-driven run: the step forces of the last two steps,
+   !> from which the forces at the end of the step are extrapolated (as the program's
+   !> writer does for a run that stops, rodyn_run_dynamic).
+   type, extends(timeloop_observer_t) :: host_observer_t
+      real(wp), allocatable :: r_last(:, :), r_back(:, :) !< (6, nn) step forces
+      real(wp) :: h_last = 0.0_wp, h_back = 0.0_wp        !< their steps [s]
+      logical :: have_last = .false., have_back = .false.
+   contains
+      procedure :: on_frame => host_frame
+      procedure :: on_step => host_step
+      procedure :: after_step => host_after
+      procedure :: on_checkpoint => host_checkpoint
+   end type host_observer_t
+
+   !> A mooring system a host drives.
+   type :: md_system_t
+      type(model_t) :: model                    !< parameters: the model read
+      type(mesh_t) :: mesh                      !< the mesh
+      type(state_t) :: state                    !< the statics, then the steps' iterate
+      type(dynamic_problem_t) :: prob           !< the dynamic problem
+      type(timeloop_state_t) :: ls              !< the time loop's state
+      type(run_summary_t) :: summary            !< counters
+      type(host_observer_t) :: obs              !< the step forces
+      integer, allocatable :: coupled(:)        !< model%points moved by the host, in order
+      integer, allocatable :: motion(:)         !< the motion of each (model%motions)
+      real(wp), allocatable :: x0(:, :)         !< (3, n) where each is at t = 0 [m]
+      real(wp), allocatable :: r_static(:, :)   !< (6, nn) support forces of the statics
+      real(wp) :: t = 0.0_wp                    !< time reached [s]
+      integer :: stage = 0                      !< 0 read, 1 initialised, -1 failed
+      character(len=:), allocatable :: notes    !< the reader's notes
+   end type md_system_t
+
+contains
+
+   !> Read the MoorDyn file at path into sys. Errors as the reader's (stat_input); a
+   !> coupled body is refused (not yet driven through the API).
+   subroutine system_create(sys, path, err)
+      type(md_system_t), intent(inout), target :: sys !< the system
+      character(len=*), intent(in) :: path            !< the MoorDyn file
+      type(error_t), intent(inout) :: err             !< status
+      character(len=:), allocatable :: warnings
+      integer, allocatable :: bodies(:)
+      call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
+                        coupled_points=sys%coupled, coupled_bodies=bodies)
+      if (has_error(err)) return
+      if (size(bodies) > 0) call set_error(err, stat_input, path//': error: BODIES: a '// &
+         'coupled body is not driven through librodyn (docs/capi.md)')
+      sys%stage = 0
+   end subroutine system_create
+
+   !> The coupled points to x (3 a point, in order), the statics solved, the dynamics set
+   !> up from it (t = 0). x: MoorDyn_Init's positions; their velocities are not used
+   !> (the statics start at rest).
+   subroutine system_init(sys, x, err)
+      type(md_system_t), intent(inout), target :: sys !< the system
+      real(wp), intent(in) :: x(:)                    !< (3 n) coupled positions [m]
+      type(error_t), intent(inout) :: err             !< status
+      type(static_problem_t), allocatable :: sp
+      integer :: i, ip, l, nm
+      do i = 1, size(sys%coupled)
+         ip = sys%coupled(i)
+         sys%model%points(ip)%position = x(3*i - 2:3*i)
+         sys%model%points(ip)%global = x(3*i - 2:3*i)
+         do l = 1, size(sys%model%lines)
+            if (sys%model%lines(l)%point_a == ip) sys%model%lines(l)%end_a = x(3*i - 2:3*i)
+            if (sys%model%lines(l)%point_b == ip) sys%model%lines(l)%end_b = x(3*i - 2:3*i)
+         end do
+      end do
+      call mesh_build(sys%model, sys%mesh, sys%state, err, initial_shape=.true.)
+      if (has_error(err)) return
+      allocate (sp)
+      call statics_run(sp, sys%model, sys%mesh, sys%state, sys%summary, err, -1)
+      if (has_error(err)) then
+         sys%stage = -1
+         return
+      end if
+      sys%r_static = sp%r
+      deallocate (sp)
+      ! each coupled point moved by a table the steps extend, from where it is
+      nm = 0
+      if (allocated(sys%model%motions)) nm = size(sys%model%motions)
+      allocate (sys%motion(size(sys%coupled)), sys%x0(3, size(sys%coupled)))
+      do i = 1, size(sys%coupled)
+         sys%x0(:, i) = x(3*i - 2:3*i)
+         sys%motion(i) = nm + i
+      end do
+      call add_motions(sys%model, sys%coupled)
+      sys%model%dynamic%duration = huge(1.0_wp)
+      call dynamics_setup(sys%prob, sys%model, sys%mesh, sys%state)
+      call timeloop_begin(sys%prob, sys%model, err, sys%obs, sys%ls)
+      sys%obs%after_step_used = .true.
+      sys%t = 0.0_wp
+      sys%stage = 1
+   end subroutine system_init
+
+   !> A table motion at rest for each coupled point, appended to model%motions.
+   subroutine add_motions(model, points)
+      type(model_t), intent(inout) :: model !< model
+      integer, intent(in) :: points(:)      !< the points
+      type(motion_t), allocatable :: mo(:)
+      integer :: i, n
+      n = 0
+      if (allocated(model%motions)) n = size(model%motions)
+      allocate (mo(n + size(points)))
+      if (n > 0) mo(1:n) = model%motions
+      do i = 1, size(points)
+         mo(n + i)%point = points(i)
+         mo(n + i)%line = 0
+         mo(n + i)%kind = motion_table
+         mo(n + i)%ramp = 0.0_wp
+         mo(n + i)%file = 'host'
+         mo(n + i)%time = [0.0_wp]
+         mo(n + i)%disp = reshape([0.0_wp, 0.0_wp, 0.0_wp], [3, 1])
+      end do
+      call move_alloc(mo, model%motions)
+   end subroutine add_motions
+
+   !> One coupling step of the host from t = sys%t: the coupled points from x with
+   !> velocity xd to x + xd dt, the system advanced to t + dt, f the lines' forces on the
+   !> coupled points at t + dt [N] (3 a point). dt <= 0: f only.
+   subroutine system_step(sys, x, xd, dt, f, err)
+      type(md_system_t), intent(inout), target :: sys !< the system
+      real(wp), intent(in) :: x(:)                    !< (3 n) positions at t [m]
+      real(wp), intent(in) :: xd(:)                   !< (3 n) velocities [m/s]
+      real(wp), intent(in) :: dt                      !< coupling step [s]
+      real(wp), intent(out) :: f(:)                   !< (3 n) forces at t + dt [N]
+      type(error_t), intent(inout) :: err             !< status
+      real(wp) :: t1
+      logical :: halt
+      integer :: i
+      if (dt > 0.0_wp) then
+         t1 = sys%t + dt
+         do i = 1, size(sys%coupled)
+            associate (mo => sys%model%motions(sys%motion(i)))
+               mo%time = [mo%time, t1]
+               mo%disp = reshape([mo%disp, x(3*i - 2:3*i) + xd(3*i - 2:3*i)*dt - &
+                                  sys%x0(:, i)], [3, size(mo%time)])
+            end associate
+         end do
+         sys%model%dynamic%dt = dt
+         call timeloop_advance(sys%prob, sys%model, sys%summary, err, -1, sys%obs, sys%ls, &
+                               t1, halt)
+         if (halt .or. has_error(err)) then
+            sys%stage = -1
+            if (.not. has_error(err)) call set_error(err, stat_numerical, &
+                                                     'the step to t = t + dt failed')
+            return
+         end if
+         sys%t = t1
+      end if
+      call system_forces(sys, f)
+   end subroutine system_step
+
+   !> The lines' forces on the coupled points at sys%t [N] (3 a point): minus the support
+   !> forces of the line ends on each, the step forces extrapolated from their force
+   !> points to the step's end (the statics' before the first step).
+   subroutine system_forces(sys, f)
+      type(md_system_t), intent(in) :: sys  !< the system
+      real(wp), intent(out) :: f(:)         !< (3 n) forces [N]
+      real(wp), allocatable :: r(:, :)
+      real(wp) :: w
+      integer :: i, l, node
+      w = sys%prob%wf
+      if (.not. sys%obs%have_last) then
+         r = sys%r_static
+      else if (sys%obs%have_back) then
+         r = sys%obs%r_last + (sys%obs%r_last - sys%obs%r_back)*(1.0_wp - w)*sys%obs%h_last &
+             /(w*sys%obs%h_last + (1.0_wp - w)*sys%obs%h_back)
+      else
+         r = sys%obs%r_last
+      end if
+      f = 0.0_wp
+      do i = 1, size(sys%coupled)
+         do l = 1, size(sys%model%lines)
+            if (sys%model%lines(l)%point_a == sys%coupled(i)) then
+               node = mesh_node(sys%mesh, l, end_a)
+               f(3*i - 2:3*i) = f(3*i - 2:3*i) - r(1:3, node)
+            end if
+            if (sys%model%lines(l)%point_b == sys%coupled(i)) then
+               node = mesh_node(sys%mesh, l, end_b)
+               f(3*i - 2:3*i) = f(3*i - 2:3*i) - r(1:3, node)
+            end if
+         end do
+      end do
+   end subroutine system_forces
+
+   !> Position of node k (0 at end A) of line l [m].
+   function system_node_x(sys, l, k) result(x)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: l              !< line
+      integer, intent(in) :: k              !< node, from 0
+      real(wp) :: x(3)
+      x = sys%state%x(:, mesh_node(sys%mesh, l, k + 1))
+   end function system_node_x
+
+   !> MoorDyn's tension of node k (0 at end A) of line l [N]: the tension vector of each
+   !> segment (EA strain times its unit vector, from A to B), at an inner node the mean
+   !> of the two segments beside it, at an end the end segment's (MoorDyn's
+   !> Line::getNodeTen). A segment is an element between nodes k and k + 1 (order 1, as
+   !> a MoorDyn line is read); its tension is the cable law's at its stretch.
+   function system_node_tension(sys, l, k) result(t)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: l              !< line
+      integer, intent(in) :: k              !< node, from 0
+      real(wp) :: t(3)
+      integer :: n
+      n = sys%mesh%line_n_nodes(l) - 1
+      if (k == 0) then
+         t = segment(0)
+      else if (k >= n) then
+         t = segment(n - 1)
+      else
+         t = 0.5_wp*(segment(k - 1) + segment(k))
+      end if
+   contains
+      !> Tension vector of the segment from node j to j + 1.
+      function segment(j) result(tv)
+         integer, intent(in) :: j
+         real(wp) :: tv(3), dx(3), len0, ea
+         dx = system_node_x(sys, l, j + 1) - system_node_x(sys, l, j)
+         len0 = sys%model%lines(l)%length/real(n, wp)
+         ea = sys%model%sections(sys%model%lines(l)%section)%ea
+         tv = max(0.0_wp, ea*(norm2(dx)/len0 - 1.0_wp))*dx/norm2(dx)
+      end function segment
+   end function system_node_tension
+
+   subroutine host_frame(this, t, prob, err)
+      class(host_observer_t), intent(inout) :: this !< the observer
+      real(wp), intent(in) :: t                     !< time [s]
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      type(error_t), intent(inout) :: err           !< status
+   end subroutine host_frame
+
+   subroutine host_step(this, log, err)
+      class(host_observer_t), intent(inout) :: this !< the observer
+      type(step_log_t), intent(in) :: log           !< the step
+      type(error_t), intent(inout) :: err           !< status
+   end subroutine host_step
+
+   subroutine host_checkpoint(this, ls, prob, err)
+      class(host_observer_t), intent(inout) :: this  !< the observer
+      type(timeloop_state_t), intent(in) :: ls       !< the loop
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      type(error_t), intent(inout) :: err            !< status
+   end subroutine host_checkpoint
+
+   !> After each step: its step forces kept, with the step before's.
+   subroutine host_after(this, t, prob, err)
+      class(host_observer_t), intent(inout) :: this !< the observer
+      real(wp), intent(in) :: t                     !< time reached [s]
+      type(dynamic_problem_t), intent(inout) :: prob !< problem after the step
+      type(error_t), intent(inout) :: err           !< status
+      if (this%have_last) then
+         this%r_back = this%r_last
+         this%h_back = this%h_last
+         this%have_back = .true.
+      end if
+      this%r_last = prob%r
+      this%h_last = prob%dt
+      this%have_last = .true.
+   end subroutine host_after
+end module rodyn_capi_system
