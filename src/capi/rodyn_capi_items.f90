@@ -6,7 +6,7 @@ module rodyn_capi_items
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_float, c_null_ptr, &
                                           c_associated
    use rodyn_kinds, only: wp
-   use rodyn_model, only: end_a, end_b, point_body
+   use rodyn_model, only: end_a, end_b, point_body, point_free
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
@@ -168,6 +168,22 @@ contains
       integer(c_int) :: code
       code = line_id(h, id)
    end function point_id
+
+   !> MoorDyn_GetPointType: MoorDyn's point types, -1 coupled (a host moves it), 0 free,
+   !> 1 fixed (an anchor, or on a body).
+   function point_type(h, t) result(code) bind(c, name='MoorDyn_GetPointType')
+      type(c_ptr), value :: h               !< point
+      integer(c_int), intent(out) :: t      !< its type
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      t = 1
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%model%points(it%index)%kind == point_free) t = 0
+      if (any(it%sys%s%coupled == it%index)) t = -1
+      code = md_success
+   end function point_type
 
    !> MoorDyn_GetPointPos: where the point is [m] (a point on a line end: that end's
    !> node, once initialised).

@@ -45,6 +45,7 @@ int DECLDIR MoorDyn_GetLineNodeCurv(MoorDynLine l, unsigned int i, double* c);
 int DECLDIR MoorDyn_GetLineFairTen(MoorDynLine l, double* t);
 
 int DECLDIR MoorDyn_GetPointID(MoorDynPoint point, int* id);
+int DECLDIR MoorDyn_GetPointType(MoorDynPoint point, int* t);
 int DECLDIR MoorDyn_GetPointPos(MoorDynPoint point, double pos[3]);
 int DECLDIR MoorDyn_GetPointForce(MoorDynPoint point, double f[3]);
 

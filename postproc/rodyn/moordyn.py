@@ -1,0 +1,153 @@
+"""MoorDyn's Python functions (its PyPI package ``moordyn``, v2.x) over librodyn: a
+script written for ``moordyn`` runs on rodyn by changing its import to
+``import rodyn.moordyn as moordyn`` (docs/python.md). The functions of librodyn
+(docs/capi.md) are here with MoorDyn's names, arguments and results; a system, line or
+point is an opaque handle, as MoorDyn's are.
+
+MoorDyn_Create with no file reads "Mooring/lines.txt", MoorDyn's default."""
+import ctypes
+
+from ._lib import lib, doubles
+
+__all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step", "Close",
+           "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetFASTtens",
+           "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
+           "GetLineNodePos", "GetLineNodeTen", "GetLineNodeCurv", "GetLineFairTen",
+           "GetPointID", "GetPointType", "GetPointPos", "GetPointForce"]
+
+DEFAULT_FILE = "Mooring/lines.txt"
+
+
+def Create(filepath=""):
+    """The system of a MoorDyn v2 input file (None when it cannot be read)."""
+    h = lib().MoorDyn_Create((filepath or DEFAULT_FILE).encode())
+    return h or None
+
+
+def _uint(fn, handle):
+    n = ctypes.c_uint(0)
+    code = fn(handle, ctypes.byref(n))
+    return n.value if code == 0 else code
+
+
+def NCoupledDOF(instance):
+    return _uint(lib().MoorDyn_NCoupledDOF, instance)
+
+
+def SetVerbosity(instance, verbosity):
+    return lib().MoorDyn_SetVerbosity(instance, int(verbosity))
+
+
+def SetLogLevel(instance, verbosity):
+    return lib().MoorDyn_SetLogLevel(instance, int(verbosity))
+
+
+def Init(instance, x, v):
+    """Coupled points at x, the statics solved: 0 on success, else MoorDyn's code."""
+    return lib().MoorDyn_Init(instance, doubles(list(x)), doubles(list(v)))
+
+
+def Step(instance, x, v, t, dt):
+    """A coupling step: the forces on the coupled DOFs at its end, as a tuple."""
+    n = NCoupledDOF(instance)
+    f = doubles(None, max(n, 1))
+    tt, hh = ctypes.c_double(t), ctypes.c_double(dt)
+    code = lib().MoorDyn_Step(instance, doubles(list(x)), doubles(list(v)), f,
+                              ctypes.byref(tt), ctypes.byref(hh))
+    if code != 0:
+        raise RuntimeError(f"MoorDyn_Step: librodyn code {code} (the message is on stderr)")
+    return tuple(f[:n])
+
+
+def Close(instance):
+    return lib().MoorDyn_Close(instance)
+
+
+def GetNumberLines(instance):
+    return _uint(lib().MoorDyn_GetNumberLines, instance)
+
+
+def GetNumberPoints(instance):
+    return _uint(lib().MoorDyn_GetNumberPoints, instance)
+
+
+def GetLine(instance, line):
+    return lib().MoorDyn_GetLine(instance, int(line)) or None
+
+
+def GetPoint(instance, point):
+    return lib().MoorDyn_GetPoint(instance, int(point)) or None
+
+
+def GetFASTtens(instance, n_lines):
+    """Fairlead horizontal and vertical, anchor horizontal and vertical tensions [N]."""
+    arrays = [(ctypes.c_float * n_lines)() for _ in range(4)]
+    n = ctypes.c_int(n_lines)
+    lib().MoorDyn_GetFASTtens(instance, ctypes.byref(n), *arrays)
+    return tuple(list(a) for a in arrays)
+
+
+def _int(fn, handle):
+    n = ctypes.c_int(0)
+    code = fn(handle, ctypes.byref(n))
+    return n.value if code == 0 else code
+
+
+def GetLineID(instance):
+    return _int(lib().MoorDyn_GetLineID, instance)
+
+
+def GetLineN(instance):
+    return _uint(lib().MoorDyn_GetLineN, instance)
+
+
+def GetLineNumberNodes(instance):
+    return _uint(lib().MoorDyn_GetLineNumberNodes, instance)
+
+
+def _double(fn, *args):
+    x = ctypes.c_double(0.0)
+    fn(*args, ctypes.byref(x))
+    return x.value
+
+
+def GetLineUnstretchedLength(instance):
+    return _double(lib().MoorDyn_GetLineUnstretchedLength, instance)
+
+
+def _vec(fn, *args):
+    v = doubles(None, 3)
+    fn(*args, v)
+    return tuple(v[:])
+
+
+def GetLineNodePos(instance, i):
+    return _vec(lib().MoorDyn_GetLineNodePos, instance, int(i))
+
+
+def GetLineNodeTen(instance, i):
+    return _vec(lib().MoorDyn_GetLineNodeTen, instance, int(i))
+
+
+def GetLineNodeCurv(instance, i):
+    return _double(lib().MoorDyn_GetLineNodeCurv, instance, int(i))
+
+
+def GetLineFairTen(instance):
+    return _double(lib().MoorDyn_GetLineFairTen, instance)
+
+
+def GetPointID(instance):
+    return _int(lib().MoorDyn_GetPointID, instance)
+
+
+def GetPointType(instance):
+    return _int(lib().MoorDyn_GetPointType, instance)
+
+
+def GetPointPos(instance):
+    return _vec(lib().MoorDyn_GetPointPos, instance)
+
+
+def GetPointForce(instance):
+    return _vec(lib().MoorDyn_GetPointForce, instance)
