@@ -34,11 +34,7 @@ contains
          deallocate (cs)
          return
       end if
-      allocate (cs%lines(size(cs%s%model%lines)), cs%points(0))
-      if (allocated(cs%s%model%points)) then
-         deallocate (cs%points)
-         allocate (cs%points(size(cs%s%model%points)))
-      end if
+      allocate (cs%lines(size(cs%s%model%lines)), cs%points(cs%s%n_points))
       do k = 1, size(cs%lines)
          cs%lines(k)%sys => cs
          cs%lines(k)%index = k

@@ -56,6 +56,7 @@ module rodyn_capi_system
       real(wp), allocatable :: r_static(:, :)   !< (6, nn) support forces of the statics
       real(wp) :: t = 0.0_wp                    !< time reached [s]
       integer :: stage = 0                      !< 0 read, 1 initialised, -1 failed
+      integer :: n_points = 0                   !< MoorDyn's points: model%points(1:n)
       character(len=:), allocatable :: notes    !< the reader's notes
    end type md_system_t
 
@@ -70,10 +71,11 @@ contains
       character(len=:), allocatable :: warnings
       integer, allocatable :: bodies(:)
       call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
-                        coupled_points=sys%coupled, coupled_bodies=bodies)
+                        coupled_points=sys%coupled, coupled_bodies=bodies, &
+                        n_points=sys%n_points)
       if (has_error(err)) return
-      if (size(bodies) > 0) call set_error(err, stat_input, path//': error: BODIES: a '// &
-         'coupled body is not driven through librodyn (docs/capi.md)')
+      if (size(bodies) > 0) call set_error(err, stat_input, path//': error: a coupled '// &
+         'body or rod is not driven through librodyn (docs/capi.md)')
       sys%stage = 0
    end subroutine system_create
 

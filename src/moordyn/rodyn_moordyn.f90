@@ -59,7 +59,7 @@ contains
    !> coupled_points the model%points a host moves (MoorDyn's Coupled and Vessel points,
    !> in their order), coupled_bodies the bodies.
    subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
-                           coupled_bodies)
+                           coupled_bodies, n_points)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
@@ -67,7 +67,8 @@ contains
       character(len=:), allocatable, intent(out) :: warnings !< the deck's warnings
       logical, intent(in), optional :: host !< read for a host program's steps
       integer, allocatable, intent(out), optional :: coupled_points(:) !< points moved
-      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies moved
+      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies, rods moved
+      integer, intent(out), optional :: n_points !< MoorDyn's points (model%points(1:n))
       type(md_deck_t) :: d
       type(deck_source_t) :: source
       warnings = ''
@@ -75,7 +76,8 @@ contains
       if (present(coupled_points) .and. allocated(d%coupled_points)) &
          coupled_points = d%coupled_points
       if (present(coupled_bodies) .and. allocated(d%coupled_bodies)) &
-         coupled_bodies = d%coupled_bodies
+         coupled_bodies = [d%coupled_bodies, d%coupled_rods]
+      if (present(n_points)) n_points = d%n_points
       if (has_error(err)) return
       source%text = d%text
       source%line_map = d%map(1:d%n)

@@ -21,6 +21,7 @@ module rodyn_moordyn_deck
                                  md_options, md_outputs
    use rodyn_moordyn_out, only: md_deck_t, put, note, md_real, md_columns, md_fail
    use rodyn_moordyn_options, only: md_env_t, read_options
+   use rodyn_moordyn_rods, only: rods, rod_end
    implicit none
    private
    public :: md_to_deck
@@ -48,7 +49,7 @@ contains
 
       d%path = md%path
       d%notes = ''
-      allocate (d%coupled_points(0), d%coupled_bodies(0))
+      allocate (d%coupled_points(0), d%coupled_bodies(0), d%coupled_rods(0))
       call put(d, '** rodyn deck of the MoorDyn file '//md%path//' (rodyn --to-deck);', 0)
       call put(d, '** each keyword stands for the MoorDyn entry on the line it names', 0)
       call put(d, '*HEADING', 0)
@@ -57,11 +58,6 @@ contains
       else
          call put(d, 'MoorDyn file '//md%path, 0)
       end if
-      do k = md_rod_types, md_rods, md_rods - md_rod_types
-         if (md%sec(k)%n > 0) call md_fail(d, k, md%sec(k)%rows(1), 'MoorDyn''s rods '// &
-            '(rigid or pinned cylinders) are not in rodyn: a rod as a line of rod '// &
-            'elements is written by hand (docs/moordyn.md, "What is not read")', err)
-      end do
       if (md%sec(md_failure)%n > 0) call md_fail(d, md_failure, md%sec(md_failure)%rows(1), &
          'a MoorDyn FAILURE entry is written as *FAILURE by hand (docs/moordyn.md)', err)
       if (has_error(err)) return
@@ -71,10 +67,12 @@ contains
       if (has_error(err)) return
       call put(d, '*GRAVITY', md%sec(md_options)%line)
       call put(d, '0.0, 0.0, '//real_str(-env%g), env%g_line)
-      call put(d, '*WATER, DEPTH='//real_str(env%depth)//', DENSITY='//real_str(env%rho), &
-               env%depth_line)
-      call put(d, '*SEABED, STIFFNESS='//real_str(env%kbot)//', DAMPING='// &
-               real_str(env%cbot)//env%friction, env%kbot_line)
+      if (env%rho > 0.0_wp) then
+         call put(d, '*WATER, DEPTH='//real_str(env%depth)//', DENSITY='// &
+                  real_str(env%rho), env%depth_line)
+         call put(d, '*SEABED, STIFFNESS='//real_str(env%kbot)//', DAMPING='// &
+                  real_str(env%cbot)//env%friction, env%kbot_line)
+      end if
       do k = 1, md%sec(md_line_types)%n
          call line_type(d, md%sec(md_line_types)%rows(k), err)
       end do
@@ -84,6 +82,8 @@ contains
       do k = 1, md%sec(md_points)%n
          call point(d, md%sec(md_points)%rows(k), k, md%sec(md_bodies)%n, err)
       end do
+      d%n_points = md%sec(md_points)%n
+      call rods(md, d, err)             ! their bodies after the bodies, points after the points
       do k = 1, md%sec(md_lines)%n
          call line(d, md, md%sec(md_lines)%rows(k), k, err)
       end do
@@ -292,8 +292,9 @@ contains
       integer, intent(in) :: id             !< its place in LINES (its ID)
       type(error_t), intent(inout) :: err   !< status
       real(wp) :: length, ends_at(3, 2)
-      integer :: k, n, ends(2), it
+      integer :: k, n, ends(2), it, n_rod, e_rod
       character(len=:), allocatable :: msg, word, len_text
+      character(len=16) :: ends_name(2)
       if (has_error(err)) return
       call md_columns(d, md_lines, row, line_cols//' LineOutputs', 7, err)
       call md_id(d, md_lines, row, id, err)
@@ -312,28 +313,40 @@ contains
          return
       end if
       do k = 1, 2
-         call attachment(row%f(2 + k)%s, word, ends(k))
-         if (scan(word(1:min(2, len(word))), 'R') == 1 .and. (len(word) == 1 .or. &
-             starts(word, 'ROD') .or. scan(word(2:min(2, len(word))), '0123456789') == 1)) then
+         ends_name(k) = ''
+         call rod_end(row%f(2 + k)%s, n_rod, e_rod)
+         if (n_rod > 0) then
+            if (e_rod > 0 .and. n_rod <= md%sec(md_rods)%n) then
+               ends_name(k) = 'R'//int_str(n_rod)//merge('A', 'B', e_rod == 1)
+               ends(k) = -n_rod
+               cycle
+            end if
             call md_fail(d, md_lines, row, 'column '//merge('AttachA', 'AttachB', k == 1)// &
-                         ': "'//row%f(2 + k)%s//'": a line on a rod''s end; MoorDyn''s '// &
-                         'rods are not in rodyn', err)
+                         ': "'//row%f(2 + k)%s//'" is not the end A or B of a rod of RODS '// &
+                         '(R<n>A, R<n>B, n from 1 to '//int_str(md%sec(md_rods)%n)//')', err)
             return
          end if
+         call attachment(row%f(2 + k)%s, word, ends(k))
          if (word == upper_case(row%f(2 + k)%s)) then
             call parse_int(row%f(2 + k)%s, ends(k), msg)
             if (len(msg) > 0) ends(k) = -1
          else if (word /= 'C' .and. word /= 'CON' .and. word /= 'P' .and. word /= 'POINT') then
             ends(k) = -1
          end if
+         ends_name(k) = 'P'//int_str(ends(k))
          if (ends(k) >= 1 .and. ends(k) <= md%sec(md_points)%n) cycle
          call md_fail(d, md_lines, row, 'column '//merge('AttachA', 'AttachB', k == 1)// &
                       ': no point "'//row%f(2 + k)%s//'" in POINTS (a line''s ends are '// &
                       'on points, by their ID from 1 to '//int_str(md%sec(md_points)%n)// &
-                      ')', err)
+                      ', or on rods'' ends, R<n>A and R<n>B)', err)
          return
       end do
       len_text = row%f(5)%s
+      if (length < 0.0_wp .and. any(ends < 0)) then
+         call md_fail(d, md_lines, row, 'column UnstrLen: a negative UnstrLen (a multiple '// &
+                      'of the distance of the ends) on a rod''s end is not read', err)
+         return
+      end if
       if (length < 0.0_wp) then
          do k = 1, 2
             call point_at(md, ends(k), ends_at(:, k), err)
@@ -344,8 +357,8 @@ contains
                    ' times the distance between its ends is '//len_text//' m')
       end if
       call put(d, '*LINE, NAME=L'//row%f(1)%s//', SECTION='//row%f(2)%s//', LENGTH='// &
-               len_text//', ELEMENTS='//row%f(6)%s//', ORDER=1, POINT A=P'// &
-               int_str(ends(1))//', POINT B=P'//int_str(ends(2)), row%line)
+               len_text//', ELEMENTS='//row%f(6)%s//', ORDER=1, POINT A='// &
+               trim(ends_name(1))//', POINT B='//trim(ends_name(2)), row%line)
       if (row%f(7)%s /= '-') call note(d, row%line, 'LINES: LineOutputs "'//row%f(7)%s// &
          '": rodyn writes every node''s position, velocity and tension (docs/output.md)')
    end subroutine line

@@ -95,7 +95,11 @@ contains
                                           'a gravity below 0', err)
          env%g_line = row%line
       case ('RHO', 'WTRDNSTY')
-         call positive(env%rho)
+         call md_real(d, md_options, row, 1, row%f(2)%s, env%rho, err)
+         if (env%rho < 0.0_wp) call md_fail(d, md_options, row, row%f(2)%s//': '// &
+                                            'a density below 0', err)
+         if (env%rho == 0.0_wp .and. .not. has_error(err)) call note(d, row%line, &
+            row%f(2)%s//' 0: a model in vacuum, without water or seabed (no *WATER)')
          if (env%depth_line == 0) env%depth_line = row%line
       case ('WTRDPTH')
          call positive(env%depth)

@@ -23,7 +23,8 @@ module rodyn_moordyn_out
       character(len=:), allocatable :: notes  !< 'FILE:LINE: note: ...' lines, LF-ended
       !> the points a host program moves (Coupled, Vessel: their IDs, in order) and the
       !> coupled bodies
-      integer, allocatable :: coupled_points(:), coupled_bodies(:)
+      integer, allocatable :: coupled_points(:), coupled_bodies(:), coupled_rods(:)
+      integer :: n_points = 0                 !< MoorDyn's points (the deck's first)
    end type md_deck_t
 
 contains

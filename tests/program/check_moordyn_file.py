@@ -17,6 +17,10 @@
    explicit integrator are noted as ignored; a negative UnstrLen is that many times the
    distance between the ends and a point below WtrDpth lowers the seabed to it (both as
    in MoorDyn, both noted).
+3. A Fixed rod from which two chains hang to anchors (their ends R1A and R1B): the same
+   nodes as the file with the rod's ends as two Fixed points, to 1e-10 m (round-off: a
+   body's points hold their ends through the junctions), and the same forces on the rod's
+   ends to 1e-10.
 
 Usage: check_moordyn_file.py RODYN LINES_TXT BUOY_TXT OUT_DIR. Exit 0 on success."""
 import csv
@@ -128,12 +132,68 @@ def check_buoy(rodyn, buoy, out, fails):
     print("notes:\n" + proc.stdout.strip())
 
 
+ROD_FILE = """--------------------- MoorDyn Input File ----------------------
+two chains hanging from {what}
+---------------------- LINE TYPES ----------------------
+Name  Diam  Mass/m  EA     BA/-zeta  EI  Cd   Ca   CdAx  CaAx
+(-)   (m)   (kg/m)  (N)    (N-s)     (-) (-)  (-)  (-)   (-)
+chain 0.1   20.0    1.0e8  -0.5      0   1.2  1.0  0.2   0.0
+{rods}---------------------- POINTS ----------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed -80 0 -50 0 0 0 0
+2 Fixed 80 0 -50 0 0 0 0
+{points}---------------------- LINES ----------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 {a} 95 12 -
+2 chain 2 {b} 95 12 -
+---------------------- OPTIONS ----------------------
+1025 WtrDnsty
+50 WtrDpth
+---------------------- need this line ----------------------
+"""
+RODS = """---------------------- ROD TYPES ----------------------
+Name Diam Mass/m Cd Ca CdEnd CaEnd
+(-) (m) (kg/m) (-) (-) (-) (-)
+pipe 0.5 100 1.0 1.0 0.6 1.0
+---------------------- RODS ----------------------
+ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
+(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
+1 pipe Fixed -1 0 -5 1 0 -5 4 -
+"""
+
+
+def check_rod(rodyn, out, fails):
+    nodes, ends = [], []
+    for tag, rods, more, a, b in (
+            ("rod", RODS, "", "R1A", "R1B"),
+            ("points", "", "3 Fixed -1 0 -5 0 0 0 0\n4 Fixed 1 0 -5 0 0 0 0\n", "3", "4")):
+        path = os.path.join(out, f"moordyn_{tag}.txt")
+        with open(path, "w") as f:
+            f.write(ROD_FILE.format(what=tag, rods=rods, points=more, a=a, b=b))
+        run([rodyn, path, "-o", os.path.join(out, tag), "--quiet"])
+        with open(os.path.join(out, tag, "static_nodes.csv")) as f:
+            nodes.append([[float(r[k]) for k in ("x_m", "y_m", "z_m")]
+                          for r in csv.DictReader(f)])
+        pts = points(os.path.join(out, tag))
+        ends.append([[float(pts[p][k]) for k in ("Fx_N", "Fz_N")]
+                     for p in ((("R1A", "R1B") if tag == "rod" else ("P3", "P4")))])
+    dx = max(abs(a - b) for ra, rb in zip(*nodes) for a, b in zip(ra, rb))
+    df = max(abs(a - b) / abs(b) for ra, rb in zip(*ends) for a, b in zip(ra, rb))
+    print(f"a Fixed rod's ends and two Fixed points: nodes within {dx:.1e} m, the forces "
+          f"on the ends within {df:.1e}")
+    if not (len(nodes[0]) == len(nodes[1]) == 26 and dx <= 1e-10 and df <= 1e-10):
+        fails.append(f"the rod's ends and two fixed points: {dx:.1e} m, {df:.1e}")
+
+
 def main():
     rodyn, lines, buoy, out = sys.argv[1:5]
     os.makedirs(out, exist_ok=True)
     fails = []
     check_lines(rodyn, lines, out, fails)
     check_buoy(rodyn, buoy, out, fails)
+    check_rod(rodyn, out, fails)
     for f in fails:
         print("FAIL:", f)
     sys.exit(1 if fails else 0)
