@@ -12,7 +12,7 @@ module rodyn_moordyn_out
    use rodyn_moordyn_file, only: md_row_t, md_section_names
    implicit none
    private
-   public :: md_deck_t, put, note, md_real, md_columns, md_fail, md_text_of
+   public :: md_deck_t, put, note, md_real, md_columns, md_fail, md_text_of, word
 
    !> The deck being written.
    type :: md_deck_t

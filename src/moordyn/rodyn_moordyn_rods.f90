@@ -13,7 +13,7 @@ module rodyn_moordyn_rods
    use rodyn_deck_params, only: upper_case
    use rodyn_moordyn_file, only: md_file_t, md_row_t, md_rod_types, md_rods, md_lines, &
                                  md_line_types
-   use rodyn_moordyn_out, only: md_deck_t, put, note, md_real, md_columns, md_fail
+   use rodyn_moordyn_out, only: md_deck_t, put, note, md_real, md_columns, md_fail, word
    implicit none
    private
    public :: rods, rod_end
@@ -35,7 +35,7 @@ contains
          call md_columns(d, md_rod_types, md%sec(md_rod_types)%rows(k), type_cols, 7, err)
          do j = 2, 7
             call md_real(d, md_rod_types, md%sec(md_rod_types)%rows(k), j, &
-                         word_of(type_cols, j), v(j), err)
+                         word(type_cols, j), v(j), err)
          end do
       end do
       do k = 1, md%sec(md_rods)%n
@@ -64,8 +64,8 @@ contains
                       j = 1, md%sec(md_rod_types)%n)])) call md_fail(d, md_rods, row, &
          'column RodType: no rod type "'//row%f(2)%s//'" in ROD TYPES', err)
       do j = 1, 3
-         call md_real(d, md_rods, row, 3 + j, word_of(rod_cols, 3 + j), a(j), err)
-         call md_real(d, md_rods, row, 6 + j, word_of(rod_cols, 6 + j), b(j), err)
+         call md_real(d, md_rods, row, 3 + j, word(rod_cols, 3 + j), a(j), err)
+         call md_real(d, md_rods, row, 6 + j, word(rod_cols, 6 + j), b(j), err)
       end do
       if (has_error(err)) return
       att = upper_case(row%f(3)%s)
@@ -166,18 +166,4 @@ contains
       if (u(k + j - 1:) == 'B') e = 2
    end subroutine rod_end
 
-   !> Word k of a blank-separated list.
-   function word_of(list, k) result(w)
-      character(len=*), intent(in) :: list  !< the list
-      integer, intent(in) :: k              !< which
-      character(len=:), allocatable :: w
-      integer :: j, p, q
-      p = 1
-      w = ''
-      do j = 1, k
-         q = index(list(p:)//' ', ' ')
-         if (j == k) w = list(p:p + q - 2)
-         p = p + q
-      end do
-   end function word_of
 end module rodyn_moordyn_rods
