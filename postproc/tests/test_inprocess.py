@@ -61,3 +61,38 @@ def test_moordyn_names():
     assert md.GetPointType(md.GetPoint(h, 1)) == 1 and md.GetPointType(md.GetPoint(h, 4)) == -1
     assert md.Close(h) == 0
     assert md.Create("no_such_file.txt") is None
+
+
+def test_out_file(tmp_path):
+    """FILE.out as MoorDyn writes it: names, units, a row at t = 0 and after each step,
+    each value the one librodyn's getters give (to the 8 digits written)."""
+    with open(LINES) as f:
+        text = f.read()
+    i = text.index("------------------------- need this line")
+    path = tmp_path / "lines_out.txt"
+    path.write_text(text[:i] + "---------------------- OUTPUTS ----\nFairTen1 AnchTen1\n"
+                    "L2N10T L1N10PX\nP4FX P4PZ\n" + text[i:])
+    h = md.Create(str(path))
+    x = [c for k in (4, 5, 6) for c in md.GetPointPos(md.GetPoint(h, k))]
+    assert md.Init(h, x, [0.0] * 9) == 0
+    for k in range(3):
+        x[0] += 0.05
+        f = md.Step(h, x, [0.1] + [0.0] * 8, 0.5 * k, 0.5)
+    fair = md.GetLineFairTen(md.GetLine(h, 1))
+    t2 = np.linalg.norm(md.GetLineNodeTen(md.GetLine(h, 2), 10))
+    px = md.GetLineNodePos(md.GetLine(h, 1), 10)[0]
+    assert md.Close(h) == 0
+    lines = (tmp_path / "lines_out.out").read_text().splitlines()
+    assert lines[0].split() == ["Time", "FairTen1", "AnchTen1", "L2N10T", "L1N10PX", "P4FX",
+                                "P4PZ"]
+    assert lines[1].split() == ["(s)", "N", "N", "N", "m", "N", "m"]
+    assert len(lines[0]) == 10 + 6 * 20
+    rows = np.array([[float(v) for v in ln.split()] for ln in lines[2:]])
+    assert rows.shape == (4, 7)
+    assert np.allclose(rows[:, 0], [0.0, 0.5, 1.0, 1.5], atol=0)
+    for got, want in zip(rows[-1, 1:], [fair, None, t2, px, f[0], -70.0 + 0.0]):
+        if want is not None:
+            assert abs(got - want) <= 1e-7 * abs(want)
+    bad = tmp_path / "bad_out.txt"
+    bad.write_text(path.read_text().replace("P4FX P4PZ", "P4FX B1PX"))
+    assert md.Create(str(bad)) is None

@@ -8,10 +8,13 @@ module rodyn_capi
                                           c_f_pointer, c_associated
    use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
-   use rodyn_error, only: error_t, has_error, stat_input
+   use rodyn_error, only: error_t, has_error, stat_input, stat_io
    use rodyn_capi_system, only: system_create, system_init, system_step
+   use rodyn_capi_outputs, only: channels_parse, out_open, out_row, out_close
+   use rodyn_deck_text, only: field_t
    use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, f_string, md_success, &
-                                 md_invalid_input, md_nan_error, md_invalid_value
+                                 md_invalid_input, md_nan_error, md_invalid_value, &
+                                 md_invalid_output_file
    implicit none
    private
    public :: md_create, md_init, md_step, md_close, md_get_line, md_get_point
@@ -25,10 +28,14 @@ contains
       type(c_ptr) :: h
       type(capi_system_t), pointer :: cs
       type(error_t) :: err
+      type(field_t), allocatable :: names(:)
+      integer, allocatable :: lines(:)
       integer :: k
       h = c_null_ptr
       allocate (cs)
-      call system_create(cs%s, f_string(infile), err)
+      cs%path = f_string(infile)
+      call system_create(cs%s, cs%path, err, names, lines, cs%write_units)
+      if (.not. has_error(err)) call channels_parse(cs%s, cs%path, names, lines, cs%ch, err)
       if (has_error(err)) then
          write (error_unit, '(a)') err%message
          deallocate (cs)
@@ -98,6 +105,10 @@ contains
       else
          call system_init(cs%s, [real(wp) ::], err)
       end if
+      if (size(cs%ch) > 0 .and. .not. has_error(err)) then
+         call out_open(cs%out, cs%path, cs%ch, cs%write_units, err)
+         if (.not. has_error(err)) call out_row(cs%out, cs%s, cs%ch, err)
+      end if
       code = code_of(err)
    end function md_init
 
@@ -130,6 +141,8 @@ contains
       else
          call system_step(cs%s, [real(wp) ::], [real(wp) ::], real(dt, wp), fw, err)
       end if
+      if (size(cs%ch) > 0 .and. dt > 0.0_c_double .and. .not. has_error(err)) &
+         call out_row(cs%out, cs%s, cs%ch, err)
       code = code_of(err)
       if (code == md_success) t = real(cs%s%t, c_double)
    end function md_step
@@ -139,11 +152,13 @@ contains
       type(c_ptr), value :: h               !< system
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
+      type(error_t) :: err
       cs => system_of(h)
       code = md_invalid_value
       if (.not. associated(cs)) return
+      if (size(cs%ch) > 0) call out_close(cs%out, err)
+      code = code_of(err)
       deallocate (cs)
-      code = md_success
    end function md_close
 
    !> MoorDyn's code of an error_t: bad input, a numerical failure, else success; the
@@ -155,6 +170,7 @@ contains
       write (error_unit, '(a)') 'rodyn: error: '//err%message
       code = md_nan_error
       if (err%code == stat_input) code = md_invalid_input
+      if (err%code == stat_io) code = md_invalid_output_file
    end function code_of
 
    !> MoorDyn_GetNumberLines, MoorDyn_GetNumberPoints.

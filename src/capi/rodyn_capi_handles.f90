@@ -5,13 +5,17 @@ module rodyn_capi_handles
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_char, c_f_pointer, &
                                           c_associated, c_size_t
    use rodyn_capi_system, only: md_system_t
+   use rodyn_outfile, only: out_file_t
+   use rodyn_capi_outputs, only: channel_t
    implicit none
    private
    public :: capi_item_t, capi_system_t, system_of, item_of, f_string
-   public :: md_success, md_invalid_input_file, md_invalid_input, md_nan_error, &
+   public :: md_success, md_invalid_input_file, md_invalid_output_file, md_invalid_input, &
+             md_nan_error, &
              md_invalid_value, md_unhandled
 
    integer(c_int), parameter :: md_success = 0, md_invalid_input_file = -1, &
+                                md_invalid_output_file = -2, &
                                 md_invalid_input = -3, md_nan_error = -4, &
                                 md_invalid_value = -6, md_unhandled = -255
 
@@ -25,6 +29,10 @@ module rodyn_capi_handles
    type :: capi_system_t
       type(md_system_t) :: s                     !< the system
       type(capi_item_t), allocatable :: lines(:), points(:)
+      type(channel_t), allocatable :: ch(:)      !< the OUTPUTS channels
+      type(out_file_t) :: out                    !< FILE.out, when there are channels
+      character(len=:), allocatable :: path      !< the MoorDyn file
+      logical :: write_units = .true.            !< the .out file's units row
    end type capi_system_t
 
    interface

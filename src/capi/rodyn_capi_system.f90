@@ -22,6 +22,7 @@ module rodyn_capi_system
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
    use rodyn_moordyn, only: moordyn_read
+   use rodyn_deck_text, only: field_t
    implicit none
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
@@ -64,15 +65,19 @@ contains
 
    !> Read the MoorDyn file at path into sys. Errors as the reader's (stat_input); a
    !> coupled body is refused (not yet driven through the API).
-   subroutine system_create(sys, path, err)
+   subroutine system_create(sys, path, err, outputs, output_line, write_units)
       type(md_system_t), intent(inout), target :: sys !< the system
       character(len=*), intent(in) :: path            !< the MoorDyn file
       type(error_t), intent(inout) :: err             !< status
+      type(field_t), allocatable, intent(out) :: outputs(:) !< OUTPUTS channels
+      integer, allocatable, intent(out) :: output_line(:)   !< their lines
+      logical, intent(out) :: write_units             !< WriteUnits > 0
       character(len=:), allocatable :: warnings
       integer, allocatable :: bodies(:)
       call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
                         coupled_points=sys%coupled, coupled_bodies=bodies, &
-                        n_points=sys%n_points)
+                        n_points=sys%n_points, outputs=outputs, output_line=output_line, &
+                        write_units=write_units)
       if (has_error(err)) return
       if (size(bodies) > 0) call set_error(err, stat_input, path//': error: a coupled '// &
          'body or rod is not driven through librodyn (docs/capi.md)')

@@ -8,6 +8,7 @@ module rodyn_moordyn
    use rodyn_deck, only: deck_read, deck_source_t
    use rodyn_moordyn_file, only: md_file_t, md_read, md_is_moordyn
    use rodyn_moordyn_out, only: md_deck_t
+   use rodyn_deck_text, only: field_t
    use rodyn_moordyn_deck, only: md_to_deck
    implicit none
    private
@@ -59,7 +60,7 @@ contains
    !> coupled_points the model%points a host moves (MoorDyn's Coupled and Vessel points,
    !> in their order), coupled_bodies the bodies.
    subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
-                           coupled_bodies, n_points)
+                           coupled_bodies, n_points, outputs, output_line, write_units)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
@@ -69,6 +70,9 @@ contains
       integer, allocatable, intent(out), optional :: coupled_points(:) !< points moved
       integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies, rods moved
       integer, intent(out), optional :: n_points !< MoorDyn's points (model%points(1:n))
+      type(field_t), allocatable, intent(out), optional :: outputs(:) !< OUTPUTS channels
+      integer, allocatable, intent(out), optional :: output_line(:)   !< their lines
+      logical, intent(out), optional :: write_units !< WriteUnits > 0
       type(md_deck_t) :: d
       type(deck_source_t) :: source
       warnings = ''
@@ -78,6 +82,9 @@ contains
       if (present(coupled_bodies) .and. allocated(d%coupled_bodies)) &
          coupled_bodies = [d%coupled_bodies, d%coupled_rods]
       if (present(n_points)) n_points = d%n_points
+      if (present(outputs) .and. allocated(d%outputs)) outputs = d%outputs
+      if (present(output_line) .and. allocated(d%output_line)) output_line = d%output_line
+      if (present(write_units)) write_units = d%write_units
       if (has_error(err)) return
       source%text = d%text
       source%line_map = d%map(1:d%n)

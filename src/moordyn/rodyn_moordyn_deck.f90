@@ -88,15 +88,38 @@ contains
          call line(d, md, md%sec(md_lines)%rows(k), k, err)
       end do
       if (has_error(err)) return
+      call collect_outputs(md, d)
+      d%write_units = env%write_units
       if (md%sec(md_outputs)%n > 0) call note(d, md%sec(md_outputs)%line, 'OUTPUTS: '// &
-         'rodyn writes every line''s nodes and tensions, every point and body (docs/'// &
-         'output.md); MoorDyn''s .out channels are not written by `rodyn FILE`')
+         '`rodyn FILE` writes every line''s nodes and tensions, every point and body '// &
+         '(docs/output.md); librodyn writes the channels to FILE.out (docs/capi.md)')
       call put(d, '*STATIC, INCREMENTS=20', 0)
       if (present(host)) then
          if (host) call put(d, '*DYNAMIC, DT=1.0, TIME=1.0e7, OUTPUT INTERVAL=1.0e7', 0)
       end if
       call put(d, '*OUTPUT, CSV=YES, HDF5=YES', 0)
    end subroutine md_to_deck
+
+   !> The channels of OUTPUTS, several a row (MoorDyn2.cpp reads them so), with their
+   !> lines.
+   subroutine collect_outputs(md, d)
+      type(md_file_t), intent(in) :: md     !< the MoorDyn file
+      type(md_deck_t), intent(inout) :: d   !< the deck (outputs set)
+      integer :: k, j, n
+      n = 0
+      do k = 1, md%sec(md_outputs)%n
+         n = n + size(md%sec(md_outputs)%rows(k)%f)
+      end do
+      allocate (d%outputs(n), d%output_line(n))
+      n = 0
+      do k = 1, md%sec(md_outputs)%n
+         do j = 1, size(md%sec(md_outputs)%rows(k)%f)
+            n = n + 1
+            d%outputs(n)%s = md%sec(md_outputs)%rows(k)%f(j)%s
+            d%output_line(n) = md%sec(md_outputs)%rows(k)%line
+         end do
+      end do
+   end subroutine collect_outputs
 
    !> MoorDyn's water depth is at least the depth of its deepest point in global axes
    !> (MoorDyn2.cpp: a point below the seabed lowers the seabed to it, with a warning).

@@ -28,6 +28,7 @@ module rodyn_moordyn_options
       real(wp) :: mu = 0.0_wp          !< seabed friction coefficient
       integer :: g_line = 0, depth_line = 0, kbot_line = 0
       character(len=:), allocatable :: friction !< ', FRICTION=mu' or ''
+      logical :: write_units = .true.  !< a units row in the .out file (WriteUnits > 0)
       !> the options ignored, by reason (time step, initial condition, output files),
       !> and the line of the first of each
       type(field_t) :: ignored(3)
@@ -48,7 +49,7 @@ module rodyn_moordyn_options
    character(len=*), parameter :: ic_options(12) = [character(len=12) :: 'DTIC', 'ICDT', &
       'TMAXIC', 'ICTMAX', 'CDSCALEIC', 'ICDFAC', 'THRESHIC', 'ICTHRESH', 'ICGENDYNAMIC', &
       'GENDYNAMICIC', 'FILEIC', 'ICFILE']
-   character(len=*), parameter :: out_options(5) = [character(len=14) :: 'WRITEUNITS', &
+   character(len=*), parameter :: out_options(4) = [character(len=14) :: &
       'DTOUT', 'DISABLEOUTPUT', 'DISABLEOUTTIME', 'WRITELOG']
 
 contains
@@ -128,6 +129,9 @@ contains
       case ('SEAFLOORFILE')
          call md_fail(d, md_options, row, 'SeafloorFile: a seabed from a file is not '// &
                       'read; rodyn''s seabed is a plane (*SEABED, SLOPE=)', err)
+      case ('WRITEUNITS')
+         call md_real(d, md_options, row, 1, row%f(2)%s, x, err)
+         env%write_units = x > 0.0_wp
       case ('UNIFYCURRENTGRID')
          call note(d, row%line, 'option '//row%f(2)%s//' ignored: no current grid is read')
       case default
