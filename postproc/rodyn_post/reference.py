@@ -15,6 +15,12 @@ Accepted layout (docs/postproc.md, "CSV layouts of compare"):
   numbers ('.' as decimal point); other columns may hold anything;
 - the x column (time or arc length) must increase strictly.
 
+MoorDyn's `.out` tables are read as they are (a file named `*.out`, or one whose second
+line starts with `(s)`): a header whose first name is `Time` and whose columns are
+separated by blanks only, then (when MoorDyn wrote it, WriteUnits > 0) a row of units,
+`(s)` first, the others bare (`N`, `m`, `m/s`), then the rows; each column gets the unit
+of that row (docs/capi.md, "The .out file").
+
 A column is chosen by its header (exactly as written, or its name without the unit,
 ignoring case) or by its number, counting from 1 for the first column.
 """
@@ -65,6 +71,8 @@ class ReferenceTable:
         if not numbered:
             raise ReferenceError(f"{self.path}: empty (no header line)")
         header_number, header_line = numbered[0]
+        if self._moordyn_out(numbered):
+            return
         counts = {d: header_line.count(d) for d in DELIMITERS}
         self.delimiter = max(DELIMITERS, key=lambda d: counts[d])
         if counts[self.delimiter] == 0:
@@ -86,6 +94,33 @@ class ReferenceTable:
             self.rows.append((number, fields))
         if not self.rows:
             raise ReferenceError(f"{self.path}: no data rows after the header")
+
+    def _moordyn_out(self, numbered):
+        """Read a MoorDyn .out table (header `Time ...`, blanks between the columns, an
+        optional row of units); False when the text is not one."""
+        header = numbered[0][1].split()
+        if not header or header[0] != "Time" or any(d in numbered[0][1] for d in DELIMITERS):
+            return False
+        body = numbered[1:]
+        unit_row = body[0][1].split() if body else []
+        if self.path.suffix != ".out" and unit_row[:1] != ["(s)"]:
+            return False
+        if unit_row and unit_row[0] == "(s)":
+            header = [f"{h} [{u.strip('()')}]" if u.strip("()") else h
+                      for h, u in zip(header, unit_row)]
+            body = body[1:]
+        self.delimiter = " "
+        self.header = header
+        self.rows = []
+        for number, line in body:
+            fields = line.split()
+            if len(fields) != len(header):
+                raise ReferenceError(f"{self.path}: line {number}: {len(fields)} fields, "
+                                     f"the header has {len(header)}")
+            self.rows.append((number, fields))
+        if not self.rows:
+            raise ReferenceError(f"{self.path}: no data rows after the header")
+        return True
 
     def find(self, spec: str) -> int:
         """Index (from 0) of the column named by `spec`: a number from 1, the header as

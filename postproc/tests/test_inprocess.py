@@ -96,3 +96,21 @@ def test_out_file(tmp_path):
     bad = tmp_path / "bad_out.txt"
     bad.write_text(path.read_text().replace("P4FX P4PZ", "P4FX B1PX"))
     assert md.Create(str(bad)) is None
+
+
+def test_compare_reads_moordyn_out(tmp_path):
+    """rodyn-compare's reference reader takes a MoorDyn .out table as it is: the units of
+    its units row, and none without one."""
+    from rodyn_post.reference import ReferenceTable
+    out = tmp_path / "case.out"
+    out.write_text("      Time            FairTen1                L1N3PZ\n"
+                   "       (s)                   N                     m\n"
+                   "    0.0000       9.0076599e+05      -6.9000000e+01\n"
+                   "    0.5000       9.0100000e+05      -6.8500000e+01\n")
+    t = ReferenceTable(out)
+    assert t.header == ["Time [s]", "FairTen1 [N]", "L1N3PZ [m]"]
+    assert list(t.column("FairTen1", "force").values) == [900765.99, 901000.0]
+    assert list(t.column("1", "time", increasing=True).values) == [0.0, 0.5]
+    bare = tmp_path / "bare.out"
+    bare.write_text("Time FairTen1\n0.0 1.0e5\n0.5 1.1e5\n")
+    assert ReferenceTable(bare).column("FairTen1", "force").unit is None
