@@ -114,3 +114,36 @@ def test_compare_reads_moordyn_out(tmp_path):
     bare = tmp_path / "bare.out"
     bare.write_text("Time FairTen1\n0.0 1.0e5\n0.5 1.1e5\n")
     assert ReferenceTable(bare).column("FairTen1", "force").unit is None
+
+
+def test_bad_input_never_crashes_the_host():
+    """Every bad MoorDyn file of tests/decks/bad/moordyn/ gives NULL from MoorDyn_Create
+    in this one process, and every function given a NULL handle MOORDYN_INVALID_VALUE
+    (-6): the host goes on."""
+    import ctypes
+    import glob
+    from rodyn._lib import lib
+    bad = sorted(glob.glob(os.path.join(os.path.dirname(LINES), "..", "..", "bad", "moordyn",
+                                        "*.txt")))
+    assert len(bad) >= 20
+    for path in bad:
+        assert md.Create(path) is None, path
+    L = lib()
+    n, d, v3 = ctypes.c_uint(0), ctypes.c_double(0.0), (ctypes.c_double * 3)()
+    assert L.MoorDyn_NCoupledDOF(None, ctypes.byref(n)) == -6
+    assert L.MoorDyn_Init(None, None, None) == -6
+    assert L.MoorDyn_Step(None, None, None, None, ctypes.byref(d), ctypes.byref(d)) == -6
+    assert L.MoorDyn_Close(None) == -6
+    assert L.MoorDyn_GetLine(None, 1) is None and L.MoorDyn_GetPoint(None, 1) is None
+    assert L.MoorDyn_GetLineNodePos(None, 0, v3) == -6
+    assert L.MoorDyn_GetLineNodeTen(None, 0, v3) == -6
+    assert L.MoorDyn_GetPointPos(None, v3) == -6
+    h = md.Create(LINES)
+    line = md.GetLine(h, 1)
+    assert L.MoorDyn_GetLineNodePos(line, 0, v3) == -6      # before Init
+    x = [c for k in (4, 5, 6) for c in md.GetPointPos(md.GetPoint(h, k))]
+    assert md.Init(h, x, [0.0] * 9) == 0
+    assert md.Init(h, x, [0.0] * 9) == -6                   # twice
+    assert L.MoorDyn_GetLineNodePos(line, 21, v3) == -6     # past the last node
+    assert L.MoorDyn_GetLineNodePos(line, 20, v3) == 0
+    assert md.Close(h) == 0
