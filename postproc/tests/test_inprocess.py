@@ -147,3 +147,23 @@ def test_bad_input_never_crashes_the_host():
     assert L.MoorDyn_GetLineNodePos(line, 21, v3) == -6     # past the last node
     assert L.MoorDyn_GetLineNodePos(line, 20, v3) == 0
     assert md.Close(h) == 0
+
+
+def test_api_statics_are_the_programs(tmp_path):
+    """MoorDyn_Init's static state is `rodyn FILE`'s, node for node and bit for bit (the
+    same file read the same way; the API's deck adds only its *DYNAMIC)."""
+    import csv
+    import subprocess
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    subprocess.run([exe, LINES, "-o", str(tmp_path / "prog"), "--quiet"], check=True)
+    with open(tmp_path / "prog" / "static_nodes.csv") as f:
+        rows = list(csv.DictReader(f))
+    with rodyn.System(LINES) as s:
+        s.init()
+        for line in (1, 2, 3):
+            mine = s.line_nodes(line)
+            prog = np.array([[float(r[k]) for k in ("x_m", "y_m", "z_m")] for r in rows
+                             if r["line"] == f"L{line}"])
+            assert prog.shape == mine.shape and np.array_equal(prog, mine), line
