@@ -34,6 +34,8 @@ _SIGNATURES = {
     "MoorDyn_GetLineUnstretchedLength": (ctypes.c_int, [_P, _D]),
     "MoorDyn_GetLineNodePos": (ctypes.c_int, [_P, ctypes.c_uint, _D]),
     "MoorDyn_GetLineNodeTen": (ctypes.c_int, [_P, ctypes.c_uint, _D]),
+    "MoorDyn_GetLineNodeVel": (ctypes.c_int, [_P, ctypes.c_uint, _D]),
+    "MoorDyn_GetLineMaxTen": (ctypes.c_int, [_P, _D]),
     "MoorDyn_GetLineNodeCurv": (ctypes.c_int, [_P, ctypes.c_uint, _D]),
     "MoorDyn_GetLineFairTen": (ctypes.c_int, [_P, _D]),
     "MoorDyn_GetPointID": (ctypes.c_int, [_P, _I]),

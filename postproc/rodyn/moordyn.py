@@ -12,7 +12,7 @@ from ._lib import lib, doubles
 __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step", "Close",
            "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetFASTtens",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
-           "GetLineNodePos", "GetLineNodeTen", "GetLineNodeCurv", "GetLineFairTen",
+           "GetLineNodePos", "GetLineNodeVel", "GetLineNodeTen", "GetLineMaxTen", "GetLineNodeCurv", "GetLineFairTen",
            "GetPointID", "GetPointType", "GetPointPos", "GetPointForce"]
 
 DEFAULT_FILE = "Mooring/lines.txt"
@@ -123,6 +123,14 @@ def _vec(fn, *args):
 
 def GetLineNodePos(instance, i):
     return _vec(lib().MoorDyn_GetLineNodePos, instance, int(i))
+
+
+def GetLineNodeVel(instance, i):
+    return _vec(lib().MoorDyn_GetLineNodeVel, instance, int(i))
+
+
+def GetLineMaxTen(instance):
+    return _double(lib().MoorDyn_GetLineMaxTen, instance)
 
 
 def GetLineNodeTen(instance, i):

@@ -58,6 +58,9 @@ def test_moordyn_names():
     # anchor's vertical tension far below the fairlead's (the chain lies on the seabed)
     assert abs(fh[0] - ah[0]) <= 1e-6 * fh[0] and fv[0] > 100.0 * av[0]
     assert md.GetLineNumberNodes(md.GetLine(h, 1)) == 21
+    # at rest the nodes do not move; a catenary's tension is largest at its fairlead
+    assert max(abs(c) for c in md.GetLineNodeVel(md.GetLine(h, 1), 10)) < 1e-9
+    assert md.GetLineMaxTen(md.GetLine(h, 1)) == md.GetLineFairTen(md.GetLine(h, 1))
     assert md.GetPointType(md.GetPoint(h, 1)) == 1 and md.GetPointType(md.GetPoint(h, 4)) == -1
     assert md.Close(h) == 0
     assert md.Create("no_such_file.txt") is None

@@ -95,7 +95,7 @@ contains
       integer(c_int), value :: i            !< node, from 0
       real(c_double), intent(out) :: pos(3) !< position [m]
       integer(c_int) :: code
-      code = node_vector(h, i, pos, .false.)
+      code = node_vector(h, i, pos, 'x')
    end function node_pos
 
    !> MoorDyn_GetLineNodeTen: MoorDyn's tension vector of node i [N].
@@ -104,28 +104,60 @@ contains
       integer(c_int), value :: i            !< node, from 0
       real(c_double), intent(out) :: t(3)   !< tension [N]
       integer(c_int) :: code
-      code = node_vector(h, i, t, .true.)
+      code = node_vector(h, i, t, 't')
    end function node_ten
 
-   !> The position (tension: the tension vector) of node i of a line.
-   function node_vector(h, i, v, tension) result(code)
+   !> MoorDyn_GetLineNodeVel: the velocity of node i [m/s].
+   function node_vel(h, i, v) result(code) bind(c, name='MoorDyn_GetLineNodeVel')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), value :: i            !< node, from 0
+      real(c_double), intent(out) :: v(3)   !< velocity [m/s]
+      integer(c_int) :: code
+      code = node_vector(h, i, v, 'v')
+   end function node_vel
+
+   !> The position (t: the tension vector, v: the velocity) of node i of a line.
+   function node_vector(h, i, v, what) result(code)
       type(c_ptr), intent(in) :: h          !< line
       integer(c_int), intent(in) :: i       !< node, from 0
-      real(c_double), intent(out) :: v(3)   !< [m] or [N]
-      logical, intent(in) :: tension        !< the tension, else the position
+      real(c_double), intent(out) :: v(3)   !< [m], [N] or [m/s]
+      character(len=1), intent(in) :: what  !< 'x', 't' or 'v'
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => node_of(h, i)
       v = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
-      if (tension) then
-         v = real(system_node_tension(it%sys%s, it%index, int(i)), c_double)
-      else
-         v = real(system_node_x(it%sys%s, it%index, int(i)), c_double)
-      end if
+      associate (s => it%sys%s)
+         select case (what)
+         case ('t')
+            v = real(system_node_tension(s, it%index, int(i)), c_double)
+         case ('v')
+            v = real(s%state%v(:, mesh_node(s%mesh, it%index, int(i) + 1)), c_double)
+         case default
+            v = real(system_node_x(s, it%index, int(i)), c_double)
+         end select
+      end associate
       code = md_success
    end function node_vector
+
+   !> MoorDyn_GetLineMaxTen: the largest node tension of a line [N].
+   function line_max_ten(h, t) result(code) bind(c, name='MoorDyn_GetLineMaxTen')
+      type(c_ptr), value :: h               !< line
+      real(c_double), intent(out) :: t      !< tension [N]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      integer :: k
+      it => item_of(h)
+      t = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1) return
+      do k = 0, it%sys%s%mesh%line_n_nodes(it%index) - 1
+         t = max(t, real(norm2(system_node_tension(it%sys%s, it%index, k)), c_double))
+      end do
+      code = md_success
+   end function line_max_ten
 
    !> MoorDyn_GetLineNodeCurv: 0, a cable line's (rodyn's cable elements carry no
    !> bending; a line with EI > 0 is not yet served).

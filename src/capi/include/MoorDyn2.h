@@ -40,9 +40,11 @@ int DECLDIR MoorDyn_GetLineN(MoorDynLine l, unsigned int* n);
 int DECLDIR MoorDyn_GetLineNumberNodes(MoorDynLine l, unsigned int* n);
 int DECLDIR MoorDyn_GetLineUnstretchedLength(MoorDynLine l, double* ul);
 int DECLDIR MoorDyn_GetLineNodePos(MoorDynLine l, unsigned int i, double pos[3]);
+int DECLDIR MoorDyn_GetLineNodeVel(MoorDynLine l, unsigned int i, double vel[3]);
 int DECLDIR MoorDyn_GetLineNodeTen(MoorDynLine l, unsigned int i, double t[3]);
 int DECLDIR MoorDyn_GetLineNodeCurv(MoorDynLine l, unsigned int i, double* c);
 int DECLDIR MoorDyn_GetLineFairTen(MoorDynLine l, double* t);
+int DECLDIR MoorDyn_GetLineMaxTen(MoorDynLine l, double* t);
 
 int DECLDIR MoorDyn_GetPointID(MoorDynPoint point, int* id);
 int DECLDIR MoorDyn_GetPointType(MoorDynPoint point, int* t);
