@@ -99,8 +99,13 @@ class System:
         return h
 
     def init(self, x=None, xd=None):
-        """Coupled points at x (default: where the file has them), the statics solved."""
-        x = self.coupled_positions() if x is None else x
+        """Coupled DOFs at x, the statics solved. Default: the coupled points where the
+        file has them (a system with coupled bodies, 6 DOFs each first, needs x)."""
+        if x is None:
+            x = self.coupled_positions()
+            if len(x) != self.n_coupled:
+                raise RodynError("init: the system has coupled bodies; give x (each "
+                                 "body's x, y, z, r, p, y, then the points' x, y, z)", -6)
         xd = np.zeros(len(x)) if xd is None else xd
         _ok(self._lib.MoorDyn_Init(self._h, doubles(x), doubles(xd)), "MoorDyn_Init")
         self.t = 0.0

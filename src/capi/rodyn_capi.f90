@@ -9,7 +9,7 @@ module rodyn_capi
    use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, stat_input, stat_io
-   use rodyn_capi_system, only: system_create, system_init, system_step
+   use rodyn_capi_system, only: system_create, system_init, system_step, system_ndof
    use rodyn_capi_outputs, only: channels_parse, out_open, out_row, out_close
    use rodyn_deck_text, only: field_t
    use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, f_string, md_success, &
@@ -53,7 +53,7 @@ contains
       h = c_loc(cs)
    end function md_create
 
-   !> MoorDyn_NCoupledDOF: 3 a coupled point.
+   !> MoorDyn_NCoupledDOF: 6 a coupled body, 3 a coupled point.
    function md_ncoupled(h, n) result(code) bind(c, name='MoorDyn_NCoupledDOF')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
@@ -63,7 +63,7 @@ contains
       n = 0
       code = md_invalid_value
       if (.not. associated(cs)) return
-      n = int(3*size(cs%s%coupled), c_int)
+      n = int(system_ndof(cs%s), c_int)
       code = md_success
    end function md_ncoupled
 
@@ -86,7 +86,7 @@ contains
    !> condition), the dynamics set up at t = 0.
    function md_init(h, x, xd) result(code) bind(c, name='MoorDyn_Init')
       type(c_ptr), value :: h               !< system
-      type(c_ptr), value :: x, xd           !< const double* (3 a coupled point)
+      type(c_ptr), value :: x, xd           !< const double* (the coupled DOFs)
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
       real(c_double), pointer :: xp(:)
@@ -96,7 +96,7 @@ contains
       code = md_invalid_value
       if (.not. associated(cs)) return
       if (cs%s%stage /= 0) return
-      n = 3*size(cs%s%coupled)
+      n = system_ndof(cs%s)
       ! (the velocities are not used: the statics start at rest; MoorDyn asks for both)
       if (n > 0 .and. .not. (c_associated(x) .and. c_associated(xd))) return
       if (n > 0) then
@@ -129,7 +129,7 @@ contains
       code = md_invalid_value
       if (.not. associated(cs)) return
       if (cs%s%stage /= 1) return
-      n = 3*size(cs%s%coupled)
+      n = system_ndof(cs%s)
       allocate (fw(n))
       if (n > 0) then
          if (.not. (c_associated(x) .and. c_associated(xd) .and. c_associated(f))) return

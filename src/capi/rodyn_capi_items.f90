@@ -8,7 +8,7 @@ module rodyn_capi_items
    use rodyn_kinds, only: wp
    use rodyn_model, only: end_a, end_b, point_body, point_free
    use rodyn_mesh, only: mesh_node
-   use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces
+   use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, system_ndof
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
    use rodyn_capi, only: md_create, md_init, md_step, md_close
@@ -266,8 +266,9 @@ contains
       k = findloc(it%sys%s%coupled, it%index, dim=1)
       code = md_unhandled
       if (k == 0) return
-      allocate (fa(3*size(it%sys%s%coupled)))
+      allocate (fa(system_ndof(it%sys%s)))
       call system_forces(it%sys%s, fa)
+      k = k + 2*size(it%sys%s%cbody)    ! (after the bodies' 6 DOFs)
       f = real(fa(3*k - 2:3*k), c_double)
       code = md_success
    end function point_force

@@ -23,7 +23,7 @@ module rodyn_capi_outputs
    use rodyn_mesh, only: mesh_node
    use rodyn_model, only: end_a, end_b
    use rodyn_capi_system, only: md_system_t, system_node_x, system_node_tension, &
-                                system_forces
+                                system_forces, system_ndof
    implicit none
    private
    public :: channel_t, channels_parse, out_open, out_row, out_close
@@ -217,8 +217,9 @@ contains
       character(len=20) :: cell
       real(wp), allocatable :: fc(:)
       integer :: k
-      allocate (fc(3*size(sys%coupled)))
+      allocate (fc(system_ndof(sys)))
       call system_forces(sys, fc)
+      fc = fc(6*size(sys%cbody) + 1:)     ! the points' (after the bodies' 6 DOFs)
       write (cell(1:10), '(f10.4)') sys%t
       row = cell(1:10)
       do k = 1, size(ch)

@@ -22,11 +22,12 @@ module rodyn_capi_system
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
    use rodyn_moordyn, only: moordyn_read
+   use rodyn_capi_bodies, only: add_body_vessels, body_pose_row, body_forces
    use rodyn_deck_text, only: field_t
    implicit none
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
-   public :: system_node_x, system_node_tension
+   public :: system_node_x, system_node_tension, system_ndof
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -52,6 +53,8 @@ module rodyn_capi_system
       type(run_summary_t) :: summary            !< counters
       type(host_observer_t) :: obs              !< the step forces
       integer, allocatable :: coupled(:)        !< model%points moved by the host, in order
+      integer, allocatable :: cbody(:)          !< model%bodies moved by the host, in order
+      integer, allocatable :: cvessel(:)        !< the vessel of each (prob%vessels)
       integer, allocatable :: motion(:)         !< the motion of each (model%motions)
       real(wp), allocatable :: x0(:, :)         !< (3, n) where each is at t = 0 [m]
       real(wp), allocatable :: r_static(:, :)   !< (6, nn) support forces of the statics
@@ -64,7 +67,7 @@ module rodyn_capi_system
 contains
 
    !> Read the MoorDyn file at path into sys. Errors as the reader's (stat_input); a
-   !> coupled body is refused (not yet driven through the API).
+   !> coupled rod is refused (not driven through the API).
    subroutine system_create(sys, path, err, outputs, output_line, write_units)
       type(md_system_t), intent(inout), target :: sys !< the system
       character(len=*), intent(in) :: path            !< the MoorDyn file
@@ -73,34 +76,44 @@ contains
       integer, allocatable, intent(out) :: output_line(:)   !< their lines
       logical, intent(out) :: write_units             !< WriteUnits > 0
       character(len=:), allocatable :: warnings
-      integer, allocatable :: bodies(:)
+      integer, allocatable :: rods(:)
       call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
-                        coupled_points=sys%coupled, coupled_bodies=bodies, &
+                        coupled_points=sys%coupled, coupled_bodies=sys%cbody, &
                         n_points=sys%n_points, outputs=outputs, output_line=output_line, &
-                        write_units=write_units)
+                        write_units=write_units, coupled_rods=rods)
       if (has_error(err)) return
-      if (size(bodies) > 0) call set_error(err, stat_input, path//': error: a coupled '// &
-         'body or rod is not driven through librodyn (docs/capi.md)')
+      if (size(rods) > 0) call set_error(err, stat_input, path//': error: RODS: a '// &
+         'coupled rod is not driven through librodyn (docs/capi.md)')
       sys%stage = 0
    end subroutine system_create
 
-   !> The coupled points to x (3 a point, in order), the statics solved, the dynamics set
-   !> up from it (t = 0). x: MoorDyn_Init's positions; their velocities are not used
-   !> (the statics start at rest).
+   !> The coupled bodies (6 a body: MoorDyn's pose) and points (3 a point) to x, in
+   !> MoorDyn's order, the statics solved, the dynamics set up from it (t = 0). x:
+   !> MoorDyn_Init's positions; their velocities are not used (the statics start at
+   !> rest). A body turned at Init is refused (rodyn's bodies start with the global axes).
    subroutine system_init(sys, x, err)
       type(md_system_t), intent(inout), target :: sys !< the system
-      real(wp), intent(in) :: x(:)                    !< (3 n) coupled positions [m]
+      real(wp), intent(in) :: x(:)                    !< (system_ndof) coupled DOFs
       type(error_t), intent(inout) :: err             !< status
       type(static_problem_t), allocatable :: sp
-      integer :: i, ip, l, nm
-      do i = 1, size(sys%coupled)
-         ip = sys%coupled(i)
-         sys%model%points(ip)%position = x(3*i - 2:3*i)
-         sys%model%points(ip)%global = x(3*i - 2:3*i)
-         do l = 1, size(sys%model%lines)
-            if (sys%model%lines(l)%point_a == ip) sys%model%lines(l)%end_a = x(3*i - 2:3*i)
-            if (sys%model%lines(l)%point_b == ip) sys%model%lines(l)%end_b = x(3*i - 2:3*i)
+      integer :: i, ip, nm, nb
+      nb = 6*size(sys%cbody)
+      do i = 1, size(sys%cbody)
+         if (any(abs(x(6*i - 2:6*i)) > 1.0e-12_wp)) then
+            call set_error(err, stat_input, 'MoorDyn_Init: coupled body '// &
+                           trim(sys%model%bodies(sys%cbody(i))%name)//' turned: rodyn''s '// &
+                           'bodies start with the global axes')
+            return
+         end if
+         sys%model%bodies(sys%cbody(i))%position = x(6*i - 5:6*i - 3)
+         do ip = 1, size(sys%model%points)
+            if (sys%model%points(ip)%body /= sys%cbody(i)) cycle
+            call move_point(sys%model, ip, x(6*i - 5:6*i - 3) + sys%model%points(ip)%position)
          end do
+      end do
+      do i = 1, size(sys%coupled)
+         sys%model%points(sys%coupled(i))%position = x(nb + 3*i - 2:nb + 3*i)
+         call move_point(sys%model, sys%coupled(i), x(nb + 3*i - 2:nb + 3*i))
       end do
       call mesh_build(sys%model, sys%mesh, sys%state, err, initial_shape=.true.)
       if (has_error(err)) return
@@ -117,10 +130,12 @@ contains
       if (allocated(sys%model%motions)) nm = size(sys%model%motions)
       allocate (sys%motion(size(sys%coupled)), sys%x0(3, size(sys%coupled)))
       do i = 1, size(sys%coupled)
-         sys%x0(:, i) = x(3*i - 2:3*i)
+         sys%x0(:, i) = x(nb + 3*i - 2:nb + 3*i)
          sys%motion(i) = nm + i
       end do
       call add_motions(sys%model, sys%coupled)
+      allocate (sys%cvessel(size(sys%cbody)))
+      call add_body_vessels(sys%model, sys%cbody, sys%cvessel)
       sys%model%dynamic%duration = huge(1.0_wp)
       call dynamics_setup(sys%prob, sys%model, sys%mesh, sys%state)
       call timeloop_begin(sys%prob, sys%model, err, sys%obs, sys%ls)
@@ -128,6 +143,25 @@ contains
       sys%t = 0.0_wp
       sys%stage = 1
    end subroutine system_init
+
+   !> Point ip at x (global), with the line ends on it.
+   subroutine move_point(model, ip, x)
+      type(model_t), intent(inout) :: model !< model
+      integer, intent(in) :: ip             !< the point
+      real(wp), intent(in) :: x(3)          !< where [m]
+      integer :: l
+      model%points(ip)%global = x
+      do l = 1, size(model%lines)
+         if (model%lines(l)%point_a == ip) model%lines(l)%end_a = x
+         if (model%lines(l)%point_b == ip) model%lines(l)%end_b = x
+      end do
+   end subroutine move_point
+
+   !> MoorDyn's coupled DOFs: 6 a coupled body, 3 a coupled point.
+   pure integer function system_ndof(sys) result(n)
+      type(md_system_t), intent(in) :: sys  !< the system
+      n = 6*size(sys%cbody) + 3*size(sys%coupled)
+   end function system_ndof
 
    !> A table motion at rest for each coupled point, appended to model%motions.
    subroutine add_motions(model, points)
@@ -156,21 +190,27 @@ contains
    !> coupled points at t + dt [N] (3 a point). dt <= 0: f only.
    subroutine system_step(sys, x, xd, dt, f, err)
       type(md_system_t), intent(inout), target :: sys !< the system
-      real(wp), intent(in) :: x(:)                    !< (3 n) positions at t [m]
-      real(wp), intent(in) :: xd(:)                   !< (3 n) velocities [m/s]
+      real(wp), intent(in) :: x(:)                    !< (system_ndof) DOFs at t [m, rad]
+      real(wp), intent(in) :: xd(:)                   !< (system_ndof) their rates
       real(wp), intent(in) :: dt                      !< coupling step [s]
-      real(wp), intent(out) :: f(:)                   !< (3 n) forces at t + dt [N]
+      real(wp), intent(out) :: f(:)                   !< (system_ndof) forces at t + dt
       type(error_t), intent(inout) :: err             !< status
       real(wp) :: t1
       logical :: halt
-      integer :: i
+      integer :: i, nb
       if (dt > 0.0_wp) then
          t1 = sys%t + dt
+         nb = 6*size(sys%cbody)
+         do i = 1, size(sys%cbody)
+            call body_pose_row(sys%prob%vessels(sys%cvessel(i)), t1, &
+                               x(6*i - 5:6*i) + xd(6*i - 5:6*i)*dt)
+         end do
          do i = 1, size(sys%coupled)
             associate (mo => sys%model%motions(sys%motion(i)))
                mo%time = [mo%time, t1]
-               mo%disp = reshape([mo%disp, x(3*i - 2:3*i) + xd(3*i - 2:3*i)*dt - &
-                                  sys%x0(:, i)], [3, size(mo%time)])
+               mo%disp = reshape([mo%disp, x(nb + 3*i - 2:nb + 3*i) + &
+                                  xd(nb + 3*i - 2:nb + 3*i)*dt - sys%x0(:, i)], &
+                                 [3, size(mo%time)])
             end associate
          end do
          sys%model%dynamic%dt = dt
@@ -187,15 +227,16 @@ contains
       call system_forces(sys, f)
    end subroutine system_step
 
-   !> The lines' forces on the coupled points at sys%t [N] (3 a point): minus the support
-   !> forces of the line ends on each, the step forces extrapolated from their force
-   !> points to the step's end (the statics' before the first step).
+   !> The lines' forces on the coupled bodies (force and moment about the reference point,
+   !> 6 a body) and points (3 a point) at sys%t [N, N m]: minus the support forces of the
+   !> line ends on each, the step forces extrapolated from their force points to the
+   !> step's end (the statics' before the first step).
    subroutine system_forces(sys, f)
       type(md_system_t), intent(in) :: sys  !< the system
-      real(wp), intent(out) :: f(:)         !< (3 n) forces [N]
+      real(wp), intent(out) :: f(:)         !< (system_ndof) forces [N, N m]
       real(wp), allocatable :: r(:, :)
-      real(wp) :: w
-      integer :: i, l, node
+      real(wp) :: w, rb(3)
+      integer :: i, l, node, nb
       w = sys%prob%wf
       if (.not. sys%obs%have_last) then
          r = sys%r_static
@@ -206,15 +247,25 @@ contains
          r = sys%obs%r_last
       end if
       f = 0.0_wp
+      nb = 6*size(sys%cbody)
+      do i = 1, size(sys%cbody)
+         rb = sys%model%bodies(sys%cbody(i))%position
+         if (sys%stage == 1) then
+            associate (ve => sys%prob%vessels(sys%cvessel(i)))
+               rb = ve%origin + ve%motion(1:3, size(ve%time))
+            end associate
+         end if
+         f(6*i - 5:6*i) = body_forces(sys%model, sys%mesh, sys%state%x, r, sys%cbody(i), rb)
+      end do
       do i = 1, size(sys%coupled)
          do l = 1, size(sys%model%lines)
             if (sys%model%lines(l)%point_a == sys%coupled(i)) then
                node = mesh_node(sys%mesh, l, end_a)
-               f(3*i - 2:3*i) = f(3*i - 2:3*i) - r(1:3, node)
+               f(nb + 3*i - 2:nb + 3*i) = f(nb + 3*i - 2:nb + 3*i) - r(1:3, node)
             end if
             if (sys%model%lines(l)%point_b == sys%coupled(i)) then
                node = mesh_node(sys%mesh, l, end_b)
-               f(3*i - 2:3*i) = f(3*i - 2:3*i) - r(1:3, node)
+               f(nb + 3*i - 2:nb + 3*i) = f(nb + 3*i - 2:nb + 3*i) - r(1:3, node)
             end if
          end do
       end do

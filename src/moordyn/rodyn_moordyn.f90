@@ -60,7 +60,8 @@ contains
    !> coupled_points the model%points a host moves (MoorDyn's Coupled and Vessel points,
    !> in their order), coupled_bodies the bodies.
    subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
-                           coupled_bodies, n_points, outputs, output_line, write_units)
+                           coupled_bodies, n_points, outputs, output_line, write_units, &
+                           coupled_rods)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
@@ -68,7 +69,8 @@ contains
       character(len=:), allocatable, intent(out) :: warnings !< the deck's warnings
       logical, intent(in), optional :: host !< read for a host program's steps
       integer, allocatable, intent(out), optional :: coupled_points(:) !< points moved
-      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies, rods moved
+      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies moved
+      integer, allocatable, intent(out), optional :: coupled_rods(:)   !< rods moved
       integer, intent(out), optional :: n_points !< MoorDyn's points (model%points(1:n))
       type(field_t), allocatable, intent(out), optional :: outputs(:) !< OUTPUTS channels
       integer, allocatable, intent(out), optional :: output_line(:)   !< their lines
@@ -80,7 +82,8 @@ contains
       if (present(coupled_points) .and. allocated(d%coupled_points)) &
          coupled_points = d%coupled_points
       if (present(coupled_bodies) .and. allocated(d%coupled_bodies)) &
-         coupled_bodies = [d%coupled_bodies, d%coupled_rods]
+         coupled_bodies = d%coupled_bodies
+      if (present(coupled_rods) .and. allocated(d%coupled_rods)) coupled_rods = d%coupled_rods
       if (present(n_points)) n_points = d%n_points
       if (present(outputs) .and. allocated(d%outputs)) outputs = d%outputs
       if (present(output_line) .and. allocated(d%output_line)) output_line = d%output_line
