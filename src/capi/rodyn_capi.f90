@@ -205,37 +205,37 @@ contains
 
    !> MoorDyn_GetLine, MoorDyn_GetPoint: the handle of line (point) ID l, from 1; NULL
    !> when there is none.
-   function md_get_line(h, l) result(item) bind(c, name='MoorDyn_GetLine')
+   type(c_ptr) function md_get_line(h, l) bind(c, name='MoorDyn_GetLine')
       type(c_ptr), value :: h               !< system
       integer(c_int), value :: l            !< unsigned int ID
-      type(c_ptr) :: item
-      type(capi_system_t), pointer :: cs
-      cs => system_of(h)
-      item = c_null_ptr
-      if (associated(cs)) item = handle(cs%lines, l, 'line')
+      md_get_line = handle(h, l, .true.)
    end function md_get_line
 
-   function md_get_point(h, c) result(item) bind(c, name='MoorDyn_GetPoint')
+   type(c_ptr) function md_get_point(h, c) bind(c, name='MoorDyn_GetPoint')
       type(c_ptr), value :: h               !< system
       integer(c_int), value :: c            !< unsigned int ID
-      type(c_ptr) :: item
-      type(capi_system_t), pointer :: cs
-      cs => system_of(h)
-      item = c_null_ptr
-      if (associated(cs)) item = handle(cs%points, c, 'point')
+      md_get_point = handle(h, c, .false.)
    end function md_get_point
 
-   !> The handle of item k of items (NULL, and a message, when there is none).
-   function handle(items, k, what) result(item)
-      type(capi_item_t), intent(in), target :: items(:) !< the lines or points
+   !> The handle of line (or point) k of a system (NULL, and a message, when there is
+   !> none).
+   function handle(h, k, lines) result(item)
+      type(c_ptr), intent(in) :: h          !< system
       integer(c_int), intent(in) :: k       !< ID, from 1
-      character(len=*), intent(in) :: what  !< 'line' or 'point'
+      logical, intent(in) :: lines          !< a line, else a point
       type(c_ptr) :: item
+      type(capi_system_t), pointer :: cs
+      integer :: n
       item = c_null_ptr
-      if (k >= 1 .and. k <= size(items)) then
-         item = c_loc(items(k))
+      cs => system_of(h)
+      if (.not. associated(cs)) return
+      n = merge(size(cs%lines), size(cs%points), lines)
+      if (k >= 1 .and. k <= n) then
+         if (lines) item = c_loc(cs%lines(k))
+         if (.not. lines) item = c_loc(cs%points(k))
       else
-         write (error_unit, '(a,i0)') 'Error: There is not such '//what//' ', k
+         write (error_unit, '(a,i0)') 'Error: There is not such '// &
+            trim(merge('line ', 'point', lines))//' ', k
       end if
    end function handle
 end module rodyn_capi

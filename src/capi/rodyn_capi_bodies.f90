@@ -14,6 +14,7 @@ module rodyn_capi_bodies
    use rodyn_model, only: model_t, vessel_t, motion_t, motion_vessel, vessel_from_table, &
                           end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
+   use rodyn_rotation, only: cross
    implicit none
    private
    public :: add_body_vessels, body_pose_row, body_forces, mdc_angles, mdc_rotation
@@ -116,11 +117,5 @@ contains
             if (size(r, 1) >= 6) f(4:6) = f(4:6) - r(4:6, node)
          end do
       end do
-   contains
-      pure function cross(a, b) result(c)
-         real(wp), intent(in) :: a(3), b(3)
-         real(wp) :: c(3)
-         c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-      end function cross
    end function body_forces
 end module rodyn_capi_bodies

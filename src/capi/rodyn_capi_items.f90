@@ -146,18 +146,28 @@ contains
       type(c_ptr), value :: h               !< line
       real(c_double), intent(out) :: t      !< tension [N]
       integer(c_int) :: code
+      code = line_tension(h, t, .true.)
+   end function line_max_ten
+
+   !> The largest node tension of a line, or (top false) that at end B [N].
+   function line_tension(h, t, top) result(code)
+      type(c_ptr), intent(in) :: h          !< line
+      real(c_double), intent(out) :: t      !< tension [N]
+      logical, intent(in) :: top            !< the largest, else end B's
+      integer(c_int) :: code
       type(capi_item_t), pointer :: it
-      integer :: k
+      integer :: k, n
       it => item_of(h)
       t = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
       if (it%sys%s%stage /= 1) return
-      do k = 0, it%sys%s%mesh%line_n_nodes(it%index) - 1
+      n = it%sys%s%mesh%line_n_nodes(it%index) - 1
+      do k = merge(0, n, top), n
          t = max(t, real(norm2(system_node_tension(it%sys%s, it%index, k)), c_double))
       end do
       code = md_success
-   end function line_max_ten
+   end function line_tension
 
    !> MoorDyn_GetLineNodeCurv: 0, a cable line's (rodyn's cable elements carry no
    !> bending; a line with EI > 0 is not yet served).
@@ -181,16 +191,7 @@ contains
       type(c_ptr), value :: h               !< line
       real(c_double), intent(out) :: t      !< tension [N]
       integer(c_int) :: code
-      type(capi_item_t), pointer :: it
-      integer :: n
-      it => item_of(h)
-      t = 0.0_c_double
-      code = md_invalid_value
-      if (.not. associated(it)) return
-      if (it%sys%s%stage /= 1) return
-      n = it%sys%s%mesh%line_n_nodes(it%index) - 1
-      t = real(norm2(system_node_tension(it%sys%s, it%index, n)), c_double)
-      code = md_success
+      code = line_tension(h, t, .false.)
    end function line_fair_ten
 
    !> MoorDyn_GetPointID.
