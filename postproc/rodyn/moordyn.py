@@ -10,7 +10,8 @@ import ctypes
 from ._lib import lib, doubles
 
 __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step", "Close",
-           "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetFASTtens",
+           "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetNumberBodies",
+           "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
            "GetLineNodePos", "GetLineNodeVel", "GetLineNodeTen", "GetLineMaxTen", "GetLineNodeCurv", "GetLineFairTen",
            "GetPointID", "GetPointType", "GetPointPos", "GetPointForce"]
@@ -77,6 +78,25 @@ def GetLine(instance, line):
 
 def GetPoint(instance, point):
     return lib().MoorDyn_GetPoint(instance, int(point)) or None
+
+
+def GetNumberBodies(instance):
+    return _uint(lib().MoorDyn_GetNumberBodies, instance)
+
+
+def GetBody(instance, body):
+    return lib().MoorDyn_GetBody(instance, int(body)) or None
+
+
+def GetBodyID(instance):
+    return _int(lib().MoorDyn_GetBodyID, instance)
+
+
+def GetBodyState(instance):
+    """The body's position and angles r, p, y, and their rates, as two tuples."""
+    r, rd = doubles(None, 6), doubles(None, 6)
+    lib().MoorDyn_GetBodyState(instance, r, rd)
+    return tuple(r[:]), tuple(rd[:])
 
 
 def GetFASTtens(instance, n_lines):

@@ -216,4 +216,33 @@ def test_coupled_body_is_its_points(tmp_path):
                               k * dt, dt)).reshape(3, 3)
     want = np.concatenate([fp.sum(0), sum(np.cross(q1[i] - r1, fp[i]) for i in range(3))])
     assert np.max(np.abs(np.array(fb) - want)) <= 1e-7 * np.max(np.abs(want[:3]))
+    # the body's state is the pose the host gave, back in MoorDyn's angles
+    assert md.GetNumberBodies(hb) == 1 and md.GetBody(hb, 2) is None
+    r, _ = md.GetBodyState(md.GetBody(hb, 1))
+    assert np.max(np.abs(np.array(r) - np.concatenate([r1, a1]))) <= 1e-12
     assert md.Close(hb) == 0 and md.Close(hp) == 0
+
+
+def test_free_body_state(tmp_path):
+    """MoorDyn_GetBodyState of a FREE body after MoorDyn_Init: its reference point where
+    `rodyn FILE`'s statics put it (static_bodies.csv), bit for bit, and its pitch the
+    rotation the statics give it (a turn about y alone: MoorDyn's p is the rotation
+    vector's y), at rest."""
+    import csv
+    import subprocess
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    buoy = os.path.join(os.path.dirname(LINES), "..", "..", "..", "program", "moordyn_buoy.txt")
+    subprocess.run([exe, buoy, "-o", str(tmp_path / "buoy"), "--quiet"], check=True)
+    with open(tmp_path / "buoy" / "static_bodies.csv") as f:
+        row = next(csv.DictReader(f))
+    h = md.Create(buoy)
+    assert md.Init(h, [], []) == 0
+    r, rd = md.GetBodyState(md.GetBody(h, 1))
+    assert list(r[:3]) == [float(row[k]) for k in ("x_m", "y_m", "z_m")]
+    rot = [float(row[k]) for k in ("rx_rad", "ry_rad", "rz_rad")]
+    assert rot[0] == rot[2] == 0.0 and abs(rot[1]) > 0.01       # the buoy pitches
+    assert abs(r[4] - rot[1]) <= 1e-12 and abs(r[3]) + abs(r[5]) == 0.0
+    assert max(abs(v) for v in rd) == 0.0
+    assert md.Close(h) == 0

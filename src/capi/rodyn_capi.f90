@@ -41,7 +41,12 @@ contains
          deallocate (cs)
          return
       end if
-      allocate (cs%lines(size(cs%s%model%lines)), cs%points(cs%s%n_points))
+      allocate (cs%lines(size(cs%s%model%lines)), cs%points(cs%s%n_points), &
+                cs%bodies(cs%s%n_bodies))
+      do k = 1, size(cs%bodies)
+         cs%bodies(k)%sys => cs
+         cs%bodies(k)%index = k
+      end do
       do k = 1, size(cs%lines)
          cs%lines(k)%sys => cs
          cs%lines(k)%index = k
@@ -173,7 +178,7 @@ contains
       if (err%code == stat_io) code = md_invalid_output_file
    end function code_of
 
-   !> MoorDyn_GetNumberLines, MoorDyn_GetNumberPoints.
+   !> MoorDyn_GetNumberLines, MoorDyn_GetNumberPoints, MoorDyn_GetNumberBodies.
    function md_nlines(h, n) result(code) bind(c, name='MoorDyn_GetNumberLines')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
@@ -187,6 +192,19 @@ contains
       integer(c_int) :: code
       code = count_of(h, .false., n)
    end function md_npoints
+
+   function md_nbodies(h, n) result(code) bind(c, name='MoorDyn_GetNumberBodies')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(out) :: n      !< unsigned int*
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      cs => system_of(h)
+      n = 0
+      code = md_invalid_value
+      if (.not. associated(cs)) return
+      n = int(size(cs%bodies), c_int)
+      code = md_success
+   end function md_nbodies
 
    !> The number of lines (or points) of a system.
    function count_of(h, lines, n) result(code)
@@ -208,34 +226,41 @@ contains
    type(c_ptr) function md_get_line(h, l) bind(c, name='MoorDyn_GetLine')
       type(c_ptr), value :: h               !< system
       integer(c_int), value :: l            !< unsigned int ID
-      md_get_line = handle(h, l, .true.)
+      md_get_line = handle(h, l, 1)
    end function md_get_line
 
    type(c_ptr) function md_get_point(h, c) bind(c, name='MoorDyn_GetPoint')
       type(c_ptr), value :: h               !< system
       integer(c_int), value :: c            !< unsigned int ID
-      md_get_point = handle(h, c, .false.)
+      md_get_point = handle(h, c, 2)
    end function md_get_point
 
-   !> The handle of line (or point) k of a system (NULL, and a message, when there is
+   type(c_ptr) function md_get_body(h, b) bind(c, name='MoorDyn_GetBody')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: b            !< unsigned int ID
+      md_get_body = handle(h, b, 3)
+   end function md_get_body
+
+   !> The handle of line, point or body k of a system (NULL, and a message, when there is
    !> none).
-   function handle(h, k, lines) result(item)
+   function handle(h, k, kind) result(item)
       type(c_ptr), intent(in) :: h          !< system
       integer(c_int), intent(in) :: k       !< ID, from 1
-      logical, intent(in) :: lines          !< a line, else a point
+      integer, intent(in) :: kind           !< 1 a line, 2 a point, 3 a body
       type(c_ptr) :: item
+      character(len=5), parameter :: what(3) = ['line ', 'point', 'body ']
       type(capi_system_t), pointer :: cs
       integer :: n
       item = c_null_ptr
       cs => system_of(h)
       if (.not. associated(cs)) return
-      n = merge(size(cs%lines), size(cs%points), lines)
+      n = merge(size(cs%lines), merge(size(cs%points), size(cs%bodies), kind == 2), kind == 1)
       if (k >= 1 .and. k <= n) then
-         if (lines) item = c_loc(cs%lines(k))
-         if (.not. lines) item = c_loc(cs%points(k))
+         if (kind == 1) item = c_loc(cs%lines(k))
+         if (kind == 2) item = c_loc(cs%points(k))
+         if (kind == 3) item = c_loc(cs%bodies(k))
       else
-         write (error_unit, '(a,i0)') 'Error: There is not such '// &
-            trim(merge('line ', 'point', lines))//' ', k
+         write (error_unit, '(a,i0)') 'Error: There is not such '//trim(what(kind))//' ', k
       end if
    end function handle
 end module rodyn_capi

@@ -8,7 +8,8 @@ module rodyn_capi_items
    use rodyn_kinds, only: wp
    use rodyn_model, only: end_a, end_b, point_body, point_free
    use rodyn_mesh, only: mesh_node
-   use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, system_ndof
+   use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, &
+                                system_ndof, system_body_state
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
    use rodyn_capi, only: md_create, md_init, md_step, md_close
@@ -217,6 +218,35 @@ contains
       if (any(it%sys%s%coupled == it%index)) t = -1
       code = md_success
    end function point_type
+
+   !> MoorDyn_GetBodyID.
+   function body_id(h, id) result(code) bind(c, name='MoorDyn_GetBodyID')
+      type(c_ptr), value :: h               !< body
+      integer(c_int), intent(out) :: id     !< its ID
+      integer(c_int) :: code
+      code = line_id(h, id)
+   end function body_id
+
+   !> MoorDyn_GetBodyState: its reference point and angles r, p, y (Rx Ry Rz), their
+   !> rates (velocity, angular velocity), once initialised [m, rad, m/s, rad/s].
+   function body_state(h, r, rd) result(code) bind(c, name='MoorDyn_GetBodyState')
+      type(c_ptr), value :: h               !< body
+      real(c_double), intent(out) :: r(6)   !< position and angles
+      real(c_double), intent(out) :: rd(6)  !< their rates
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      real(wp) :: rw(6), rdw(6)
+      it => item_of(h)
+      r = 0.0_c_double
+      rd = 0.0_c_double
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1) return
+      call system_body_state(it%sys%s, it%index, rw, rdw)
+      r = real(rw, c_double)
+      rd = real(rdw, c_double)
+      code = md_success
+   end function body_state
 
    !> MoorDyn_GetPointPos: where the point is [m] (a point on a line end: that end's
    !> node, once initialised).

@@ -22,12 +22,13 @@ module rodyn_capi_system
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
    use rodyn_moordyn, only: moordyn_read
+   use rodyn_rotation, only: axial, cross
    use rodyn_capi_bodies, only: add_body_vessels, body_pose_row, body_forces
    use rodyn_deck_text, only: field_t
    implicit none
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
-   public :: system_node_x, system_node_tension, system_ndof
+   public :: system_node_x, system_node_tension, system_ndof, system_body_state
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -61,6 +62,7 @@ module rodyn_capi_system
       real(wp) :: t = 0.0_wp                    !< time reached [s]
       integer :: stage = 0                      !< 0 read, 1 initialised, -1 failed
       integer :: n_points = 0                   !< MoorDyn's points: model%points(1:n)
+      integer :: n_bodies = 0                   !< MoorDyn's bodies: model%bodies(1:n)
       character(len=:), allocatable :: notes    !< the reader's notes
    end type md_system_t
 
@@ -80,7 +82,7 @@ contains
       call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
                         coupled_points=sys%coupled, coupled_bodies=sys%cbody, &
                         n_points=sys%n_points, outputs=outputs, output_line=output_line, &
-                        write_units=write_units, coupled_rods=rods)
+                        write_units=write_units, coupled_rods=rods, n_bodies=sys%n_bodies)
       if (has_error(err)) return
       if (size(rods) > 0) call set_error(err, stat_input, path//': error: RODS: a '// &
          'coupled rod is not driven through librodyn (docs/capi.md)')
@@ -270,6 +272,29 @@ contains
          end do
       end do
    end subroutine system_forces
+
+   !> MoorDyn's state of body ib: its reference point and angles r, p, y (its orientation
+   !> Q = Rx(r) Ry(p) Rz(y), the directors of its node), and their rates: the velocity of
+   !> the reference point and the angular velocity (axial(dQ/dt Q^T)) [m, rad, m/s,
+   !> rad/s].
+   subroutine system_body_state(sys, ib, r, rd)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: ib             !< the body (model%bodies)
+      real(wp), intent(out) :: r(6)         !< position and angles
+      real(wp), intent(out) :: rd(6)        !< velocity and angular velocity
+      real(wp) :: q(3, 3), w(3), g(3)
+      integer :: n
+      n = sys%mesh%body_node(ib)
+      q = sys%state%d(:, :, n)
+      g = matmul(q, sys%model%bodies(ib)%cog)
+      w = axial(matmul(sys%state%dd(:, :, n), transpose(q)))
+      r(1:3) = sys%state%x(:, n) - g
+      r(5) = asin(max(-1.0_wp, min(1.0_wp, q(1, 3))))
+      r(4) = atan2(-q(2, 3), q(3, 3))
+      r(6) = atan2(-q(1, 2), q(1, 1))
+      rd(1:3) = sys%state%v(:, n) - cross(w, g)
+      rd(4:6) = w
+   end subroutine system_body_state
 
    !> Position of node k (0 at end A) of line l [m].
    function system_node_x(sys, l, k) result(x)

@@ -61,7 +61,7 @@ contains
    !> in their order), coupled_bodies the bodies.
    subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
                            coupled_bodies, n_points, outputs, output_line, write_units, &
-                           coupled_rods)
+                           coupled_rods, n_bodies)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
@@ -72,6 +72,7 @@ contains
       integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies moved
       integer, allocatable, intent(out), optional :: coupled_rods(:)   !< rods moved
       integer, intent(out), optional :: n_points !< MoorDyn's points (model%points(1:n))
+      integer, intent(out), optional :: n_bodies !< MoorDyn's bodies (model%bodies(1:n))
       type(field_t), allocatable, intent(out), optional :: outputs(:) !< OUTPUTS channels
       integer, allocatable, intent(out), optional :: output_line(:)   !< their lines
       logical, intent(out), optional :: write_units !< WriteUnits > 0
@@ -85,6 +86,7 @@ contains
          coupled_bodies = d%coupled_bodies
       if (present(coupled_rods) .and. allocated(d%coupled_rods)) coupled_rods = d%coupled_rods
       if (present(n_points)) n_points = d%n_points
+      if (present(n_bodies)) n_bodies = d%n_bodies
       if (present(outputs) .and. allocated(d%outputs)) outputs = d%outputs
       if (present(output_line) .and. allocated(d%output_line)) output_line = d%output_line
       if (present(write_units)) write_units = d%write_units

@@ -83,6 +83,7 @@ contains
          call point(d, md%sec(md_points)%rows(k), k, md%sec(md_bodies)%n, err)
       end do
       d%n_points = md%sec(md_points)%n
+      d%n_bodies = md%sec(md_bodies)%n
       call rods(md, d, err)             ! their bodies after the bodies, points after the points
       do k = 1, md%sec(md_lines)%n
          call line(d, md, md%sec(md_lines)%rows(k), k, err)

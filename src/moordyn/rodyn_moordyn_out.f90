@@ -25,6 +25,7 @@ module rodyn_moordyn_out
       !> coupled bodies
       integer, allocatable :: coupled_points(:), coupled_bodies(:), coupled_rods(:)
       integer :: n_points = 0                 !< MoorDyn's points (the deck's first)
+      integer :: n_bodies = 0                 !< MoorDyn's bodies (the deck's first)
       !> OUTPUTS: the channels' names and lines; write the units row (WriteUnits > 0)
       type(field_t), allocatable :: outputs(:)
       integer, allocatable :: output_line(:)

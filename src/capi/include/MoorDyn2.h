@@ -18,6 +18,7 @@ extern "C"
 typedef struct __MoorDyn* MoorDyn;
 typedef struct __MoorDynLine* MoorDynLine;
 typedef struct __MoorDynPoint* MoorDynPoint;
+typedef struct __MoorDynBody* MoorDynBody;
 
 MoorDyn DECLDIR MoorDyn_Create(const char* infilename);
 int DECLDIR MoorDyn_NCoupledDOF(MoorDyn system, unsigned int* n);
@@ -32,6 +33,8 @@ int DECLDIR MoorDyn_GetNumberPoints(MoorDyn system, unsigned int* n);
 MoorDynPoint DECLDIR MoorDyn_GetPoint(MoorDyn system, unsigned int c);
 int DECLDIR MoorDyn_GetNumberLines(MoorDyn system, unsigned int* n);
 MoorDynLine DECLDIR MoorDyn_GetLine(MoorDyn system, unsigned int l);
+int DECLDIR MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n);
+MoorDynBody DECLDIR MoorDyn_GetBody(MoorDyn system, unsigned int b);
 int DECLDIR MoorDyn_GetFASTtens(MoorDyn system, const int* numLines, float FairHTen[],
                                 float FairVTen[], float AnchHTen[], float AnchVTen[]);
 
@@ -50,6 +53,9 @@ int DECLDIR MoorDyn_GetPointID(MoorDynPoint point, int* id);
 int DECLDIR MoorDyn_GetPointType(MoorDynPoint point, int* t);
 int DECLDIR MoorDyn_GetPointPos(MoorDynPoint point, double pos[3]);
 int DECLDIR MoorDyn_GetPointForce(MoorDynPoint point, double f[3]);
+
+int DECLDIR MoorDyn_GetBodyID(MoorDynBody body, int* id);
+int DECLDIR MoorDyn_GetBodyState(MoorDynBody body, double r[6], double rd[6]);
 
 #ifdef __cplusplus
 }
