@@ -124,24 +124,20 @@ class System:
 
     def line_nodes(self, line):
         """(nodes, 3) positions of line (from 1) [m]."""
-        h = self._item("Line", line)
-        n = ctypes.c_uint(0)
-        _ok(self._lib.MoorDyn_GetLineNumberNodes(h, ctypes.byref(n)), "GetLineNumberNodes")
-        out = np.zeros((n.value, 3))
-        pos = doubles(None, 3)
-        for i in range(n.value):
-            _ok(self._lib.MoorDyn_GetLineNodePos(h, i, pos), "GetLineNodePos")
-            out[i] = pos[:]
-        return out
+        return self._node_vectors(line, "MoorDyn_GetLineNodePos")
 
     def line_tensions(self, line):
         """(nodes, 3) MoorDyn's tension vectors of line's nodes [N] (docs/capi.md)."""
+        return self._node_vectors(line, "MoorDyn_GetLineNodeTen")
+
+    def _node_vectors(self, line, getter):
         h = self._item("Line", line)
         n = ctypes.c_uint(0)
         _ok(self._lib.MoorDyn_GetLineNumberNodes(h, ctypes.byref(n)), "GetLineNumberNodes")
+        fn = getattr(self._lib, getter)
         out = np.zeros((n.value, 3))
-        ten = doubles(None, 3)
+        v = doubles(None, 3)
         for i in range(n.value):
-            _ok(self._lib.MoorDyn_GetLineNodeTen(h, i, ten), "GetLineNodeTen")
-            out[i] = ten[:]
+            _ok(fn(h, i, v), getter)
+            out[i] = v[:]
         return out

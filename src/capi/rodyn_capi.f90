@@ -183,33 +183,27 @@ contains
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
       integer(c_int) :: code
-      code = count_of(h, .true., n)
+      code = count_of(h, 1, n)
    end function md_nlines
 
    function md_npoints(h, n) result(code) bind(c, name='MoorDyn_GetNumberPoints')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
       integer(c_int) :: code
-      code = count_of(h, .false., n)
+      code = count_of(h, 2, n)
    end function md_npoints
 
    function md_nbodies(h, n) result(code) bind(c, name='MoorDyn_GetNumberBodies')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
       integer(c_int) :: code
-      type(capi_system_t), pointer :: cs
-      cs => system_of(h)
-      n = 0
-      code = md_invalid_value
-      if (.not. associated(cs)) return
-      n = int(size(cs%bodies), c_int)
-      code = md_success
+      code = count_of(h, 3, n)
    end function md_nbodies
 
-   !> The number of lines (or points) of a system.
-   function count_of(h, lines, n) result(code)
+   !> The number of lines, points or bodies of a system.
+   function count_of(h, kind, n) result(code)
       type(c_ptr), intent(in) :: h          !< system
-      logical, intent(in) :: lines          !< lines, else points
+      integer, intent(in) :: kind           !< 1 lines, 2 points, 3 bodies
       integer(c_int), intent(out) :: n      !< how many
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
@@ -217,7 +211,8 @@ contains
       n = 0
       code = md_invalid_value
       if (.not. associated(cs)) return
-      n = int(merge(size(cs%lines), size(cs%points), lines), c_int)
+      n = int(merge(size(cs%lines), merge(size(cs%points), size(cs%bodies), kind == 2), &
+                    kind == 1), c_int)
       code = md_success
    end function count_of
 

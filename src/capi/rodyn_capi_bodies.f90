@@ -58,15 +58,17 @@ contains
       call move_alloc(mo, model%motions)
    end subroutine add_body_vessels
 
-   !> A row of a vessel's table: at t, the body at MoorDyn's pose q (x, y, z, r, p, y).
+   !> The vessel's table to its last row and a row at t, the body at MoorDyn's pose q
+   !> (x, y, z, r, p, y): all a step and its halvings read (a table grown a row a step
+   !> would be copied whole every step).
    subroutine body_pose_row(ve, t, q)
       type(vessel_t), intent(inout) :: ve   !< the body's vessel (in the dynamic problem)
       real(wp), intent(in) :: t             !< time [s]
       real(wp), intent(in) :: q(6)          !< MoorDyn's pose [m, rad]
       integer :: n
       n = size(ve%time)
-      ve%time = [ve%time, t]
-      ve%motion = reshape([ve%motion, q(1:3) - ve%origin, mdc_angles(q(4:6))], [6, n + 1])
+      ve%time = [ve%time(n), t]
+      ve%motion = reshape([ve%motion(:, n), q(1:3) - ve%origin, mdc_angles(q(4:6))], [6, 2])
    end subroutine body_pose_row
 
    !> rodyn's vessel angles (roll, pitch, yaw of Rz Ry Rx) of MoorDyn's Rx Ry Rz.

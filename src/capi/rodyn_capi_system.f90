@@ -208,11 +208,12 @@ contains
                                x(6*i - 5:6*i) + xd(6*i - 5:6*i)*dt)
          end do
          do i = 1, size(sys%coupled)
+            ! the table's last row (at t) and the step's end: all a step and its halvings
+            ! read (a table grown a row a step would be copied whole every step)
             associate (mo => sys%model%motions(sys%motion(i)))
-               mo%time = [mo%time, t1]
-               mo%disp = reshape([mo%disp, x(nb + 3*i - 2:nb + 3*i) + &
-                                  xd(nb + 3*i - 2:nb + 3*i)*dt - sys%x0(:, i)], &
-                                 [3, size(mo%time)])
+               mo%time = [mo%time(size(mo%time)), t1]
+               mo%disp = reshape([mo%disp(:, size(mo%disp, 2)), x(nb + 3*i - 2:nb + 3*i) + &
+                                  xd(nb + 3*i - 2:nb + 3*i)*dt - sys%x0(:, i)], [3, 2])
             end associate
          end do
          sys%model%dynamic%dt = dt
