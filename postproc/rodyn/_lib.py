@@ -32,6 +32,7 @@ _SIGNATURES = {
     "MoorDyn_GetBodyID": (ctypes.c_int, [_P, _I]),
     "MoorDyn_GetBodyState": (ctypes.c_int, [_P, _D, _D]),
     "MoorDyn_GetFASTtens": (ctypes.c_int, [_P, _I, _F, _F, _F, _F]),
+    "MoorDyn_BreakLine": (ctypes.c_int, [_P, _P, _P]),
     "MoorDyn_GetLineID": (ctypes.c_int, [_P, _I]),
     "MoorDyn_GetLineN": (ctypes.c_int, [_P, _U]),
     "MoorDyn_GetLineNumberNodes": (ctypes.c_int, [_P, _U]),

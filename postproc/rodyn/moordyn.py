@@ -11,7 +11,7 @@ from ._lib import lib, doubles
 
 __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step", "Close",
            "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetNumberBodies",
-           "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens",
+           "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens", "BreakLine",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
            "GetLineNodePos", "GetLineNodeVel", "GetLineNodeTen", "GetLineMaxTen", "GetLineNodeCurv", "GetLineFairTen",
            "GetPointID", "GetPointType", "GetPointPos", "GetPointForce"]
@@ -62,6 +62,13 @@ def Step(instance, x, v, t, dt):
 
 def Close(instance):
     return lib().MoorDyn_Close(instance)
+
+
+def BreakLine(instance, point, line):
+    """The line leaves the point at the start of the next step; raises on an error."""
+    code = lib().MoorDyn_BreakLine(instance, point, line)
+    if code != 0:
+        raise RuntimeError(f"MoorDyn_BreakLine: librodyn code {code} (the message is on stderr)")
 
 
 def GetNumberLines(instance):

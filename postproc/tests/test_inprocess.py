@@ -246,3 +246,37 @@ def test_free_body_state(tmp_path):
     assert abs(r[4] - rot[1]) <= 1e-12 and abs(r[3]) + abs(r[5]) == 0.0
     assert max(abs(v) for v in rd) == 0.0
     assert md.Close(h) == 0
+
+
+def test_break_line():
+    """MoorDyn_BreakLine: line 1 leaves its fairlead (point 4) at the next step. The
+    fairlead then carries nothing (its only line gone), the other fairleads keep their
+    static forces (each line on its own point), the freed end sinks, and a second break of
+    the same end, a line not on the point, or a break before Init are refused (MoorDyn
+    makes a free point of no mass at the freed end; here the end is simply free)."""
+    h = md.Create(LINES)
+    p4, l1, l2 = md.GetPoint(h, 4), md.GetLine(h, 1), md.GetLine(h, 2)
+    with pytest.raises(RuntimeError):          # before Init
+        md.BreakLine(h, p4, l1)
+    x = [c for k in (4, 5, 6) for c in md.GetPointPos(md.GetPoint(h, k))]
+    assert md.Init(h, x, [0.0] * 9) == 0
+    f0 = np.array(md.Step(h, x, [0.0] * 9, 0.0, 0.5))
+    with pytest.raises(RuntimeError):          # line 2 is not on point 4
+        md.BreakLine(h, p4, l2)
+    md.BreakLine(h, p4, l1)
+    z = []
+    t = 0.5
+    for _ in range(6):
+        f = np.array(md.Step(h, x, [0.0] * 9, t, 0.5))
+        t += 0.5
+        assert np.all(f[0:3] == 0.0)
+        # (to Newton's tolerance: one Newton solve holds all lines, and the falling line
+        # takes it more iterations)
+        assert np.max(np.abs(f[3:] - f0[3:])) <= 1e-7 * np.max(np.abs(f0))
+        z.append(md.GetLineNodePos(l1, 20)[2])
+    # the freed end falls, faster and faster at first
+    assert z[0] < x[2] and z[1] - z[0] < z[0] - x[2] < 0.0
+    assert np.all(np.diff(z) < 0.0)
+    with pytest.raises(RuntimeError):          # already off the point
+        md.BreakLine(h, p4, l1)
+    assert md.Close(h) == 0

@@ -9,10 +9,12 @@ module rodyn_capi
    use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, stat_input, stat_io
-   use rodyn_capi_system, only: system_create, system_init, system_step, system_ndof
+   use rodyn_capi_system, only: system_create, system_init, system_step, system_ndof, &
+                                system_break
    use rodyn_capi_outputs, only: channels_parse, out_open, out_row, out_close
    use rodyn_deck_text, only: field_t
-   use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, f_string, md_success, &
+   use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, item_of, f_string, &
+                                 md_success, &
                                  md_invalid_input, md_nan_error, md_invalid_value, &
                                  md_invalid_output_file
    implicit none
@@ -151,6 +153,28 @@ contains
       code = code_of(err)
       if (code == md_success) t = real(cs%s%t, c_double)
    end function md_step
+
+   !> MoorDyn_BreakLine: the line leaves the point at the start of the next step (the end
+   !> then free: no new point is made, as MoorDyn makes one of no mass). Handles of
+   !> another system, or a line not on the point: MOORDYN_INVALID_VALUE or _INPUT.
+   function md_break_line(h, p, l) result(code) bind(c, name='MoorDyn_BreakLine')
+      type(c_ptr), value :: h, p, l         !< system, point, line
+      integer(c_int) :: code
+      type(capi_system_t), pointer :: cs
+      type(capi_item_t), pointer :: ip, il
+      type(error_t) :: err
+      cs => system_of(h)
+      ip => item_of(p)
+      il => item_of(l)
+      code = md_invalid_value
+      if (.not. (associated(cs) .and. associated(ip) .and. associated(il))) return
+      if (.not. (associated(ip%sys, cs) .and. associated(il%sys, cs))) return
+      if (ip%index > size(cs%points) .or. il%index > size(cs%lines)) return
+      if (.not. (associated(ip, cs%points(ip%index)) .and. &
+                 associated(il, cs%lines(il%index)))) return
+      call system_break(cs%s, ip%index, il%index, err)
+      code = code_of(err)
+   end function md_break_line
 
    !> MoorDyn_Close: the system freed.
    function md_close(h) result(code) bind(c, name='MoorDyn_Close')

@@ -15,6 +15,7 @@ module rodyn_capi_bodies
                           end_a, end_b
    use rodyn_mesh, only: mesh_t, mesh_node
    use rodyn_rotation, only: cross
+   use rodyn_system_dynamics, only: failures_t, end_released
    implicit none
    private
    public :: add_body_vessels, body_pose_row, body_forces, mdc_angles, mdc_rotation
@@ -98,9 +99,10 @@ contains
 
    !> The lines' force and moment about the body's reference point rb on body ib [N, N m]
    !> from the support forces r of the line ends on its points.
-   function body_forces(model, mesh, x, r, ib, rb) result(f)
+   function body_forces(model, mesh, fl, x, r, ib, rb) result(f)
       type(model_t), intent(in) :: model    !< model
       type(mesh_t), intent(in) :: mesh      !< mesh
+      type(failures_t), intent(in) :: fl    !< released ends (not counted)
       real(wp), intent(in) :: x(:, :)       !< (3, nn) node positions [m]
       real(wp), intent(in) :: r(:, :)       !< (6, nn) support forces [N, N m]
       integer, intent(in) :: ib             !< the body
@@ -114,6 +116,7 @@ contains
             if (ip == 0) cycle
             if (model%points(ip)%body /= ib) cycle
             node = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            if (end_released(fl, node)) cycle
             f(1:3) = f(1:3) - r(1:3, node)
             f(4:6) = f(4:6) - cross(x(:, node) - rb, r(1:3, node))
             if (size(r, 1) >= 6) f(4:6) = f(4:6) - r(4:6, node)

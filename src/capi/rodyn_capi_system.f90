@@ -19,6 +19,7 @@ module rodyn_capi_system
    use rodyn_statics, only: static_problem_t, statics_run
    use rodyn_results, only: run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup
+   use rodyn_system_dynamics, only: failures_add, end_released
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
    use rodyn_moordyn, only: moordyn_read
@@ -29,6 +30,7 @@ module rodyn_capi_system
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
    public :: system_node_x, system_node_tension, system_ndof, system_body_state
+   public :: system_break
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -239,7 +241,7 @@ contains
       real(wp), intent(out) :: f(:)         !< (system_ndof) forces [N, N m]
       real(wp), allocatable :: r(:, :)
       real(wp) :: w, rb(3)
-      integer :: i, l, node, nb
+      integer :: i, l, k, node, nb
       w = sys%prob%wf
       if (.not. sys%obs%have_last) then
          r = sys%r_static
@@ -258,21 +260,46 @@ contains
                rb = ve%origin + ve%motion(1:3, size(ve%time))
             end associate
          end if
-         f(6*i - 5:6*i) = body_forces(sys%model, sys%mesh, sys%state%x, r, sys%cbody(i), rb)
+         f(6*i - 5:6*i) = body_forces(sys%model, sys%mesh, sys%prob%fl, sys%state%x, r, &
+                                       sys%cbody(i), rb)
       end do
       do i = 1, size(sys%coupled)
          do l = 1, size(sys%model%lines)
-            if (sys%model%lines(l)%point_a == sys%coupled(i)) then
-               node = mesh_node(sys%mesh, l, end_a)
+            do k = 1, 2
+               if (merge(sys%model%lines(l)%point_a, sys%model%lines(l)%point_b, k == 1) &
+                   /= sys%coupled(i)) cycle
+               node = mesh_node(sys%mesh, l, merge(end_a, end_b, k == 1))
+               if (end_released(sys%prob%fl, node)) cycle
                f(nb + 3*i - 2:nb + 3*i) = f(nb + 3*i - 2:nb + 3*i) - r(1:3, node)
-            end if
-            if (sys%model%lines(l)%point_b == sys%coupled(i)) then
-               node = mesh_node(sys%mesh, l, end_b)
-               f(nb + 3*i - 2:nb + 3*i) = f(nb + 3*i - 2:nb + 3*i) - r(1:3, node)
-            end if
+            end do
          end do
       end do
    end subroutine system_forces
+
+   !> MoorDyn_BreakLine: the end of line l on point ip (model%points) leaves it at the
+   !> start of the next step (eq. (143)); the point's force counts it no more. An error if
+   !> the system is not initialised or the line has no end on the point still on it.
+   subroutine system_break(sys, ip, l, err)
+      type(md_system_t), intent(inout) :: sys !< the system
+      integer, intent(in) :: ip               !< the point
+      integer, intent(in) :: l                !< the line
+      type(error_t), intent(inout) :: err     !< status
+      integer :: k, node
+      if (sys%stage /= 1) then
+         call set_error(err, stat_input, 'a line is broken only after Init')
+         return
+      end if
+      do k = 1, 2
+         if (merge(sys%model%lines(l)%point_a, sys%model%lines(l)%point_b, k == 1) /= ip) &
+            cycle
+         node = mesh_node(sys%mesh, l, merge(end_a, end_b, k == 1))
+         if (end_released(sys%prob%fl, node)) cycle
+         call failures_add(sys%prob%fl, node, sys%t)
+         return
+      end do
+      call set_error(err, stat_input, 'line '//trim(sys%model%lines(l)%name)// &
+                     ' has no end still on point '//trim(sys%model%points(ip)%name))
+   end subroutine system_break
 
    !> MoorDyn's state of body ib: its reference point and angles r, p, y (its orientation
    !> Q = Rx(r) Ry(p) Rz(y), the directors of its node), and their rates: the velocity of

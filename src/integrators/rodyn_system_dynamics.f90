@@ -24,7 +24,8 @@ module rodyn_system_dynamics
    implicit none
    private
    public :: point_velocities, added_mass_force, added_mass_emc, failures_t, failures_build
-   public :: failures_step, motion_nodes, apply_initial_velocities
+   public :: failures_step, failures_add, end_released, motion_nodes
+   public :: apply_initial_velocities
    public :: body_waves_start, held_motion
 
    !> The line ends that fail (*FAILURE) and whether they have.
@@ -91,6 +92,38 @@ contains
          any_released = .true.
       end do
    end subroutine failures_step
+
+   !> A release of the line end at node added to fl, due at time t: a host's break
+   !> (MoorDyn_BreakLine) done at the start of the next step from t_n >= t, eq. (143). An
+   !> end already listed is given the earlier time.
+   subroutine failures_add(fl, node, t)
+      type(failures_t), intent(inout) :: fl  !< failures
+      integer, intent(in) :: node            !< the end's node
+      real(wp), intent(in) :: t              !< time of the release [s]
+      integer :: i
+      i = findloc(fl%node(1:fl%n), node, dim=1)
+      if (i > 0) then
+         if (fl%time(i) < 0.0_wp .or. fl%time(i) > t) fl%time(i) = t
+         return
+      end if
+      fl%n = fl%n + 1
+      fl%node = [fl%node(1:fl%n - 1), node]
+      fl%time = [fl%time(1:fl%n - 1), t]
+      fl%break_load = [fl%break_load(1:fl%n - 1), 0.0_wp]
+      fl%failed = [fl%failed(1:fl%n - 1), .false.]
+      fl%t_failed = [fl%t_failed(1:fl%n - 1), -1.0_wp]
+   end subroutine failures_add
+
+   !> Whether the line end at node has been released.
+   pure logical function end_released(fl, node) result(yes)
+      type(failures_t), intent(in) :: fl     !< failures
+      integer, intent(in) :: node            !< the end's node
+      integer :: i
+      yes = .false.
+      do i = 1, fl%n
+         if (fl%node(i) == node .and. fl%failed(i)) yes = .true.
+      end do
+   end function end_released
 
    !> Each FREE point's velocity the mean of its ends', and the ends' the point's; the
    !> ends on a body move with it, v_e = v_b + omega x a (a body starts at rest).

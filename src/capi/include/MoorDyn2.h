@@ -37,6 +37,7 @@ int DECLDIR MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n);
 MoorDynBody DECLDIR MoorDyn_GetBody(MoorDyn system, unsigned int b);
 int DECLDIR MoorDyn_GetFASTtens(MoorDyn system, const int* numLines, float FairHTen[],
                                 float FairVTen[], float AnchHTen[], float AnchVTen[]);
+int DECLDIR MoorDyn_BreakLine(MoorDyn system, MoorDynPoint point, MoorDynLine line);
 
 int DECLDIR MoorDyn_GetLineID(MoorDynLine l, int* id);
 int DECLDIR MoorDyn_GetLineN(MoorDynLine l, unsigned int* n);
