@@ -47,6 +47,23 @@ _SIGNATURES = {
     "MoorDyn_GetPointType": (ctypes.c_int, [_P, _I]),
     "MoorDyn_GetPointPos": (ctypes.c_int, [_P, _D]),
     "MoorDyn_GetPointForce": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetPointVel": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetPointNAttached": (ctypes.c_int, [_P, _U]),
+    "MoorDyn_GetPointAttached": (ctypes.c_int, [_P, ctypes.c_uint, ctypes.POINTER(_P), _I]),
+    "MoorDyn_GetBodyType": (ctypes.c_int, [_P, _I]),
+    "MoorDyn_GetBodyPos": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetBodyAngle": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetBodyVel": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetBodyAngVel": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_IsLineConstantEA": (ctypes.c_int, [_P, _I]),
+    "MoorDyn_GetLineConstantEA": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_GetDt": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_SetDt": (ctypes.c_int, [_P, ctypes.c_double]),
+    "MoorDyn_GetCFL": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_SetCFL": (ctypes.c_int, [_P, ctypes.c_double]),
+    "MoorDyn_GetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p,
+                                             ctypes.POINTER(ctypes.c_size_t)]),
+    "MoorDyn_SetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p]),
 }
 
 

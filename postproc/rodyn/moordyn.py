@@ -14,7 +14,11 @@ __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step
            "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens", "BreakLine",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
            "GetLineNodePos", "GetLineNodeVel", "GetLineNodeTen", "GetLineMaxTen", "GetLineNodeCurv", "GetLineFairTen",
-           "GetPointID", "GetPointType", "GetPointPos", "GetPointForce"]
+           "GetPointID", "GetPointType", "GetPointPos", "GetPointForce", "GetPointVel",
+           "GetPointNAttached", "GetPointAttached", "GetBodyType", "GetBodyPos",
+           "GetBodyAngle", "GetBodyVel", "GetBodyAngVel", "IsLineConstantEA",
+           "GetLineConstantEA", "GetDt", "SetDt", "GetCFL", "SetCFL", "GetTimeScheme",
+           "SetTimeScheme"]
 
 DEFAULT_FILE = "Mooring/lines.txt"
 
@@ -186,3 +190,77 @@ def GetPointPos(instance):
 
 def GetPointForce(instance):
     return _vec(lib().MoorDyn_GetPointForce, instance)
+
+
+def GetPointVel(instance):
+    return _vec(lib().MoorDyn_GetPointVel, instance)
+
+
+def GetPointNAttached(instance):
+    return _uint(lib().MoorDyn_GetPointNAttached, instance)
+
+
+def GetPointAttached(instance, i):
+    """Line end i (from 0) on the point: its line's handle and the end (0 A, 1 B)."""
+    line, end = ctypes.c_void_p(), ctypes.c_int(0)
+    code = lib().MoorDyn_GetPointAttached(instance, int(i), ctypes.byref(line),
+                                          ctypes.byref(end))
+    if code != 0:
+        raise RuntimeError(f"MoorDyn_GetPointAttached: librodyn code {code}")
+    return line.value, end.value
+
+
+def GetBodyType(instance):
+    return _int(lib().MoorDyn_GetBodyType, instance)
+
+
+def GetBodyPos(instance):
+    return _vec(lib().MoorDyn_GetBodyPos, instance)
+
+
+def GetBodyAngle(instance):
+    return _vec(lib().MoorDyn_GetBodyAngle, instance)
+
+
+def GetBodyVel(instance):
+    return _vec(lib().MoorDyn_GetBodyVel, instance)
+
+
+def GetBodyAngVel(instance):
+    return _vec(lib().MoorDyn_GetBodyAngVel, instance)
+
+
+def IsLineConstantEA(instance):
+    return bool(_int(lib().MoorDyn_IsLineConstantEA, instance))
+
+
+def GetLineConstantEA(instance):
+    return _double(lib().MoorDyn_GetLineConstantEA, instance)
+
+
+def GetDt(instance):
+    return _double(lib().MoorDyn_GetDt, instance)
+
+
+def SetDt(instance, dt):
+    return lib().MoorDyn_SetDt(instance, float(dt))
+
+
+def GetCFL(instance):
+    return _double(lib().MoorDyn_GetCFL, instance)
+
+
+def SetCFL(instance, cfl):
+    return lib().MoorDyn_SetCFL(instance, float(cfl))
+
+
+def GetTimeScheme(instance):
+    n = ctypes.c_size_t(0)
+    lib().MoorDyn_GetTimeScheme(instance, None, ctypes.byref(n))
+    buf = ctypes.create_string_buffer(n.value)
+    lib().MoorDyn_GetTimeScheme(instance, buf, None)
+    return buf.value.decode()
+
+
+def SetTimeScheme(instance, name):
+    return lib().MoorDyn_SetTimeScheme(instance, name.encode())

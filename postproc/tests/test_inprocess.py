@@ -245,6 +245,10 @@ def test_free_body_state(tmp_path):
     assert rot[0] == rot[2] == 0.0 and abs(rot[1]) > 0.01       # the buoy pitches
     assert abs(r[4] - rot[1]) <= 1e-12 and abs(r[3]) + abs(r[5]) == 0.0
     assert max(abs(v) for v in rd) == 0.0
+    b = md.GetBody(h, 1)
+    assert md.GetBodyType(b) == 0                                 # free
+    assert md.GetBodyPos(b) == r[:3] and md.GetBodyAngle(b) == r[3:]
+    assert md.GetBodyVel(b) == rd[:3] and md.GetBodyAngVel(b) == rd[3:]
     assert md.Close(h) == 0
 
 
@@ -280,3 +284,42 @@ def test_break_line():
     with pytest.raises(RuntimeError):          # already off the point
         md.BreakLine(h, p4, l1)
     assert md.Close(h) == 0
+
+
+def test_points_lines_and_settings():
+    """The line ends on a point in MoorDyn's order, a coupled point's velocity the host's,
+    a line's EA the file's, the time scheme and CFL noted but not used, and MoorDyn_SetDt:
+    host steps of 0.5 s in rodyn steps of at most 0.1 s give the forces of host steps of
+    0.1 s (the same steps)."""
+    h = md.Create(LINES)
+    p1, p4, l1 = md.GetPoint(h, 1), md.GetPoint(h, 4), md.GetLine(h, 1)
+    assert md.GetPointNAttached(p4) == 1 and md.GetPointNAttached(p1) == 1
+    assert md.GetPointAttached(p4, 0) == (l1, 1) and md.GetPointAttached(p1, 0) == (l1, 0)
+    with pytest.raises(RuntimeError):
+        md.GetPointAttached(p4, 1)
+    assert md.IsLineConstantEA(l1) and md.GetLineConstantEA(l1) == 384.243e6
+    assert md.GetTimeScheme(h) == "EMC"
+    assert md.SetTimeScheme(h, "RK4") == 0 and md.SetTimeScheme(h, "aca10") == 0
+    assert md.SetTimeScheme(h, "RK5") == -6 and md.GetTimeScheme(h) == "EMC"
+    assert md.SetCFL(h, 0.5) == 0 and md.GetCFL(h) == 0.5
+    x = [c for k in (4, 5, 6) for c in md.GetPointPos(md.GetPoint(h, k))]
+    v = [0.2, 0.0, 0.1] + [0.0] * 6
+    assert md.Init(h, x, v) == 0
+    assert md.SetDt(h, 0.0) == -6 and md.SetDt(h, 0.1) == 0 and md.GetDt(h) == 0.1
+    fine = md.Create(LINES)
+    assert md.Init(fine, x, v) == 0
+    t, f = 0.0, None
+    xs = np.array(x)
+    for _ in range(2):
+        f = np.array(md.Step(h, xs, v, t, 0.5))
+        for k in range(5):
+            f_fine = np.array(md.Step(fine, xs + np.array(v) * 0.1 * k, v, t + 0.1 * k, 0.1))
+        xs = xs + np.array(v) * 0.5
+        t += 0.5
+        assert np.max(np.abs(f - f_fine)) <= 1e-9 * np.max(np.abs(f))
+    # the coupled point moves with the host's velocity; its node's rate at the step's end
+    # is the midpoint rule's, v_n+1 = 2 dx/dt - v_n: from rest 2 v, then 0, 2 v, ...
+    assert md.GetPointVel(p4) == tuple(v[:3])
+    assert np.allclose(md.GetLineNodeVel(l1, 20), 0.0, rtol=0, atol=1e-9)
+    assert np.allclose(md.GetPointPos(p4), xs[:3], rtol=0, atol=1e-9)
+    assert md.Close(h) == 0 and md.Close(fine) == 0

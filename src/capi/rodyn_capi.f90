@@ -67,9 +67,9 @@ contains
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
       cs => system_of(h)
-      n = 0
       code = md_invalid_value
       if (.not. associated(cs)) return
+      n = 0
       n = int(system_ndof(cs%s), c_int)
       code = md_success
    end function md_ncoupled
@@ -232,9 +232,9 @@ contains
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
       cs => system_of(h)
-      n = 0
       code = md_invalid_value
       if (.not. associated(cs)) return
+      n = 0
       n = int(merge(size(cs%lines), merge(size(cs%points), size(cs%bodies), kind == 2), &
                     kind == 1), c_int)
       code = md_success

@@ -3,7 +3,7 @@
 !> string read.
 module rodyn_capi_handles
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_char, c_f_pointer, &
-                                          c_associated, c_size_t
+                                          c_associated, c_size_t, c_double
    use rodyn_capi_system, only: md_system_t
    use rodyn_outfile, only: out_file_t
    use rodyn_capi_outputs, only: channel_t
@@ -33,6 +33,7 @@ module rodyn_capi_handles
       type(out_file_t) :: out                    !< FILE.out, when there are channels
       character(len=:), allocatable :: path      !< the MoorDyn file
       logical :: write_units = .true.            !< the .out file's units row
+      real(c_double) :: cfl = 0.0_c_double       !< MoorDyn_SetCFL's value (not used)
    end type capi_system_t
 
    interface

@@ -1,7 +1,5 @@
-!> librodyn's functions of a line and a point (MoorDyn v2's Line.h and Point.h), the
-!> fairlead and anchor tensions of MoorDyn_GetFASTtens, and MoorDyn's first API (one
-!> system per program: MoorDynInit, MoorDynStep, MoorDynClose; MoorDyn.h) over the
-!> second (docs/capi.md).
+!> librodyn's functions of a line and a point (MoorDyn v2's Line.h and Point.h), and the
+!> fairlead and anchor tensions of MoorDyn_GetFASTtens (docs/capi.md).
 module rodyn_capi_items
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_float, c_null_ptr, &
                                           c_associated
@@ -9,15 +7,13 @@ module rodyn_capi_items
    use rodyn_model, only: end_a, end_b, point_body, point_free
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, &
-                                system_ndof, system_body_state
+                                system_ndof, system_body_state, system_point_node
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
-   use rodyn_capi, only: md_create, md_init, md_step, md_close
    implicit none
    private
 
-   !> The one system of MoorDyn's first API.
-   type(c_ptr), save :: old_api = c_null_ptr
+   public :: line_fair_ten, fast_tens, point_pos, point_force, node_pos
 
 contains
 
@@ -28,7 +24,6 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => item_of(h)
-      id = 0
       code = md_invalid_value
       if (.not. associated(it)) return
       id = int(it%index, c_int)
@@ -49,9 +44,9 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => item_of(h)
-      n = 0
       code = md_invalid_value
       if (.not. associated(it)) return
+      n = 0
       if (it%sys%s%stage == 0) then      ! not meshed yet: the file's segments
          n = int(it%sys%s%model%lines(it%index)%n_elements* &
                  it%sys%s%model%lines(it%index)%order + 1, c_int)
@@ -68,7 +63,6 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => item_of(h)
-      ul = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
       ul = real(it%sys%s%model%lines(it%index)%length, c_double)
@@ -126,9 +120,9 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => node_of(h, i)
-      v = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      v = 0.0_c_double
       associate (s => it%sys%s)
          select case (what)
          case ('t')
@@ -159,9 +153,9 @@ contains
       type(capi_item_t), pointer :: it
       integer :: k, n
       it => item_of(h)
-      t = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      t = 0.0_c_double
       if (it%sys%s%stage /= 1) return
       n = it%sys%s%mesh%line_n_nodes(it%index) - 1
       do k = merge(0, n, top), n
@@ -179,9 +173,9 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => node_of(h, i)
-      c = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      c = 0.0_c_double
       code = md_success
       if (it%sys%s%model%sections(it%sys%s%model%lines(it%index)%section)%ei1 > 0.0_wp) &
          code = md_unhandled
@@ -211,9 +205,9 @@ contains
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
       it => item_of(h)
-      t = 1
       code = md_invalid_value
       if (.not. associated(it)) return
+      t = 1
       if (it%sys%s%model%points(it%index)%kind == point_free) t = 0
       if (any(it%sys%s%coupled == it%index)) t = -1
       code = md_success
@@ -237,10 +231,10 @@ contains
       type(capi_item_t), pointer :: it
       real(wp) :: rw(6), rdw(6)
       it => item_of(h)
-      r = 0.0_c_double
-      rd = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      r = 0.0_c_double
+      rd = 0.0_c_double
       if (it%sys%s%stage /= 1) return
       call system_body_state(it%sys%s, it%index, rw, rdw)
       r = real(rw, c_double)
@@ -255,11 +249,11 @@ contains
       real(c_double), intent(out) :: pos(3) !< position [m]
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
-      integer :: l, node
+      integer :: node
       it => item_of(h)
-      pos = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      pos = 0.0_c_double
       associate (s => it%sys%s)
          if (s%model%points(it%index)%kind == point_body) then
             pos = real(s%model%points(it%index)%global, c_double)
@@ -267,14 +261,8 @@ contains
             pos = real(s%model%points(it%index)%position, c_double)
          end if
          if (s%stage == 1) then
-            do l = 1, size(s%model%lines)
-               node = 0
-               if (s%model%lines(l)%point_a == it%index) node = mesh_node(s%mesh, l, end_a)
-               if (s%model%lines(l)%point_b == it%index) node = mesh_node(s%mesh, l, end_b)
-               if (node == 0) cycle
-               pos = real(s%state%x(:, node), c_double)
-               exit
-            end do
+            node = system_point_node(s, it%index)
+            if (node > 0) pos = real(s%state%x(:, node), c_double)
          end if
       end associate
       code = md_success
@@ -290,9 +278,9 @@ contains
       real(wp), allocatable :: fa(:)
       integer :: k
       it => item_of(h)
-      f = 0.0_c_double
       code = md_invalid_value
       if (.not. associated(it)) return
+      f = 0.0_c_double
       if (it%sys%s%stage /= 1) return
       k = findloc(it%sys%s%coupled, it%index, dim=1)
       code = md_unhandled
@@ -329,32 +317,4 @@ contains
       end do
       code = md_success
    end function fast_tens
-
-   !> MoorDynInit (MoorDyn's first API): the one system of infile, initialised at x.
-   function old_init(x, xd, infile) result(code) bind(c, name='MoorDynInit')
-      type(c_ptr), value :: x, xd, infile   !< const double[], const double[], const char*
-      integer(c_int) :: code
-      code = md_unhandled
-      if (c_associated(old_api)) return
-      old_api = md_create(infile)
-      if (.not. c_associated(old_api)) return
-      code = md_init(old_api, x, xd)
-      if (code == md_success) return
-      if (md_close(old_api) == md_success) old_api = c_null_ptr
-   end function old_init
-
-   !> MoorDynStep: a step of the one system.
-   function old_step(x, xd, f, t, dt) result(code) bind(c, name='MoorDynStep')
-      type(c_ptr), value :: x, xd, f        !< const double[], const double[], double[]
-      real(c_double), intent(inout) :: t, dt !< time, step [s]
-      integer(c_int) :: code
-      code = md_step(old_api, x, xd, f, t, dt)
-   end function old_step
-
-   !> MoorDynClose: the one system freed (MOORDYN_INVALID_VALUE when there is none).
-   function old_close() result(code) bind(c, name='MoorDynClose')
-      integer(c_int) :: code
-      code = md_close(old_api)
-      old_api = c_null_ptr
-   end function old_close
 end module rodyn_capi_items

@@ -30,7 +30,7 @@ module rodyn_capi_system
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
    public :: system_node_x, system_node_tension, system_ndof, system_body_state
-   public :: system_break
+   public :: system_break, system_point_node
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -62,6 +62,8 @@ module rodyn_capi_system
       real(wp), allocatable :: x0(:, :)         !< (3, n) where each is at t = 0 [m]
       real(wp), allocatable :: r_static(:, :)   !< (6, nn) support forces of the statics
       real(wp) :: t = 0.0_wp                    !< time reached [s]
+      real(wp) :: dt_max = 0.0_wp               !< largest step (MoorDyn_SetDt; 0: none) [s]
+      real(wp), allocatable :: xd_last(:)       !< the coupled DOFs' rates of the last step
       integer :: stage = 0                      !< 0 read, 1 initialised, -1 failed
       integer :: n_points = 0                   !< MoorDyn's points: model%points(1:n)
       integer :: n_bodies = 0                   !< MoorDyn's bodies: model%bodies(1:n)
@@ -218,7 +220,10 @@ contains
                                   xd(nb + 3*i - 2:nb + 3*i)*dt - sys%x0(:, i)], [3, 2])
             end associate
          end do
+         ! one step a coupling step, or the fewest equal steps no longer than dt_max
          sys%model%dynamic%dt = dt
+         if (sys%dt_max > 0.0_wp) sys%model%dynamic%dt = &
+            dt/real(max(1, ceiling(dt/sys%dt_max - 1.0e-9_wp)), wp)
          call timeloop_advance(sys%prob, sys%model, sys%summary, err, -1, sys%obs, sys%ls, &
                                t1, halt)
          if (halt .or. has_error(err)) then
@@ -228,6 +233,7 @@ contains
             return
          end if
          sys%t = t1
+         sys%xd_last = xd
       end if
       call system_forces(sys, f)
    end subroutine system_step
@@ -300,6 +306,22 @@ contains
       call set_error(err, stat_input, 'line '//trim(sys%model%lines(l)%name)// &
                      ' has no end still on point '//trim(sys%model%points(ip)%name))
    end subroutine system_break
+
+   !> The node of the first line end still on point ip (model%points), 0 when none.
+   pure integer function system_point_node(sys, ip) result(node)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: ip             !< the point
+      integer :: l, k
+      do l = 1, size(sys%model%lines)
+         do k = 1, 2
+            if (merge(sys%model%lines(l)%point_a, sys%model%lines(l)%point_b, k == 1) &
+                /= ip) cycle
+            node = mesh_node(sys%mesh, l, merge(end_a, end_b, k == 1))
+            if (.not. end_released(sys%prob%fl, node)) return
+         end do
+      end do
+      node = 0
+   end function system_point_node
 
    !> MoorDyn's state of body ib: its reference point and angles r, p, y (its orientation
    !> Q = Rx(r) Ry(p) Rz(y), the directors of its node), and their rates: the velocity of
