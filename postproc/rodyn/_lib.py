@@ -64,6 +64,10 @@ _SIGNATURES = {
     "MoorDyn_GetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p,
                                              ctypes.POINTER(ctypes.c_size_t)]),
     "MoorDyn_SetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p]),
+    "MoorDyn_ExternalWaveKinInit": (ctypes.c_int, [_P, _U]),
+    "MoorDyn_ExternalWaveKinGetN": (ctypes.c_int, [_P, _U]),
+    "MoorDyn_ExternalWaveKinGetCoordinates": (ctypes.c_int, [_P, _D]),
+    "MoorDyn_ExternalWaveKinSet": (ctypes.c_int, [_P, _D, _D, ctypes.c_double]),
 }
 
 

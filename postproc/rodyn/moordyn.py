@@ -18,7 +18,9 @@ __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step
            "GetPointNAttached", "GetPointAttached", "GetBodyType", "GetBodyPos",
            "GetBodyAngle", "GetBodyVel", "GetBodyAngVel", "IsLineConstantEA",
            "GetLineConstantEA", "GetDt", "SetDt", "GetCFL", "SetCFL", "GetTimeScheme",
-           "SetTimeScheme"]
+           "SetTimeScheme", "ExternalWaveKinInit", "ExternalWaveKinGetN",
+           "ExternalWaveKinGetCoordinates", "GetWaveKinCoordinates", "ExternalWaveKinSet",
+           "SetWaveKin"]
 
 DEFAULT_FILE = "Mooring/lines.txt"
 
@@ -264,3 +266,42 @@ def GetTimeScheme(instance):
 
 def SetTimeScheme(instance, name):
     return lib().MoorDyn_SetTimeScheme(instance, name.encode())
+
+
+def ExternalWaveKinInit(instance):
+    """0 when the system takes the water's kinematics from the script (WaveKin 1);
+    raises otherwise."""
+    n = ctypes.c_uint(0)
+    code = lib().MoorDyn_ExternalWaveKinInit(instance, ctypes.byref(n))
+    if code != 0:
+        raise RuntimeError(f"MoorDyn_ExternalWaveKinInit: librodyn code {code}")
+    return code
+
+
+def ExternalWaveKinGetN(instance):
+    """The number of places where the water's kinematics are given."""
+    return _uint(lib().MoorDyn_ExternalWaveKinGetN, instance)
+
+
+def ExternalWaveKinGetCoordinates(instance):
+    """The places, as a list of [x, y, z] [m]."""
+    n = ExternalWaveKinGetN(instance)
+    r = doubles(None, 3 * max(n, 1))
+    code = lib().MoorDyn_ExternalWaveKinGetCoordinates(instance, r)
+    if code != 0:
+        raise RuntimeError(f"MoorDyn_ExternalWaveKinGetCoordinates: librodyn code {code}")
+    return [list(r[3 * i:3 * i + 3]) for i in range(n)]
+
+
+GetWaveKinCoordinates = ExternalWaveKinGetCoordinates
+
+
+def ExternalWaveKinSet(instance, u, a, t):
+    """The water's velocity u and acceleration a at the places (lists of triples), at
+    time t: 0 on success, else MoorDyn's code."""
+    uu = [c for p in u for c in p]
+    aa = [c for p in a for c in p]
+    return lib().MoorDyn_ExternalWaveKinSet(instance, doubles(uu), doubles(aa), float(t))
+
+
+SetWaveKin = ExternalWaveKinSet

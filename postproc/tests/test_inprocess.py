@@ -323,3 +323,62 @@ def test_points_lines_and_settings():
     assert np.allclose(md.GetLineNodeVel(l1, 20), 0.0, rtol=0, atol=1e-9)
     assert np.allclose(md.GetPointPos(p4), xs[:3], rtol=0, atol=1e-9)
     assert md.Close(h) == 0 and md.Close(fine) == 0
+
+
+def test_external_kinematics(tmp_path):
+    """MoorDyn's external water kinematics (WaveKin 1): MoorDyn's places in its order (the
+    nodes of each line, then every point, then the ground: 70 for these lines, as MoorDyn
+    2.7 gives them); the water at rest given by the host changes nothing, bit for bit; a
+    uniform flow of 0.5 m/s held from t = 0 brings the lines, through their drag, to
+    the static equilibrium of `rodyn` under a *CURRENT of 0.5 m/s (the deck of
+    `rodyn --to-deck`), the nodes within 1e-4 of the 1.56 m the current moves them."""
+    import csv
+    import subprocess
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    with open(LINES) as f:
+        text = f.read()
+    wk = tmp_path / "lines_wk.txt"
+    wk.write_text(text.replace("1.0           dtIC",
+                               "1             WaveKin       external\n1.0           dtIC"))
+    deck = subprocess.run([exe, "--to-deck", str(wk)], check=True, capture_output=True,
+                          text=True).stdout
+    statics = {}
+    for name, extra in (("still", ""), ("current", "*CURRENT\n0.0, 0.5, 0.0\n")):
+        (tmp_path / f"{name}.inp").write_text(deck.replace("*STATIC", extra + "*STATIC", 1))
+        subprocess.run([exe, str(tmp_path / f"{name}.inp"), "-o", str(tmp_path / name),
+                        "--quiet"], check=True)
+        with open(tmp_path / name / "static_nodes.csv") as f:
+            statics[name] = np.array([[float(r[k]) for k in ("x_m", "y_m", "z_m")]
+                                      for r in csv.DictReader(f)])
+    moved = np.abs(statics["current"] - statics["still"]).max()
+    assert 1.0 < moved < 2.0
+
+    def run(path, u, steps, dt):
+        h = md.Create(str(path))
+        x = [c for k in (4, 5, 6) for c in md.GetPointPos(md.GetPoint(h, k))]
+        assert md.Init(h, x, [0.0] * 9) == 0
+        if u is not None:
+            assert md.ExternalWaveKinInit(h) == 0
+            n = md.ExternalWaveKinGetN(h)
+            places = md.ExternalWaveKinGetCoordinates(h)
+            assert n == 70 and len(places) == 70
+            assert places[20] == x[0:3] and places[-1] == [0.0, 0.0, 0.0]
+            assert md.ExternalWaveKinSet(h, [u] * n, [[0.0] * 3] * n, 0.0) == 0
+        errs, t = [], 0.0
+        for i in range(steps):
+            f = md.Step(h, x, [0.0] * 9, t, dt)
+            t += dt
+            if (i + 1) % 100 == 0:
+                nodes = [md.GetLineNodePos(md.GetLine(h, l), k) for l in (1, 2, 3)
+                         for k in range(21)]
+                errs.append(np.abs(np.array(nodes) - statics["current"]).max())
+        assert md.Close(h) == 0
+        return f, errs
+
+    f_plain, _ = run(LINES, None, 20, 0.5)
+    f_rest, _ = run(wk, [0.0, 0.0, 0.0], 20, 0.5)
+    assert f_rest == f_plain
+    _, errs = run(wk, [0.5, 0.0, 0.0], 200, 2.0)
+    assert errs[1] < errs[0] and errs[1] <= 1e-4 * moved

@@ -12,7 +12,6 @@ module rodyn_capi
    use rodyn_capi_system, only: system_create, system_init, system_step, system_ndof, &
                                 system_break
    use rodyn_capi_outputs, only: channels_parse, out_open, out_row, out_close
-   use rodyn_deck_text, only: field_t
    use rodyn_capi_handles, only: capi_system_t, capi_item_t, system_of, item_of, f_string, &
                                  md_success, &
                                  md_invalid_input, md_nan_error, md_invalid_value, &
@@ -30,14 +29,14 @@ contains
       type(c_ptr) :: h
       type(capi_system_t), pointer :: cs
       type(error_t) :: err
-      type(field_t), allocatable :: names(:)
-      integer, allocatable :: lines(:)
       integer :: k
       h = c_null_ptr
       allocate (cs)
       cs%path = f_string(infile)
-      call system_create(cs%s, cs%path, err, names, lines, cs%write_units)
-      if (.not. has_error(err)) call channels_parse(cs%s, cs%path, names, lines, cs%ch, err)
+      call system_create(cs%s, cs%path, err)
+      if (.not. has_error(err)) call channels_parse(cs%s, cs%path, cs%s%info%outputs, &
+                                                    cs%s%info%output_line, cs%ch, err)
+      cs%write_units = cs%s%info%write_units
       if (has_error(err)) then
          write (error_unit, '(a)') err%message
          deallocate (cs)

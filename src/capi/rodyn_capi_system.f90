@@ -22,10 +22,9 @@ module rodyn_capi_system
    use rodyn_system_dynamics, only: failures_add, end_released
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
-   use rodyn_moordyn, only: moordyn_read
+   use rodyn_moordyn, only: moordyn_read, md_info_t
    use rodyn_rotation, only: axial, cross
    use rodyn_capi_bodies, only: add_body_vessels, body_pose_row, body_forces
-   use rodyn_deck_text, only: field_t
    implicit none
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
@@ -68,28 +67,27 @@ module rodyn_capi_system
       integer :: n_points = 0                   !< MoorDyn's points: model%points(1:n)
       integer :: n_bodies = 0                   !< MoorDyn's bodies: model%bodies(1:n)
       character(len=:), allocatable :: notes    !< the reader's notes
+      type(md_info_t) :: info                   !< the file's besides the model
    end type md_system_t
 
 contains
 
    !> Read the MoorDyn file at path into sys. Errors as the reader's (stat_input); a
    !> coupled rod is refused (not driven through the API).
-   subroutine system_create(sys, path, err, outputs, output_line, write_units)
+   subroutine system_create(sys, path, err)
       type(md_system_t), intent(inout), target :: sys !< the system
       character(len=*), intent(in) :: path            !< the MoorDyn file
       type(error_t), intent(inout) :: err             !< status
-      type(field_t), allocatable, intent(out) :: outputs(:) !< OUTPUTS channels
-      integer, allocatable, intent(out) :: output_line(:)   !< their lines
-      logical, intent(out) :: write_units             !< WriteUnits > 0
       character(len=:), allocatable :: warnings
-      integer, allocatable :: rods(:)
       call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
-                        coupled_points=sys%coupled, coupled_bodies=sys%cbody, &
-                        n_points=sys%n_points, outputs=outputs, output_line=output_line, &
-                        write_units=write_units, coupled_rods=rods, n_bodies=sys%n_bodies)
+                        info=sys%info)
       if (has_error(err)) return
-      if (size(rods) > 0) call set_error(err, stat_input, path//': error: RODS: a '// &
-         'coupled rod is not driven through librodyn (docs/capi.md)')
+      sys%coupled = sys%info%coupled_points
+      sys%cbody = sys%info%coupled_bodies
+      sys%n_points = sys%info%n_points
+      sys%n_bodies = sys%info%n_bodies
+      if (size(sys%info%coupled_rods) > 0) call set_error(err, stat_input, path// &
+         ': error: RODS: a coupled rod is not driven through librodyn (docs/capi.md)')
       sys%stage = 0
    end subroutine system_create
 

@@ -34,7 +34,7 @@ module rodyn_water
    implicit none
    private
    public :: water_loads_t, water_loads_build, water_element, water_attachment
-   public :: water_set_time, contact_parts
+   public :: water_set_time, contact_parts, water_set_external
 
    integer, parameter :: max_wp = max_order + 1 !< most load points per element
 
@@ -58,6 +58,10 @@ module rodyn_water
       real(wp), allocatable :: att_cda(:)          !< (na) drag coefficient x area [m2]
       real(wp), allocatable :: att_ca(:)           !< (na) added-mass coefficient [-]
       type(wave_field_t) :: field                  !< the waves (field%n = 0: none)
+      !> the water's velocity and acceleration at the nodes given by a host program
+      !> (water_set_external; MoorDyn's external kinematics): used instead of the waves
+      logical :: external = .false.
+      real(wp), allocatable :: ext(:, :)           !< (6, nn) velocity, acceleration
       logical :: wave_on = .false.                 !< wkin holds this step's kinematics
       real(wp), allocatable :: wkin(:, :)          !< (7, nn) per node: wave velocity
                                                    !< [m/s], acceleration [m/s2], eta [m]
@@ -153,14 +157,32 @@ contains
       integer :: node
       wl%env%r_current = current_factor(wl%env%water, t)
       wl%env%dynamic = dynamic
-      wl%wave_on = wl%field%n > 0 .and. present(x) .and. present(v) .and. present(h)
+      wl%wave_on = (wl%field%n > 0 .or. wl%external) .and. present(x) .and. present(v) &
+                   .and. present(h)
       wl%env%wave = wl%wave_on
       if (.not. wl%wave_on) return
+      if (wl%external) then            ! a host's: held over the step, at the still level
+         wl%wkin(1:6, :) = wl%ext
+         wl%wkin(7, :) = 0.0_wp
+         return
+      end if
       do node = 1, size(wl%wkin, 2)
          call wave_kinematics(wl%field, x(:, node) + h*v(:, node), t, wl%wkin(7, node), &
                               wl%wkin(1:3, node), wl%wkin(4:6, node))
       end do
    end subroutine water_set_time
+
+   !> The water's velocity and acceleration at every node given by a host program from the
+   !> next step on, in place of the waves (ext: (6, nn)). The
+   !> wave elevation is then 0, the dynamic pressure too (MoorDyn's external kinematics).
+   subroutine water_set_external(wl, ext)
+      type(water_loads_t), intent(inout) :: wl       !< loads
+      real(wp), intent(in) :: ext(:, :)              !< (6, nn) [m/s, m/s2]
+      wl%external = .true.
+      wl%ext = ext
+      if (.not. allocated(wl%wkin)) allocate (wl%wkin(n_wk, size(ext, 2)))
+      wl%wkin = 0.0_wp
+   end subroutine water_set_external
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
    !> tangent of their sum with respect to x^{n+1} (module header).

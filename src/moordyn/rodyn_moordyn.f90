@@ -7,12 +7,11 @@ module rodyn_moordyn
    use rodyn_deck_files, only: read_file_text
    use rodyn_deck, only: deck_read, deck_source_t
    use rodyn_moordyn_file, only: md_file_t, md_read, md_is_moordyn
-   use rodyn_moordyn_out, only: md_deck_t
-   use rodyn_deck_text, only: field_t
+   use rodyn_moordyn_out, only: md_deck_t, md_info_t
    use rodyn_moordyn_deck, only: md_to_deck
    implicit none
    private
-   public :: moordyn_file, moordyn_read, moordyn_deck_text
+   public :: moordyn_file, moordyn_read, moordyn_deck_text, md_info_t
 
 contains
 
@@ -56,40 +55,22 @@ contains
 
    !> Read the MoorDyn file at path into model, validated as a deck (deck_read) whose
    !> lines are located at the MoorDyn lines they come from; notes as moordyn_deck_text.
-   !> For a host program (host present): the model has a *DYNAMIC to step, and
-   !> coupled_points the model%points a host moves (MoorDyn's Coupled and Vessel points,
-   !> in their order), coupled_bodies the bodies.
-   subroutine moordyn_read(path, model, err, notes, warnings, host, coupled_points, &
-                           coupled_bodies, n_points, outputs, output_line, write_units, &
-                           coupled_rods, n_bodies)
+   !> For a host program (host present): the model has a *DYNAMIC to step, and info what
+   !> the host needs besides (md_info_t: the points and bodies it moves, in MoorDyn's
+   !> order, the OUTPUTS, ...).
+   subroutine moordyn_read(path, model, err, notes, warnings, host, info)
       character(len=*), intent(in) :: path  !< the MoorDyn file
       type(model_t), intent(out) :: model   !< the model
       type(error_t), intent(inout) :: err   !< status (stat_input)
       character(len=:), allocatable, intent(out) :: notes    !< the notes
       character(len=:), allocatable, intent(out) :: warnings !< the deck's warnings
       logical, intent(in), optional :: host !< read for a host program's steps
-      integer, allocatable, intent(out), optional :: coupled_points(:) !< points moved
-      integer, allocatable, intent(out), optional :: coupled_bodies(:) !< bodies moved
-      integer, allocatable, intent(out), optional :: coupled_rods(:)   !< rods moved
-      integer, intent(out), optional :: n_points !< MoorDyn's points (model%points(1:n))
-      integer, intent(out), optional :: n_bodies !< MoorDyn's bodies (model%bodies(1:n))
-      type(field_t), allocatable, intent(out), optional :: outputs(:) !< OUTPUTS channels
-      integer, allocatable, intent(out), optional :: output_line(:)   !< their lines
-      logical, intent(out), optional :: write_units !< WriteUnits > 0
+      type(md_info_t), intent(out), optional :: info !< for a host program
       type(md_deck_t) :: d
       type(deck_source_t) :: source
       warnings = ''
       call translate(path, d, notes, err, host)
-      if (present(coupled_points) .and. allocated(d%coupled_points)) &
-         coupled_points = d%coupled_points
-      if (present(coupled_bodies) .and. allocated(d%coupled_bodies)) &
-         coupled_bodies = d%coupled_bodies
-      if (present(coupled_rods) .and. allocated(d%coupled_rods)) coupled_rods = d%coupled_rods
-      if (present(n_points)) n_points = d%n_points
-      if (present(n_bodies)) n_bodies = d%n_bodies
-      if (present(outputs) .and. allocated(d%outputs)) outputs = d%outputs
-      if (present(output_line) .and. allocated(d%output_line)) output_line = d%output_line
-      if (present(write_units)) write_units = d%write_units
+      if (present(info)) info = d%info
       if (has_error(err)) return
       source%text = d%text
       source%line_map = d%map(1:d%n)

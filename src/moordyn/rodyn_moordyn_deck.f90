@@ -49,7 +49,8 @@ contains
 
       d%path = md%path
       d%notes = ''
-      allocate (d%coupled_points(0), d%coupled_bodies(0), d%coupled_rods(0))
+      allocate (d%info%coupled_points(0), d%info%coupled_bodies(0), d%info%coupled_rods(0), &
+                d%info%rod_nodes(0), d%info%rod_ends(6, 0))
       call put(d, '** rodyn deck of the MoorDyn file '//md%path//' (rodyn --to-deck);', 0)
       call put(d, '** each keyword stands for the MoorDyn entry on the line it names', 0)
       call put(d, '*HEADING', 0)
@@ -78,19 +79,24 @@ contains
       end do
       do k = 1, md%sec(md_bodies)%n
          call body(d, md%sec(md_bodies)%rows(k), k, env, err)
+         if (d%info%external_waves .and. upper_case(md%sec(md_bodies)%rows(k)%f(2)%s) == &
+             'FREE') call md_fail(d, md_bodies, md%sec(md_bodies)%rows(k), 'a Free body '// &
+            'with WaveKin 1 (line '//int_str(env%wave_kin_line)//'): the water '// &
+            'kinematics a host gives are used on the lines and points, not yet on a body', &
+            err)
       end do
       do k = 1, md%sec(md_points)%n
          call point(d, md%sec(md_points)%rows(k), k, md%sec(md_bodies)%n, err)
       end do
-      d%n_points = md%sec(md_points)%n
-      d%n_bodies = md%sec(md_bodies)%n
+      d%info%n_points = md%sec(md_points)%n
+      d%info%n_bodies = md%sec(md_bodies)%n
       call rods(md, d, err)             ! their bodies after the bodies, points after the points
       do k = 1, md%sec(md_lines)%n
          call line(d, md, md%sec(md_lines)%rows(k), k, err)
       end do
       if (has_error(err)) return
       call collect_outputs(md, d)
-      d%write_units = env%write_units
+      d%info%write_units = env%write_units
       if (md%sec(md_outputs)%n > 0) call note(d, md%sec(md_outputs)%line, 'OUTPUTS: '// &
          '`rodyn FILE` writes every line''s nodes and tensions, every point and body '// &
          '(docs/output.md); librodyn writes the channels to FILE.out (docs/capi.md)')
@@ -111,13 +117,13 @@ contains
       do k = 1, md%sec(md_outputs)%n
          n = n + size(md%sec(md_outputs)%rows(k)%f)
       end do
-      allocate (d%outputs(n), d%output_line(n))
+      allocate (d%info%outputs(n), d%info%output_line(n))
       n = 0
       do k = 1, md%sec(md_outputs)%n
          do j = 1, size(md%sec(md_outputs)%rows(k)%f)
             n = n + 1
-            d%outputs(n)%s = md%sec(md_outputs)%rows(k)%f(j)%s
-            d%output_line(n) = md%sec(md_outputs)%rows(k)%line
+            d%info%outputs(n)%s = md%sec(md_outputs)%rows(k)%f(j)%s
+            d%info%output_line(n) = md%sec(md_outputs)%rows(k)%line
          end do
       end do
    end subroutine collect_outputs
@@ -255,7 +261,7 @@ contains
          kind = 'FREE'
       case ('COUPLED', 'VESSEL', 'VES', 'CPLD', 'FAIRLEAD')
          kind = 'FIXED'
-         d%coupled_points = [d%coupled_points, id]
+         d%info%coupled_points = [d%info%coupled_points, id]
          call note(d, row%line, 'POINTS: point '//row%f(1)%s//' ('//row%f(2)%s//') is '// &
                    'held at its start: it moves when a host program moves it')
       case ('BODY')
@@ -454,7 +460,7 @@ contains
       case ('FIXED', 'FIX', 'ANCHOR', 'COUPLED', 'VESSEL', 'VES', 'CPLD')
          kind = 'FIXED'
          if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') &
-            d%coupled_bodies = [d%coupled_bodies, id]
+            d%info%coupled_bodies = [d%info%coupled_bodies, id]
          if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') call note(d, &
             row%line, 'BODIES: body '//row%f(1)%s//' ('//row%f(2)%s//') is held at '// &
             'its start: it moves when a host program moves it')

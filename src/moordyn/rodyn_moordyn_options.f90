@@ -27,6 +27,7 @@ module rodyn_moordyn_options
       real(wp) :: cbot = 3.0e5_wp      !< seabed damping [Pa s/m]
       real(wp) :: mu = 0.0_wp          !< seabed friction coefficient
       integer :: g_line = 0, depth_line = 0, kbot_line = 0
+      integer :: wave_kin_line = 0     !< line of WaveKin 1 (external kinematics)
       character(len=:), allocatable :: friction !< ', FRICTION=mu' or ''
       logical :: write_units = .true.  !< a units row in the .out file (WriteUnits > 0)
       !> the options ignored, by reason (time step, initial condition, output files),
@@ -123,9 +124,18 @@ contains
                    'm/s) and has one coefficient (docs/moordyn.md, "Seabed")')
       case ('WAVEKIN', 'CURRENTS')
          call md_real(d, md_options, row, 1, row%f(2)%s, x, err)
-         if (x /= 0.0_wp) call md_fail(d, md_options, row, row%f(2)%s//' '//row%f(1)%s// &
+         if (x == 1.0_wp .and. name == 'WAVEKIN') then
+            d%info%external_waves = .true.
+            env%wave_kin_line = row%line
+            call note(d, row%line, row%f(2)%s//' 1: the water''s velocity and '// &
+               'acceleration at the nodes come from the host in the dynamics '// &
+               '(MoorDyn_ExternalWaveKinSet, docs/capi.md); the statics are in still '// &
+               'water, as MoorDyn''s initial condition')
+         else if (x /= 0.0_wp) then
+            call md_fail(d, md_options, row, row%f(2)%s//' '//row%f(1)%s// &
             ': MoorDyn''s water kinematics from files are not read; rodyn''s own *WAVE '// &
             'and *CURRENT give waves and current (docs/moordyn.md, "What is not read")', err)
+         end if
       case ('SEAFLOORFILE')
          call md_fail(d, md_options, row, 'SeafloorFile: a seabed from a file is not '// &
                       'read; rodyn''s seabed is a plane (*SEABED, SLOPE=)', err)

@@ -12,7 +12,24 @@ module rodyn_moordyn_out
    use rodyn_moordyn_file, only: md_row_t, md_section_names
    implicit none
    private
-   public :: md_deck_t, put, note, md_real, md_columns, md_fail, md_text_of, word
+   public :: md_deck_t, md_info_t, put, note, md_real, md_columns, md_fail, md_text_of, word
+
+   !> What a host program needs of a MoorDyn file besides the model.
+   type :: md_info_t
+      !> the points a host program moves (Coupled, Vessel: their IDs, in order) and the
+      !> coupled bodies and rods
+      integer, allocatable :: coupled_points(:), coupled_bodies(:), coupled_rods(:)
+      integer :: n_points = 0                 !< MoorDyn's points (the deck's first)
+      integer :: n_bodies = 0                 !< MoorDyn's bodies (the deck's first)
+      !> OUTPUTS: the channels' names and lines; write the units row (WriteUnits > 0)
+      type(field_t), allocatable :: outputs(:)
+      integer, allocatable :: output_line(:)
+      logical :: write_units = .true.
+      logical :: external_waves = .false.     !< WaveKin 1: the host gives the water's
+                                              !< velocity and acceleration at the nodes
+      integer, allocatable :: rod_nodes(:)    !< (rods) NumSegs + 1 of each rod
+      real(wp), allocatable :: rod_ends(:, :) !< (6, rods) its ends A and B [m]
+   end type md_info_t
 
    !> The deck being written.
    type :: md_deck_t
@@ -21,15 +38,7 @@ module rodyn_moordyn_out
       integer, allocatable :: map(:)          !< line of the MoorDyn file of each line
       integer :: n = 0                        !< lines written
       character(len=:), allocatable :: notes  !< 'FILE:LINE: note: ...' lines, LF-ended
-      !> the points a host program moves (Coupled, Vessel: their IDs, in order) and the
-      !> coupled bodies
-      integer, allocatable :: coupled_points(:), coupled_bodies(:), coupled_rods(:)
-      integer :: n_points = 0                 !< MoorDyn's points (the deck's first)
-      integer :: n_bodies = 0                 !< MoorDyn's bodies (the deck's first)
-      !> OUTPUTS: the channels' names and lines; write the units row (WriteUnits > 0)
-      type(field_t), allocatable :: outputs(:)
-      integer, allocatable :: output_line(:)
-      logical :: write_units = .true.
+      type(md_info_t) :: info                 !< for a host program
    end type md_deck_t
 
 contains

@@ -68,11 +68,18 @@ contains
          call md_real(d, md_rods, row, 6 + j, word(rod_cols, 6 + j), b(j), err)
       end do
       if (has_error(err)) return
+      ! (its nodes, NumSegs + 1: the places of MoorDyn's external water kinematics)
+      call parse_int(row%f(10)%s, n, msg)
+      if (len(msg) > 0 .or. n < 1) call md_fail(d, md_rods, row, 'column NumSegs: "'// &
+         row%f(10)%s//'" is not a whole number above 0', err)
+      if (has_error(err)) return
+      d%info%rod_nodes = [d%info%rod_nodes, n + 1]
+      d%info%rod_ends = reshape([d%info%rod_ends, a, b], [6, size(d%info%rod_nodes)])
       att = upper_case(row%f(3)%s)
       select case (att)
       case ('FIXED', 'FIX', 'ANCHOR')
       case ('COUPLED', 'VESSEL', 'VES', 'CPLD')
-         d%coupled_rods = [d%coupled_rods, id]
+         d%info%coupled_rods = [d%info%coupled_rods, id]
          call note(d, row%line, 'RODS: rod '//row%f(1)%s//' ('//row%f(3)%s//') is held '// &
                    'at its start: it moves when a host program moves it')
       case default
