@@ -20,7 +20,8 @@ __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step
            "GetLineConstantEA", "GetDt", "SetDt", "GetCFL", "SetCFL", "GetTimeScheme",
            "SetTimeScheme", "ExternalWaveKinInit", "ExternalWaveKinGetN",
            "ExternalWaveKinGetCoordinates", "GetWaveKinCoordinates", "ExternalWaveKinSet",
-           "SetWaveKin"]
+           "SetWaveKin", "GetNumberRods", "GetRod", "GetRodID", "GetRodType", "GetRodN",
+           "GetRodNumberNodes", "GetRodNodePos", "GetRodNodeVel"]
 
 DEFAULT_FILE = "Mooring/lines.txt"
 
@@ -305,3 +306,35 @@ def ExternalWaveKinSet(instance, u, a, t):
 
 
 SetWaveKin = ExternalWaveKinSet
+
+
+def GetNumberRods(instance):
+    return _uint(lib().MoorDyn_GetNumberRods, instance)
+
+
+def GetRod(instance, rod):
+    return lib().MoorDyn_GetRod(instance, int(rod)) or None
+
+
+def GetRodID(instance):
+    return _int(lib().MoorDyn_GetRodID, instance)
+
+
+def GetRodType(instance):
+    return _int(lib().MoorDyn_GetRodType, instance)
+
+
+def GetRodN(instance):
+    return _uint(lib().MoorDyn_GetRodN, instance)
+
+
+def GetRodNumberNodes(instance):
+    return _uint(lib().MoorDyn_GetRodNumberNodes, instance)
+
+
+def GetRodNodePos(instance, i):
+    return _vec(lib().MoorDyn_GetRodNodePos, instance, int(i))
+
+
+def GetRodNodeVel(instance, i):
+    return _vec(lib().MoorDyn_GetRodNodeVel, instance, int(i))

@@ -382,3 +382,56 @@ def test_external_kinematics(tmp_path):
     assert f_rest == f_plain
     _, errs = run(wk, [0.5, 0.0, 0.0], 200, 2.0)
     assert errs[1] < errs[0] and errs[1] <= 1e-4 * moved
+
+
+ROD_FILE = """--------------------- MoorDyn Input File ----------------------
+two chains hanging from a fixed rod
+---------------------- LINE TYPES ----------------------
+Name  Diam  Mass/m  EA     BA/-zeta  EI  Cd   Ca   CdAx  CaAx
+(-)   (m)   (kg/m)  (N)    (N-s)     (-) (-)  (-)  (-)   (-)
+chain 0.1   20.0    1.0e8  -0.5      0   1.2  1.0  0.2   0.0
+---------------------- ROD TYPES ----------------------
+Name Diam Mass/m Cd Ca CdEnd CaEnd
+(-) (m) (kg/m) (-) (-) (-) (-)
+pipe 0.5 100 1.0 1.0 0.6 1.0
+---------------------- RODS ----------------------
+ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
+(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
+1 pipe Fixed -1 0 -5 1 0 -5 4 -
+---------------------- POINTS ----------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed -80 0 -50 0 0 0 0
+2 Fixed 80 0 -50 0 0 0 0
+---------------------- LINES ----------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 R1A 95 12 -
+2 chain 2 R1B 95 12 -
+---------------------- OPTIONS ----------------------
+1025 WtrDnsty
+50 WtrDpth
+---------------------- need this line ----------------------
+"""
+
+
+def test_fixed_rod(tmp_path):
+    """A Fixed rod's getters: its ID, type (MoorDyn's FIXED, 2), segments and nodes evenly
+    from end A to end B, at rest; the chains hung from its ends end there."""
+    path = tmp_path / "rod.txt"
+    path.write_text(ROD_FILE)
+    h = md.Create(str(path))
+    assert md.GetNumberRods(h) == 1 and md.GetRod(h, 2) is None
+    rod = md.GetRod(h, 1)
+    assert md.GetRodID(rod) == 1 and md.GetRodType(rod) == 2
+    assert md.GetRodN(rod) == 4 and md.GetRodNumberNodes(rod) == 5
+    assert [md.GetRodNodePos(rod, i) for i in range(5)] == [
+        (-1.0, 0.0, -5.0), (-0.5, 0.0, -5.0), (0.0, 0.0, -5.0), (0.5, 0.0, -5.0),
+        (1.0, 0.0, -5.0)]
+    assert md.GetRodNodePos(rod, 5) == (0.0, 0.0, 0.0)      # past the end: refused
+    assert md.Init(h, [], []) == 0
+    assert md.GetRodNodeVel(rod, 4) == (0.0, 0.0, 0.0)
+    for line, node in ((1, 0), (2, 4)):
+        end = md.GetLineNodePos(md.GetLine(h, line), 12)
+        assert np.allclose(end, md.GetRodNodePos(rod, node), rtol=0, atol=1e-9)
+    assert md.Close(h) == 0

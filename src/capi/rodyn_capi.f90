@@ -43,10 +43,14 @@ contains
          return
       end if
       allocate (cs%lines(size(cs%s%model%lines)), cs%points(cs%s%n_points), &
-                cs%bodies(cs%s%n_bodies))
+                cs%bodies(cs%s%n_bodies), cs%rods(size(cs%s%info%rod_nodes)))
       do k = 1, size(cs%bodies)
          cs%bodies(k)%sys => cs
          cs%bodies(k)%index = k
+      end do
+      do k = 1, size(cs%rods)
+         cs%rods(k)%sys => cs
+         cs%rods(k)%index = k
       end do
       do k = 1, size(cs%lines)
          cs%lines(k)%sys => cs
@@ -201,7 +205,7 @@ contains
       if (err%code == stat_io) code = md_invalid_output_file
    end function code_of
 
-   !> MoorDyn_GetNumberLines, MoorDyn_GetNumberPoints, MoorDyn_GetNumberBodies.
+   !> MoorDyn_GetNumberLines, _GetNumberPoints, _GetNumberBodies, _GetNumberRods.
    function md_nlines(h, n) result(code) bind(c, name='MoorDyn_GetNumberLines')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(out) :: n      !< unsigned int*
@@ -223,10 +227,17 @@ contains
       code = count_of(h, 3, n)
    end function md_nbodies
 
+   function md_nrods(h, n) result(code) bind(c, name='MoorDyn_GetNumberRods')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), intent(out) :: n      !< unsigned int*
+      integer(c_int) :: code
+      code = count_of(h, 4, n)
+   end function md_nrods
+
    !> The number of lines, points or bodies of a system.
    function count_of(h, kind, n) result(code)
       type(c_ptr), intent(in) :: h          !< system
-      integer, intent(in) :: kind           !< 1 lines, 2 points, 3 bodies
+      integer, intent(in) :: kind           !< 1 lines, 2 points, 3 bodies, 4 rods
       integer(c_int), intent(out) :: n      !< how many
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
@@ -234,8 +245,7 @@ contains
       code = md_invalid_value
       if (.not. associated(cs)) return
       n = 0
-      n = int(merge(size(cs%lines), merge(size(cs%points), size(cs%bodies), kind == 2), &
-                    kind == 1), c_int)
+      n = int(count_items(cs, kind), c_int)
       code = md_success
    end function count_of
 
@@ -259,24 +269,47 @@ contains
       md_get_body = handle(h, b, 3)
    end function md_get_body
 
+   type(c_ptr) function md_get_rod(h, r) bind(c, name='MoorDyn_GetRod')
+      type(c_ptr), value :: h               !< system
+      integer(c_int), value :: r            !< unsigned int ID
+      md_get_rod = handle(h, r, 4)
+   end function md_get_rod
+
+   !> The number of lines (kind 1), points (2), bodies (3) or rods (4) of a system.
+   pure integer function count_items(cs, kind) result(n)
+      type(capi_system_t), intent(in) :: cs !< the system
+      integer, intent(in) :: kind           !< which
+      select case (kind)
+      case (1)
+         n = size(cs%lines)
+      case (2)
+         n = size(cs%points)
+      case (3)
+         n = size(cs%bodies)
+      case default
+         n = size(cs%rods)
+      end select
+   end function count_items
+
    !> The handle of line, point or body k of a system (NULL, and a message, when there is
    !> none).
    function handle(h, k, kind) result(item)
       type(c_ptr), intent(in) :: h          !< system
       integer(c_int), intent(in) :: k       !< ID, from 1
-      integer, intent(in) :: kind           !< 1 a line, 2 a point, 3 a body
+      integer, intent(in) :: kind           !< 1 a line, 2 a point, 3 a body, 4 a rod
       type(c_ptr) :: item
-      character(len=5), parameter :: what(3) = ['line ', 'point', 'body ']
+      character(len=5), parameter :: what(4) = ['line ', 'point', 'body ', 'rod  ']
       type(capi_system_t), pointer :: cs
       integer :: n
       item = c_null_ptr
       cs => system_of(h)
       if (.not. associated(cs)) return
-      n = merge(size(cs%lines), merge(size(cs%points), size(cs%bodies), kind == 2), kind == 1)
+      n = count_items(cs, kind)
       if (k >= 1 .and. k <= n) then
          if (kind == 1) item = c_loc(cs%lines(k))
          if (kind == 2) item = c_loc(cs%points(k))
          if (kind == 3) item = c_loc(cs%bodies(k))
+         if (kind == 4) item = c_loc(cs%rods(k))
       else
          write (error_unit, '(a,i0)') 'Error: There is not such '//trim(what(kind))//' ', k
       end if

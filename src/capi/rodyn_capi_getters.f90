@@ -1,6 +1,7 @@
-!> librodyn's further getters of points, bodies and lines (MoorDyn v2's Point.h, Body.h
-!> and Line.h; docs/capi.md): a point's velocity and the line ends on it, a body's type,
-!> position, angles and their rates, a line's axial stiffness. IDs from 1, attachments
+!> librodyn's further getters of points, bodies, lines and rods (MoorDyn v2's Point.h,
+!> Body.h, Line.h and Rod.h; docs/capi.md): a point's velocity and the line ends on it, a
+!> body's type, position, angles and their rates, a line's axial stiffness, a fixed
+!> rod's nodes. IDs from 1, attachments
 !> and nodes from 0, as MoorDyn's.
 module rodyn_capi_getters
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_loc, c_null_ptr
@@ -212,5 +213,84 @@ contains
       code = md_success
       if (.not. associated(item_of(h))) code = md_invalid_value
    end function line_is_press_bend
+
+   !> MoorDyn_GetRodID; MoorDyn_GetRodType: 2, MoorDyn's FIXED (rodyn reads fixed rods; a
+   !> coupled one is refused by MoorDyn_Create, a moving one when read).
+   function rod_id(h, id) result(code) bind(c, name='MoorDyn_GetRodID')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), intent(out) :: id     !< its ID
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      id = int(it%index, c_int)
+      code = md_success
+   end function rod_id
+
+   function rod_type(h, t) result(code) bind(c, name='MoorDyn_GetRodType')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), intent(out) :: t      !< its type
+      integer(c_int) :: code
+      code = md_invalid_value
+      if (.not. associated(item_of(h))) return
+      t = 2
+      code = md_success
+   end function rod_type
+
+   !> MoorDyn_GetRodN (NumSegs), MoorDyn_GetRodNumberNodes (NumSegs + 1).
+   function rod_n(h, n) result(code) bind(c, name='MoorDyn_GetRodN')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), intent(out) :: n      !< unsigned int: segments
+      integer(c_int) :: code
+      code = rod_nodes(h, n)
+      if (code == md_success) n = n - 1
+   end function rod_n
+
+   function rod_nodes(h, n) result(code) bind(c, name='MoorDyn_GetRodNumberNodes')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), intent(out) :: n      !< unsigned int: nodes
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      n = int(it%sys%s%info%rod_nodes(it%index), c_int)
+      code = md_success
+   end function rod_nodes
+
+   !> MoorDyn_GetRodNodePos: node i (from 0 at end A) of the rod, its nodes evenly along
+   !> it [m]; MoorDyn_GetRodNodeVel: 0 (a fixed rod).
+   function rod_node_pos(h, i, pos) result(code) bind(c, name='MoorDyn_GetRodNodePos')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), value :: i            !< unsigned int: node
+      real(c_double), intent(out) :: pos(3) !< position [m]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      integer :: n
+      it => item_of(h)
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      n = it%sys%s%info%rod_nodes(it%index) - 1
+      if (i < 0 .or. i > n) return
+      associate (e => it%sys%s%info%rod_ends(:, it%index))
+         pos = real(e(1:3) + (e(4:6) - e(1:3))*real(i, wp)/real(n, wp), c_double)
+      end associate
+      code = md_success
+   end function rod_node_pos
+
+   function rod_node_vel(h, i, v) result(code) bind(c, name='MoorDyn_GetRodNodeVel')
+      type(c_ptr), value :: h               !< rod
+      integer(c_int), value :: i            !< unsigned int: node
+      real(c_double), intent(out) :: v(3)   !< velocity [m/s]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      it => item_of(h)
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (i < 0 .or. i >= it%sys%s%info%rod_nodes(it%index)) return
+      v = 0.0_c_double
+      code = md_success
+   end function rod_node_vel
 
 end module rodyn_capi_getters

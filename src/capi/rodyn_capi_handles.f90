@@ -28,7 +28,7 @@ module rodyn_capi_handles
    !> A system with the handles of its lines and points.
    type :: capi_system_t
       type(md_system_t) :: s                     !< the system
-      type(capi_item_t), allocatable :: lines(:), points(:), bodies(:)
+      type(capi_item_t), allocatable :: lines(:), points(:), bodies(:), rods(:)
       type(channel_t), allocatable :: ch(:)      !< the OUTPUTS channels
       type(out_file_t) :: out                    !< FILE.out, when there are channels
       character(len=:), allocatable :: path      !< the MoorDyn file
