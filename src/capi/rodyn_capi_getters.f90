@@ -9,8 +9,10 @@ module rodyn_capi_getters
    use rodyn_model, only: body_fixed, end_a, end_b
    use rodyn_mesh, only: mesh_node
    use rodyn_system_dynamics, only: end_released
-   use rodyn_capi_system, only: system_body_state, system_point_node
-   use rodyn_capi_handles, only: capi_item_t, item_of, md_success, md_invalid_value
+   use rodyn_capi_system, only: system_body_state, system_point_node, system_end_force
+   use rodyn_capi_handles, only: capi_item_t, item_of, md_success, md_invalid_value, &
+                                 md_unhandled
+   use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none
    private
 
@@ -292,5 +294,36 @@ contains
       v = 0.0_c_double
       code = md_success
    end function rod_node_vel
+
+   !> MoorDyn_GetLineNodeForce at an end held by a point (fixed, coupled, or on a fixed or
+   !> coupled body): the force the line exerts on it [N] (MoorDyn's net force on the end
+   !> node, which its point takes); at another node MOORDYN_UNHANDLED_ERROR (not served).
+   function line_node_force(h, i, f) result(code) bind(c, name='MoorDyn_GetLineNodeForce')
+      type(c_ptr), value :: h               !< line
+      integer(c_int), value :: i            !< unsigned int: node, from 0
+      real(c_double), intent(out) :: f(3)   !< force [N]
+      integer(c_int) :: code
+      type(capi_item_t), pointer :: it
+      real(wp) :: fw(3)
+      integer :: n
+      logical :: ok
+      it => item_of(h)
+      code = md_invalid_value
+      if (.not. associated(it)) return
+      if (it%sys%s%stage /= 1) return
+      n = it%sys%s%mesh%line_n_nodes(it%index) - 1
+      if (i < 0 .or. i > n) return
+      ok = .false.
+      if (i == 0 .or. i == n) call system_end_force(it%sys%s, it%index, &
+                                                   merge(1, 2, i == 0), fw, ok)
+      code = md_unhandled
+      if (.not. ok) then
+         write (error_unit, '(a)') 'rodyn: error: MoorDyn_GetLineNodeForce is served at '// &
+            'a line''s ends held by points, not at this node'
+         return
+      end if
+      f = real(fw, c_double)
+      code = md_success
+   end function line_node_force
 
 end module rodyn_capi_getters

@@ -13,7 +13,8 @@
 module rodyn_capi_system
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error, set_error, stat_input, stat_numerical
-   use rodyn_model, only: model_t, motion_t, motion_table, end_a, end_b
+   use rodyn_model, only: model_t, motion_t, motion_table, end_a, end_b, point_free, &
+                          point_body, body_fixed
    use rodyn_mesh, only: mesh_t, mesh_build, mesh_node
    use rodyn_state, only: state_t
    use rodyn_statics, only: static_problem_t, statics_run
@@ -29,7 +30,7 @@ module rodyn_capi_system
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
    public :: system_node_x, system_node_tension, system_ndof, system_body_state
-   public :: system_break, system_point_node
+   public :: system_break, system_point_node, system_end_force
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -244,17 +245,9 @@ contains
       type(md_system_t), intent(in) :: sys  !< the system
       real(wp), intent(out) :: f(:)         !< (system_ndof) forces [N, N m]
       real(wp), allocatable :: r(:, :)
-      real(wp) :: w, rb(3)
+      real(wp) :: rb(3)
       integer :: i, l, k, node, nb
-      w = sys%prob%wf
-      if (.not. sys%obs%have_last) then
-         r = sys%r_static
-      else if (sys%obs%have_back) then
-         r = sys%obs%r_last + (sys%obs%r_last - sys%obs%r_back)*(1.0_wp - w)*sys%obs%h_last &
-             /(w*sys%obs%h_last + (1.0_wp - w)*sys%obs%h_back)
-      else
-         r = sys%obs%r_last
-      end if
+      r = support_forces(sys)
       f = 0.0_wp
       nb = 6*size(sys%cbody)
       do i = 1, size(sys%cbody)
@@ -279,6 +272,48 @@ contains
          end do
       end do
    end subroutine system_forces
+
+   !> The support forces of every node at sys%t [N, N m]: the statics' before the first
+   !> step, then the step forces extrapolated from their force points to the step's end.
+   function support_forces(sys) result(r)
+      type(md_system_t), intent(in) :: sys  !< the system
+      real(wp), allocatable :: r(:, :)      !< (6, nn)
+      real(wp) :: w
+      w = sys%prob%wf
+      if (.not. sys%obs%have_last) then
+         r = sys%r_static
+      else if (sys%obs%have_back) then
+         r = sys%obs%r_last + (sys%obs%r_last - sys%obs%r_back)*(1.0_wp - w)*sys%obs%h_last &
+             /(w*sys%obs%h_last + (1.0_wp - w)*sys%obs%h_back)
+      else
+         r = sys%obs%r_last
+      end if
+   end function support_forces
+
+   !> The force line l's end k (1 A, 2 B) exerts on the point holding it at sys%t [N]
+   !> (minus its support force); ok false for an end not held (free, on a free point or
+   !> body, or released).
+   subroutine system_end_force(sys, l, k, f, ok)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: l, k           !< line, end
+      real(wp), intent(out) :: f(3)         !< force [N]
+      logical, intent(out) :: ok            !< an end held by a point
+      real(wp), allocatable :: r(:, :)
+      integer :: node, ip
+      f = 0.0_wp
+      node = mesh_node(sys%mesh, l, merge(end_a, end_b, k == 1))
+      ip = merge(sys%model%lines(l)%point_a, sys%model%lines(l)%point_b, k == 1)
+      ok = ip /= 0
+      if (.not. ok) return
+      associate (p => sys%model%points(ip))
+         ! held: a fixed or coupled point, or one on a fixed or coupled body
+         ok = p%kind /= point_free .and. .not. end_released(sys%prob%fl, node)
+         if (ok .and. p%kind == point_body) ok = sys%model%bodies(p%body)%kind == body_fixed
+      end associate
+      if (.not. ok) return
+      r = support_forces(sys)
+      f = -r(1:3, node)
+   end subroutine system_end_force
 
    !> MoorDyn_BreakLine: the end of line l on point ip (model%points) leaves it at the
    !> start of the next step (eq. (143)); the point's force counts it no more. An error if
