@@ -6,7 +6,9 @@ Accepted layout (docs/postproc.md, "CSV layouts of compare"):
   are skipped anywhere;
 - the first other line is the header: one name per column; the delimiter is the one
   of ',', ';' and tab that the header holds most often (a single-column header is
-  refused: at least two columns are needed);
+  refused: at least two columns are needed); lines before it that hold none of the
+  three are titles, as in OrcaFlex's exported values (`Time History: Line1 Effective
+  Tension at End B`, then `Time (s)<tab>Effective Tension (kN)`), and are skipped;
 - a header names its unit in brackets or parentheses at its end, `time [s]`,
   `Tension (kN)`, or after the last underscore as rodyn's tables do (`time_s`,
   `tension_A_N`, `curvature_per_m`); without a unit the column is taken to be SI;
@@ -70,9 +72,15 @@ class ReferenceTable:
                     if line.strip() and not line.lstrip().startswith("#")]
         if not numbered:
             raise ReferenceError(f"{self.path}: empty (no header line)")
-        header_number, header_line = numbered[0]
         if self._moordyn_out(numbered):
             return
+        # title lines (no delimiter) before a header that has one, as OrcaFlex's exported
+        # values start: 'Time History: Line1 Effective Tension at End B'
+        first = next((i for i, (_, line) in enumerate(numbered)
+                      if any(d in line for d in DELIMITERS)), 0)
+        self.title = " / ".join(line.strip() for _, line in numbered[:first])
+        numbered = numbered[first:]
+        header_number, header_line = numbered[0]
         counts = {d: header_line.count(d) for d in DELIMITERS}
         self.delimiter = max(DELIMITERS, key=lambda d: counts[d])
         if counts[self.delimiter] == 0:

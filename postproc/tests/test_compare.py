@@ -93,6 +93,21 @@ def test_reader_layouts(tmp_path):
     assert ReferenceTable(tab).column("T", units.FORCE).values.tolist() == [1e3, 2e3]
 
 
+def test_orcaflex_style_export(tmp_path):
+    """Values exported from an OrcaFlex time-history graph: a title line, then a
+    tab-separated header with units in parentheses (kN), then the rows."""
+    path = tmp_path / "orcaflex.txt"
+    path.write_text("Time History: Line1 Effective Tension at End B\n"
+                    "Time (s)\tLine1 Effective Tension at End B (kN)\n"
+                    "0.0\t123.5\n0.1\t124.0\n0.2\t-1.5\n")
+    table = ReferenceTable(path)
+    assert table.title == "Time History: Line1 Effective Tension at End B"
+    assert table.column("Time", units.TIME, increasing=True).values.tolist() == [0.0, 0.1, 0.2]
+    column = table.column("Line1 Effective Tension at End B", units.FORCE)
+    assert column.values.tolist() == [123.5e3, 124.0e3, -1.5e3]
+    assert column.line_numbers.tolist() == [3, 4, 5]
+
+
 @pytest.mark.parametrize("text, fragments", [
     ("", ["empty"]),
     ("# only a comment\n", ["empty"]),
