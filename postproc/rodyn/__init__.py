@@ -1,5 +1,5 @@
-"""rodyn in process (docs/python.md): a mooring system read from a MoorDyn v2 input file,
-its statics solved and its dynamics stepped with prescribed motions of its coupled
+"""rodyn in process (docs/python.md): a mooring system read from a MoorDyn v2 input file
+(or a rodyn deck with its *DYNAMIC), its statics solved and its dynamics stepped with prescribed motions of its coupled
 points, its positions, tensions and forces read as numpy arrays, all through librodyn
 (docs/capi.md) without a subprocess. ``rodyn.moordyn`` offers the function names of
 MoorDyn's PyPI package over the same library.
@@ -33,7 +33,8 @@ def _ok(code, what):
 
 
 class System:
-    """A mooring system of a MoorDyn v2 input file, driven step by step."""
+    """A mooring system of a MoorDyn v2 input file (or a rodyn deck), driven step by
+    step."""
 
     def __init__(self, path):
         self._lib = lib()

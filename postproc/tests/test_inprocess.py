@@ -435,3 +435,46 @@ def test_fixed_rod(tmp_path):
         end = md.GetLineNodePos(md.GetLine(h, line), 12)
         assert np.allclose(end, md.GetRodNodePos(rod, node), rtol=0, atol=1e-9)
     assert md.Close(h) == 0
+
+
+def test_rodyn_deck_in_process(tmp_path):
+    """A rodyn deck through librodyn (input/mooring_surge.inp, its run cut to 2 s): no
+    coupled DOF, the statics `rodyn DECK`'s bit for bit, and 40 steps of the deck's DT
+    driven by its own *MOTION the positions `rodyn DECK` writes at the same times, to
+    1e-9 m; MoorDyn's node tension refused on its cubic line (a code, not a crash)."""
+    import shutil
+    import subprocess
+    import h5py
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    src = os.path.join(os.path.dirname(__file__), "..", "..", "input")
+    shutil.copy(os.path.join(src, "mooring_leg_section.inc"), tmp_path)
+    with open(os.path.join(src, "mooring_surge.inp")) as f:
+        text = f.read().replace("TIME=120.0", "TIME=2.0")
+    deck = tmp_path / "surge.inp"
+    deck.write_text(text)
+    subprocess.run([exe, str(deck), "-o", str(tmp_path / "prog"), "--quiet"], check=True)
+    with h5py.File(tmp_path / "prog" / "results.h5") as f:
+        static = np.asarray(f["static/LEG/node_xyz"])
+    with h5py.File(tmp_path / "prog" / "dynamic.h5") as f:
+        times = np.asarray(f["dynamic/time"])
+        xyz = np.stack([np.asarray(f[f"dynamic/LEG/{c}"]) for c in "xyz"], axis=-1)
+    with rodyn.System(deck) as s:
+        assert (s.n_coupled, s.n_lines) == (0, 1)
+        s.init()
+        nodes = s.line_nodes(1)
+        assert nodes.shape == (361, 3)
+        assert np.array_equal(nodes, static.reshape(nodes.shape))
+        with pytest.raises(rodyn.RodynError):
+            s.line_tensions(1)
+        worst = 0.0
+        for k in range(1, 41):
+            s.step(np.zeros(0), np.zeros(0), 0.05)
+            frame = np.flatnonzero(np.abs(times - s.t) < 1e-9)
+            if frame.size:
+                worst = max(worst, np.abs(s.line_nodes(1) - xyz[frame[0]]).max())
+        assert s.t == pytest.approx(2.0, abs=1e-12)
+        assert 0.0 <= worst <= 1e-9
+    with pytest.raises(rodyn.RodynError):      # a deck of statics alone: no steps to take
+        rodyn.System(os.path.join(src, "mooring_catenary.inp"))

@@ -3,11 +3,13 @@
 module rodyn_capi_items
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_float, c_null_ptr, &
                                           c_associated
+   use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
    use rodyn_model, only: end_a, end_b, point_body, point_free
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, &
-                                system_ndof, system_body_state, system_point_node
+                                system_ndof, system_body_state, system_point_node, &
+                                system_tension_served
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
    implicit none
@@ -126,6 +128,10 @@ contains
       associate (s => it%sys%s)
          select case (what)
          case ('t')
+            if (.not. system_tension_served(s, it%index)) then
+               code = not_linear()
+               return
+            end if
             v = real(system_node_tension(s, it%index, int(i)), c_double)
          case ('v')
             v = real(s%state%v(:, mesh_node(s%mesh, it%index, int(i) + 1)), c_double)
@@ -157,6 +163,10 @@ contains
       if (.not. associated(it)) return
       t = 0.0_c_double
       if (it%sys%s%stage /= 1) return
+      if (.not. system_tension_served(it%sys%s, it%index)) then
+         code = not_linear()
+         return
+      end if
       n = it%sys%s%mesh%line_n_nodes(it%index) - 1
       do k = merge(0, n, top), n
          t = max(t, real(norm2(system_node_tension(it%sys%s, it%index, k)), c_double))
@@ -306,6 +316,10 @@ contains
       code = md_invalid_value
       if (.not. associated(cs)) return
       if (cs%s%stage /= 1 .or. nl > size(cs%lines)) return
+      if (.not. all([(system_tension_served(cs%s, l), l = 1, nl)])) then
+         code = not_linear()
+         return
+      end if
       do l = 1, nl
          n = cs%s%mesh%line_n_nodes(l) - 1
          t = system_node_tension(cs%s, l, n)
@@ -317,4 +331,12 @@ contains
       end do
       code = md_success
    end function fast_tens
+
+   !> MOORDYN_UNHANDLED_ERROR, and why on stderr: MoorDyn's node tension on a deck's line
+   !> of higher order or of several segments.
+   integer(c_int) function not_linear() result(code)
+      write (error_unit, '(a)') 'rodyn: error: MoorDyn''s node tension is served on lines '// &
+         'of linear elements of one section (a MoorDyn file''s), not on this deck''s line'
+      code = md_unhandled
+   end function not_linear
 end module rodyn_capi_items

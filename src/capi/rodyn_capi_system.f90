@@ -23,14 +23,15 @@ module rodyn_capi_system
    use rodyn_system_dynamics, only: failures_add, end_released
    use rodyn_timeloop, only: timeloop_state_t, timeloop_observer_t, timeloop_begin, &
                              timeloop_advance
-   use rodyn_moordyn, only: moordyn_read, md_info_t
+   use rodyn_moordyn, only: moordyn_read, moordyn_file, md_info_t
+   use rodyn_deck, only: deck_read
    use rodyn_rotation, only: axial, cross
    use rodyn_capi_bodies, only: add_body_vessels, body_pose_row, body_forces
    implicit none
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
    public :: system_node_x, system_node_tension, system_ndof, system_body_state
-   public :: system_break, system_point_node, system_end_force
+   public :: system_break, system_point_node, system_end_force, system_tension_served
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -80,8 +81,12 @@ contains
       character(len=*), intent(in) :: path            !< the MoorDyn file
       type(error_t), intent(inout) :: err             !< status
       character(len=:), allocatable :: warnings
-      call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
-                        info=sys%info)
+      if (moordyn_file(path)) then
+         call moordyn_read(path, sys%model, err, sys%notes, warnings, host=.true., &
+                           info=sys%info)
+      else
+         call deck_create(sys, path, err)
+      end if
       if (has_error(err)) return
       sys%coupled = sys%info%coupled_points
       sys%cbody = sys%info%coupled_bodies
@@ -91,6 +96,28 @@ contains
          ': error: RODS: a coupled rod is not driven through librodyn (docs/capi.md)')
       sys%stage = 0
    end subroutine system_create
+
+   !> A rodyn deck (docs/deck.md) as a system: its own *DYNAMIC steps through the host's
+   !> calls, driven by its *MOTIONs, waves and current; no coupled DOF; every point and
+   !> body of the deck as MoorDyn's points and bodies, its lines in deck order.
+   subroutine deck_create(sys, path, err)
+      type(md_system_t), intent(inout) :: sys !< the system
+      character(len=*), intent(in) :: path    !< the deck
+      type(error_t), intent(inout) :: err     !< status
+      sys%notes = ''
+      call deck_read(path, sys%model, err)
+      if (has_error(err)) return
+      if (.not. sys%model%dynamic%requested) then
+         call set_error(err, stat_input, path//': error: a deck driven through librodyn '// &
+                        'needs its *DYNAMIC (the scheme and tolerances of its steps)')
+         return
+      end if
+      allocate (sys%info%coupled_points(0), sys%info%coupled_bodies(0), &
+                sys%info%coupled_rods(0), sys%info%rod_nodes(0), sys%info%rod_ends(6, 0), &
+                sys%info%outputs(0), sys%info%output_line(0))
+      if (allocated(sys%model%points)) sys%info%n_points = size(sys%model%points)
+      if (allocated(sys%model%bodies)) sys%info%n_bodies = size(sys%model%bodies)
+   end subroutine deck_create
 
    !> The coupled bodies (6 a body: MoorDyn's pose) and points (3 a point) to x, in
    !> MoorDyn's order, the statics solved, the dynamics set up from it (t = 0). x:
@@ -393,6 +420,17 @@ contains
    !> of the two segments beside it, at an end the end segment's (MoorDyn's
    !> Line::getNodeTen). A segment is an element between nodes k and k + 1 (order 1, as
    !> a MoorDyn line is read); its tension is the cable law's at its stretch.
+   !> Whether MoorDyn's node tension (system_node_tension) is served on line l: a line of
+   !> linear elements of one section (as a MoorDyn line is read; a deck's line of higher
+   !> order or of several segments is not).
+   pure logical function system_tension_served(sys, l) result(yes)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: l              !< line
+      yes = sys%model%lines(l)%order == 1
+      if (allocated(sys%model%lines(l)%seg_section)) &
+         yes = yes .and. size(sys%model%lines(l)%seg_section) <= 1
+   end function system_tension_served
+
    function system_node_tension(sys, l, k) result(t)
       type(md_system_t), intent(in) :: sys  !< the system
       integer, intent(in) :: l              !< line
