@@ -150,6 +150,9 @@ module rodyn_model
       !> a BODY point's rod ends clamped to the body (CONNECTION=CLAMPED): they turn with
       !> it; pinned otherwise
       logical :: clamped = .false.
+      !> the direction, in body axes, a clamped end leaves the point along (its second
+      !> data line; 0: the end keeps the attitude of its line's starting shape)
+      real(wp) :: clamp_axis(3) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
    end type point_t
 

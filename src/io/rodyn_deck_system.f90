@@ -13,7 +13,7 @@ module rodyn_deck_system
                           end_a, end_b, body_fixed, element_rod, element_cable
    use rodyn_deck_lexer, only: deck_t
    use rodyn_deck_card, only: card_t, card_check_params, card_find_param, card_error, &
-                              card_check_data, param_len
+                              card_check_data, card_data_error, param_len
    use rodyn_deck_card_values, only: card_get_name, card_get_choice, card_data_reals, card_get_real
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
@@ -84,9 +84,21 @@ contains
             return
          end if
          call get_lumped_body(card, pt%mass, pt%volume, pt%cda_area, pt%ca, err)
-         call card_check_data(card, 1, 1, err, what)
+         if (.not. pt%clamped .and. card%n_data == 2) then
+            call card_data_error(card, 2, 'a second data line (the axis a clamped end '// &
+                                 'leaves the point along) is for CONNECTION=CLAMPED', err)
+            return
+         end if
+         call card_check_data(card, 1, merge(2, 1, pt%clamped), err, what)
          call card_data_reals(card, 1, 3, pt%position, err, what)
+         if (card%n_data == 2) call card_data_reals(card, 2, 3, pt%clamp_axis, err, &
+                                                    'ax, ay, az')
          if (has_error(err)) return
+         if (card%n_data == 2 .and. .not. norm2(pt%clamp_axis) > 0.0_wp) then
+            call card_data_error(card, 2, 'the axis a clamped end leaves the point along '// &
+                                 'is 0: give a direction, or no second line', err)
+            return
+         end if
          if (maxval(abs(pt%position)) > max_distance) then
             call card_error(card, 'a coordinate of '//real_str(maxval(abs(pt%position)))// &
                             ' m is not physical: a point must lie within '// &

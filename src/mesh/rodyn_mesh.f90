@@ -204,6 +204,7 @@ contains
                state%x(:, mesh%end_point_node(k, l)) + mesh%end_offset(:, k, l)
          end do
       end do
+      call clamp_axes(model, mesh, state)
       mesh%n_cable = count(mesh%elem_cable)
       mesh%damped = any(mesh%elem_damp > 0.0_wp)
       allocate (mesh%att_node(0))
@@ -264,6 +265,39 @@ contains
          end do
       end do
    end subroutine point_nodes
+
+   !> A line end clamped to a point with an axis (*POINT, CONNECTION=CLAMPED, its second
+   !> data line a, body axes; the global axes at the start) starts with its directors
+   !> turned, by the least rotation, to d3 = a/|a| at end A (the line leaves along a) and
+   !> d3 = -a/|a| at end B (it arrives against a); the clamp holds that attitude
+   !> (rodyn_junctions: junctions_clamp). Its positions are the starting shape's: the
+   !> statics bend the line to it.
+   pure subroutine clamp_axes(model, mesh, state)
+      type(model_t), intent(in) :: model     !< model
+      type(mesh_t), intent(in) :: mesh       !< mesh
+      type(state_t), intent(inout) :: state  !< the ends' directors turned
+      real(wp) :: t(3), c(3), s, co
+      integer :: l, k, ip, n
+      do l = 1, mesh%n_lines
+         do k = 1, 2
+            ip = merge(model%lines(l)%point_a, model%lines(l)%point_b, k == 1)
+            if (ip == 0) cycle
+            if (.not. (model%points(ip)%clamped .and. &
+                       norm2(model%points(ip)%clamp_axis) > 0.0_wp)) cycle
+            t = model%points(ip)%clamp_axis/norm2(model%points(ip)%clamp_axis)
+            if (k == 2) t = -t
+            n = mesh_node(mesh, l, merge(end_a, end_b, k == 1))
+            c = cross(state%d(:, 3, n), t)
+            s = norm2(c)
+            co = dot_product(state%d(:, 3, n), t)
+            if (s > 0.0_wp) then
+               state%d(:, :, n) = matmul(rotation_exp(c/s*atan2(s, co)), state%d(:, :, n))
+            else if (co < 0.0_wp) then          ! opposite: half a turn about d1
+               state%d(:, :, n) = matmul(rotation_exp(pi*state%d(:, 1, n)), state%d(:, :, n))
+            end if
+         end do
+      end do
+   end subroutine clamp_axes
 
    !> The FREE points' and bodies' nodes at the start: a point where it is, its directors
    !> the global axes; a body at its centre of gravity R + G, its directors the body's

@@ -1,11 +1,11 @@
 !> MoorDyn's rods that rodyn reads (docs/moordyn.md, "Rods"): a rod fixed to the ground
 !> (Fixed, Fix, Anchor) or moved by a host (Coupled, Vessel: held at its start, as a
 !> coupled point) is a FIXED *BODY R<ID> from its end A, and each of its ends a line is
-!> attached to (R<ID>A, R<ID>B in LINES) a *POINT on it, where the line is pinned. A line
-!> with bending stiffness (EI > 0) on a rod's end is refused: MoorDyn clamps it along the
-!> rod's axis, and rodyn's clamp (CONNECTION=CLAMPED) would hold the attitude of its
-!> starting shape. A rod that moves with the lines (Free, Pinned, Body<n>) is refused:
-!> rodyn has no rigid cylinder with its own hydrodynamics.
+!> attached to (R<ID>A, R<ID>B in LINES) a *POINT on it, where the line is pinned; a line
+!> with bending stiffness (EI > 0) is clamped there along the rod's axis, as MoorDyn
+!> clamps it (CONNECTION=CLAMPED with the axis the end leaves along). A rod that moves
+!> with the lines (Free, Pinned, Body<n>) is refused: rodyn has no rigid cylinder with its
+!> own hydrodynamics.
 module rodyn_moordyn_rods
    use rodyn_kinds, only: wp
    use rodyn_error, only: error_t, has_error
@@ -95,26 +95,29 @@ contains
       call put(d, '0.0, 0.0, 0.0', row%line)
       call put(d, '0.0, 0.0, 0.0', row%line)
       do e = 1, 2
-         call end_point(md, d, row, id, e, merge(a, b, e == 1) - a, err)
+         call end_point(md, d, row, id, e, merge(a, b, e == 1) - a, b - a, err)
       end do
    end subroutine rod
 
    !> The point of end e (1 A, 2 B) of rod id at r (body axes from end A), when a line
    !> is on it; a line that bends (its type's EI > 0) refused there.
-   subroutine end_point(md, d, row, id, e, r, err)
+   subroutine end_point(md, d, row, id, e, r, ab, err)
       type(md_file_t), intent(in) :: md     !< the MoorDyn file
       type(md_deck_t), intent(inout) :: d   !< the deck
       type(md_row_t), intent(in) :: row     !< the rod's row
       integer, intent(in) :: id             !< the rod
       integer, intent(in) :: e              !< its end
       real(wp), intent(in) :: r(3)          !< where
+      real(wp), intent(in) :: ab(3)         !< the rod from end A to end B [m]
       type(error_t), intent(inout) :: err   !< status
       character(len=:), allocatable :: pname
-      logical :: used, clamped
+      real(wp) :: axis(3)
+      logical :: used, bends, pins
       integer :: k, j, n, ee, t
       if (has_error(err)) return
       used = .false.
-      clamped = .false.
+      bends = .false.
+      pins = .false.
       do k = 1, md%sec(md_lines)%n
          associate (lr => md%sec(md_lines)%rows(k))
             if (size(lr%f) < 4) cycle
@@ -125,14 +128,19 @@ contains
                do t = 1, md%sec(md_line_types)%n
                   associate (tr => md%sec(md_line_types)%rows(t))
                      if (tr%f(1)%s /= lr%f(2)%s .or. size(tr%f) < 6) cycle
-                     if (verify(tr%f(6)%s, '0.+-eE') /= 0) clamped = .true.
+                     if (verify(tr%f(6)%s, '0.+-eE') /= 0) then
+                        bends = .true.
+                     else
+                        pins = .true.
+                     end if
                   end associate
                end do
-               if (clamped) then
+               if (bends .and. pins) then
                   call md_fail(d, md_lines, lr, 'column '//merge('AttachA', 'AttachB', j == 3)// &
-                               ': "'//lr%f(j)%s//'": a line with bending stiffness (EI > 0) '// &
-                               'on a rod''s end is not read: MoorDyn clamps it along the '// &
-                               'rod''s axis, rodyn would along its starting shape', err)
+                               ': "'//lr%f(j)%s//'": lines with and without bending '// &
+                               'stiffness on one rod end are not read (the first clamped '// &
+                               'along the rod''s axis, the others pinned); give each its end', &
+                               err)
                   return
                end if
             end do
@@ -140,8 +148,19 @@ contains
       end do
       if (.not. used) return
       pname = 'R'//int_str(id)//merge('A', 'B', e == 1)
-      call put(d, '*POINT, NAME='//pname//', TYPE=BODY, BODY=R'//int_str(id), row%line)
+      if (.not. bends) then
+         call put(d, '*POINT, NAME='//pname//', TYPE=BODY, BODY=R'//int_str(id), row%line)
+         call put(d, real_str(r(1))//', '//real_str(r(2))//', '//real_str(r(3)), row%line)
+         return
+      end if
+      ! a line that bends is clamped along the rod's axis, leaving the end outwards (MoorDyn's
+      ! Line::setEndOrientation): from end B along A to B, from end A along B to A
+      axis = merge(-ab, ab, e == 1)
+      call put(d, '*POINT, NAME='//pname//', TYPE=BODY, BODY=R'//int_str(id)// &
+               ', CONNECTION=CLAMPED', row%line)
       call put(d, real_str(r(1))//', '//real_str(r(2))//', '//real_str(r(3)), row%line)
+      call put(d, real_str(axis(1))//', '//real_str(axis(2))//', '//real_str(axis(3)), &
+               row%line)
    end subroutine end_point
 
    !> A line's end on a rod, as LINES writes it (R1A, Rod2B, any case): the rod and its

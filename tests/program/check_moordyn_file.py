@@ -22,7 +22,16 @@
    body's points hold their ends through the junctions), and the same forces on the rod's
    ends to 1e-10.
 
-Usage: check_moordyn_file.py RODYN LINES_TXT BUOY_TXT OUT_DIR. Exit 0 on success."""
+4. MoorDyn's cantilever (its tests/Mooring/BeamCantilevered.txt: a 10 m beam, EI 1e7 N m2,
+   100 kg/m in vacuum, 19 segments, clamped at a fixed rod's end B and free at the
+   other, starting 0.1 m below the rod's axis): every node within 1e-3 of the tip
+   deflection of the Euler-Bernoulli cantilever under its own weight, z = -p x^2 (6 L^2 -
+   4 x L + x^2) / (24 EI), the tip p L^4 / (8 EI) = 0.1226 m; and the same from the
+   rod's end A with the rod turned end for end (the clamp's axis leaves each end
+   outwards, as MoorDyn's Line::setEndOrientation).
+
+Usage: check_moordyn_file.py RODYN LINES_TXT BUOY_TXT OUT_DIR CANTILEVER_TXT. Exit 0 on
+success."""
 import csv
 import math
 import os
@@ -187,13 +196,40 @@ def check_rod(rodyn, out, fails):
         fails.append(f"the rod's ends and two fixed points: {dx:.1e} m, {df:.1e}")
 
 
+def check_cantilever(rodyn, cantilever, out, fails):
+    with open(cantilever) as f:
+        text = f.read()
+    turned = text.replace("-10.0 0     10.0  0.0   0     10.0", "0.0   0     10.0  -10.0 0     10.0")
+    turned = turned.replace("R1B      1", "R1A      1")
+    if turned.count("R1A") != 1 or "-10.0 0     10.0  0.0" in turned:
+        fails.append("the cantilever file is not MoorDyn's BeamCantilevered.txt")
+        return
+    p, length, ei = 100.0 * 9.80665, 10.0, 1.0e7
+    tip = p * length ** 4 / (8.0 * ei)
+    for tag, body in (("cantilever_B", text), ("cantilever_A", turned)):
+        path = os.path.join(out, tag + ".txt")
+        with open(path, "w") as f:
+            f.write(body)
+        run([rodyn, path, "-o", os.path.join(out, tag), "--quiet"])
+        with open(os.path.join(out, tag, "static_nodes.csv")) as f:
+            nodes = [(float(r["x_m"]), float(r["z_m"]) - 10.0) for r in csv.DictReader(f)
+                     if r["line"] == "L1"]
+        err = max(abs(z + p * x * x * (6 * length ** 2 - 4 * x * length + x * x)
+                      / (24.0 * ei)) for x, z in nodes) / tip
+        print(f"{tag}: {len(nodes)} nodes within {err:.1e} of the tip deflection "
+              f"{tip:.4f} m (tip {nodes[-1][1]:.5f} m)")
+        if not (len(nodes) == 20 and err <= 1e-3):
+            fails.append(f"{tag}: {err:.1e} of the tip deflection")
+
+
 def main():
-    rodyn, lines, buoy, out = sys.argv[1:5]
+    rodyn, lines, buoy, out, cantilever = sys.argv[1:6]
     os.makedirs(out, exist_ok=True)
     fails = []
     check_lines(rodyn, lines, out, fails)
     check_buoy(rodyn, buoy, out, fails)
     check_rod(rodyn, out, fails)
+    check_cantilever(rodyn, cantilever, out, fails)
     for f in fails:
         print("FAIL:", f)
     sys.exit(1 if fails else 0)
