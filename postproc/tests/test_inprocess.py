@@ -2,6 +2,7 @@
 OC3-Hywind lines (tests/decks/good/moordyn/lines.txt): counts, the coupled points where
 the file has them, the statics' forces kept by 10 steps at rest, the node arrays, and
 errors raised, never a crash."""
+import math
 import os
 
 import numpy as np
@@ -478,3 +479,36 @@ def test_rodyn_deck_in_process(tmp_path):
         assert 0.0 <= worst <= 1e-9
     with pytest.raises(rodyn.RodynError):      # a deck of statics alone: no steps to take
         rodyn.System(os.path.join(src, "mooring_catenary.inp"))
+
+
+def test_body_channels(tmp_path):
+    """A body's OUTPUTS channels (B<n>PX ... B<n>RVZ) in FILE.out: the free buoy's
+    reference point, MoorDyn's angles in degrees and the rates, as MoorDyn_GetBodyState
+    gives them, at t = 0 and after two steps; a body's acceleration refused at Create."""
+    buoy = os.path.join(os.path.dirname(LINES), "..", "..", "..", "program", "moordyn_buoy.txt")
+    with open(buoy) as f:
+        text = f.read()
+    path = tmp_path / "buoy.txt"
+    path.write_text(text.replace("FairTen2\n", "FairTen2\nB1PX B1PZ B1RY B1VZ B1RVY\n"))
+    h = md.Create(str(path))
+    assert md.Init(h, [], []) == 0
+    r0, _ = md.GetBodyState(md.GetBody(h, 1))
+    for k in range(2):
+        md.Step(h, [], [], 0.5 * k, 0.5)
+    r, rd = md.GetBodyState(md.GetBody(h, 1))
+    assert md.Close(h) == 0
+    lines = (tmp_path / "buoy.out").read_text().splitlines()
+    assert lines[0].split()[3:] == ["B1PX", "B1PZ", "B1RY", "B1VZ", "B1RVY"]
+    assert lines[1].split()[3:] == ["m", "m", "deg", "m/s", "deg/s"]
+    rows = [[float(v) for v in ln.split()] for ln in lines[2:]]
+    assert len(rows) == 3
+    for row, (rr, rrd) in ((rows[0], (r0, None)), (rows[-1], (r, rd))):
+        want = [rr[0], rr[2], math.degrees(rr[4])]
+        if rrd is not None:
+            want += [rrd[2], math.degrees(rrd[4])]
+        for got, w in zip(row[3:], want):
+            assert abs(got - w) <= 1e-7 * max(abs(w), 1e-3)
+    assert abs(rows[0][5] - math.degrees(0.0338)) < 0.01      # the statics' pitch
+    bad = tmp_path / "bad.txt"
+    bad.write_text(path.read_text().replace("B1RVY", "B1AX"))
+    assert md.Create(str(bad)) is None

@@ -10,10 +10,12 @@
 !> L<n>NB<Q> (the last node) and L<n><Q> (node 0), Q one of PX PY PZ (position), VX VY VZ
 !> (velocity), T or TEN (MoorDyn's node tension, system_node_tension); P<n><Q> of point
 !> n with Q one of PX PY PZ, FX FY FZ (the lines' force on a coupled point) and T (its
-!> size). A channel of a body, a rod, a line node's forces, or a name MoorDyn does not
-!> know is refused at its line.
+!> size); B<n><Q> of body n with Q one of PX PY PZ (its reference point), RX RY RZ
+!> (MoorDyn's angles, degrees), VX VY VZ, RVX RVY RVZ (degrees a second). A channel of a
+!> rod, of a body's acceleration or force, of a line node's forces, or a name MoorDyn does
+!> not know is refused at its line.
 module rodyn_capi_outputs
-   use rodyn_kinds, only: wp
+   use rodyn_kinds, only: wp, pi
    use rodyn_error, only: error_t, has_error, set_error, stat_input
    use rodyn_deck_text, only: field_t
    use rodyn_deck_numbers, only: int_str
@@ -21,9 +23,9 @@ module rodyn_capi_outputs
    use rodyn_outfile, only: out_file_t, outfile_create, outfile_put, outfile_flush, &
                             outfile_close
    use rodyn_mesh, only: mesh_node
-   use rodyn_model, only: end_a, end_b
    use rodyn_capi_system, only: md_system_t, system_node_x, system_node_tension, &
-                                system_forces, system_ndof
+                                system_forces, system_ndof, system_body_state, &
+                                system_point_node
    implicit none
    private
    public :: channel_t, channels_parse, out_open, out_row, out_close
@@ -31,7 +33,7 @@ module rodyn_capi_outputs
    !> One channel: what it reads.
    type :: channel_t
       character(len=:), allocatable :: name  !< as written in OUTPUTS
-      integer :: obj = 0                     !< 1 a line node, 2 a point
+      integer :: obj = 0                     !< 1 a line node, 2 a point, 3 a body
       integer :: index = 0                   !< the line or point, from 1
       integer :: node = 0                    !< the node, from 0 (-1: the last)
       character(len=3) :: q = ''             !< PX ... VZ, T, FX ... FZ
@@ -103,8 +105,14 @@ contains
                                 'T', 'TEN'])) why = 'a point''s quantity is PX, PY, PZ, '// &
                                                     'FX, FY, FZ or T in librodyn'
          if (rest == 'TEN') c%q = 'T'
-      case ('B', 'BODY', 'R', 'ROD')
-         why = 'the channels of bodies and rods are not written by librodyn (docs/capi.md)'
+      case ('B', 'BODY')
+         c%obj = 3
+         c%q = rest
+         if (.not. any(rest == [character(len=3) :: 'PX', 'PY', 'PZ', 'RX', 'RY', 'RZ', &
+                                'VX', 'VY', 'VZ', 'RVX', 'RVY', 'RVZ'])) why = 'a body''s '// &
+            'quantity is PX, PY, PZ, RX, RY, RZ, VX, VY, VZ, RVX, RVY or RVZ in librodyn'
+      case ('R', 'ROD')
+         why = 'the channels of rods are not written by librodyn (docs/capi.md)'
       case default
          why = 'not a channel: L<n>..., P<n>..., FairTen<n>, AnchTen<n>'
       end select
@@ -153,6 +161,8 @@ contains
          nn = sys%model%lines(c%index)%n_elements*sys%model%lines(c%index)%order
          if (c%node > nn) why = 'no node '//int_str(c%node)//' on line '// &
                                 int_str(c%index)//' (0 to '//int_str(nn)//')'
+      else if (c%obj == 3) then
+         if (c%index < 1 .or. c%index > sys%n_bodies) why = 'no body '//int_str(c%index)
       else if (c%index < 1 .or. c%index > sys%n_points) then
          why = 'no point '//int_str(c%index)
       end if
@@ -193,11 +203,15 @@ contains
       do k = 1, size(ch)
          write (cell, '(a20)') ch(k)%name
          head = head//cell
-         select case (ch(k)%q(1:1))
-         case ('P')
+         select case (ch(k)%q(1:2))
+         case ('PX', 'PY', 'PZ')
             write (cell, '(a20)') 'm'
-         case ('V')
+         case ('VX', 'VY', 'VZ')
             write (cell, '(a20)') 'm/s'
+         case ('RX', 'RY', 'RZ')
+            write (cell, '(a20)') 'deg'
+         case ('RV')
+            write (cell, '(a20)') 'deg/s'
          case default
             write (cell, '(a20)') 'N'
          end select
@@ -245,9 +259,9 @@ contains
       type(md_system_t), intent(in) :: sys  !< the system
       type(channel_t), intent(in) :: c      !< the channel
       real(wp), intent(in) :: fc(:)         !< the forces on the coupled points
-      real(wp) :: x(3)
+      real(wp) :: x(3), r(6), rd(6)
       integer :: node, k, j
-      j = index('XYZ', c%q(2:2))
+      j = index('XYZ', c%q(len_trim(c%q):len_trim(c%q)))
       if (c%obj == 1) then
          node = c%node
          if (node < 0) node = sys%mesh%line_n_nodes(c%index) - 1
@@ -258,6 +272,18 @@ contains
             x = sys%state%v(:, mesh_node(sys%mesh, c%index, node + 1))
          case default
             x = system_node_tension(sys, c%index, node)
+         end select
+      else if (c%obj == 3) then          ! MoorDyn's angles and their rates in degrees
+         call system_body_state(sys, c%index, r, rd)
+         select case (c%q(1:2))
+         case ('PX', 'PY', 'PZ')
+            x = r(1:3)
+         case ('RX', 'RY', 'RZ')
+            x = r(4:6)*180.0_wp/pi
+         case ('VX', 'VY', 'VZ')
+            x = rd(1:3)
+         case default
+            x = rd(4:6)*180.0_wp/pi
          end select
       else
          k = findloc(sys%coupled, c%index, dim=1)
@@ -275,23 +301,15 @@ contains
       end if
    end function value_of
 
-   !> Where point ip is: the node of a line end on it (its start position when none).
+   !> Where point ip is: the node of a line end still on it (its start position when none).
    function point_x(sys, ip) result(x)
       type(md_system_t), intent(in) :: sys  !< the system
       integer, intent(in) :: ip             !< the point
       real(wp) :: x(3)
-      integer :: l
+      integer :: node
       x = sys%model%points(ip)%position
-      do l = 1, size(sys%model%lines)
-         if (sys%model%lines(l)%point_a == ip) then
-            x = sys%state%x(:, mesh_node(sys%mesh, l, end_a))
-            return
-         end if
-         if (sys%model%lines(l)%point_b == ip) then
-            x = sys%state%x(:, mesh_node(sys%mesh, l, end_b))
-            return
-         end if
-      end do
+      node = system_point_node(sys, ip)
+      if (node > 0) x = sys%state%x(:, node)
    end function point_x
 
    !> The file closed.
