@@ -21,6 +21,7 @@ _SIGNATURES = {
     "MoorDyn_SetVerbosity": (ctypes.c_int, [_P, ctypes.c_int]),
     "MoorDyn_SetLogLevel": (ctypes.c_int, [_P, ctypes.c_int]),
     "MoorDyn_Init": (ctypes.c_int, [_P, _D, _D]),
+    "MoorDyn_Init_NoIC": (ctypes.c_int, [_P, _D, _D]),
     "MoorDyn_Step": (ctypes.c_int, [_P, _D, _D, _D, _D, _D]),
     "MoorDyn_Close": (ctypes.c_int, [_P]),
     "MoorDyn_GetNumberLines": (ctypes.c_int, [_P, _U]),

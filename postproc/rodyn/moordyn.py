@@ -9,7 +9,8 @@ import ctypes
 
 from ._lib import lib, doubles
 
-__all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Step", "Close",
+__all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Init_NoIC",
+           "Step", "Close",
            "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetNumberBodies",
            "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens", "BreakLine",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
@@ -53,6 +54,11 @@ def SetLogLevel(instance, verbosity):
 def Init(instance, x, v):
     """Coupled points at x, the statics solved: 0 on success, else MoorDyn's code."""
     return lib().MoorDyn_Init(instance, doubles(list(x)), doubles(list(v)))
+
+
+def Init_NoIC(instance, x, v):
+    """As Init, without the statics: the dynamics start from the lines' starting shapes."""
+    return lib().MoorDyn_Init_NoIC(instance, doubles(list(x)), doubles(list(v)))
 
 
 def Step(instance, x, v, t, dt):

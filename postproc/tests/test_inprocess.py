@@ -512,3 +512,38 @@ def test_body_channels(tmp_path):
     bad = tmp_path / "bad.txt"
     bad.write_text(path.read_text().replace("B1RVY", "B1AX"))
     assert md.Create(str(bad)) is None
+
+
+def test_init_noic_pendulum():
+    """MoorDyn_Init_NoIC on MoorDyn's pendulum (tests/decks/good/moordyn/pendulum.txt: a
+    point of 1e5 kg held 10 m aside, 100 m down, on a 100.5 m line of water's density):
+    the mass starts where the file puts it, not at its equilibrium, and swings with the
+    period of the pendulum, 2 pi (l/g)^(1/2) with l the line stretched by M g/EA, times
+    (1 + theta0^2/16) for its amplitude and (1 + m/(3 M))^(1/2) for the line's mass m
+    (no weight in water): 20.163 s, within 1e-3 over four swings; its length within 1 %
+    of the start's (MoorDyn's pendulum.cpp bound)."""
+    path = os.path.join(os.path.dirname(LINES), "pendulum.txt")
+    h = md.Create(path)
+    p = md.GetPoint(h, 2)
+    assert md.Init_NoIC(h, [], []) == 0
+    x0 = md.GetPointPos(p)
+    assert x0 == (10.0, 0.0, -100.0)
+    big_m, g, ea, unstr, m_line = 1.0e5, 9.80665, 1.0e9, 100.5, 7.85398 * 100.5
+    length = unstr * (1.0 + big_m * g / ea)
+    theta0 = math.atan(10.0 / 100.0)
+    period = (2.0 * math.pi * math.sqrt(length / g) * (1.0 + theta0 ** 2 / 16.0)
+              * math.sqrt(1.0 + m_line / (3.0 * big_m)))
+    l0 = math.hypot(x0[0], x0[2])
+    dt, t, prev, crossings = period / 100.0, 0.0, x0, []
+    for _ in range(460):
+        md.Step(h, [], [], t, dt)
+        t += dt
+        q = md.GetPointPos(p)
+        assert abs(math.hypot(q[0], q[2]) - l0) <= 0.01 * l0
+        if prev[0] > 0.0 >= q[0]:
+            crossings.append(t - dt * q[0] / (q[0] - prev[0]))
+        prev = q
+    assert md.Close(h) == 0
+    assert len(crossings) == 5
+    for a, b in zip(crossings, crossings[1:]):
+        assert abs((b - a) - period) <= 1e-3 * period

@@ -98,6 +98,26 @@ contains
       type(c_ptr), value :: h               !< system
       type(c_ptr), value :: x, xd           !< const double* (the coupled DOFs)
       integer(c_int) :: code
+      code = init_system(h, x, xd, .false.)
+   end function md_init
+
+   !> MoorDyn_Init_NoIC: as MoorDyn_Init without the statics: the dynamics start at rest
+   !> from the lines' starting shapes (catenaries between their ends' points, docs/
+   !> systems.md), the free points and bodies where the file puts them.
+   function md_init_noic(h, x, xd) result(code) bind(c, name='MoorDyn_Init_NoIC')
+      type(c_ptr), value :: h               !< system
+      type(c_ptr), value :: x, xd           !< const double* (the coupled DOFs)
+      integer(c_int) :: code
+      code = init_system(h, x, xd, .true.)
+   end function md_init_noic
+
+   !> The system of h initialised at x (the velocities xd are not used: a run starts at
+   !> rest; MoorDyn asks for both), with or without the statics; FILE.out opened.
+   function init_system(h, x, xd, no_statics) result(code)
+      type(c_ptr), intent(in) :: h          !< system
+      type(c_ptr), intent(in) :: x, xd      !< const double* (the coupled DOFs)
+      logical, intent(in) :: no_statics     !< start from the starting shapes
+      integer(c_int) :: code
       type(capi_system_t), pointer :: cs
       real(c_double), pointer :: xp(:)
       type(error_t) :: err
@@ -107,20 +127,19 @@ contains
       if (.not. associated(cs)) return
       if (cs%s%stage /= 0) return
       n = system_ndof(cs%s)
-      ! (the velocities are not used: the statics start at rest; MoorDyn asks for both)
       if (n > 0 .and. .not. (c_associated(x) .and. c_associated(xd))) return
       if (n > 0) then
          call c_f_pointer(x, xp, [n])
-         call system_init(cs%s, real(xp, wp), err)
+         call system_init(cs%s, real(xp, wp), err, no_statics)
       else
-         call system_init(cs%s, [real(wp) ::], err)
+         call system_init(cs%s, [real(wp) ::], err, no_statics)
       end if
       if (size(cs%ch) > 0 .and. .not. has_error(err)) then
          call out_open(cs%out, cs%path, cs%ch, cs%write_units, err)
          if (.not. has_error(err)) call out_row(cs%out, cs%s, cs%ch, err)
       end if
       code = code_of(err)
-   end function md_init
+   end function init_system
 
    !> MoorDyn_Step: from *t with the coupled points from x at velocities xd, *dt on;
    !> f the lines' forces on them at the end, *t advanced.

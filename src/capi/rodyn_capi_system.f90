@@ -17,7 +17,7 @@ module rodyn_capi_system
                           point_body, body_fixed
    use rodyn_mesh, only: mesh_t, mesh_build, mesh_node
    use rodyn_state, only: state_t
-   use rodyn_statics, only: static_problem_t, statics_run
+   use rodyn_statics, only: static_problem_t, statics_run, statics_start_forces
    use rodyn_results, only: run_summary_t, step_log_t
    use rodyn_dynamics, only: dynamic_problem_t, dynamics_setup
    use rodyn_system_dynamics, only: failures_add, end_released
@@ -123,12 +123,16 @@ contains
    !> MoorDyn's order, the statics solved, the dynamics set up from it (t = 0). x:
    !> MoorDyn_Init's positions; their velocities are not used (the statics start at
    !> rest). A body turned at Init is refused (rodyn's bodies start with the global axes).
-   subroutine system_init(sys, x, err)
+   subroutine system_init(sys, x, err, no_statics)
       type(md_system_t), intent(inout), target :: sys !< the system
       real(wp), intent(in) :: x(:)                    !< (system_ndof) coupled DOFs
       type(error_t), intent(inout) :: err             !< status
+      !> start the dynamics from the lines' starting shapes, the points and bodies where the
+      !> file has them, without the statics (MoorDyn_Init_NoIC)
+      logical, intent(in), optional :: no_statics
       type(static_problem_t), allocatable :: sp
       integer :: i, ip, nm, nb
+      logical :: solve
       nb = 6*size(sys%cbody)
       do i = 1, size(sys%cbody)
          if (any(abs(x(6*i - 2:6*i)) > 1.0e-12_wp)) then
@@ -150,7 +154,13 @@ contains
       call mesh_build(sys%model, sys%mesh, sys%state, err, initial_shape=.true.)
       if (has_error(err)) return
       allocate (sp)
-      call statics_run(sp, sys%model, sys%mesh, sys%state, sys%summary, err, -1)
+      solve = .true.
+      if (present(no_statics)) solve = .not. no_statics
+      if (solve) then
+         call statics_run(sp, sys%model, sys%mesh, sys%state, sys%summary, err, -1)
+      else
+         call statics_start_forces(sp, sys%model, sys%mesh, sys%state)
+      end if
       if (has_error(err)) then
          sys%stage = -1
          return

@@ -58,6 +58,7 @@ module rodyn_statics
    implicit none
    private
    public :: static_problem_t, statics_setup, statics_solve, statics_run, static_set_load_factor
+   public :: statics_start_forces
 
    !> The static problem with its workspace (allocated once in statics_setup).
    type, extends(rod_problem_t) :: static_problem_t
@@ -456,4 +457,19 @@ contains
       call system_clock(t1)
       summary%wall_time = real(t1 - t0, wp)/real(rate, wp)
    end subroutine statics_run
+
+   !> The support forces (prob%r) of the start state with every load in full, without
+   !> solving: a run that starts its dynamics from the lines' starting shapes (a host's
+   !> MoorDyn_Init_NoIC) reads them until its first step. docs/theory.md eq. (108) at
+   !> lambda = 1.
+   subroutine statics_start_forces(prob, model, mesh, state)
+      type(static_problem_t), intent(inout) :: prob    !< problem (r set)
+      type(model_t), intent(in) :: model               !< model
+      type(mesh_t), intent(in), target :: mesh         !< mesh
+      type(state_t), intent(in), target :: state       !< the start state
+      type(error_t) :: nerr
+      call statics_setup(prob, model, mesh, state)
+      call static_set_load_factor(prob, 1.0_wp, 1.0_wp)
+      call prob%evaluate(.false., nerr)
+   end subroutine statics_start_forces
 end module rodyn_statics
