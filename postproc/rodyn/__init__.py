@@ -131,6 +131,28 @@ class System:
         """(nodes, 3) MoorDyn's tension vectors of line's nodes [N] (docs/capi.md)."""
         return self._node_vectors(line, "MoorDyn_GetLineNodeTen")
 
+    def record(self, path):
+        """Append the nodes of every line now to the CSV file path (its header written
+        when it is new): t_s, line, node, x_m, y_m, z_m, tension_N (MoorDyn's node tension,
+        empty on a line it is not served on: docs/capi.md); values as Python writes them,
+        to the last bit."""
+        import csv
+        import os
+        new = not os.path.exists(path) or os.path.getsize(path) == 0
+        with open(path, "a", newline="") as f:
+            w = csv.writer(f)
+            if new:
+                w.writerow(["t_s", "line", "node", "x_m", "y_m", "z_m", "tension_N"])
+            for line in range(1, self.n_lines + 1):
+                xyz = self.line_nodes(line)
+                try:
+                    ten = np.linalg.norm(self.line_tensions(line), axis=1)
+                except RodynError:
+                    ten = [None] * len(xyz)
+                for k, (x, tk) in enumerate(zip(xyz, ten)):
+                    w.writerow([repr(self.t), line, k, *(repr(float(c)) for c in x),
+                                "" if tk is None else repr(float(tk))])
+
     def _node_vectors(self, line, getter):
         h = self._item("Line", line)
         n = ctypes.c_uint(0)

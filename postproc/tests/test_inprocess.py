@@ -443,6 +443,7 @@ def test_rodyn_deck_in_process(tmp_path):
     coupled DOF, the statics `rodyn DECK`'s bit for bit, and 40 steps of the deck's DT
     driven by its own *MOTION the positions `rodyn DECK` writes at the same times, to
     1e-9 m; MoorDyn's node tension refused on its cubic line (a code, not a crash)."""
+    import csv
     import shutil
     import subprocess
     import h5py
@@ -469,6 +470,10 @@ def test_rodyn_deck_in_process(tmp_path):
         assert np.array_equal(nodes, static.reshape(nodes.shape))
         with pytest.raises(rodyn.RodynError):
             s.line_tensions(1)
+        s.record(tmp_path / "deck_nodes.csv")
+        with open(tmp_path / "deck_nodes.csv") as f:
+            rows = list(csv.DictReader(f))
+        assert len(rows) == 361 and all(r["tension_N"] == "" for r in rows)
         worst = 0.0
         for k in range(1, 41):
             s.step(np.zeros(0), np.zeros(0), 0.05)
@@ -547,3 +552,25 @@ def test_init_noic_pendulum():
     assert len(crossings) == 5
     for a, b in zip(crossings, crossings[1:]):
         assert abs((b - a) - period) <= 1e-3 * period
+
+
+def test_record(tmp_path):
+    """System.record: the nodes of every line appended to a CSV at each call, read back
+    equal to the arrays, to the bit (the tension left empty on a deck's cubic line:
+    test_rodyn_deck_in_process)."""
+    import csv
+    out = tmp_path / "nodes.csv"
+    with rodyn.System(LINES) as s:
+        x = s.coupled_positions()
+        s.init(x)
+        s.record(out)
+        s.step(x, np.zeros(9), 0.5)
+        s.record(out)
+        want = s.line_nodes(2)
+        ten = np.linalg.norm(s.line_tensions(2), axis=1)
+    with open(out) as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 2 * 3 * 21
+    last = [r for r in rows if r["t_s"] == "0.5" and r["line"] == "2"]
+    assert np.array_equal([[float(r[k]) for k in ("x_m", "y_m", "z_m")] for r in last], want)
+    assert np.array_equal([float(r["tension_N"]) for r in last], ten)
