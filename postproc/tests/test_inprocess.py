@@ -234,7 +234,10 @@ def test_free_body_state(tmp_path):
     exe = os.environ.get("RODYN_EXE")
     if not exe:
         pytest.skip("RODYN_EXE not set")
-    buoy = os.path.join(os.path.dirname(LINES), "..", "..", "..", "program", "moordyn_buoy.txt")
+    src = os.path.join(os.path.dirname(LINES), "..", "..", "..", "program", "moordyn_buoy.txt")
+    buoy = str(tmp_path / "moordyn_buoy.txt")    # (librodyn writes its .out beside it)
+    with open(src) as f, open(buoy, "w") as g:
+        g.write(f.read())
     subprocess.run([exe, buoy, "-o", str(tmp_path / "buoy"), "--quiet"], check=True)
     with open(tmp_path / "buoy" / "static_bodies.csv") as f:
         row = next(csv.DictReader(f))

@@ -8,6 +8,7 @@ module rodyn_capi_first
    use rodyn_capi, only: md_create, md_init, md_step, md_close, md_get_line, md_get_point
    use rodyn_capi_items, only: line_fair_ten, fast_tens, point_pos, point_force, node_pos
    use rodyn_capi_handles, only: md_success, md_unhandled
+   use rodyn_capi_wavekin, only: md_wk_init, md_wk_coords, md_wk_set
    implicit none
    private
 
@@ -17,23 +18,6 @@ module rodyn_capi_first
    !> The one system of MoorDyn's first API.
    type(c_ptr), save :: old_api = c_null_ptr
 
-   interface
-      integer(c_int) function ext_wave_init(h, n) bind(c, name='MoorDyn_ExternalWaveKinInit')
-         import :: c_ptr, c_int
-         type(c_ptr), value :: h
-         integer(c_int), intent(out) :: n
-      end function ext_wave_init
-      integer(c_int) function ext_wave_coords(h, r) &
-         bind(c, name='MoorDyn_ExternalWaveKinGetCoordinates')
-         import :: c_ptr, c_int
-         type(c_ptr), value :: h, r
-      end function ext_wave_coords
-      integer(c_int) function ext_wave_set(h, u, ud, t) bind(c, name='MoorDyn_ExternalWaveKinSet')
-         import :: c_ptr, c_int, c_double
-         type(c_ptr), value :: h, u, ud
-         real(c_double), value :: t
-      end function ext_wave_set
-   end interface
 
 contains
 
@@ -72,13 +56,13 @@ contains
       integer(c_int) :: n
       old_wave_init = 0
       if (.not. c_associated(old_api)) return
-      if (ext_wave_init(old_api, n) == md_success) old_wave_init = n
+      if (md_wk_init(old_api, n) == md_success) old_wave_init = n
    end function old_wave_init
 
    subroutine old_wave_coords(r) bind(c, name='getWaveKinCoordinates')
       type(c_ptr), value :: r               !< double[]
       if (c_associated(old_api)) then
-         if (ext_wave_coords(old_api, r) /= md_success) return
+         if (md_wk_coords(old_api, r) /= md_success) return
       end if
    end subroutine old_wave_coords
 
@@ -86,7 +70,7 @@ contains
       type(c_ptr), value :: u, ud           !< const double[], const double[]
       real(c_double), value :: t            !< time [s]
       if (c_associated(old_api)) then
-         if (ext_wave_set(old_api, u, ud, t) /= md_success) return
+         if (md_wk_set(old_api, u, ud, t) /= md_success) return
       end if
    end subroutine old_wave_set
 

@@ -10,6 +10,7 @@ module rodyn_capi_getters
    use rodyn_mesh, only: mesh_node
    use rodyn_system_dynamics, only: end_released
    use rodyn_capi_system, only: system_body_state, system_point_node, system_end_force
+   use rodyn_capi_items, only: line_id
    use rodyn_capi_handles, only: capi_item_t, item_of, md_success, md_invalid_value, &
                                  md_unhandled
    use, intrinsic :: iso_fortran_env, only: error_unit
@@ -222,12 +223,7 @@ contains
       type(c_ptr), value :: h               !< rod
       integer(c_int), intent(out) :: id     !< its ID
       integer(c_int) :: code
-      type(capi_item_t), pointer :: it
-      it => item_of(h)
-      code = md_invalid_value
-      if (.not. associated(it)) return
-      id = int(it%index, c_int)
-      code = md_success
+      code = line_id(h, id)
    end function rod_id
 
    function rod_type(h, t) result(code) bind(c, name='MoorDyn_GetRodType')

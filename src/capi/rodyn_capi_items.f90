@@ -5,17 +5,17 @@ module rodyn_capi_items
                                           c_associated
    use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
-   use rodyn_model, only: end_a, end_b, point_body, point_free
+   use rodyn_model, only: end_a, end_b, point_free
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, &
-                                system_ndof, system_body_state, system_point_node, &
+                                system_ndof, system_body_state, system_point_x, &
                                 system_tension_served
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
    implicit none
    private
 
-   public :: line_fair_ten, fast_tens, point_pos, point_force, node_pos
+   public :: line_fair_ten, fast_tens, point_pos, point_force, node_pos, line_id
 
 contains
 
@@ -259,22 +259,10 @@ contains
       real(c_double), intent(out) :: pos(3) !< position [m]
       integer(c_int) :: code
       type(capi_item_t), pointer :: it
-      integer :: node
       it => item_of(h)
       code = md_invalid_value
       if (.not. associated(it)) return
-      pos = 0.0_c_double
-      associate (s => it%sys%s)
-         if (s%model%points(it%index)%kind == point_body) then
-            pos = real(s%model%points(it%index)%global, c_double)
-         else
-            pos = real(s%model%points(it%index)%position, c_double)
-         end if
-         if (s%stage == 1) then
-            node = system_point_node(s, it%index)
-            if (node > 0) pos = real(s%state%x(:, node), c_double)
-         end if
-      end associate
+      pos = real(system_point_x(it%sys%s, it%index), c_double)
       code = md_success
    end function point_pos
 

@@ -25,7 +25,7 @@ module rodyn_capi_outputs
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: md_system_t, system_node_x, system_node_tension, &
                                 system_forces, system_ndof, system_body_state, &
-                                system_point_node
+                                system_point_x
    implicit none
    private
    public :: channel_t, channels_parse, out_open, out_row, out_close
@@ -291,7 +291,7 @@ contains
             x = 0.0_wp
             if (k > 0) x = fc(3*k - 2:3*k)
          else
-            x = point_x(sys, c%index)
+            x = system_point_x(sys, c%index)
          end if
       end if
       if (j > 0) then
@@ -301,16 +301,6 @@ contains
       end if
    end function value_of
 
-   !> Where point ip is: the node of a line end still on it (its start position when none).
-   function point_x(sys, ip) result(x)
-      type(md_system_t), intent(in) :: sys  !< the system
-      integer, intent(in) :: ip             !< the point
-      real(wp) :: x(3)
-      integer :: node
-      x = sys%model%points(ip)%position
-      node = system_point_node(sys, ip)
-      if (node > 0) x = sys%state%x(:, node)
-   end function point_x
 
    !> The file closed.
    subroutine out_close(f, err)

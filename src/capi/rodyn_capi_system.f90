@@ -31,7 +31,8 @@ module rodyn_capi_system
    private
    public :: md_system_t, system_create, system_init, system_step, system_forces
    public :: system_node_x, system_node_tension, system_ndof, system_body_state
-   public :: system_break, system_point_node, system_end_force, system_tension_served
+   public :: system_break, system_point_node, system_point_x, system_end_force
+   public :: system_tension_served
 
    !> What the time loop hands a host-driven run: the step forces of the last two steps,
    !> from which the forces at the end of the step are extrapolated (as the program's
@@ -392,6 +393,19 @@ contains
       end do
       node = 0
    end function system_point_node
+
+   !> Where point ip is [m]: the node of a line end still on it once initialised, else
+   !> where the file puts it (global axes).
+   function system_point_x(sys, ip) result(x)
+      type(md_system_t), intent(in) :: sys  !< the system
+      integer, intent(in) :: ip             !< the point
+      real(wp) :: x(3)
+      integer :: node
+      x = sys%model%points(ip)%global
+      if (sys%stage /= 1) return
+      node = system_point_node(sys, ip)
+      if (node > 0) x = sys%state%x(:, node)
+   end function system_point_x
 
    !> MoorDyn's state of body ib: its reference point and angles r, p, y (its orientation
    !> Q = Rx(r) Ry(p) Rz(y), the directors of its node), and their rates: the velocity of

@@ -8,17 +8,17 @@
 !> (fixed points, rods, bodies) are accepted and not used: rodyn's rods are fixed, a free
 !> body with WaveKin 1 is refused when read.
 module rodyn_capi_wavekin
-   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_loc, c_f_pointer, &
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_double, c_f_pointer, &
                                           c_associated
    use, intrinsic :: iso_fortran_env, only: error_unit
    use rodyn_kinds, only: wp
    use rodyn_mesh, only: mesh_node
    use rodyn_water, only: water_set_external
-   use rodyn_capi_system, only: md_system_t, system_body_state
-   use rodyn_capi_items, only: point_pos
+   use rodyn_capi_system, only: md_system_t, system_body_state, system_point_x
    use rodyn_capi_handles, only: capi_system_t, system_of, md_success, md_invalid_value
    implicit none
    private
+   public :: md_wk_init, md_wk_coords, md_wk_set
 
 contains
 
@@ -99,7 +99,7 @@ contains
             j = j + s%info%rod_nodes(q)
          end do
          do q = 1, s%n_points
-            if (point_pos(c_loc(cs%points(q)), rp(:, j + q)) /= md_success) return
+            rp(:, j + q) = real(system_point_x(s, q), c_double)
          end do
          j = j + s%n_points + 1
          rp(:, j) = 0.0_c_double               ! the ground

@@ -59,9 +59,9 @@ module rodyn_water
       real(wp), allocatable :: att_ca(:)           !< (na) added-mass coefficient [-]
       type(wave_field_t) :: field                  !< the waves (field%n = 0: none)
       !> the water's velocity and acceleration at the nodes given by a host program
-      !> (water_set_external; MoorDyn's external kinematics): used instead of the waves
+      !> (water_set_external; MoorDyn's external kinematics), held in wkin instead of
+      !> the waves'
       logical :: external = .false.
-      real(wp), allocatable :: ext(:, :)           !< (6, nn) velocity, acceleration
       logical :: wave_on = .false.                 !< wkin holds this step's kinematics
       real(wp), allocatable :: wkin(:, :)          !< (7, nn) per node: wave velocity
                                                    !< [m/s], acceleration [m/s2], eta [m]
@@ -161,11 +161,7 @@ contains
                    .and. present(h)
       wl%env%wave = wl%wave_on
       if (.not. wl%wave_on) return
-      if (wl%external) then            ! a host's: held over the step, at the still level
-         wl%wkin(1:6, :) = wl%ext
-         wl%wkin(7, :) = 0.0_wp
-         return
-      end if
+      if (wl%external) return          ! a host's, in wkin (water_set_external)
       do node = 1, size(wl%wkin, 2)
          call wave_kinematics(wl%field, x(:, node) + h*v(:, node), t, wl%wkin(7, node), &
                               wl%wkin(1:3, node), wl%wkin(4:6, node))
@@ -179,9 +175,9 @@ contains
       type(water_loads_t), intent(inout) :: wl       !< loads
       real(wp), intent(in) :: ext(:, :)              !< (6, nn) [m/s, m/s2]
       wl%external = .true.
-      wl%ext = ext
       if (.not. allocated(wl%wkin)) allocate (wl%wkin(n_wk, size(ext, 2)))
-      wl%wkin = 0.0_wp
+      wl%wkin(1:6, :) = ext            ! held over the steps, at the still level
+      wl%wkin(7, :) = 0.0_wp
    end subroutine water_set_external
 
    !> Element forces fh (water) and fs (seabed) on the p + 1 nodes and, if want_k, the
