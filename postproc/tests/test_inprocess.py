@@ -173,14 +173,10 @@ def test_api_statics_are_the_programs(tmp_path):
             assert prog.shape == mine.shape and np.array_equal(prog, mine), line
 
 
-def test_coupled_body_is_its_points(tmp_path):
-    """A coupled body (6 DOFs: MoorDyn's pose, orientation Rx(r) Ry(p) Rz(y)) carrying the
-    OC3-Hywind fairleads as Body1 points gives, after 12 steps of a surge, sway, heave,
-    roll, pitch and yaw motion, the force and moment about its reference point that the
-    same fairleads as coupled points, moved to the body's pose at every step end, give
-    summed: to 1e-7 (measured 5.2e-9; the Newton tolerance is 1e-8)."""
-    text = open(LINES).read()
-    body = text.replace(
+def lines_on_body(text):
+    """The OC3-Hywind lines file with its three fairleads as points of a coupled body
+    (reference point at the fairleads' height, -70 m)."""
+    return text.replace(
         "4     Vessel    5.2     0.0     -70.0", "4     Body1     5.2     0.0     0.0  ").replace(
         "5     Vessel    -2.6    4.5     -70.0", "5     Body1     -2.6    4.5     0.0  ").replace(
         "6     Vessel    -2.6    -4.5    -70.0", "6     Body1     -2.6    -4.5    0.0  ").replace(
@@ -188,6 +184,16 @@ def test_coupled_body_is_its_points(tmp_path):
         "---------------------- BODIES ----\nID Att X0 Y0 Z0 r0 p0 y0 M CG I V CdA Ca\n"
         "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kgm2) (m3) (m2) (-)\n"
         "1 Coupled 0 0 -70 0 0 0 0 0 0 0 0 0\n---------------------- POINT PROPERTIES")
+
+
+def test_coupled_body_is_its_points(tmp_path):
+    """A coupled body (6 DOFs: MoorDyn's pose, orientation Rx(r) Ry(p) Rz(y)) carrying the
+    OC3-Hywind fairleads as Body1 points gives, after 12 steps of a surge, sway, heave,
+    roll, pitch and yaw motion, the force and moment about its reference point that the
+    same fairleads as coupled points, moved to the body's pose at every step end, give
+    summed: to 1e-7 (measured 5.2e-9; the Newton tolerance is 1e-8)."""
+    text = open(LINES).read()
+    body = lines_on_body(text)
     (tmp_path / "body.txt").write_text(body)
     hb, hp = md.Create(str(tmp_path / "body.txt")), md.Create(LINES)
     assert (md.NCoupledDOF(hb), md.NCoupledDOF(hp)) == (6, 9)
@@ -439,6 +445,49 @@ def test_fixed_rod(tmp_path):
         end = md.GetLineNodePos(md.GetLine(h, line), 12)
         assert np.allclose(end, md.GetRodNodePos(rod, node), rtol=0, atol=1e-9)
     assert md.Close(h) == 0
+
+
+def test_host_deck_is_its_file(tmp_path):
+    """A rodyn deck whose points and bodies have HOST=YES is driven through librodyn as
+    the MoorDyn file it was written from (`rodyn --to-deck`, a *DYNAMIC added): the same
+    coupled DOFs, and after 10 steps of a surge and heave the same forces, bit for bit,
+    for the OC3-Hywind lines' three coupled points and for their fairleads on a coupled
+    body."""
+    import subprocess
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    text = open(LINES).read()
+    body = lines_on_body(text)
+    (tmp_path / "points.txt").write_text(text)
+    (tmp_path / "body.txt").write_text(body)
+    for name, x0 in [("points", [5.2, 0, -70, -2.6, 4.5, -70, -2.6, -4.5, -70]),
+                     ("body", [0, 0, -70, 0, 0, 0])]:
+        md_file = str(tmp_path / f"{name}.txt")
+        deck = subprocess.run([exe, "--to-deck", md_file], check=True, capture_output=True,
+                              text=True).stdout
+        assert deck.count("HOST=YES") == (3 if name == "points" else 1)
+        deck = deck.replace("*OUTPUT,", "*DYNAMIC, DT=1.0, TIME=1.0e7\n*OUTPUT,")
+        (tmp_path / f"{name}.inp").write_text(deck)
+        hf, hd = md.Create(md_file), md.Create(str(tmp_path / f"{name}.inp"))
+        n = len(x0)
+        assert md.NCoupledDOF(hf) == md.NCoupledDOF(hd) == n
+        assert md.Init(hf, x0, [0.0] * n) == 0 and md.Init(hd, x0, [0.0] * n) == 0
+        dt = 0.5
+        for k in range(10):
+            x = np.array(x0, dtype=float)
+            v = np.zeros(n)
+            for i in range(0, n if name == "points" else 3, 3):
+                x[i] += 2.0 * np.sin(0.3 * k * dt)
+                x[i + 2] += 0.5 * np.sin(0.3 * k * dt)
+                v[i] = 2.0 * 0.3 * np.cos(0.3 * k * dt)
+                v[i + 2] = 0.5 * 0.3 * np.cos(0.3 * k * dt)
+            ff = md.Step(hf, list(x), list(v), k * dt, dt)
+            fd = md.Step(hd, list(x), list(v), k * dt, dt)
+            assert np.array_equal(np.asarray(ff), np.asarray(fd))
+        assert np.abs(np.asarray(ff)).max() > 1e5
+        md.Close(hf)
+        md.Close(hd)
 
 
 def test_rodyn_deck_in_process(tmp_path):

@@ -153,6 +153,9 @@ module rodyn_model
       !> the direction, in body axes, a clamped end leaves the point along (its second
       !> data line; 0: the end keeps the attitude of its line's starting shape)
       real(wp) :: clamp_axis(3) = 0.0_wp
+      !> a FIXED point a host program moves through librodyn (HOST=YES: a coupled point of
+      !> MoorDyn's C API); held where it is in a run of the deck itself
+      logical :: host = .false.
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *POINT card
    end type point_t
 
@@ -196,6 +199,9 @@ module rodyn_model
       !> water), and C_r1..3 [N m s2], the moment -C_ri |w_i| w_i (w the angular velocity)
       real(wp) :: drag(6) = 0.0_wp
       character(len=:), allocatable :: card_at !< 'FILE:LINE' of its *BODY card
+      !> a FIXED body a host program moves through librodyn (HOST=YES: a coupled body of
+      !> MoorDyn's C API); held where it is in a run of the deck itself
+      logical :: host = .false.
       !> first-order wave load (*BODY WAVE LOAD), dynamics only: force and moment at R
       !> per metre of wave amplitude, by wave period and heading relative to the body's x
       !> axis (period unallocated: none)

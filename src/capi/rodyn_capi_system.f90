@@ -75,8 +75,9 @@ module rodyn_capi_system
 
 contains
 
-   !> Read the MoorDyn file at path into sys. Errors as the reader's (stat_input); a
-   !> coupled rod is refused (not driven through the API).
+   !> Read the MoorDyn file or rodyn deck at path into sys: the coupled points and bodies
+   !> are those with HOST=YES, in order. Errors as the reader's (stat_input); a coupled
+   !> rod is refused (not driven through the API).
    subroutine system_create(sys, path, err)
       type(md_system_t), intent(inout), target :: sys !< the system
       character(len=*), intent(in) :: path            !< the MoorDyn file
@@ -89,8 +90,8 @@ contains
          call deck_create(sys, path, err)
       end if
       if (has_error(err)) return
-      sys%coupled = sys%info%coupled_points
-      sys%cbody = sys%info%coupled_bodies
+      sys%coupled = host_points(sys%model)
+      sys%cbody = host_bodies(sys%model)
       sys%n_points = sys%info%n_points
       sys%n_bodies = sys%info%n_bodies
       if (size(sys%info%coupled_rods) > 0) call set_error(err, stat_input, path// &
@@ -99,8 +100,9 @@ contains
    end subroutine system_create
 
    !> A rodyn deck (docs/deck.md) as a system: its own *DYNAMIC steps through the host's
-   !> calls, driven by its *MOTIONs, waves and current; no coupled DOF; every point and
-   !> body of the deck as MoorDyn's points and bodies, its lines in deck order.
+   !> calls, driven by its *MOTIONs, waves and current and by the host for the points and
+   !> bodies with HOST=YES; every point and body of the deck as MoorDyn's points and
+   !> bodies, its lines in deck order.
    subroutine deck_create(sys, path, err)
       type(md_system_t), intent(inout) :: sys !< the system
       character(len=*), intent(in) :: path    !< the deck
@@ -113,8 +115,7 @@ contains
                         'needs its *DYNAMIC (the scheme and tolerances of its steps)')
          return
       end if
-      allocate (sys%info%coupled_points(0), sys%info%coupled_bodies(0), &
-                sys%info%coupled_rods(0), sys%info%rod_nodes(0), sys%info%rod_ends(6, 0), &
+      allocate (sys%info%coupled_rods(0), sys%info%rod_nodes(0), sys%info%rod_ends(6, 0), &
                 sys%info%outputs(0), sys%info%output_line(0))
       if (allocated(sys%model%points)) sys%info%n_points = size(sys%model%points)
       if (allocated(sys%model%bodies)) sys%info%n_bodies = size(sys%model%bodies)
@@ -199,6 +200,26 @@ contains
          if (model%lines(l)%point_b == ip) model%lines(l)%end_b = x
       end do
    end subroutine move_point
+
+   !> The points with HOST=YES, in order.
+   pure function host_points(model) result(ip)
+      type(model_t), intent(in) :: model    !< the system
+      integer, allocatable :: ip(:)         !< their indices in model%points
+      integer :: i
+      allocate (ip(0))
+      if (.not. allocated(model%points)) return
+      ip = pack([(i, i=1, size(model%points))], model%points%host)
+   end function host_points
+
+   !> The bodies with HOST=YES, in order.
+   pure function host_bodies(model) result(ib)
+      type(model_t), intent(in) :: model    !< the system
+      integer, allocatable :: ib(:)         !< their indices in model%bodies
+      integer :: i
+      allocate (ib(0))
+      if (.not. allocated(model%bodies)) return
+      ib = pack([(i, i=1, size(model%bodies))], model%bodies%host)
+   end function host_bodies
 
    !> MoorDyn's coupled DOFs: 6 a coupled body, 3 a coupled point.
    pure integer function system_ndof(sys) result(n)

@@ -18,6 +18,7 @@ module rodyn_deck_body
    use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  body_subcards, sub_drag, max_distance, &
                                  get_bounded, param_fail, location, check_card, get_int_range, &
+                                 get_host, &
                                  find_named
    implicit none
    private
@@ -33,9 +34,10 @@ module rodyn_deck_body
 
 contains
 
-   !> *BODY, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=]; four data lines of 3 values:
-   !> the reference point R at the start (global), G and B (body axes from R), and the
-   !> inertia Ixx, Iyy, Izz about G (body axes). A FREE body needs MASS > 0 and inertia.
+   !> *BODY, NAME=, TYPE=FIXED|FREE [, MASS=] [, VOLUME=] [, HOST=]; four data lines of 3
+   !> values: the reference point R at the start (global), G and B (body axes from R), and
+   !> the inertia Ixx, Iyy, Izz about G (body axes). A FREE body needs MASS > 0 and
+   !> inertia; HOST=YES only a FIXED one.
    subroutine read_body_card(rd, model, err)
       type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one body appended
@@ -50,13 +52,14 @@ contains
       associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
                  card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
-                                'VOLUME'], err)
+                                'VOLUME', 'HOST'], err)
          call get_item_name(deck, ic, model%bodies(1:pend%n_bodies)%name, &
                             pend%body_card(1:pend%n_bodies), 'body', name, err)
          if (has_error(err)) return
          b%name = name
          b%card_at = card%file//':'//int_str(card%line)
          call card_get_choice(card, 'TYPE', body_kind_names, b%kind, err, listed=.true.)
+         call get_host(card, b%kind == body_fixed, 'body', b%host, err)
          call get_bounded(card, 'MASS', b%mass, .false., err)
          call get_bounded(card, 'VOLUME', b%volume, .false., err)
          call card_check_data(card, 4, 4, err, trim(what(min(card%n_data + 1, 4))))

@@ -23,7 +23,7 @@ module rodyn_deck_support
    public :: check_card, check_once, get_node, get_bounded, check_at_most, get_tolerance, data_check
    public :: get_int_range, param_fail, get_pair
    public :: location, resolve_line, resolve_section, node_count, node_number, node_label
-   public :: check_node_once, get_item_name, find_named, refuse
+   public :: check_node_once, get_item_name, find_named, refuse, get_host
 
    integer, parameter :: max_cutbacks = 30             !< most cutbacks allowed
    integer, parameter :: max_elements = 10000000       !< most elements in one line
@@ -359,6 +359,22 @@ contains
          call card_error(card, message, err)
       end if
    end subroutine param_fail
+
+   !> HOST=YES|NO of a *POINT or *BODY (default NO): a host program moves it through
+   !> librodyn (docs/capi.md); only a FIXED one (held where it is in a run of the deck).
+   subroutine get_host(card, fixed, what, host, err)
+      use rodyn_deck_card_values, only: card_get_yesno
+      type(card_t), intent(in) :: card        !< the *POINT or *BODY card
+      logical, intent(in) :: fixed            !< TYPE=FIXED
+      character(len=*), intent(in) :: what    !< 'point' or 'body'
+      logical, intent(out) :: host            !< HOST=YES
+      type(error_t), intent(inout) :: err     !< status
+      host = .false.
+      call card_get_yesno(card, 'HOST', host, err)
+      if (has_error(err) .or. .not. host .or. fixed) return
+      call param_fail(card, 'HOST', 'HOST=YES is for a FIXED '//what//': a host program '// &
+                      'moves a held '//what//', not one the lines carry', err)
+   end subroutine get_host
 
    !> 'FILE:LINE' of card ic, to point at an earlier definition.
    function location(deck, ic) result(s)

@@ -18,7 +18,7 @@ module rodyn_deck_system
    use rodyn_deck_numbers, only: real_str, int_str
    use rodyn_deck_support, only: ref_t, pending_t, reading_t, get_item_name, &
                                  max_distance, get_lumped_body, param_fail, find_named, &
-                                 get_bounded, check_card, &
+                                 get_bounded, check_card, get_host, &
                                  location, node_count, node_number
    implicit none
    private
@@ -29,10 +29,10 @@ module rodyn_deck_system
 
 contains
 
-   !> *POINT, NAME=, TYPE=FIXED|FREE|BODY [, BODY=] [, MASS=] [, VOLUME=] [, CDA=] [, CA=];
-   !> data line x, y, z (the position at the start; on a body, in its axes from its
-   !> reference point). MASS, VOLUME, CDA and CA only for a FREE point, BODY= only (and
-   !> always) for a BODY point.
+   !> *POINT, NAME=, TYPE=FIXED|FREE|BODY [, BODY=] [, MASS=] [, VOLUME=] [, CDA=] [, CA=]
+   !> [, CONNECTION=] [, HOST=]; data line x, y, z (the position at the start; on a body,
+   !> in its axes from its reference point). MASS, VOLUME, CDA and CA only for a FREE
+   !> point, BODY= only (and always) for a BODY point, HOST=YES only for a FIXED one.
    subroutine read_point_card(rd, model, err)
       type(reading_t), intent(inout) :: rd    !< the cards, the card read, the records
       type(model_t), intent(inout) :: model   !< model: one point appended
@@ -47,7 +47,7 @@ contains
       associate (deck => rd%deck, ic => rd%ic, pend => rd%pend, &
                  card => rd%deck%cards(rd%ic))
          call card_check_params(card, [character(len=param_len) :: 'NAME', 'TYPE', 'MASS', &
-                                'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION'], err)
+                                'VOLUME', 'CDA', 'CA', 'BODY', 'CONNECTION', 'HOST'], err)
          call get_item_name(deck, ic, model%points(1:pend%n_points)%name, &
                             pend%point_card(1:pend%n_points), 'point', name, err, &
                             at_name=.true.)
@@ -55,6 +55,7 @@ contains
          pt%name = name
          pt%card_at = card%file//':'//int_str(card%line)
          call card_get_choice(card, 'TYPE', point_kind_names, pt%kind, err, listed=.true.)
+         call get_host(card, pt%kind == point_fixed, 'point', pt%host, err)
          if (has_error(err)) return
          if (pt%kind /= point_free) then
             do k = 1, size(props)

@@ -34,6 +34,9 @@ contains
          if (model%bodies(ib)%kind /= kind .and. kind == body_fixed) then
             call param_fail(card, 'BODY', "body '"//name//"' is FREE: a *MOTION moves a"// &
                             ' FIXED body (its motion prescribed), not a FREE one', err)
+         else if (kind == body_fixed .and. model%bodies(ib)%host) then
+            call param_fail(card, 'BODY', "body '"//name//"' has HOST=YES: a host program "// &
+                            'moves it, not a *MOTION', err)
          else if (model%bodies(ib)%kind /= kind) then
             call param_fail(card, 'BODY', "body '"//name//"' is FIXED: only a FREE body "// &
                             'has a velocity of its own', err)
@@ -63,6 +66,11 @@ contains
             call param_fail(card, 'POINT', "point '"//name//"' is not FIXED: a *MOTION "// &
                             'moves a FIXED point (its line ends held), not a FREE or BODY one', &
                             err)
+            return
+         end if
+         if (model%points(ip)%host) then
+            call param_fail(card, 'POINT', "point '"//name//"' has HOST=YES: a host "// &
+                            'program moves it, not a *MOTION', err)
             return
          end if
          do jm = 1, size(model%motions)

@@ -49,7 +49,7 @@ contains
 
       d%path = md%path
       d%notes = ''
-      allocate (d%info%coupled_points(0), d%info%coupled_bodies(0), d%info%coupled_rods(0), &
+      allocate (d%info%coupled_rods(0), &
                 d%info%rod_nodes(0), d%info%rod_ends(6, 0))
       call put(d, '** rodyn deck of the MoorDyn file '//md%path//' (rodyn --to-deck);', 0)
       call put(d, '** each keyword stands for the MoorDyn entry on the line it names', 0)
@@ -260,8 +260,7 @@ contains
       case ('FREE', 'POINT', 'CONNECT', 'CON')
          kind = 'FREE'
       case ('COUPLED', 'VESSEL', 'VES', 'CPLD', 'FAIRLEAD')
-         kind = 'FIXED'
-         d%info%coupled_points = [d%info%coupled_points, id]
+         kind = 'HOST'
          call note(d, row%line, 'POINTS: point '//row%f(1)%s//' ('//row%f(2)%s//') is '// &
                    'held at its start: it moves when a host program moves it')
       case ('BODY')
@@ -284,6 +283,8 @@ contains
                  ', VOLUME='//real_str(v(7))//', CDA='//real_str(v(11))
          if (v(7) > 0.0_wp) card = card//', CA='//real_str(v(12))
          call put(d, card, row%line)
+      else if (kind == 'HOST') then
+         call put(d, '*POINT, NAME='//name//', TYPE=FIXED, HOST=YES', row%line)
       else
          call put(d, '*POINT, NAME='//name//', TYPE=FIXED', row%line)
       end if
@@ -457,13 +458,12 @@ contains
       select case (word)
       case ('FREE')
          kind = 'FREE'
-      case ('FIXED', 'FIX', 'ANCHOR', 'COUPLED', 'VESSEL', 'VES', 'CPLD')
+      case ('FIXED', 'FIX', 'ANCHOR')
          kind = 'FIXED'
-         if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') &
-            d%info%coupled_bodies = [d%info%coupled_bodies, id]
-         if (word /= 'FIXED' .and. word /= 'FIX' .and. word /= 'ANCHOR') call note(d, &
-            row%line, 'BODIES: body '//row%f(1)%s//' ('//row%f(2)%s//') is held at '// &
-            'its start: it moves when a host program moves it')
+      case ('COUPLED', 'VESSEL', 'VES', 'CPLD')
+         kind = 'HOST'
+         call note(d, row%line, 'BODIES: body '//row%f(1)%s//' ('//row%f(2)%s//') is '// &
+                   'held at its start: it moves when a host program moves it')
       case default
          call md_fail(d, md_bodies, row, 'column Attachment: "'//row%f(2)%s//'" is not '// &
                       'Free, Fixed, Coupled or Vessel (MoorDyn takes any other word for '// &
@@ -472,6 +472,8 @@ contains
       end select
       if (kind == 'FIXED') then
          call put(d, '*BODY, NAME='//name//', TYPE=FIXED', row%line)
+      else if (kind == 'HOST') then
+         call put(d, '*BODY, NAME='//name//', TYPE=FIXED, HOST=YES', row%line)
       else
          call put(d, '*BODY, NAME='//name//', TYPE=FREE, MASS='//row%f(9)%s// &
                   ', VOLUME='//row%f(12)%s, row%line)

@@ -16,9 +16,9 @@ module rodyn_moordyn_out
 
    !> What a host program needs of a MoorDyn file besides the model.
    type :: md_info_t
-      !> the points a host program moves (Coupled, Vessel: their IDs, in order) and the
-      !> coupled bodies and rods
-      integer, allocatable :: coupled_points(:), coupled_bodies(:), coupled_rods(:)
+      !> the rods a host program moves (Coupled, Vessel: their IDs, in order); the points
+      !> and bodies it moves are those of the deck with HOST=YES
+      integer, allocatable :: coupled_rods(:)
       integer :: n_points = 0                 !< MoorDyn's points (the deck's first)
       integer :: n_bodies = 0                 !< MoorDyn's bodies (the deck's first)
       !> OUTPUTS: the channels' names and lines; write the units row (WriteUnits > 0)
