@@ -32,11 +32,6 @@ is not shipped); MoorDyn's initial-condition generator runs with the file's sett
 - CPU: time.process_time in the worker around Create, Init and the steps, median of 3
   for the runs of the table (one for the sweep).
 
-Status: rodyn's MoorDyn_Step force alternates from step to step after the jump in the
-fairlead's velocity at the motion's start (docs/capi.md, "Limit of that force"), so this
-comparison of Step forces is not yet one at equal error; docs/benchmarks.md gives no
-figures from it.
-
 Usage: python3 bench/systems/moordyn_chain_equal_error.py [--depths 0050,0200,0600]
 (writes bench/results/moordyn_chain_equal_error.csv)."""
 import csv

@@ -34,13 +34,13 @@ module rodyn_capi_system
    public :: system_break, system_point_node, system_point_x, system_end_force
    public :: system_tension_served
 
-   !> What the time loop hands a host-driven run: the step forces of the last two steps,
-   !> from which the forces at the end of the step are extrapolated (as the program's
-   !> writer does for a run that stops, rodyn_run_dynamic).
+   !> What the time loop hands a host-driven run: the step forces of the last three steps,
+   !> from which the forces at the end of the step are taken (support_forces).
    type, extends(timeloop_observer_t) :: host_observer_t
-      real(wp), allocatable :: r_last(:, :), r_back(:, :) !< (6, nn) step forces
-      real(wp) :: h_last = 0.0_wp, h_back = 0.0_wp        !< their steps [s]
-      logical :: have_last = .false., have_back = .false.
+      !> (6, nn) step forces of the last step, the one before and the one before that
+      real(wp), allocatable :: r_last(:, :), r_back(:, :), r_back2(:, :)
+      real(wp) :: h_last = 0.0_wp, h_back = 0.0_wp, h_back2 = 0.0_wp !< their steps [s]
+      logical :: have_last = .false., have_back = .false., have_back2 = .false.
    contains
       procedure :: on_frame => host_frame
       procedure :: on_step => host_step
@@ -333,14 +333,29 @@ contains
    end subroutine system_forces
 
    !> The support forces of every node at sys%t [N, N m]: the statics' before the first
-   !> step, then the step forces extrapolated from their force points to the step's end.
+   !> step. After three steps, from the step forces at the force points t_k of the last
+   !> three: through them r(t) = a + b t + c (-1)^k, a line and a part alternating from
+   !> step to step (the dissipative scheme's history stress and a held node's inertia,
+   !> docs/capi.md), and at the step's end its line, a + b t (exact for forces linear in
+   !> time). After one or two steps: the last step's force, or the line through the two.
    function support_forces(sys) result(r)
       type(md_system_t), intent(in) :: sys  !< the system
       real(wp), allocatable :: r(:, :)      !< (6, nn)
-      real(wp) :: w
+      real(wp) :: w, t0, t1, t2
       w = sys%prob%wf
       if (.not. sys%obs%have_last) then
          r = sys%r_static
+      else if (sys%obs%have_back2) then
+         associate (o => sys%obs)
+            ! the force points from the step's end (t = 0)
+            t2 = -(1.0_wp - w)*o%h_last
+            t1 = -o%h_last - (1.0_wp - w)*o%h_back
+            t0 = -o%h_last - o%h_back - (1.0_wp - w)*o%h_back2
+            ! b = (r2 - r0)/(t2 - t0) (the alternating part cancels), a = mean of r1 - b t1
+            ! and r2 - b t2 (it cancels there too)
+            r = 0.5_wp*(o%r_last + o%r_back) - (o%r_last - o%r_back2)*(0.5_wp*(t1 + t2)/ &
+                (t2 - t0))
+         end associate
       else if (sys%obs%have_back) then
          r = sys%obs%r_last + (sys%obs%r_last - sys%obs%r_back)*(1.0_wp - w)*sys%obs%h_last &
              /(w*sys%obs%h_last + (1.0_wp - w)*sys%obs%h_back)
@@ -522,12 +537,17 @@ contains
       type(error_t), intent(inout) :: err            !< status
    end subroutine host_checkpoint
 
-   !> After each step: its step forces kept, with the step before's.
+   !> After each step: its step forces kept, with the two steps' before.
    subroutine host_after(this, t, prob, err)
       class(host_observer_t), intent(inout) :: this !< the observer
       real(wp), intent(in) :: t                     !< time reached [s]
       type(dynamic_problem_t), intent(inout) :: prob !< problem after the step
       type(error_t), intent(inout) :: err           !< status
+      if (this%have_back) then
+         this%r_back2 = this%r_back
+         this%h_back2 = this%h_back
+         this%have_back2 = .true.
+      end if
       if (this%have_last) then
          this%r_back = this%r_last
          this%h_back = this%h_last
