@@ -14,8 +14,10 @@ runs); each run is a process of its own.
 Error: MoorDyn's test's measure, the largest |dT_fair - dT_ref| over twice the largest
 |dT_ref| (dT: the fairlead tension's change from the statics), and the static fairlead
 tension's error. CPU: the process's CPU over Create, Init and the steps (time.process_time
-inside the worker, around those calls only: the import of Python modules and the reading
-of the motion file are not counted), median of 3 runs.
+inside the worker, around those calls only: the import of Python modules, with the
+loading of the shared library (MoorDyn's at its import, librodyn's on its first call,
+made before the clock starts), and the reading of the motion file are not counted),
+median of 3 runs.
 
 Usage: python3 bench/systems/moordyn_api_speed.py   (writes
 bench/results/moordyn_api_speed.csv)."""
@@ -52,6 +54,8 @@ def worker(tool, depth, motion):
     if tool == "rodyn":
         sys.path.insert(0, os.path.join(ROOT, "postproc"))
         import rodyn.moordyn as md
+        from rodyn._lib import lib
+        lib()       # librodyn loaded, as MoorDyn's module is at its import
     else:
         import moordyn as md
     case = os.path.join(WORK, tool)

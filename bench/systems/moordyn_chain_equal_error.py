@@ -30,8 +30,9 @@ is not shipped); MoorDyn's initial-condition generator runs with the file's sett
   contact and friction differ); the equal-error table takes each tool's error against
   its own reference, the CSV gives both and the two references' difference.
 - Error: the largest |F - F_ref| over the samples, over the largest F_ref [%].
-- CPU: time.process_time in the worker around Create, Init and the steps, median of 3
-  for the runs of the table (one for the sweep).
+- CPU: time.process_time in the worker around Create, Init and the steps (the shared
+  libraries loaded before: MoorDyn's at its import, librodyn's by a first call), median
+  of 3 for the runs of the table (one for the sweep).
 
 Usage: python3 bench/systems/moordyn_chain_equal_error.py [--depths 0050,0200,0600]
 (writes bench/results/moordyn_chain_equal_error.csv)."""
@@ -70,6 +71,8 @@ def worker(tool, path, h):
     if tool == "rodyn":
         sys.path.insert(0, os.path.join(ROOT, "postproc"))
         import rodyn.moordyn as md
+        from rodyn._lib import lib
+        lib()       # librodyn loaded, as MoorDyn's module is at its import
     else:
         import moordyn as md
     motion = read_tab(os.path.join(SUITE, "QuasiStatic", MOTION + ".txt"))
