@@ -128,6 +128,7 @@ contains
       associate (deck => rd%deck, ic => rd%ic, pend => rd%pend)
          call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY'], name, &
                            ib, err)
+         if (has_error(err)) return         ! (name is not set)
          call body_card_once(deck, ic, pend, name, ib, err)
          call read_matrix6(deck%cards(ic), 'C(k,1), ..., C(k,6)', mat, err)
          if (has_error(err)) return
@@ -155,6 +156,7 @@ contains
          what = trim(what)
          call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY', &
                            merge('BODY', 'FORM', drag)], name, ib, err)
+         if (has_error(err)) return         ! (name is not set)
          form = 1
          if (.not. drag) call card_get_choice(card, 'FORM', [character(len=8) :: &
                                               'DIAGONAL', 'MATRIX'], form, err)

@@ -45,6 +45,7 @@ contains
                  card => rd%deck%cards(rd%ic))
          call body_of_card(deck, ic, model, pend, [character(len=param_len) :: 'BODY', &
                            'INPUT', 'PHASE', 'INTERPOLATION'], name, ib, err)
+         if (has_error(err)) return         ! (name is not set)
          call body_card_once(deck, ic, pend, name, ib, err)
          call rao_options(card, iphase, interp, err)
          if (has_error(err)) return
