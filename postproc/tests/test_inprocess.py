@@ -495,6 +495,49 @@ def test_step_force_smooth_after_jump():
     assert 0.0 < excess.min() and excess.max() < 0.03
 
 
+def test_fast_tens_on_a_deck(tmp_path):
+    """MoorDyn_GetFASTtens on a deck's line of cubic elements (MoorDyn's 200 m chain as a
+    deck of 12 cubic elements, its fairlead HOST=YES): the horizontal and vertical
+    forces of the line on the points that hold its ends; at the fairlead those of the
+    force MoorDyn_Step returns, to float precision, after each of 10 steps of a heave.
+    On a deck's line whose ends no point holds (input/mooring_surge.inp) it is refused
+    with MOORDYN_UNHANDLED_ERROR (-255), not answered."""
+    import ctypes
+    import re
+    import subprocess
+    from rodyn._lib import lib
+    exe = os.environ.get("RODYN_EXE")
+    if not exe:
+        pytest.skip("RODYN_EXE not set")
+    suite = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "moordyn_suite",
+                         "Mooring")
+    deck = subprocess.run([exe, "--to-deck", os.path.join(suite, "WD0200_Chain.txt")],
+                          check=True, capture_output=True, text=True).stdout
+    deck = re.sub(r"ELEMENTS=\d+, ORDER=1", "ELEMENTS=12, ORDER=3", deck).replace(
+        "*OUTPUT, CSV=YES, HDF5=YES", "*DYNAMIC, DT=1.0, TIME=1.0e7\n*OUTPUT, CSV=NO, HDF5=NO")
+    (tmp_path / "chain.inp").write_text(deck)
+    s = md.Create(str(tmp_path / "chain.inp"))
+    assert md.NCoupledDOF(s) == 3 and md.Init(s, [0.0] * 3, [0.0] * 3) == 0
+    for k in range(10):
+        z, z1 = 0.5 * np.sin(0.6 * k * 0.1), 0.5 * np.sin(0.6 * (k + 1) * 0.1)
+        f = md.Step(s, [0.0, 0.0, z], [0.0, 0.0, (z1 - z) / 0.1], k * 0.1, 0.1)
+        fh, fv, ah, av = md.GetFASTtens(s, 1)
+        assert fh[0] == pytest.approx(np.hypot(f[0], f[1]), rel=1e-6)
+        assert fv[0] == pytest.approx(abs(f[2]), rel=1e-6)
+        assert ah[0] > 1e6 and av[0] > 0.0
+    md.Close(s)
+    src = os.path.join(os.path.dirname(__file__), "..", "..", "input")
+    text = open(os.path.join(src, "mooring_surge.inp")).read().replace("TIME=120.0", "TIME=2.0")
+    (tmp_path / "surge.inp").write_text(text)
+    import shutil
+    shutil.copy(os.path.join(src, "mooring_leg_section.inc"), tmp_path)
+    s = md.Create(str(tmp_path / "surge.inp"))
+    assert md.Init(s, [], []) == 0
+    arrays = [(ctypes.c_float * 1)() for _ in range(4)]
+    assert lib().MoorDyn_GetFASTtens(s, ctypes.byref(ctypes.c_int(1)), *arrays) == -255
+    md.Close(s)
+
+
 def test_host_deck_is_its_file(tmp_path):
     """A rodyn deck whose points and bodies have HOST=YES is driven through librodyn as
     the MoorDyn file it was written from (`rodyn --to-deck`, a *DYNAMIC added): the same

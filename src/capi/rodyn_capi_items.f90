@@ -9,7 +9,7 @@ module rodyn_capi_items
    use rodyn_mesh, only: mesh_node
    use rodyn_capi_system, only: system_node_x, system_node_tension, system_forces, &
                                 system_ndof, system_body_state, system_point_x, &
-                                system_tension_served
+                                system_tension_served, system_end_force
    use rodyn_capi_handles, only: capi_item_t, capi_system_t, system_of, item_of, &
                                  md_success, md_invalid_value, md_unhandled
    implicit none
@@ -291,34 +291,52 @@ contains
    end function point_force
 
    !> MoorDyn_GetFASTtens: for each line, the horizontal and vertical tension at end B
-   !> (fairlead) and end A (anchor) [N].
+   !> (fairlead) and end A (anchor) [N]: MoorDyn's node tension of the end segments on a
+   !> line of linear elements of one section; on another line (a deck's), the force of
+   !> the line on the point that holds the end (system_end_force), an end not held
+   !> refused.
    function fast_tens(h, nl, fh, fv, ah, av) result(code) bind(c, name='MoorDyn_GetFASTtens')
       type(c_ptr), value :: h               !< system
       integer(c_int), intent(in) :: nl      !< lines to fill
       real(c_float), intent(out) :: fh(*), fv(*), ah(*), av(*) !< tensions [N]
       integer(c_int) :: code
       type(capi_system_t), pointer :: cs
-      real(wp) :: t(3)
+      real(wp) :: t(3), ta(3)
+      logical :: held
       integer :: l, n
       cs => system_of(h)
       code = md_invalid_value
       if (.not. associated(cs)) return
       if (cs%s%stage /= 1 .or. nl > size(cs%lines)) return
-      if (.not. all([(system_tension_served(cs%s, l), l = 1, nl)])) then
-         code = not_linear()
-         return
-      end if
       do l = 1, nl
-         n = cs%s%mesh%line_n_nodes(l) - 1
-         t = system_node_tension(cs%s, l, n)
+         if (system_tension_served(cs%s, l)) then
+            n = cs%s%mesh%line_n_nodes(l) - 1
+            t = system_node_tension(cs%s, l, n)
+            ta = system_node_tension(cs%s, l, 0)
+         else
+            call system_end_force(cs%s, l, 2, t, held)
+            if (held) call system_end_force(cs%s, l, 1, ta, held)
+            if (.not. held) then
+               code = not_held()
+               return
+            end if
+         end if
          fh(l) = real(norm2(t(1:2)), c_float)
          fv(l) = real(abs(t(3)), c_float)
-         t = system_node_tension(cs%s, l, 0)
-         ah(l) = real(norm2(t(1:2)), c_float)
-         av(l) = real(abs(t(3)), c_float)
+         ah(l) = real(norm2(ta(1:2)), c_float)
+         av(l) = real(abs(ta(3)), c_float)
       end do
       code = md_success
    end function fast_tens
+
+   !> MOORDYN_UNHANDLED_ERROR, and why on stderr: GetFASTtens on a deck's line with an
+   !> end not held by a point.
+   integer(c_int) function not_held() result(code)
+      write (error_unit, '(a)') 'rodyn: error: MoorDyn_GetFASTtens: on a line of a deck '// &
+         '(not linear elements of one section), the end forces are served where both ends '// &
+         'are held by points'
+      code = md_unhandled
+   end function not_held
 
    !> MOORDYN_UNHANDLED_ERROR, and why on stderr: MoorDyn's node tension on a deck's line
    !> of higher order or of several segments.
