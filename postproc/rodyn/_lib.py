@@ -65,6 +65,8 @@ _SIGNATURES = {
     "MoorDyn_GetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p,
                                              ctypes.POINTER(ctypes.c_size_t)]),
     "MoorDyn_SetTimeScheme": (ctypes.c_int, [_P, ctypes.c_char_p]),
+    "MoorDyn_Save": (ctypes.c_int, [_P, ctypes.c_char_p]),
+    "MoorDyn_Load": (ctypes.c_int, [_P, ctypes.c_char_p]),
     "MoorDyn_GetNumberRods": (ctypes.c_int, [_P, _U]),
     "MoorDyn_GetRod": (_P, [_P, ctypes.c_uint]),
     "MoorDyn_GetRodID": (ctypes.c_int, [_P, _I]),

@@ -10,7 +10,7 @@ import ctypes
 from ._lib import lib, doubles
 
 __all__ = ["Create", "NCoupledDOF", "SetVerbosity", "SetLogLevel", "Init", "Init_NoIC",
-           "Step", "Close",
+           "Step", "Close", "Save", "Load",
            "GetNumberLines", "GetLine", "GetNumberPoints", "GetPoint", "GetNumberBodies",
            "GetBody", "GetBodyID", "GetBodyState", "GetFASTtens", "BreakLine",
            "GetLineID", "GetLineN", "GetLineNumberNodes", "GetLineUnstretchedLength",
@@ -59,6 +59,17 @@ def Init(instance, x, v):
 def Init_NoIC(instance, x, v):
     """As Init, without the statics: the dynamics start from the lines' starting shapes."""
     return lib().MoorDyn_Init_NoIC(instance, doubles(list(x)), doubles(list(v)))
+
+
+def Save(instance, filepath):
+    """The system's state after its last step to filepath (HDF5); MoorDyn's code."""
+    return lib().MoorDyn_Save(instance, str(filepath).encode())
+
+
+def Load(instance, filepath):
+    """The state Save wrote, into a system of the same file after Init_NoIC (or Init);
+    MoorDyn's code."""
+    return lib().MoorDyn_Load(instance, str(filepath).encode())
 
 
 def Step(instance, x, v, t, dt):

@@ -538,6 +538,51 @@ def test_fast_tens_on_a_deck(tmp_path):
     md.Close(s)
 
 
+def test_save_load(tmp_path):
+    """MoorDyn_Save and MoorDyn_Load on the OC3-Hywind lines, a fairlead surging: a
+    system saved after 4 steps of 0.5 s and a new system of the same file, initialised
+    the same way (MoorDyn_Init; MoorDyn_Init_NoIC) and loaded, give the same forces over
+    4 more steps, bit for bit. Refused with MOORDYN_UNHANDLED_ERROR (-255): a state
+    loaded into a system initialised otherwise, a file that is not a saved state, a
+    save after a line broke."""
+    x0 = [5.2, 0, -70, -2.6, 4.5, -70, -2.6, -4.5, -70]
+
+    def motion(k):
+        x, v = np.array(x0, dtype=float), np.zeros(9)
+        x[0] += 2.0 * np.sin(0.15 * k)
+        v[0] = 0.3 * np.cos(0.15 * k)
+        return list(x), list(v)
+
+    for init in (md.Init, md.Init_NoIC):
+        state = str(tmp_path / f"{init.__name__}.h5")
+        a = md.Create(LINES)
+        assert init(a, x0, [0.0] * 9) == 0
+        fa = []
+        for k in range(8):
+            if k == 4:
+                assert md.Save(a, state) == 0
+            fa.append(md.Step(a, *motion(k), k * 0.5, 0.5))
+        b = md.Create(LINES)
+        assert init(b, x0, [0.0] * 9) == 0
+        assert md.Load(b, state) == 0
+        fb = [md.Step(b, *motion(k), k * 0.5, 0.5) for k in range(4, 8)]
+        assert np.array_equal(np.array(fa[4:]), np.array(fb))
+        other = md.Create(LINES)
+        assert (md.Init_NoIC if init is md.Init else md.Init)(other, x0, [0.0] * 9) == 0
+        assert md.Load(other, state) == -255
+        for h in (a, b, other):
+            md.Close(h)
+    (tmp_path / "bad.h5").write_bytes(b"not a state")
+    c = md.Create(LINES)
+    assert md.Init(c, x0, [0.0] * 9) == 0
+    assert md.Load(c, str(tmp_path / "bad.h5")) == -255
+    md.Step(c, *motion(0), 0.0, 0.5)
+    md.BreakLine(c, md.GetPoint(c, 4), md.GetLine(c, 1))
+    md.Step(c, *motion(1), 0.5, 0.5)
+    assert md.Save(c, str(tmp_path / "broken.h5")) == -255
+    md.Close(c)
+
+
 def test_host_deck_is_its_file(tmp_path):
     """A rodyn deck whose points and bodies have HOST=YES is driven through librodyn as
     the MoorDyn file it was written from (`rodyn --to-deck`, a *DYNAMIC added): the same

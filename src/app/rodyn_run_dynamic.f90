@@ -16,7 +16,7 @@ module rodyn_run_dynamic
    use rodyn_system_dynamics, only: apply_initial_velocities
    use rodyn_timeloop, only: timeloop_run, timeloop_state_t, timeloop_observer_t
    use rodyn_checkpoint, only: checkpoint_t, checkpoint_write, checkpoint_file, &
-                               checkpoint_program_id, pending_forces_t
+                               checkpoint_problem, checkpoint_program_id, pending_forces_t
    use rodyn_outfile, only: remove_file, path_join
    use rodyn_water, only: water_set_time
    use rodyn_recovery, only: recover_state
@@ -214,16 +214,9 @@ contains
       type(dynamic_problem_t), intent(inout) :: prob !< problem, set up
       type(checkpoint_t), intent(in) :: ck           !< the checkpoint
       type(checkpoint_t) :: c
-      call state_copy(ck%now, prob%s1)
-      prob%r = ck%r
       c = ck
-      call carry_step(prob, c, .false.)
+      call checkpoint_problem(prob, c, .false.)
       run%pend = ck%pend
-      if (prob%nd%on) then
-         prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
-         prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
-         prob%nd%energy = ck%nd_energy
-      end if
       if (run%pend%frame_waiting) then
          if (prob%water%active) call water_set_time(prob%water, prob%t0 + prob%wf*prob%dt, &
                                                     .true.)
@@ -231,30 +224,6 @@ contains
                             prob%sup%held, run%frame_lines, prob%water, ck%loop%t)
       end if
    end subroutine restore
-
-   !> The problem's last step (dt, t0) and Newton reference forces as a checkpoint holds
-   !> them: copied into ck (save) or from it.
-   subroutine carry_step(prob, ck, save)
-      type(dynamic_problem_t), intent(inout) :: prob !< problem
-      type(checkpoint_t), intent(inout) :: ck        !< checkpoint
-      logical, intent(in) :: save                    !< prob into ck (else ck into prob)
-      call r(prob%dt, ck%dt)
-      call r(prob%t0, ck%t0)
-      call r(prob%f_conv, ck%f_conv)
-      call r(prob%m_conv, ck%m_conv)
-      call r(prob%f_last, ck%f_last)
-      call r(prob%m_last, ck%m_last)
-      if (save) ck%have_conv = prob%have_conv
-      if (.not. save) prob%have_conv = ck%have_conv
-   contains
-      !> One value.
-      subroutine r(p, c)
-         real(wp), intent(inout) :: p  !< the problem's
-         real(wp), intent(inout) :: c  !< the checkpoint's
-         if (save) c = p
-         if (.not. save) p = c
-      end subroutine r
-   end subroutine carry_step
 
    !> A checkpoint (CHECKPOINT of *DYNAMIC): the output files synced, then everything the
    !> run carries to the next step written to checkpoint.h5 (rodyn_checkpoint).
@@ -267,16 +236,7 @@ contains
       ck%loop = ls
       ck%summary = this%summary
       ck%start = this%start_state
-      ck%now = prob%s1
-      ck%r = prob%r
-      call carry_step(prob, ck, .true.)
-      if (prob%nd%on) then
-         ck%nd_rho = reshape(prob%nd%rho, [size(prob%nd%rho, 1)*size(prob%nd%rho, 2), &
-                                           size(prob%nd%rho, 3)])
-         ck%nd_r = reshape(prob%nd%r, [size(prob%nd%r, 1)*size(prob%nd%r, 2), &
-                                       size(prob%nd%r, 3)])
-         ck%nd_energy = prob%nd%energy
-      end if
+      call checkpoint_problem(prob, ck, .true.)
       ck%pend = this%pend
       call dynamic_output_mark(this%writer, ck%mark, err)
       call checkpoint_write(this%dir, this%model, this%program_id, ck, err)

@@ -22,7 +22,8 @@ module rodyn_checkpoint
    use rodyn_kinds, only: wp, i8, rodyn_version
    use rodyn_error, only: error_t, set_error, has_error, stat_io, stat_input
    use rodyn_model, only: model_t, scheme_emc
-   use rodyn_state, only: state_t
+   use rodyn_state, only: state_t, state_copy
+   use rodyn_dynamics, only: dynamic_problem_t
    use rodyn_results, only: run_summary_t, step_log_t
    use rodyn_timeloop, only: timeloop_state_t
    use rodyn_output_dynamic, only: dynamic_output_mark_t
@@ -32,6 +33,7 @@ module rodyn_checkpoint
    implicit none
    private
    public :: checkpoint_t, checkpoint_write, checkpoint_read, checkpoint_file
+   public :: checkpoint_problem
    public :: pending_forces_t
    public :: checkpoint_program_id
 
@@ -77,23 +79,70 @@ module rodyn_checkpoint
 
 contains
 
+   !> The dynamic problem's part of a checkpoint, into ck (save) or from it: the state at
+   !> t_n, the last step's support forces, its length and start, Newton's reference
+   !> forces, and the dissipative EMC's histories.
+   subroutine checkpoint_problem(prob, ck, save)
+      type(dynamic_problem_t), intent(inout) :: prob !< problem
+      type(checkpoint_t), intent(inout) :: ck        !< checkpoint
+      logical, intent(in) :: save                    !< prob into ck (else ck into prob)
+      if (save) then
+         ck%now = prob%s1
+         ck%r = prob%r
+      else
+         call state_copy(ck%now, prob%s1)
+         prob%r = ck%r
+      end if
+      call r(prob%dt, ck%dt)
+      call r(prob%t0, ck%t0)
+      call r(prob%f_conv, ck%f_conv)
+      call r(prob%m_conv, ck%m_conv)
+      call r(prob%f_last, ck%f_last)
+      call r(prob%m_last, ck%m_last)
+      if (save) ck%have_conv = prob%have_conv
+      if (.not. save) prob%have_conv = ck%have_conv
+      if (.not. prob%nd%on) return
+      if (save) then
+         ck%nd_rho = reshape(prob%nd%rho, [size(prob%nd%rho, 1)*size(prob%nd%rho, 2), &
+                                           size(prob%nd%rho, 3)])
+         ck%nd_r = reshape(prob%nd%r, [size(prob%nd%r, 1)*size(prob%nd%r, 2), &
+                                       size(prob%nd%r, 3)])
+      else
+         prob%nd%rho = reshape(ck%nd_rho, shape(prob%nd%rho))
+         prob%nd%r = reshape(ck%nd_r, shape(prob%nd%r))
+      end if
+      call r(prob%nd%energy, ck%nd_energy)
+   contains
+      !> One value.
+      subroutine r(p, c)
+         real(wp), intent(inout) :: p  !< the problem's
+         real(wp), intent(inout) :: c  !< the checkpoint's
+         if (save) c = p
+         if (.not. save) p = c
+      end subroutine r
+   end subroutine checkpoint_problem
+
    !> Write ck as dir/checkpoint.h5: to a temporary, closed, then renamed over the old.
-   subroutine checkpoint_write(dir, model, program_id, ck, err)
+   subroutine checkpoint_write(dir, model, program_id, ck, err, file)
       character(len=*), intent(in) :: dir         !< output folder
       type(model_t), intent(in) :: model          !< model (deck text, parameters)
       character(len=*), intent(in) :: program_id  !< checkpoint_program_id(), once a run
       type(checkpoint_t), intent(in) :: ck        !< what to keep
       type(error_t), intent(inout) :: err         !< status
+      !> the file's name in dir instead of checkpoint.h5 (a host's MoorDyn_Save)
+      character(len=*), intent(in), optional :: file
       type(hdf5_file_t) :: h5
       type(error_t) :: e
       type(checkpoint_t) :: c
       real(wp) :: reals(n_reals)
       integer :: ints(n_ints)
-      character(len=:), allocatable :: tmp
+      character(len=:), allocatable :: tmp, name
       if (has_error(err)) return
       c = ck
       call transfer_scalars(c, reals, ints, .true.)
-      tmp = temp_name(dir, checkpoint_file)
+      name = checkpoint_file
+      if (present(file)) name = file
+      tmp = temp_name(dir, name)
       call hdf5_create_file(h5, tmp, e)
       call hdf5_write_dataset(h5, '/program', program_id, e)
       call hdf5_write_dataset(h5, '/deck', deck_identity(model), e)
@@ -110,11 +159,11 @@ contains
       call write_state('/start_', ck%start)
       call write_state('/now_', ck%now)
       call hdf5_close_file(h5, e)
-      if (.not. has_error(e)) call commit_rename(tmp, path_join(dir, checkpoint_file), e)
+      if (.not. has_error(e)) call commit_rename(tmp, path_join(dir, name), e)
       if (has_error(e)) then
          call remove_file(tmp)
          call set_error(err, stat_io, 'cannot write the checkpoint '''// &
-                        path_join(dir, checkpoint_file)//''': '//e%message)
+                        path_join(dir, name)//''': '//e%message)
       end if
    contains
       !> One state as datasets <prefix>x, d, v, dd (and a, ad when allocated for nodes).
@@ -133,12 +182,14 @@ contains
 
    !> Read dir/checkpoint.h5 into ck (its states allocated as `like`, nn nodes). Refused
    !> with stat_input when there is none, or it is of another build or another deck.
-   subroutine checkpoint_read(dir, model, like, ck, err)
+   subroutine checkpoint_read(dir, model, like, ck, err, file)
       character(len=*), intent(in) :: dir          !< output folder of the run
       type(model_t), intent(in) :: model           !< model (deck text, parameters)
       type(state_t), intent(in) :: like            !< a state of the run's sizes
       type(checkpoint_t), intent(out) :: ck        !< what the checkpoint holds
       type(error_t), intent(inout) :: err          !< status
+      !> the file's name in dir instead of checkpoint.h5 (a host's MoorDyn_Load)
+      character(len=*), intent(in), optional :: file
       type(hdf5_file_t) :: h5
       type(error_t) :: e
       character(len=:), allocatable :: path
@@ -146,6 +197,7 @@ contains
       integer, allocatable :: ints(:)
       if (has_error(err)) return
       path = path_join(dir, checkpoint_file)
+      if (present(file)) path = path_join(dir, file)
       if (outfile_size(path) < 0) then
          call set_error(err, stat_input, 'rodyn: error: --restart '//dir//': no checkpoint ('''// &
                         path//''' is missing): the run wrote none (no CHECKPOINT on '// &
