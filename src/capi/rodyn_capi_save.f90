@@ -28,31 +28,39 @@ contains
 
    !> MoorDyn_Save: the system's state after its last step, to the file at path.
    function md_save(h, path) result(code) bind(c, name='MoorDyn_Save')
-      type(c_ptr), value :: h                    !< system
+      type(c_ptr), value :: h               !< system
       type(c_ptr), value :: path            !< file to write (a C string)
       integer(c_int) :: code
-      type(capi_system_t), pointer :: cs
-      type(error_t) :: err
-      cs => system_of(h)
-      code = md_invalid_value
-      if (.not. associated(cs)) return
-      call system_save(cs%s, f_string(path), err)
-      code = outcome(err, 'MoorDyn_Save')
+      code = on_file(h, path, .true.)
    end function md_save
 
    !> MoorDyn_Load: the state a system of the same file saved, into this one.
    function md_load(h, path) result(code) bind(c, name='MoorDyn_Load')
-      type(c_ptr), value :: h                    !< system
+      type(c_ptr), value :: h               !< system
       type(c_ptr), value :: path            !< file to read (a C string)
       integer(c_int) :: code
+      code = on_file(h, path, .false.)
+   end function md_load
+
+   !> system_save (save) or system_load of system h with the file at path: MoorDyn's
+   !> code, the error on stderr.
+   integer(c_int) function on_file(h, path, save) result(code)
+      type(c_ptr), intent(in) :: h          !< system
+      type(c_ptr), intent(in) :: path       !< file (a C string)
+      logical, intent(in) :: save           !< save, else load
       type(capi_system_t), pointer :: cs
       type(error_t) :: err
       cs => system_of(h)
       code = md_invalid_value
       if (.not. associated(cs)) return
-      call system_load(cs%s, f_string(path), err)
-      code = outcome(err, 'MoorDyn_Load')
-   end function md_load
+      if (save) then
+         call system_save(cs%s, f_string(path), err)
+         code = outcome(err, 'MoorDyn_Save')
+      else
+         call system_load(cs%s, f_string(path), err)
+         code = outcome(err, 'MoorDyn_Load')
+      end if
+   end function on_file
 
    !> MOORDYN_SUCCESS, or the error on stderr and MOORDYN_UNHANDLED_ERROR.
    integer(c_int) function outcome(err, what) result(code)
